@@ -1,0 +1,13 @@
+# Warnings and sanitizers, applied per target (no global flags).
+function(fieldsight_target_options target)
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+        -Wno-sign-conversion)
+    if(FIELDSIGHT_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+    if(FIELDSIGHT_SANITIZE)
+        target_compile_options(${target} PRIVATE -fsanitize=address,undefined
+            -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    endif()
+endfunction()

@@ -1,0 +1,13 @@
+# Fails when any file under DIR includes a Qt header, uses Q_OBJECT or links a Qt6:: target.
+file(GLOB_RECURSE files "${DIR}/*")
+set(offenders "")
+foreach(f ${files})
+    file(STRINGS "${f}" hits REGEX "#[ \t]*include[ \t]*[<\"]Q[A-Za-z]|Q_OBJECT|Qt6::")
+    if(hits)
+        list(APPEND offenders "${f}")
+    endif()
+endforeach()
+if(offenders)
+    message(FATAL_ERROR "visioncore must stay Qt-free; these mention Qt: ${offenders}")
+endif()
+message(STATUS "visioncore is Qt-free (${DIR})")

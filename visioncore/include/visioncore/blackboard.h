@@ -1,0 +1,80 @@
+// Blackboard: one frame's state, shared by the stages of one controller. Not a singleton: every
+// ControlWrapper owns its own, so several cores run side by side.
+#pragma once
+
+#include "visioncore/colour_lut.h"
+#include "visioncore/debug_drawing.h"
+#include "visioncore/geometry.h"
+#include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/field_line.h"
+#include "visioncore/percepts/goalpost.h"
+#include "visioncore/percepts/green_horizon.h"
+#include "visioncore/percepts/obstacle.h"
+#include "visioncore/segments.h"
+
+#include <opencv2/core/mat.hpp>
+
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+/// A problem in one frame that did not stop the frame (a stage threw, a stage was starved).
+struct Diagnostic
+{
+    std::string stage;   ///< stage id
+    std::string message;
+};
+
+class Blackboard
+{
+public:
+    /// Clears every per-frame field and takes the inputs of the new frame (kept by reference: the
+    /// DataWrapper guarantees they outlive the frame).
+    void beginFrame(const cv::Mat& image, const ColourLut& lut, Horizon kinematic_horizon);
+
+    // Inputs (the DataWrapper's snapshot for this frame).
+    const cv::Mat& image() const { return *m_image; }
+    const ColourLut& lut() const { return *m_lut; }
+    int width() const { return m_image->cols; }
+    int height() const { return m_image->rows; }
+    Colour classify(int x, int y) const
+    {
+        const auto* p = m_image->ptr<std::uint8_t>(y) + 3 * x;
+        return m_lut->classify(p[0], p[1], p[2]);
+    }
+    Horizon kinematic_horizon;
+
+    // Green horizon stage.
+    GreenHorizon green_horizon;
+    std::vector<PixelPoint> gh_scan_points;   ///< first green run per column
+    std::vector<PixelPoint> gh_thrown_points; ///< scan points dropped as outliers
+
+    // Scanline classifier.
+    std::vector<int> horizontal_scan_ys;           ///< px, y of every horizontal scan line
+    std::vector<PixelPoint> vertical_scan_starts;  ///< px, top of every vertical scan line
+    SegmentedRegion horizontal_segments{ScanDirection::Horizontal, {}, 0};
+    SegmentedRegion vertical_segments{ScanDirection::Vertical, {}, 0};
+
+    // Transition filter.
+    SegmentedRegion horizontal_filtered{ScanDirection::Horizontal, {}, 0};
+    SegmentedRegion vertical_filtered{ScanDirection::Vertical, {}, 0};
+    Transitions horizontal_transitions;
+    Transitions vertical_transitions;
+
+    // Detections.
+    std::vector<Ball> balls;
+    std::vector<Goalpost> goalposts;
+    std::vector<FieldLine> field_lines;
+    std::vector<Obstacle> obstacles;
+    std::vector<PixelPoint> obstacle_points;
+
+    std::vector<Diagnostic> diagnostics;
+    DebugCanvas debug;
+
+private:
+    const cv::Mat* m_image = nullptr;
+    const ColourLut* m_lut = nullptr;
+};
+
+} // namespace fieldsight

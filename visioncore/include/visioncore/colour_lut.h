@@ -1,0 +1,46 @@
+// The colour lookup table: 128^3 cells of colour ids, indexed by 7-bit Y, Cb, Cr (SPEC §3).
+#pragma once
+
+#include "visioncore/colour.h"
+#include "visioncore/result.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+class ColourLut
+{
+public:
+    static constexpr std::size_t kCells = 128 * 128 * 128; ///< also the file size in bytes
+
+    /// A table with every cell unclassified.
+    ColourLut();
+
+    static constexpr std::size_t index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr)
+    {
+        return (std::size_t(y >> 1) << 14) | (std::size_t(cb >> 1) << 7) | std::size_t(cr >> 1);
+    }
+    Colour classify(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const
+    {
+        return Colour(m_cells[index(y, cb, cr)]);
+    }
+    Colour cell(std::size_t i) const { return Colour(m_cells[i]); }
+    void setCell(std::size_t i, Colour colour) { m_cells[i] = std::uint8_t(colour); }
+    const std::uint8_t* data() const { return m_cells.data(); }
+
+    /// Validates size and values; `source` names the origin in error messages.
+    static Result<ColourLut> fromBytes(std::vector<std::uint8_t> bytes, const std::string& source);
+    static Result<ColourLut> load(const std::string& path);
+    /// Writes a temporary file beside `path`, then renames it over `path`.
+    Status save(const std::string& path) const;
+
+    friend bool operator==(const ColourLut&, const ColourLut&) = default;
+
+private:
+    std::vector<std::uint8_t> m_cells;
+};
+
+} // namespace fieldsight
