@@ -1,0 +1,228 @@
+// Ball detection. The original (BallDetectorShannon, "BROKEN" in its own comment) removed every
+// edge point outside a 1-sigma box around the mean, which on a clean ball discards the ball's own
+// edges, then walked from a geometric mean; it found about half the visible balls. Here the edge
+// points (at sub-pixel pixel borders) are clustered, and a circle is fitted to a cluster with
+// RANSAC, so edges against an occluding robot or the image border do not pull the fit.
+#include "stages/ball/ball_detector.h"
+
+#include "stages/common/ransac.h"
+#include "stages/common/stage_util.h"
+#include "visioncore/blackboard.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace fieldsight {
+
+namespace {
+
+struct Circle
+{
+    PointF centre;
+    double radius = 0;
+
+    static constexpr int kSampleSize = 3;
+    bool fromSample(const PointF* s)
+    {
+        // Circumcircle of three points.
+        const double ax = s[0].x, ay = s[0].y, bx = s[1].x, by = s[1].y, cx = s[2].x, cy = s[2].y;
+        const double d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by));
+        if (std::abs(d) < 1e-6)
+            return false;
+        const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+        centre = {(a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d,
+                  (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d};
+        radius = std::hypot(ax - centre.x, ay - centre.y);
+        return std::isfinite(radius);
+    }
+    double error(const PointF& p) const
+    {
+        return std::abs(std::hypot(p.x - centre.x, p.y - centre.y) - radius);
+    }
+};
+
+/// Algebraic least-squares circle (Kasa): x^2 + y^2 + D x + E y + F = 0.
+bool fitCircle(const std::vector<PointF>& pts, Circle& out)
+{
+    if (pts.size() < 3)
+        return false;
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    for (const PointF& p : pts) {
+        const Eigen::Vector3d row(p.x, p.y, 1.0);
+        a += row * row.transpose();
+        b -= row * (p.x * p.x + p.y * p.y);
+    }
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(a);
+    if (lu.rank() < 3)
+        return false;
+    const Eigen::Vector3d s = lu.solve(b);
+    out.centre = {-s[0] / 2, -s[1] / 2};
+    const double r2 = out.centre.x * out.centre.x + out.centre.y * out.centre.y - s[2];
+    if (!(r2 > 0))
+        return false;
+    out.radius = std::sqrt(r2);
+    return true;
+}
+
+/// Connected groups of points closer than `link` to some other member, largest first.
+std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double link)
+{
+    std::vector<std::size_t> parent(pts.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto find = [&](std::size_t i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    const double l2 = link * link;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        for (std::size_t j = i + 1; j < pts.size(); ++j) {
+            const double dx = pts[i].x - pts[j].x, dy = pts[i].y - pts[j].y;
+            if (dx * dx + dy * dy <= l2)
+                parent[find(i)] = find(j);
+        }
+    std::vector<std::vector<PointF>> groups;
+    std::vector<int> slot(pts.size(), -1);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const std::size_t r = find(i);
+        if (slot[r] < 0) {
+            slot[r] = int(groups.size());
+            groups.emplace_back();
+        }
+        groups[std::size_t(slot[r])].push_back(pts[i]);
+    }
+    std::stable_sort(groups.begin(), groups.end(),
+                     [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    return groups;
+}
+
+/// Fraction of ball-coloured pixels in the square inscribed in the circle.
+double colourFraction(const Blackboard& bb, const Circle& c, Colour colour)
+{
+    const double half = c.radius / std::sqrt(2.0);
+    const int x0 = std::max(0, int(std::ceil(c.centre.x - half)));
+    const int x1 = std::min(bb.width() - 1, int(std::floor(c.centre.x + half)));
+    const int y0 = std::max(0, int(std::ceil(c.centre.y - half)));
+    const int y1 = std::min(bb.height() - 1, int(std::floor(c.centre.y + half)));
+    const int step = std::max(1, int(half / 4));
+    int total = 0, hits = 0;
+    for (int y = y0; y <= y1; y += step)
+        for (int x = x0; x <= x1; x += step) {
+            ++total;
+            hits += bb.classify(x, y) == colour;
+        }
+    return total ? double(hits) / total : 0.0;
+}
+
+} // namespace
+
+BallDetector::BallDetector()
+{
+    addParam(m_min_radius, {"min_radius", "px", "smaller balls are dropped", 2.5, 0, 100});
+    addParam(m_min_orange_fraction,
+             {"min_orange_fraction", "", "ball colour needed inside the fitted circle", 0.2, 0, 1});
+    addParam(m_cluster_distance,
+             {"cluster_distance", "px", "edge points closer than this belong together", 10, 1, 100});
+    addParam(m_max_fit_error, {"max_fit_error", "px", "circle RANSAC inlier distance", 1.5, 0.1, 20});
+    addParam(m_iterations, {"iterations", "", "circle RANSAC samples", 40, 1, 10000});
+    addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
+}
+
+const StageInfo& BallDetector::info() const
+{
+    static const StageInfo info{
+        "ball",
+        "Ball",
+        true,
+        {"horizontal_transitions", "vertical_transitions", "green_horizon"},
+        {"balls"},
+        {{"ball.edge_points", "Ball edge points"}, {"ball.balls", "Balls"}}};
+    return info;
+}
+
+void BallDetector::run(Blackboard& bb)
+{
+    const auto& hs = bb.horizontal_transitions[TransitionClass::Ball];
+    const auto& vs = bb.vertical_transitions[TransitionClass::Ball];
+    if (hs.empty() && vs.empty())
+        return;
+    const int w = bb.width(), h = bb.height();
+    const GreenHorizon& gh = bb.green_horizon;
+    const Colour colour = !hs.empty() ? hs.front().colour : vs.front().colour;
+
+    // Edge points sit on pixel borders: half a pixel outside the run. Ends at the image border or
+    // at the top of a vertical scan are not ball edges.
+    std::vector<PointF> edges;
+    std::vector<const ColourSegment*> chords;
+    for (const ColourSegment& s : hs) {
+        const PointF c = s.centre();
+        if (!gh.isBelow(int(c.x), int(c.y)))
+            continue;
+        chords.push_back(&s);
+        if (s.x0 > 0)
+            edges.push_back({s.x0 - 0.5, double(s.y0)});
+        if (s.x1 < w)
+            edges.push_back({s.x1 - 0.5, double(s.y0)});
+    }
+    for (const ColourSegment& s : vs) {
+        if (s.y0 > gh.yAt(s.x0))
+            edges.push_back({double(s.x0), s.y0 - 0.5});
+        if (s.y1 < h)
+            edges.push_back({double(s.x0), s.y1 - 0.5});
+    }
+    if (auto* d = bb.debug.layer("ball.edge_points"))
+        d->add(pointsShape(edges, debug_colour::kCyan, 2));
+
+    std::mt19937 rng{std::uint32_t(m_seed)};
+    RansacParams params;
+    params.max_error = m_max_fit_error;
+    params.iterations = int(std::lround(m_iterations));
+    const auto accept = [&](const Circle& c) {
+        return c.radius >= m_min_radius && c.radius <= std::max(w, h) &&
+               colourFraction(bb, c, colour) >= m_min_orange_fraction;
+    };
+
+    bool found = false;
+    Circle ball;
+    for (auto& group : cluster(edges, m_cluster_distance)) {
+        if (group.size() < 3)
+            break;
+        Circle c;
+        if (group.size() >= 5) {
+            params.min_points = std::max(4, int(group.size() / 2));
+            RansacResult<Circle> r;
+            std::vector<PointF> pts = group;
+            if (!ransacFindModel(pts, params, rng, r) || !fitCircle(r.inliers, c))
+                continue;
+        } else if (!fitCircle(group, c)) {
+            continue;
+        }
+        if (accept(c)) {
+            ball = c;
+            found = true;
+            break;
+        }
+    }
+    if (!found && !chords.empty()) {
+        // A ball too small for three edge points: the longest chord stands for its diameter.
+        const ColourSegment* s = *std::max_element(
+            chords.begin(), chords.end(),
+            [](const ColourSegment* a, const ColourSegment* b) { return a->length() < b->length(); });
+        Circle c{{(s->x0 + s->x1 - 1) / 2.0, double(s->y0)}, s->length() / 2.0};
+        if (accept(c)) {
+            ball = c;
+            found = true;
+        }
+    }
+    if (!found)
+        return;
+    bb.balls.push_back({ball.centre.x, ball.centre.y, ball.radius});
+    if (auto* d = bb.debug.layer("ball.balls"))
+        d->add(circleShape(ball.centre, ball.radius, debug_colour::kBall));
+}
+
+} // namespace fieldsight

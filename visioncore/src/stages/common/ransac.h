@@ -1,0 +1,118 @@
+// Generic RANSAC (design note §2.11) with an explicit, seeded generator, so results are
+// reproducible (the original used the unseeded global rand()).
+#pragma once
+
+#include "visioncore/geometry.h"
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace fieldsight {
+
+enum class ConsensusSelection {
+    Largest,     ///< keep the model with the most inliers (ties: lower mean error)
+    BestFitting, ///< keep the model with the lowest mean inlier error among those with >= n
+};
+
+struct RansacParams
+{
+    double max_error = 5.0;  ///< px, inlier distance
+    int min_points = 6;      ///< inliers needed to accept a model
+    int iterations = 100;    ///< samples per model
+    ConsensusSelection selection = ConsensusSelection::Largest;
+};
+
+template <class Model>
+struct RansacResult
+{
+    Model model;
+    std::vector<PointF> inliers;
+    double mean_error = 0;
+};
+
+/// Draws an index in [0, n) from the raw engine output, so the sequence is the same on every
+/// standard library (std::uniform_int_distribution is implementation-defined).
+inline std::size_t drawIndex(std::mt19937& rng, std::size_t n) { return std::size_t(rng() % n); }
+
+/// One model from `points`. Model needs: static constexpr int kSampleSize; bool fromSample(const
+/// PointF* sample); double error(const PointF&) const. On success the inliers are moved out of
+/// `points` (which keeps the outliers) and the model is returned.
+template <class Model>
+bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, std::mt19937& rng,
+                     RansacResult<Model>& out)
+{
+    const std::size_t n = points.size();
+    if (n < std::size_t(params.min_points) || n < std::size_t(Model::kSampleSize))
+        return false;
+    bool found = false;
+    std::size_t best_count = 0;
+    double best_error = 0;
+    Model best{};
+    PointF sample[Model::kSampleSize];
+    for (int it = 0; it < params.iterations; ++it) {
+        std::size_t idx[Model::kSampleSize];
+        for (int s = 0; s < Model::kSampleSize; ++s) {
+            bool distinct = false;
+            while (!distinct) {
+                idx[s] = drawIndex(rng, n);
+                distinct = true;
+                for (int t = 0; t < s; ++t)
+                    distinct = distinct && idx[t] != idx[s];
+            }
+            sample[s] = points[idx[s]];
+        }
+        Model model;
+        if (!model.fromSample(sample))
+            continue;
+        std::size_t count = 0;
+        double sum = 0;
+        for (const PointF& p : points) {
+            const double e = model.error(p);
+            if (e < params.max_error) {
+                ++count;
+                sum += e;
+            }
+        }
+        if (count < std::size_t(params.min_points))
+            continue;
+        const double mean = sum / double(count);
+        bool better = !found;
+        if (found && params.selection == ConsensusSelection::Largest)
+            better = count > best_count || (count == best_count && mean < best_error);
+        if (found && params.selection == ConsensusSelection::BestFitting)
+            better = mean < best_error;
+        if (better) {
+            found = true;
+            best = model;
+            best_count = count;
+            best_error = mean;
+        }
+    }
+    if (!found)
+        return false;
+    out.model = best;
+    out.mean_error = best_error;
+    out.inliers.clear();
+    std::vector<PointF> rest;
+    rest.reserve(n - best_count);
+    for (const PointF& p : points)
+        (best.error(p) < params.max_error ? out.inliers : rest).push_back(p);
+    points.swap(rest);
+    return true;
+}
+
+/// Up to `max_models` models, each from what the previous ones left over.
+template <class Model>
+std::vector<RansacResult<Model>> ransacFindModels(std::vector<PointF> points,
+                                                  const RansacParams& params, int max_models,
+                                                  std::mt19937& rng)
+{
+    std::vector<RansacResult<Model>> found;
+    RansacResult<Model> result;
+    while (int(found.size()) < max_models && ransacFindModel(points, params, rng, result))
+        found.push_back(result);
+    return found;
+}
+
+} // namespace fieldsight

@@ -1,0 +1,47 @@
+// Small helpers the stages share: debug colours and shape builders.
+#pragma once
+
+#include "visioncore/debug_drawing.h"
+
+#include <vector>
+
+namespace fieldsight {
+
+namespace debug_colour {
+inline constexpr Rgb kMagenta{255, 0, 255};
+inline constexpr Rgb kRed{255, 0, 0};
+inline constexpr Rgb kBlue{0, 80, 255};
+inline constexpr Rgb kCyan{0, 255, 255};
+inline constexpr Rgb kGrey{128, 128, 128};
+inline constexpr Rgb kYellow{255, 255, 0};
+inline constexpr Rgb kBall{255, 160, 0};
+inline constexpr Rgb kWhite{255, 255, 255};
+} // namespace debug_colour
+
+template <class P>
+DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)
+{
+    DebugShape shape{ShapeKind::Points, {}, colour, size, false};
+    shape.points.reserve(points.size());
+    for (const P& p : points)
+        shape.points.push_back({double(p.x), double(p.y)});
+    return shape;
+}
+
+inline DebugShape lineShape(PointF a, PointF b, Rgb colour, double width = 1)
+{
+    return DebugShape{ShapeKind::Line, {a, b}, colour, width, false};
+}
+
+inline DebugShape rectShape(double left, double top, double right, double bottom, Rgb colour,
+                            bool filled = false, double width = 1)
+{
+    return DebugShape{ShapeKind::Rect, {{left, top}, {right, bottom}}, colour, width, filled};
+}
+
+inline DebugShape circleShape(PointF centre, double radius, Rgb colour)
+{
+    return DebugShape{ShapeKind::Circle, {centre}, colour, radius, false};
+}
+
+} // namespace fieldsight

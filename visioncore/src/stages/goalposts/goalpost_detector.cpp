@@ -1,0 +1,237 @@
+// Goalpost detection by RANSAC on post edges.
+#include "stages/goalposts/goalpost_detector.h"
+
+#include "stages/common/line_fit.h"
+#include "stages/common/ransac.h"
+#include "stages/common/stage_util.h"
+#include "visioncore/blackboard.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace fieldsight {
+
+namespace {
+
+/// One fitted post edge: its line, its end points (low = larger y) and how many points made it.
+struct Edge
+{
+    ImageLine line;
+    PointF low, high;
+    std::size_t count = 0;
+    double meanX() const { return (low.x + high.x) / 2; }
+    double length() const { return std::hypot(low.x - high.x, low.y - high.y); }
+};
+
+std::vector<Edge> fitEdges(const std::vector<PointF>& points, const RansacParams& params,
+                           int max_lines, std::mt19937& rng)
+{
+    std::vector<Edge> edges;
+    for (auto& r : ransacFindModels<ImageLine>(points, params, max_lines, rng)) {
+        Edge e;
+        e.line = fitLineTls(r.inliers);
+        lineExtent(e.line, r.inliers, e.low, e.high);
+        if (e.low.y < e.high.y)
+            std::swap(e.low, e.high);
+        e.count = r.inliers.size();
+        edges.push_back(e);
+    }
+    return edges;
+}
+
+/// A post quad: bottom-left, top-left, top-right, bottom-right.
+struct Quad
+{
+    PointF bl, tl, tr, br;
+    double left() const { return std::min(bl.x, tl.x); }
+    double right() const { return std::max(br.x, tr.x); }
+    double top() const { return std::min(tl.y, tr.y); }
+    double bottom() const { return std::max(bl.y, br.y); }
+    double width() const { return (std::abs(br.x - bl.x) + std::abs(tr.x - tl.x)) / 2 + 1; }
+    double height() const
+    {
+        return (std::hypot(bl.x - tl.x, bl.y - tl.y) + std::hypot(br.x - tr.x, br.y - tr.y)) / 2 + 1;
+    }
+    PointF bottomCentre() const { return {(bl.x + br.x) / 2, (bl.y + br.y) / 2}; }
+    PointF topCentre() const { return {(tl.x + tr.x) / 2, (tl.y + tr.y) / 2}; }
+};
+
+double meanEndDistance(const Edge& a, const Edge& b)
+{
+    const auto d = [](PointF p, PointF q) { return std::hypot(p.x - q.x, p.y - q.y); };
+    return std::min(d(a.low, b.low) + d(a.high, b.high), d(a.low, b.high) + d(a.high, b.low)) / 2;
+}
+
+} // namespace
+
+GoalpostDetector::GoalpostDetector()
+{
+    addParam(m_min_points, {"min_points", "", "edge points needed for an edge line", 6, 2, 100});
+    addParam(m_iterations, {"iterations", "", "RANSAC samples per line", 100, 1, 10000});
+    addParam(m_max_error, {"max_error", "px", "RANSAC inlier distance", 5, 0.5, 50});
+    addParam(m_max_lines, {"max_lines", "", "edge lines per side", 3, 1, 10});
+    addParam(m_matching_tolerance,
+             {"matching_tolerance", "", "pairing tolerance for edge angle, length and count", 0.2,
+              0, 1});
+    addParam(m_min_aspect, {"min_aspect", "", "minimum height / width of a post", 1.5, 0, 20});
+    addParam(m_min_width, {"min_width", "px", "narrower posts are dropped", 3, 0, 100});
+    addParam(m_min_separation,
+             {"min_separation", "px", "two posts further apart are labelled left and right", 40, 0,
+              1000});
+    addParam(m_merge_widths,
+             {"merge_widths", "", "posts closer than this many widths are merged", 1.5, 0, 10});
+    addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
+}
+
+const StageInfo& GoalpostDetector::info() const
+{
+    static const StageInfo info{
+        "goalposts",
+        "Goalposts",
+        true,
+        {"horizontal_transitions", "vertical_transitions", "kinematic_horizon"},
+        {"goalposts"},
+        {{"goalposts.edge_lines", "Goal edge lines"}, {"goalposts.posts", "Goalposts"}}};
+    return info;
+}
+
+void GoalpostDetector::run(Blackboard& bb)
+{
+    const auto& transitions = bb.horizontal_transitions[TransitionClass::Goal];
+    if (transitions.empty())
+        return;
+    std::vector<PointF> lefts, rights;
+    lefts.reserve(transitions.size());
+    rights.reserve(transitions.size());
+    const int w = bb.width();
+    for (const ColourSegment& s : transitions) {
+        // A run cut by the image border has no edge there.
+        if (s.x0 > 0)
+            lefts.push_back({s.x0 - 0.5, double(s.y0)});
+        if (s.x1 < w)
+            rights.push_back({s.x1 - 0.5, double(s.y0)});
+    }
+    std::mt19937 rng{std::uint32_t(m_seed)};
+    RansacParams params;
+    params.max_error = m_max_error;
+    params.min_points = int(std::lround(m_min_points));
+    params.iterations = int(std::lround(m_iterations));
+    const int max_lines = int(std::lround(m_max_lines));
+    std::vector<Edge> starts = fitEdges(lefts, params, max_lines, rng);
+    std::vector<Edge> ends = fitEdges(rights, params, max_lines, rng);
+
+    if (auto* d = bb.debug.layer("goalposts.edge_lines")) {
+        for (const Edge& e : starts)
+            d->add(lineShape(e.low, e.high, debug_colour::kCyan, 2));
+        for (const Edge& e : ends)
+            d->add(lineShape(e.low, e.high, debug_colour::kMagenta, 2));
+    }
+
+    // Pair each left edge with the nearest unused right edge that agrees in angle, length and
+    // support, and lies to its right.
+    const double tol = m_matching_tolerance;
+    if (tol < 0 || tol > 1)
+        throw std::invalid_argument("matching_tolerance must be in [0, 1]");
+    std::vector<bool> used(ends.size(), false);
+    std::vector<Quad> posts;
+    for (const Edge& s : starts) {
+        std::vector<std::size_t> order;
+        for (std::size_t i = 0; i < ends.size(); ++i)
+            if (!used[i])
+                order.push_back(i);
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return meanEndDistance(s, ends[a]) < meanEndDistance(s, ends[b]);
+        });
+        for (std::size_t i : order) {
+            const Edge& e = ends[i];
+            const double len_ratio = std::min(s.length(), e.length()) /
+                                     std::max(1e-9, std::max(s.length(), e.length()));
+            const double count_ratio =
+                double(std::min(s.count, e.count)) / double(std::max(s.count, e.count));
+            if (s.line.angleTo(e.line) > tol * std::numbers::pi / 2 || len_ratio < 1 - tol ||
+                count_ratio < 1 - tol || s.meanX() >= e.meanX())
+                continue;
+            used[i] = true;
+            const Quad q{s.low, s.high, e.high, e.low};
+            // Posts are tall: drop wide quads (crossbars, blobs) and narrow slivers.
+            if (q.height() / q.width() < m_min_aspect || q.width() <= m_min_width)
+                break;
+            // A post stands roughly perpendicular to the horizon.
+            const ImageLine axis{q.bottomCentre(),
+                                 {q.topCentre().x - q.bottomCentre().x,
+                                  q.topCentre().y - q.bottomCentre().y}};
+            const double hx = double(w - 1), hy = bb.kinematic_horizon.y_right -
+                                                  bb.kinematic_horizon.y_left;
+            const double hl = std::hypot(hx, hy);
+            const double al = std::hypot(axis.direction.x, axis.direction.y);
+            const double cosang = std::abs(axis.direction.x * hx + axis.direction.y * hy) /
+                                  std::max(1e-9, al * hl);
+            if (std::acos(std::min(1.0, cosang)) >= 0.75 * std::numbers::pi / 2)
+                posts.push_back(q);
+            break;
+        }
+    }
+
+    // Merge posts that overlap or stand within merge_widths of each other (outer envelope).
+    for (std::size_t a = 0; a < posts.size(); ++a)
+        for (std::size_t b = a + 1; b < posts.size();) {
+            const Quad &p = posts[a], &q = posts[b];
+            const bool overlap = p.left() <= q.right() && q.left() <= p.right();
+            const double dx = std::abs(p.bottomCentre().x - q.bottomCentre().x);
+            if (overlap || dx <= m_merge_widths * std::max(p.width(), q.width())) {
+                Quad m;
+                m.bl = {std::min(p.bl.x, q.bl.x), std::max(p.bl.y, q.bl.y)};
+                m.tl = {std::min(p.tl.x, q.tl.x), std::min(p.tl.y, q.tl.y)};
+                m.tr = {std::max(p.tr.x, q.tr.x), std::min(p.tr.y, q.tr.y)};
+                m.br = {std::max(p.br.x, q.br.x), std::max(p.br.y, q.br.y)};
+                posts[a] = m;
+                posts.erase(posts.begin() + std::ptrdiff_t(b));
+            } else {
+                ++b;
+            }
+        }
+
+    for (const Quad& q : posts) {
+        Goalpost g;
+        g.left = int(std::ceil(q.left()));   // edges are at pixel borders (x - 0.5)
+        g.right = int(std::floor(q.right()));
+        g.top = int(std::lround(q.top()));
+        g.base_x = q.bottomCentre().x;
+        g.base_y = q.bottom();
+        // The base is where vertical scans see the post end: refine it downwards.
+        for (const ColourSegment& v : bb.vertical_transitions[TransitionClass::Goal]) {
+            const PixelPoint last = v.last();
+            if (last.x >= g.left && last.x <= g.right && last.y > g.base_y)
+                g.base_y = last.y;
+        }
+        g.bottom = int(std::lround(g.base_y));
+        // Above the kinematic horizon cannot be a post's foot.
+        if (g.base_y < bb.kinematic_horizon.yAt(g.base_x, w))
+            continue;
+        bb.goalposts.push_back(g);
+    }
+
+    // Two posts far enough apart are the left and right post of one goal. The original dropped
+    // both when they were closer; a distant goal's posts are, so we keep them as unknown.
+    if (bb.goalposts.size() == 2) {
+        auto& a = bb.goalposts[0];
+        auto& b = bb.goalposts[1];
+        if (std::max(a.left, b.left) - std::min(a.right, b.right) >= m_min_separation) {
+            const bool a_left = a.base_x < b.base_x;
+            a.side = a_left ? GoalpostSide::Left : GoalpostSide::Right;
+            b.side = a_left ? GoalpostSide::Right : GoalpostSide::Left;
+        }
+    }
+
+    if (auto* d = bb.debug.layer("goalposts.posts"))
+        for (const Goalpost& g : bb.goalposts) {
+            d->add(rectShape(g.left, g.top, g.right, g.bottom, debug_colour::kYellow,
+                             g.side != GoalpostSide::Unknown, 2));
+            d->add(DebugShape{ShapeKind::Points, {{g.base_x, g.base_y}}, debug_colour::kBlue, 5,
+                              false});
+        }
+}
+
+} // namespace fieldsight

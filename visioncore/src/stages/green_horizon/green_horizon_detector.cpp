@@ -1,0 +1,113 @@
+// Green horizon: column scan, upper outlier removal, upper convex hull.
+#include "stages/green_horizon/green_horizon_detector.h"
+
+#include "stages/common/stage_util.h"
+#include "visioncore/blackboard.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fieldsight {
+
+GreenHorizonDetector::GreenHorizonDetector()
+{
+    addParam(m_scan_spacing, {"scan_spacing", "px", "distance between scanned columns", 11, 1, 64});
+    addParam(m_min_green_pixels,
+             {"min_green_pixels", "px", "consecutive green pixels that start the field", 5, 1, 50});
+    addParam(m_upper_threshold_mult,
+             {"upper_threshold_mult", "sigma",
+              "drop scan points more than this many std devs above the mean", 2.5, 0, 10});
+}
+
+const StageInfo& GreenHorizonDetector::info() const
+{
+    static const StageInfo info{
+        "green_horizon",
+        "Green horizon",
+        false,
+        {"image", "lut", "kinematic_horizon"},
+        {"green_horizon", "gh_scan_points", "gh_thrown_points"},
+        {{"green_horizon.kinematic_horizon", "Kinematic horizon"},
+         {"green_horizon.scan_points", "Green horizon scan points"},
+         {"green_horizon.thrown_points", "Green horizon thrown points"},
+         {"green_horizon.hull", "Green horizon"}}};
+    return info;
+}
+
+void GreenHorizonDetector::run(Blackboard& bb)
+{
+    const int w = bb.width();
+    const int h = bb.height();
+    const int spacing = std::max(1, int(std::lround(m_scan_spacing)));
+    const int min_green = std::max(1, int(std::lround(m_min_green_pixels)));
+
+    auto& points = bb.gh_scan_points;
+    for (int x = 0; x < w; x += spacing) {
+        const int y0 = std::clamp(int(bb.kinematic_horizon.yAt(x, w)), 0, h - 1);
+        int run = 0;
+        for (int y = y0; y < h; ++y) {
+            if (bb.classify(x, y) != Colour::Green) {
+                run = 0;
+                continue;
+            }
+            if (++run == min_green) {
+                points.push_back({x, y - min_green + 1});
+                break;
+            }
+        }
+    }
+
+    if (auto* d = bb.debug.layer("green_horizon.kinematic_horizon"))
+        d->add(lineShape({0, bb.kinematic_horizon.y_left},
+                         {double(w - 1), bb.kinematic_horizon.y_right}, debug_colour::kBlue));
+    if (auto* d = bb.debug.layer("green_horizon.scan_points"))
+        d->add(pointsShape(points, debug_colour::kMagenta, 3));
+
+    if (points.size() < 2) {
+        // No field in view: the horizon is the bottom row (original behaviour; unlike the original
+        // the scan points above are this frame's, never stale ones).
+        bb.green_horizon.set({}, w, h);
+        return;
+    }
+
+    // Points unusually high in the image (green above the field: posters, shirts) are dropped.
+    double mean = 0;
+    for (const auto& p : points)
+        mean += p.y;
+    mean /= double(points.size());
+    double var = 0;
+    for (const auto& p : points)
+        var += (p.y - mean) * (p.y - mean);
+    const double sigma = std::sqrt(var / double(points.size()));
+    const double threshold = mean - m_upper_threshold_mult * sigma;
+
+    std::vector<PointF> hull;
+    hull.reserve(points.size());
+    for (const auto& p : points) {
+        if (p.y < threshold) {
+            bb.gh_thrown_points.push_back(p);
+            continue;
+        }
+        // Upper convex hull by Andrew's monotone chain: the envelope above every point, so dips
+        // where a robot hides the field edge are bridged. Points arrive sorted by x.
+        const PointF q{double(p.x), double(p.y)};
+        while (hull.size() >= 2) {
+            const PointF& o = hull[hull.size() - 2];
+            const PointF& a = hull.back();
+            const double cross = (a.x - o.x) * (q.y - o.y) - (a.y - o.y) * (q.x - o.x);
+            if (cross > 0)
+                break;
+            hull.pop_back();
+        }
+        hull.push_back(q);
+    }
+    bb.green_horizon.set(std::move(hull), w, h);
+
+    if (auto* d = bb.debug.layer("green_horizon.thrown_points"))
+        d->add(pointsShape(bb.gh_thrown_points, debug_colour::kRed, 3));
+    if (auto* d = bb.debug.layer("green_horizon.hull"))
+        d->add(DebugShape{ShapeKind::Polyline, bb.green_horizon.hull(), debug_colour::kMagenta, 2,
+                          false});
+}
+
+} // namespace fieldsight

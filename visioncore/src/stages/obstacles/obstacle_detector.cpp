@@ -1,0 +1,158 @@
+// Obstacle detection on the vertical segments.
+#include "stages/obstacles/obstacle_detector.h"
+
+#include "stages/common/stage_util.h"
+#include "visioncore/blackboard.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fieldsight {
+
+namespace {
+
+/// Colours that belong to the field or to objects the other stages detect.
+bool isFieldColour(Colour c)
+{
+    return c == Colour::Green || c == Colour::White || c == Colour::Orange ||
+           c == Colour::Yellow || c == Colour::YellowOrange || c == Colour::PinkOrange;
+}
+
+struct Run
+{
+    int x;
+    int top;
+    int bottom; ///< inclusive
+};
+
+struct Group
+{
+    int first_x, last_x, top, bottom, columns;
+    int last_top, last_bottom;
+};
+
+} // namespace
+
+ObstacleDetector::ObstacleDetector()
+{
+    addParam(m_min_run, {"min_run", "px", "shortest run of non-field colour on a scan line", 6, 1,
+                         240});
+    addParam(m_min_columns,
+             {"min_columns", "", "scan lines an obstacle must span", 2, 1, 100});
+    addParam(m_max_column_gap,
+             {"max_column_gap", "", "scan lines an obstacle may skip (a white stripe)", 1, 0, 10});
+    addParam(m_min_distance_from_horizon,
+             {"min_distance_from_horizon", "px",
+              "the run must reach this far below the green horizon", 0, 0, 100});
+}
+
+const StageInfo& ObstacleDetector::info() const
+{
+    static const StageInfo info{"obstacles",
+                                "Obstacles",
+                                true,
+                                {"vertical_filtered", "horizontal_filtered", "green_horizon"},
+                                {"obstacles", "obstacle_points"},
+                                {{"obstacles.points", "Obstacle points"},
+                                 {"obstacles.obstacles", "Obstacles"}}};
+    return info;
+}
+
+void ObstacleDetector::run(Blackboard& bb)
+{
+    const int min_run = int(std::lround(m_min_run));
+    const int h = bb.height();
+    const auto& region = bb.vertical_filtered;
+    if (region.size() == 0)
+        return;
+
+    // One run per scan line at most: the lowest long run of non-field colour, i.e. the nearest
+    // object (its bottom is where it stands).
+    std::vector<Run> runs;
+    int spacing = 1;
+    if (bb.vertical_scan_starts.size() >= 2)
+        spacing = std::max(1, bb.vertical_scan_starts[1].x - bb.vertical_scan_starts[0].x);
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        const Scan& scan = region[i];
+        bool have = false;
+        Run best{};
+        int top = -1;
+        int bottom = -1;
+        for (std::size_t k = 0; k <= scan.size(); ++k) {
+            const bool field = k == scan.size() || isFieldColour(scan[k].colour);
+            if (!field) {
+                if (top < 0)
+                    top = scan[k].y0;
+                bottom = scan[k].y1 - 1;
+                continue;
+            }
+            // A run ends at field colour; short field-coloured bits inside a robot (a white
+            // marking) are part of it when the run continues right after.
+            if (top >= 0 && k < scan.size() && scan[k].length() <= 3 && k + 1 < scan.size() &&
+                !isFieldColour(scan[k + 1].colour))
+                continue;
+            if (top >= 0 && bottom - top + 1 >= min_run &&
+                bottom - bb.green_horizon.yAt(scan.empty() ? 0 : scan[0].x0) >=
+                    m_min_distance_from_horizon) {
+                best = {scan[0].x0, top, bottom};
+                have = true;
+            }
+            top = -1;
+        }
+        // A run reaching the image bottom has no visible foot: still an obstacle (very near).
+        if (have) {
+            runs.push_back(best);
+            bb.obstacle_points.push_back({best.x, best.bottom});
+        }
+    }
+    if (auto* d = bb.debug.layer("obstacles.points"))
+        d->add(pointsShape(bb.obstacle_points, debug_colour::kCyan, 3));
+
+    // Group runs on neighbouring scan lines that overlap vertically.
+    const int max_step = spacing * (1 + int(std::lround(m_max_column_gap)));
+    std::vector<Group> groups;
+    for (const Run& r : runs) {
+        if (!groups.empty()) {
+            Group& g = groups.back();
+            const bool adjacent = r.x - g.last_x <= max_step;
+            const bool overlaps = r.top <= g.last_bottom && g.last_top <= r.bottom;
+            if (adjacent && overlaps) {
+                g.last_x = r.x;
+                g.top = std::min(g.top, r.top);
+                g.bottom = std::max(g.bottom, r.bottom);
+                g.last_top = r.top;
+                g.last_bottom = r.bottom;
+                ++g.columns;
+                continue;
+            }
+        }
+        groups.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
+    }
+
+    // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
+    // near its foot (it ends somewhere between two scan lines).
+    const auto& rows = bb.horizontal_scan_ys;
+    for (const Group& g : groups) {
+        if (g.columns < int(std::lround(m_min_columns)))
+            continue;
+        Obstacle o{std::max(0, g.first_x - spacing / 2), std::min(bb.width() - 1, g.last_x + spacing / 2),
+                   g.top, std::min(g.bottom, h - 1)};
+        for (std::size_t i = 0; i < rows.size() && i < bb.horizontal_filtered.size(); ++i) {
+            const int y = rows[i];
+            if (y > g.bottom || y < g.bottom - 3 * spacing - 2 || y < g.top)
+                continue;
+            for (const ColourSegment& s : bb.horizontal_filtered[i]) {
+                if (isFieldColour(s.colour) || s.x1 <= g.first_x || s.x0 > g.last_x)
+                    continue;
+                o.left = std::min(o.left, std::max(int(s.x0), g.first_x - spacing));
+                o.right = std::max(o.right, std::min(s.x1 - 1, g.last_x + spacing));
+            }
+        }
+        bb.obstacles.push_back(o);
+    }
+    if (auto* d = bb.debug.layer("obstacles.obstacles"))
+        for (const Obstacle& o : bb.obstacles)
+            d->add(rectShape(o.left, o.top, o.right, o.bottom, debug_colour::kWhite, false, 2));
+}
+
+} // namespace fieldsight

@@ -1,0 +1,110 @@
+// Scanline classification: the hot loop of the pipeline (every LUT lookup the system makes).
+#include "stages/scanlines/scanline_classifier.h"
+
+#include "stages/common/stage_util.h"
+#include "visioncore/blackboard.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fieldsight {
+
+namespace {
+
+inline std::uint8_t lookup(const std::uint8_t* lut, const std::uint8_t* px)
+{
+    return lut[ColourLut::index(px[0], px[1], px[2])];
+}
+
+/// Run-length encodes `count` pixels starting at `px`, `stride` bytes apart, into `scan`. Segment
+/// ends are exclusive; `x0,y0` is the first pixel and (dx, dy) the step.
+void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_t stride,
+                  int count, int x0, int y0, int dx, int dy, Scan& scan)
+{
+    if (count <= 0)
+        return;
+    std::uint8_t current = lookup(lut, px);
+    int start = 0;
+    for (int i = 1; i < count; ++i) {
+        px += stride;
+        const std::uint8_t c = lookup(lut, px);
+        if (c == current)
+            continue;
+        scan.push_back({std::int16_t(x0 + start * dx), std::int16_t(y0 + start * dy),
+                        std::int16_t(x0 + i * dx), std::int16_t(y0 + i * dy), Colour(current)});
+        current = c;
+        start = i;
+    }
+    scan.push_back({std::int16_t(x0 + start * dx), std::int16_t(y0 + start * dy),
+                    std::int16_t(x0 + count * dx), std::int16_t(y0 + count * dy),
+                    Colour(current)});
+}
+
+} // namespace
+
+ScanlineClassifier::ScanlineClassifier()
+{
+    addParam(m_horizontal_spacing,
+             {"horizontal_spacing", "px", "rows between horizontal scan lines", 4, 1, 64});
+    addParam(m_vertical_spacing,
+             {"vertical_spacing", "px", "columns between vertical scan lines", 4, 1, 64});
+}
+
+const StageInfo& ScanlineClassifier::info() const
+{
+    static const StageInfo info{
+        "scanlines",
+        "Scanline classifier",
+        false,
+        {"image", "lut", "green_horizon"},
+        {"horizontal_scan_ys", "vertical_scan_starts", "horizontal_segments", "vertical_segments"},
+        {{"scanlines.horizontal", "Horizontal scan lines"},
+         {"scanlines.vertical", "Vertical scan lines"},
+         {"scanlines.segments", "Segments"}}};
+    return info;
+}
+
+void ScanlineClassifier::run(Blackboard& bb)
+{
+    const cv::Mat& image = bb.image();
+    const int w = image.cols;
+    const int h = image.rows;
+    const std::uint8_t* lut = bb.lut().data();
+    const int hs = std::max(1, int(std::lround(m_horizontal_spacing)));
+    const int vs = std::max(1, int(std::lround(m_vertical_spacing)));
+
+    // Horizontal lines cover the whole image (goalposts rise above the green horizon), from the
+    // bottom row up, as in the original.
+    for (int y = h - 1; y >= 0; y -= hs) {
+        bb.horizontal_scan_ys.push_back(y);
+        classifyLine(lut, image.ptr<std::uint8_t>(y), 3, w, 0, y, 1, 0,
+                     bb.horizontal_segments.addScan());
+    }
+    // Vertical lines only below the green horizon.
+    const std::ptrdiff_t step = std::ptrdiff_t(image.step[0]);
+    for (int x = 0; x < w; x += vs) {
+        const int y0 = bb.green_horizon.yAt(x);
+        bb.vertical_scan_starts.push_back({x, y0});
+        classifyLine(lut, image.ptr<std::uint8_t>(y0) + 3 * x, step, h - y0, x, y0, 0, 1,
+                     bb.vertical_segments.addScan());
+    }
+
+    if (auto* d = bb.debug.layer("scanlines.horizontal"))
+        for (int y : bb.horizontal_scan_ys)
+            d->add(lineShape({0, double(y)}, {double(w - 1), double(y)}, debug_colour::kGrey));
+    if (auto* d = bb.debug.layer("scanlines.vertical"))
+        for (const PixelPoint& p : bb.vertical_scan_starts)
+            d->add(lineShape({double(p.x), double(p.y)}, {double(p.x), double(h - 1)},
+                             debug_colour::kGrey));
+    if (auto* d = bb.debug.layer("scanlines.segments")) {
+        for (const SegmentedRegion* region : {&bb.horizontal_segments, &bb.vertical_segments})
+            for (std::size_t i = 0; i < region->size(); ++i)
+                for (const ColourSegment& s : (*region)[i]) {
+                    const PixelPoint last = s.last();
+                    d->add(lineShape({double(s.x0), double(s.y0)}, {double(last.x), double(last.y)},
+                                     colourDisplayRgb(s.colour)));
+                }
+    }
+}
+
+} // namespace fieldsight
