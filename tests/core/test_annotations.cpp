@@ -1,0 +1,150 @@
+// Ground-truth annotation files (SPEC §5.2): round trip, derived goalpost base, bad input.
+#include "visioncore/annotations.h"
+
+#include <QtTest>
+
+#include <fstream>
+
+using namespace fieldsight;
+
+namespace {
+
+const char* kSpecExample = R"({"format": "fieldsight-annotations/1",
+ "frames": {"frame_000000.png": {"done": true,
+   "balls": [{"x": 207.7, "y": 107.9, "radius": 6.2}],
+   "goalposts": [{"left": 131, "right": 139, "top": 0, "bottom": 61}],
+   "obstacles": [{"left": 70, "right": 99, "top": 26, "bottom": 80}],
+   "field_boundary": [[0, 62], [319, 58]],
+   "field_lines": [{"x1": 10, "y1": 200, "x2": 300, "y2": 181}]}}})";
+
+} // namespace
+
+class TestAnnotations : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void readsTheSpecExample()
+    {
+        auto parsed = Annotations::fromJson(kSpecExample, "annotations.json");
+        QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
+        const Annotations& a = parsed.value();
+        QCOMPARE(a.frames.size(), std::size_t(1));
+        const FrameAnnotation& f = a.frames.at("frame_000000.png");
+        QVERIFY(f.done);
+        QCOMPARE(f.balls.size(), std::size_t(1));
+        QCOMPARE(f.balls[0].x, 207.7);
+        QCOMPARE(f.balls[0].y, 107.9);
+        QCOMPARE(f.balls[0].radius, 6.2);
+        QCOMPARE(f.goalposts.size(), std::size_t(1));
+        QCOMPARE(f.goalposts[0].left, 131);
+        QCOMPARE(f.goalposts[0].right, 139);
+        QCOMPARE(f.goalposts[0].top, 0);
+        QCOMPARE(f.goalposts[0].bottom, 61);
+        QCOMPARE(f.goalposts[0].base_x, 135.0); // (left + right) / 2
+        QCOMPARE(f.goalposts[0].base_y, 61.0);  // bottom
+        QCOMPARE(f.obstacles.size(), std::size_t(1));
+        QCOMPARE(f.obstacles[0].right, 99);
+        QCOMPARE(f.obstacles[0].bottom, 80);
+        QCOMPARE(f.field_boundary, (std::vector<PointF>{{0, 62}, {319, 58}}));
+        QCOMPARE(f.field_lines.size(), std::size_t(1));
+        QCOMPARE(f.field_lines[0].y2, 181.0);
+    }
+
+    void saveThenLoadRoundTrips()
+    {
+        Annotations a;
+        FrameAnnotation& f = a.frames["f001.png"];
+        f.done = true;
+        f.balls.push_back({1.0 / 3.0, 2.5, 6.125});
+        Goalpost post;
+        post.left = 10;
+        post.right = 13;
+        post.top = 2;
+        post.bottom = 90;
+        f.goalposts.push_back(post);
+        f.obstacles.push_back({5, 6, 7, 8});
+        f.field_boundary = {{0, 60.5}, {100, 58.25}, {319, 61}};
+        f.field_lines.push_back({1, 2, 3, 4});
+        a.frames["f000.png"].done = false; // a frame with nothing yet
+
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("annotations.json").toStdString();
+        QVERIFY(a.save(path).ok());
+        auto loaded = Annotations::load(path);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
+        const Annotations& b = loaded.value();
+        QCOMPARE(b.frames.size(), std::size_t(2));
+        QVERIFY(!b.frames.at("f000.png").done);
+        const FrameAnnotation& g = b.frames.at("f001.png");
+        QVERIFY(g.done);
+        QCOMPARE(g.balls.size(), std::size_t(1));
+        QCOMPARE(g.balls[0].x, 1.0 / 3.0); // doubles survive exactly
+        QCOMPARE(g.balls[0].radius, 6.125);
+        QCOMPARE(g.goalposts[0].left, 10);
+        QCOMPARE(g.goalposts[0].bottom, 90);
+        QCOMPARE(g.goalposts[0].base_x, 11.5);
+        QCOMPARE(g.goalposts[0].base_y, 90.0);
+        QCOMPARE(g.obstacles[0].left, 5);
+        QCOMPARE(g.obstacles[0].bottom, 8);
+        QCOMPARE(g.field_boundary, f.field_boundary);
+        QCOMPARE(g.field_lines[0].x2, 3.0);
+        // Saving what was loaded gives the same text.
+        QCOMPARE(b.toJson(), a.toJson());
+        QVERIFY(a.toJson().find("\"format\": \"fieldsight-annotations/1\"") != std::string::npos);
+    }
+
+    void rejectsWrongFormatString()
+    {
+        auto parsed = Annotations::fromJson(R"({"format": "fieldsight-results/1", "frames": {}})",
+                                            "/x/annotations.json");
+        QVERIFY(!parsed.ok());
+        QCOMPARE(parsed.error().message,
+                 std::string("/x/annotations.json: unsupported format \"fieldsight-results/1\" "
+                             "(expected \"fieldsight-annotations/1\")"));
+        auto missing = Annotations::fromJson(R"({"frames": {}})", "a.json");
+        QVERIFY(!missing.ok());
+        QCOMPARE(missing.error().message,
+                 std::string("a.json: missing \"format\": \"fieldsight-annotations/1\""));
+    }
+
+    void rejectsWrongTypesNamingTheField()
+    {
+        const std::pair<const char*, const char*> cases[] = {
+            {R"({"f.png": {"done": "yes"}})", "frames[\"f.png\"].done must be true or false"},
+            {R"({"f.png": {"balls": [{"x": 1, "y": "2", "radius": 3}]}})",
+             "frames[\"f.png\"].balls[0].y must be a number"},
+            {R"({"f.png": {"goalposts": {"left": 1}}})",
+             "frames[\"f.png\"].goalposts must be an array"},
+            {R"({"f.png": {"obstacles": [{"left": 1, "right": 2, "top": 3}]}})",
+             "frames[\"f.png\"].obstacles[0].bottom must be a number"},
+            {R"({"f.png": {"field_boundary": [[0, 1], [2]]}})",
+             "frames[\"f.png\"].field_boundary[1] must be [x, y]"},
+            {R"({"f.png": {"field_lines": [5]}})",
+             "frames[\"f.png\"].field_lines[0] must be an object"},
+            {R"({"f.png": 3})", "frames[\"f.png\"] must be an object"},
+        };
+        for (const auto& [frames, problem] : cases) {
+            const std::string text =
+                std::string(R"({"format": "fieldsight-annotations/1", "frames": )") + frames + "}";
+            auto parsed = Annotations::fromJson(text, "ann.json");
+            QVERIFY(!parsed.ok());
+            QCOMPARE(parsed.error().message, std::string("ann.json: ") + problem);
+        }
+        auto not_json = Annotations::fromJson("{", "ann.json");
+        QVERIFY(!not_json.ok());
+        QCOMPARE(not_json.error().message, std::string("ann.json: not valid JSON"));
+    }
+
+    void loadingAMissingFileNamesIt()
+    {
+        auto loaded = Annotations::load("/nonexistent/annotations.json");
+        QVERIFY(!loaded.ok());
+        QCOMPARE(
+            loaded.error().message,
+            std::string("cannot read /nonexistent/annotations.json: No such file or directory"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestAnnotations)
+#include "test_annotations.moc"

@@ -1,0 +1,208 @@
+// The native .lut format (SPEC §3) and atomic saving.
+#include "visioncore/atomic_file.h"
+#include "visioncore/colour_lut.h"
+
+#include <QtTest>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+
+#include <sys/resource.h>
+
+using namespace fieldsight;
+
+namespace {
+
+std::vector<std::uint8_t> fileBytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes)
+{
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+/// A LUT with a recognisable pattern in every class.
+ColourLut patternLut()
+{
+    ColourLut lut;
+    for (std::size_t i = 0; i < ColourLut::kCells; i += 7)
+        lut.setCell(i, Colour((i / 7) % kColourCount));
+    return lut;
+}
+
+std::size_t filesIn(const std::string& folder)
+{
+    return std::size_t(std::distance(std::filesystem::directory_iterator(folder),
+                                     std::filesystem::directory_iterator()));
+}
+
+} // namespace
+
+class TestColourLut : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void newLutIsAllUnclassified()
+    {
+        const ColourLut lut;
+        QCOMPARE(lut.classify(255, 255, 255), Colour::Unclassified);
+        const std::uint8_t* cells = lut.data();
+        QVERIFY(std::all_of(cells, cells + ColourLut::kCells, [](auto v) { return v == 0; }));
+    }
+
+    void indexUsesSevenBitsYSlowestCrFastest()
+    {
+        QCOMPARE(ColourLut::index(0, 0, 1), std::size_t(0));
+        QCOMPARE(ColourLut::index(0, 0, 2), std::size_t(1));
+        QCOMPARE(ColourLut::index(0, 2, 0), std::size_t(128));
+        QCOMPARE(ColourLut::index(2, 0, 0), std::size_t(16384));
+        QCOMPARE(ColourLut::index(255, 255, 255), ColourLut::kCells - 1);
+    }
+
+    void saveThenLoadIsByteIdentical()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("table.lut").toStdString();
+        const ColourLut lut = patternLut();
+        QVERIFY(lut.save(path).ok());
+
+        const std::vector<std::uint8_t> bytes = fileBytes(path);
+        QCOMPARE(bytes.size(), ColourLut::kCells);
+        QVERIFY(std::equal(bytes.begin(), bytes.end(), lut.data()));
+
+        auto loaded = ColourLut::load(path);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
+        QVERIFY(loaded.value() == lut);
+        QCOMPARE(filesIn(dir.path().toStdString()), std::size_t(1)); // no temporary left over
+    }
+
+    void rejectsLutOfWrongSize()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("short.lut").toStdString();
+        writeBytes(path, std::vector<std::uint8_t>(1000, 0));
+        auto loaded = ColourLut::load(path);
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error().message,
+                 path + ": wrong size: 1000 bytes, expected 2097152 (128x128x128)");
+
+        auto from_bytes =
+            ColourLut::fromBytes(std::vector<std::uint8_t>(ColourLut::kCells + 1), "memory.lut");
+        QVERIFY(!from_bytes.ok());
+        QCOMPARE(
+            from_bytes.error().message,
+            std::string("memory.lut: wrong size: 2097153 bytes, expected 2097152 (128x128x128)"));
+    }
+
+    void rejectsCellValueAboveTenNamingTheFirstOffset()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("bad.lut").toStdString();
+        std::vector<std::uint8_t> bytes(ColourLut::kCells, 2);
+        bytes[123456] = 11;
+        bytes[200000] = 200;
+        writeBytes(path, bytes);
+        auto loaded = ColourLut::load(path);
+        QVERIFY(!loaded.ok());
+        const std::string& message = loaded.error().message;
+        QVERIFY2(message.rfind(path + ": ", 0) == 0, message.c_str());
+        QVERIFY2(message.find("invalid colour id 11 at offset 123456") != std::string::npos,
+                 message.c_str());
+        QVERIFY2(message.find("2 bad cells") != std::string::npos, message.c_str());
+    }
+
+    void acceptsEveryValidIdAtTheBoundary()
+    {
+        std::vector<std::uint8_t> bytes(ColourLut::kCells, 10);
+        auto lut = ColourLut::fromBytes(bytes, "tens");
+        QVERIFY(lut.ok());
+        QCOMPARE(lut.value().cell(ColourLut::kCells - 1), Colour::ShadowBlue);
+    }
+
+    void loadingAMissingFileNamesIt()
+    {
+        auto loaded = ColourLut::load("/nonexistent/folder/x.lut");
+        QVERIFY(!loaded.ok());
+        QCOMPARE(loaded.error().message,
+                 std::string("cannot read /nonexistent/folder/x.lut: No such file or directory"));
+    }
+
+    void saveIntoMissingFolderFailsWithFileName()
+    {
+        auto status = patternLut().save("/nonexistent/folder/x.lut");
+        QVERIFY(!status.ok());
+        QCOMPARE(status.error().message,
+                 std::string("cannot write /nonexistent/folder/x.lut: No such file or directory"));
+    }
+
+    void failedSaveIntoUnwritableFolderLeavesOldFileIntact()
+    {
+        if (::geteuid() == 0)
+            QSKIP("root ignores folder permissions; see failedSaveMidWriteLeavesOldFileIntact");
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("table.lut").toStdString();
+        const ColourLut old_lut = patternLut();
+        QVERIFY(old_lut.save(path).ok());
+        QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner);
+        auto status = ColourLut().save(path);
+        QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        QVERIFY(!status.ok());
+        QCOMPARE(status.error().message, "cannot write " + path + ": Permission denied");
+        QVERIFY(ColourLut::load(path).value() == old_lut);
+    }
+
+    void failedSaveMidWriteLeavesOldFileIntact()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("table.lut").toStdString();
+        const ColourLut old_lut = patternLut();
+        QVERIFY(old_lut.save(path).ok());
+
+        // Make the write itself fail half-way: a 1 MB file size limit, SIGXFSZ ignored.
+        rlimit saved{};
+        QVERIFY(::getrlimit(RLIMIT_FSIZE, &saved) == 0);
+        const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+        rlimit small = saved;
+        small.rlim_cur = 1 << 20;
+        QVERIFY(::setrlimit(RLIMIT_FSIZE, &small) == 0);
+        const Status status = ColourLut().save(path);
+        ::setrlimit(RLIMIT_FSIZE, &saved);
+        std::signal(SIGXFSZ, old_handler);
+
+        QVERIFY(!status.ok());
+        QCOMPARE(status.error().message, "cannot write " + path + ": File too large");
+        QVERIFY(ColourLut::load(path).value() == old_lut);
+        QCOMPARE(filesIn(dir.path().toStdString()), std::size_t(1)); // temporary removed
+    }
+
+    void saveOverADirectoryFails()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("sub").toStdString();
+        QVERIFY(QDir(dir.path()).mkdir("sub"));
+        auto status = patternLut().save(path);
+        QVERIFY(!status.ok());
+        QCOMPARE(status.error().message, "cannot write " + path + ": Is a directory");
+        QVERIFY(QFileInfo(QString::fromStdString(path)).isDir());
+    }
+
+    void readWholeFileReturnsExactBytes()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("t.bin").toStdString();
+        const std::string text("a\0b\nc", 5);
+        QVERIFY(writeFileAtomically(path, text).ok());
+        auto back = readWholeFile(path);
+        QVERIFY(back.ok());
+        QCOMPARE(back.value(), text);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestColourLut)
+#include "test_colour_lut.moc"

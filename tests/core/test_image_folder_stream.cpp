@@ -1,0 +1,254 @@
+// Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
+#include "visioncore/stream_data_wrapper.h"
+#include "visioncore/stream_reader.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include <QtTest>
+
+#include <fstream>
+
+using namespace fieldsight;
+
+namespace {
+
+void writeText(const QTemporaryDir& dir, const char* name, const std::string& text)
+{
+    std::ofstream out(dir.filePath(name).toStdString(), std::ios::binary);
+    out << text;
+}
+
+/// Writes a PNG whose pixels are given as R, G, B (the file's own channel order).
+void writePngRgb(const QTemporaryDir& dir, const char* name, int width, int height,
+                 const std::vector<cv::Vec3b>& rgb_pixels)
+{
+    cv::Mat bgr(height, width, CV_8UC3);
+    for (int i = 0; i < width * height; ++i) {
+        const cv::Vec3b p = rgb_pixels[std::size_t(i) % rgb_pixels.size()];
+        bgr.at<cv::Vec3b>(i / width, i % width) = {p[2], p[1], p[0]};
+    }
+    QVERIFY(cv::imwrite(dir.filePath(name).toStdString(), bgr));
+}
+
+std::unique_ptr<StreamReader> openOk(const QTemporaryDir& dir)
+{
+    auto opened = openStream(dir.path().toStdString());
+    if (!opened.ok())
+        qWarning("%s", opened.error().message.c_str());
+    return opened.ok() ? std::move(opened).value() : nullptr;
+}
+
+std::string openError(const QTemporaryDir& dir)
+{
+    auto opened = openStream(dir.path().toStdString());
+    return opened.ok() ? std::string("(opened)") : opened.error().message;
+}
+
+} // namespace
+
+class TestImageFolderStream : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void rgbFramesBecomeBt601FullRangeYCbCr()
+    {
+        QTemporaryDir dir;
+        // R, G, B of red, green, blue, white, black, mid grey
+        writePngRgb(
+            dir, "a.png", 6, 1,
+            {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}, {0, 0, 0}, {128, 128, 128}});
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        QCOMPARE(reader->info().kind, StreamKind::ImageFolder);
+        auto frame = reader->read(0);
+        QVERIFY(frame.ok());
+        const cv::Mat& m = frame.value().ycbcr;
+        QCOMPARE(m.type(), CV_8UC3);
+        // Y = .299R + .587G + .114B, Cb = 128 + .564(B - Y), Cr = 128 + .713(R - Y), stored Y, Cb,
+        // Cr, rounded as OpenCV's fixed-point COLOR_BGR2YCrCb does (green's Cb 43.58 gives 43).
+        QCOMPARE(m.at<cv::Vec3b>(0, 0), (cv::Vec3b{76, 85, 255}));
+        QCOMPARE(m.at<cv::Vec3b>(0, 1), (cv::Vec3b{150, 43, 21}));
+        QCOMPARE(m.at<cv::Vec3b>(0, 2), (cv::Vec3b{29, 255, 107}));
+        QCOMPARE(m.at<cv::Vec3b>(0, 3), (cv::Vec3b{255, 128, 128}));
+        QCOMPARE(m.at<cv::Vec3b>(0, 4), (cv::Vec3b{0, 128, 128}));
+        QCOMPARE(m.at<cv::Vec3b>(0, 5), (cv::Vec3b{128, 128, 128}));
+    }
+
+    void ycbcrFramesKeepTheirChannels()
+    {
+        QTemporaryDir dir;
+        writePngRgb(dir, "a.png", 2, 1, {{10, 20, 30}, {200, 100, 50}});
+        writeText(dir, "stream.json",
+                  R"({"format": "fieldsight-stream/1", "pixel_format": "ycbcr"})");
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        auto frame = reader->read(0);
+        QVERIFY(frame.ok());
+        QCOMPARE(frame.value().ycbcr.at<cv::Vec3b>(0, 0), (cv::Vec3b{10, 20, 30}));
+        QCOMPARE(frame.value().ycbcr.at<cv::Vec3b>(0, 1), (cv::Vec3b{200, 100, 50}));
+    }
+
+    void manifestSuppliesHorizonTimestampLutAndFieldOfView()
+    {
+        QTemporaryDir dir;
+        writePngRgb(dir, "frame_000000.png", 4, 3, {{0, 0, 0}});
+        writePngRgb(dir, "frame_000001.png", 4, 3, {{0, 0, 0}});
+        writeText(dir, "stream.json", R"({"format": "fieldsight-stream/1",
+            "lut": "tables/my.lut", "camera": {"fov_deg": [62.8, 48.8]},
+            "frames": [{"file": "frame_000001.png", "timestamp_ms": 33.5, "horizon": [29.9, 31.2]},
+                       {"file": "frame_000000.png", "timestamp_ms": 0}]})");
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        const StreamInfo& info = reader->info();
+        QCOMPARE(info.width, 4);
+        QCOMPARE(info.height, 3);
+        QCOMPARE(info.frame_count, std::size_t(2));
+        QCOMPARE(info.default_lut, dir.filePath("tables/my.lut").toStdString());
+        QVERIFY(info.fov_deg.has_value());
+        QCOMPARE((*info.fov_deg)[0], 62.8);
+        QCOMPARE((*info.fov_deg)[1], 48.8);
+
+        auto first = reader->read(0);
+        QVERIFY(first.ok());
+        QCOMPARE(first.value().name, std::string("frame_000000.png"));
+        QVERIFY(!first.value().horizon.has_value());
+        auto second = reader->read(1);
+        QVERIFY(second.ok());
+        QCOMPARE(second.value().timestamp_ms, 33.5);
+        QVERIFY(second.value().horizon.has_value());
+        QCOMPARE(*second.value().horizon, (Horizon{29.9, 31.2}));
+
+        StreamDataWrapper wrapper(std::move(reader), ColourLut());
+        QVERIFY(wrapper.seek(1).ok());
+        QCOMPARE(wrapper.kinematicHorizon(), (Horizon{29.9, 31.2}));
+        QVERIFY(wrapper.seek(0).ok());
+        QCOMPARE(wrapper.kinematicHorizon(), (Horizon{0, 0}));
+    }
+
+    void defaultLutInTheFolderIsFoundWithoutManifest()
+    {
+        QTemporaryDir dir;
+        writePngRgb(dir, "a.png", 2, 2, {{0, 0, 0}});
+        QVERIFY(openOk(dir)->info().default_lut.empty());
+        QVERIFY(ColourLut().save(dir.filePath("default.lut").toStdString()).ok());
+        QCOMPARE(openOk(dir)->info().default_lut, dir.filePath("default.lut").toStdString());
+    }
+
+    void framesAreInNaturalFileNameOrder()
+    {
+        QTemporaryDir dir;
+        for (const char* name :
+             {"frame_10.png", "frame_2.png", "frame_1.bmp", "frame_02b.jpg", "Frame_3.JPEG"})
+            writePngRgb(dir, name, 2, 2, {{0, 0, 0}});
+        writeText(dir, "notes.txt", "not a frame");
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        QCOMPARE(reader->info().frame_count, std::size_t(5));
+        QStringList names;
+        for (std::size_t i = 0; i < reader->info().frame_count; ++i)
+            names << QString::fromStdString(reader->frameName(i));
+        QCOMPARE(names, (QStringList{"Frame_3.JPEG", "frame_1.bmp", "frame_2.png", "frame_02b.jpg",
+                                     "frame_10.png"}));
+    }
+
+    void emptyFolderIsAnError()
+    {
+        QTemporaryDir dir;
+        writeText(dir, "readme.txt", "nothing here");
+        QCOMPARE(openError(dir),
+                 dir.path().toStdString() + ": no images in the folder (.png, .jpg, .jpeg, .bmp)");
+    }
+
+    void undecodableImageIsAnErrorNamingTheFile()
+    {
+        QTemporaryDir dir;
+        writePngRgb(dir, "f1.png", 2, 2, {{0, 0, 0}});
+        writeText(dir, "f2.png", "this is not a PNG");
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        QVERIFY(reader->read(0).ok());
+        auto bad = reader->read(1);
+        QVERIFY(!bad.ok());
+        QCOMPARE(bad.error().message,
+                 "cannot read " + dir.filePath("f2.png").toStdString() + ": not a decodable image");
+
+        // When the first frame is bad, opening already fails.
+        QTemporaryDir dir2;
+        writeText(dir2, "f0.png", "garbage");
+        writePngRgb(dir2, "f1.png", 2, 2, {{0, 0, 0}});
+        QCOMPARE(openError(dir2), "cannot read " + dir2.filePath("f0.png").toStdString() +
+                                      ": not a decodable image");
+    }
+
+    void frameOfAnotherSizeIsAnError()
+    {
+        QTemporaryDir dir;
+        writePngRgb(dir, "f1.png", 4, 4, {{0, 0, 0}});
+        writePngRgb(dir, "f2.png", 5, 4, {{0, 0, 0}});
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        auto bad = reader->read(1);
+        QVERIFY(!bad.ok());
+        QCOMPARE(bad.error().message, dir.filePath("f2.png").toStdString() +
+                                          ": frame size 5x4 differs from the stream's 4x4");
+    }
+
+    void badManifestIsAnErrorNamingStreamJson()
+    {
+        const std::string json_name = "stream.json";
+        struct Case
+        {
+            const char* text;
+            const char* problem;
+        };
+        const Case cases[] = {
+            {"{ \"pixel_format\": ", "not valid JSON"},
+            {R"({"pixel_format": 3})", "\"pixel_format\" must be \"rgb\" or \"ycbcr\""},
+            {R"({"pixel_format": "yuv"})", "\"pixel_format\" must be \"rgb\" or \"ycbcr\""},
+            {R"({"format": "fieldsight-stream/9"})",
+             "unsupported format \"fieldsight-stream/9\" (expected \"fieldsight-stream/1\")"},
+            {R"({"lut": 5})", "\"lut\" must be a string (a file name relative to the folder)"},
+            {R"({"camera": {"fov_deg": [60]}})",
+             "\"camera.fov_deg\" must be an array of two numbers"},
+            {R"({"frames": [{"file": "a.png", "horizon": "high"}]})",
+             "frames[0].horizon must be [y at x = 0, y at x = width-1]"},
+            {R"({"frames": [{"file": "a.png", "timestamp_ms": "0"}]})",
+             "frames[0].timestamp_ms must be a number"},
+            {R"({"frames": [{"file": "a.png"}, {"name": "b.png"}]})",
+             "frames[1].file must be a string"},
+            {R"([1, 2])", "expected a JSON object at the top level"},
+        };
+        for (const Case& c : cases) {
+            QTemporaryDir dir;
+            writePngRgb(dir, "a.png", 2, 2, {{0, 0, 0}});
+            writeText(dir, "stream.json", c.text);
+            QCOMPARE(openError(dir), dir.filePath("stream.json").toStdString() + ": " + c.problem);
+        }
+    }
+
+    void manifestNamingAMissingFrameIsAnError()
+    {
+        QTemporaryDir dir;
+        writePngRgb(dir, "a.png", 2, 2, {{0, 0, 0}});
+        writeText(dir, "stream.json", R"({"frames": [{"file": "b.png"}]})");
+        QCOMPARE(openError(dir), dir.filePath("stream.json").toStdString() +
+                                     ": frame \"b.png\" is not an image in the folder");
+    }
+
+    void missingPathIsAnError()
+    {
+        auto opened = openStream("/nonexistent/stream");
+        QVERIFY(!opened.ok());
+        QCOMPARE(opened.error().message,
+                 std::string("/nonexistent/stream: no such file or folder"));
+        auto camera = openStream("camera:x");
+        QVERIFY(!camera.ok());
+        QCOMPARE(camera.error().message,
+                 std::string("camera:x: expected camera:N with N a camera number (0, 1, ...)"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestImageFolderStream)
+#include "test_image_folder_stream.moc"

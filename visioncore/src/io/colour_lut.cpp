@@ -1,0 +1,53 @@
+// The native .lut format (SPEC §3): 2,097,152 raw colour ids, validated on load, saved atomically.
+#include "visioncore/colour_lut.h"
+
+#include "visioncore/atomic_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+namespace fieldsight {
+
+ColourLut::ColourLut() : m_cells(kCells, std::uint8_t(Colour::Unclassified)) {}
+
+Result<ColourLut> ColourLut::fromBytes(std::vector<std::uint8_t> bytes, const std::string& source)
+{
+    if (bytes.size() != kCells)
+        return Error{source + ": wrong size: " + std::to_string(bytes.size()) +
+                     " bytes, expected " + std::to_string(kCells) + " (128x128x128)"};
+    const auto bad = std::find_if(bytes.begin(), bytes.end(),
+                                  [](std::uint8_t v) { return !isValidColourId(v); });
+    if (bad != bytes.end()) {
+        const auto count =
+            std::count_if(bad, bytes.end(), [](std::uint8_t v) { return !isValidColourId(v); });
+        return Error{source + ": invalid colour id " + std::to_string(int(*bad)) + " at offset " +
+                     std::to_string(bad - bytes.begin()) + " (ids are 0-10; " +
+                     std::to_string(count) + " bad cells)"};
+    }
+    ColourLut lut;
+    lut.m_cells = std::move(bytes);
+    return lut;
+}
+
+Result<ColourLut> ColourLut::load(const std::string& path)
+{
+    // Check the size before reading, so that pointing at a huge file fails fast.
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size != kCells)
+        return Error{path + ": wrong size: " + std::to_string(size) + " bytes, expected " +
+                     std::to_string(kCells) + " (128x128x128)"};
+    auto text = readWholeFile(path);
+    if (!text)
+        return text.error();
+    const std::string& s = text.value();
+    return fromBytes(std::vector<std::uint8_t>(s.begin(), s.end()), path);
+}
+
+Status ColourLut::save(const std::string& path) const
+{
+    return writeFileAtomically(path, m_cells.data(), m_cells.size());
+}
+
+} // namespace fieldsight

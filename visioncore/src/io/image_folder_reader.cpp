@@ -1,0 +1,344 @@
+// Image-folder streams (SPEC §4): frames in natural file-name order plus an optional stream.json.
+#include "io/stream_readers.h"
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <system_error>
+
+#include "visioncore/atomic_file.h"
+
+namespace fieldsight::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kManifestName = "stream.json";
+constexpr const char* kManifestFormat = "fieldsight-stream/1";
+
+enum class PixelFormat { Rgb, YCbCr };
+
+struct FrameMeta
+{
+    std::optional<double> timestamp_ms;
+    std::optional<Horizon> horizon;
+};
+
+struct Manifest
+{
+    PixelFormat pixel_format = PixelFormat::Rgb;
+    std::optional<std::string> lut;
+    std::optional<std::array<double, 2>> fov_deg;
+    std::map<std::string, FrameMeta> frames; ///< by file name
+};
+
+std::string lowercase(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+bool isImageFile(const fs::path& path)
+{
+    const std::string ext = lowercase(path.extension().string());
+    return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp";
+}
+
+bool isDigit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/// Natural order: digit runs compare as numbers, so "frame_2" sorts before "frame_10".
+bool naturalLess(const std::string& a, const std::string& b)
+{
+    std::size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (isDigit(a[i]) && isDigit(b[j])) {
+            std::size_t ie = i, je = j;
+            while (ie < a.size() && isDigit(a[ie]))
+                ++ie;
+            while (je < b.size() && isDigit(b[je]))
+                ++je;
+            std::size_t iz = i, jz = j; // skip leading zeros
+            while (iz + 1 < ie && a[iz] == '0')
+                ++iz;
+            while (jz + 1 < je && b[jz] == '0')
+                ++jz;
+            const std::size_t ilen = ie - iz, jlen = je - jz;
+            if (ilen != jlen)
+                return ilen < jlen;
+            if (const int c = a.compare(iz, ilen, b, jz, jlen); c != 0)
+                return c < 0;
+            i = ie;
+            j = je;
+        } else {
+            if (a[i] != b[j])
+                return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+            ++i;
+            ++j;
+        }
+    }
+    if ((a.size() - i) != (b.size() - j))
+        return (a.size() - i) < (b.size() - j);
+    return a < b; // "f01" and "f1" are equal so far; keep the order total
+}
+
+/// A JSON array of exactly two numbers.
+std::optional<std::array<double, 2>> numberPair(const nlohmann::json& value)
+{
+    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
+        return std::nullopt;
+    return std::array<double, 2>{value[0].get<double>(), value[1].get<double>()};
+}
+
+Result<Manifest> parseManifest(const std::string& path)
+{
+    auto text = readWholeFile(path);
+    if (!text)
+        return text.error();
+    const nlohmann::json root = nlohmann::json::parse(text.value(), nullptr, false);
+    if (root.is_discarded())
+        return Error{path + ": not valid JSON"};
+    auto bad = [&](const std::string& problem) { return Error{path + ": " + problem}; };
+    if (!root.is_object())
+        return bad("expected a JSON object at the top level");
+
+    Manifest manifest;
+    if (const auto it = root.find("format"); it != root.end()) {
+        if (!it->is_string())
+            return bad("\"format\" must be a string");
+        if (it->get<std::string>() != kManifestFormat)
+            return bad("unsupported format \"" + it->get<std::string>() + "\" (expected \"" +
+                       kManifestFormat + "\")");
+    }
+    if (const auto it = root.find("pixel_format"); it != root.end()) {
+        const std::string value = it->is_string() ? it->get<std::string>() : std::string();
+        if (value == "rgb")
+            manifest.pixel_format = PixelFormat::Rgb;
+        else if (value == "ycbcr")
+            manifest.pixel_format = PixelFormat::YCbCr;
+        else
+            return bad("\"pixel_format\" must be \"rgb\" or \"ycbcr\"");
+    }
+    if (const auto it = root.find("lut"); it != root.end()) {
+        if (!it->is_string())
+            return bad("\"lut\" must be a string (a file name relative to the folder)");
+        manifest.lut = it->get<std::string>();
+    }
+    if (const auto it = root.find("camera"); it != root.end()) {
+        if (!it->is_object())
+            return bad("\"camera\" must be an object");
+        if (const auto fov = it->find("fov_deg"); fov != it->end()) {
+            manifest.fov_deg = numberPair(*fov);
+            if (!manifest.fov_deg)
+                return bad("\"camera.fov_deg\" must be an array of two numbers");
+        }
+    }
+    if (const auto it = root.find("frames"); it != root.end()) {
+        if (!it->is_array())
+            return bad("\"frames\" must be an array");
+        for (std::size_t i = 0; i < it->size(); ++i) {
+            const nlohmann::json& entry = (*it)[i];
+            const std::string where = "frames[" + std::to_string(i) + "]";
+            if (!entry.is_object())
+                return bad(where + " must be an object");
+            const auto file = entry.find("file");
+            if (file == entry.end() || !file->is_string())
+                return bad(where + ".file must be a string");
+            FrameMeta meta;
+            if (const auto t = entry.find("timestamp_ms"); t != entry.end()) {
+                if (!t->is_number())
+                    return bad(where + ".timestamp_ms must be a number");
+                meta.timestamp_ms = t->get<double>();
+            }
+            if (const auto h = entry.find("horizon"); h != entry.end()) {
+                const auto pair = numberPair(*h);
+                if (!pair)
+                    return bad(where + ".horizon must be [y at x = 0, y at x = width-1]");
+                meta.horizon = Horizon{(*pair)[0], (*pair)[1]};
+            }
+            manifest.frames[file->get<std::string>()] = meta;
+        }
+    }
+    return manifest;
+}
+
+/// Why `path` could not be decoded: the OS error if it cannot even be opened.
+std::string unreadableReason(const std::string& path)
+{
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe)
+        return std::strerror(errno);
+    return "not a decodable image";
+}
+
+class ImageFolderReader final : public StreamReader
+{
+public:
+    ImageFolderReader(StreamInfo info, fs::path folder, std::vector<std::string> files,
+                      std::vector<FrameMeta> meta, PixelFormat format)
+        : m_info(std::move(info)), m_folder(std::move(folder)), m_files(std::move(files)),
+          m_meta(std::move(meta)), m_format(format)
+    {
+    }
+
+    const StreamInfo& info() const override { return m_info; }
+    std::string frameName(std::size_t index) const override
+    {
+        return index < m_files.size() ? m_files[index] : std::string();
+    }
+
+    Result<Frame> read(std::size_t index) override
+    {
+        if (index >= m_files.size())
+            return Error{m_info.path + ": frame " + std::to_string(index) + " out of range (" +
+                         std::to_string(m_files.size()) + " frames)"};
+        auto frame = decode(index);
+        if (!frame)
+            return frame;
+        const cv::Mat& image = frame.value().ycbcr;
+        if (image.cols != m_info.width || image.rows != m_info.height)
+            return Error{(m_folder / m_files[index]).string() + ": frame size " +
+                         std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                         " differs from the stream's " + std::to_string(m_info.width) + "x" +
+                         std::to_string(m_info.height)};
+        return frame;
+    }
+
+    /// Decodes frame `index` without comparing its size to the stream's.
+    Result<Frame> decode(std::size_t index) const
+    {
+        const std::string path = (m_folder / m_files[index]).string();
+        const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+        if (bgr.empty())
+            return Error{"cannot read " + path + ": " + unreadableReason(path)};
+        if (!isSaneFrameSize(bgr.cols, bgr.rows))
+            return Error{path + ": absurd frame size " + std::to_string(bgr.cols) + "x" +
+                         std::to_string(bgr.rows)};
+        Frame frame;
+        if (m_format == PixelFormat::YCbCr) {
+            // The PNG's R, G, B hold Y, Cb, Cr; imread delivers them as B, G, R.
+            cv::cvtColor(bgr, frame.ycbcr, cv::COLOR_BGR2RGB);
+        } else {
+            cv::Mat ycrcb;
+            cv::cvtColor(bgr, ycrcb, cv::COLOR_BGR2YCrCb);
+            frame.ycbcr.create(ycrcb.size(), CV_8UC3);
+            const int from_to[] = {0, 0, 1, 2, 2, 1}; // Y, Cr, Cb -> Y, Cb, Cr
+            cv::mixChannels(&ycrcb, 1, &frame.ycbcr, 1, from_to, 3);
+        }
+        frame.name = m_files[index];
+        const FrameMeta& meta = m_meta[index];
+        frame.timestamp_ms = meta.timestamp_ms.value_or(0.0);
+        frame.horizon = meta.horizon;
+        return frame;
+    }
+
+    void setSize(int width, int height)
+    {
+        m_info.width = width;
+        m_info.height = height;
+    }
+
+private:
+    StreamInfo m_info;
+    fs::path m_folder;
+    std::vector<std::string> m_files;
+    std::vector<FrameMeta> m_meta;
+    PixelFormat m_format;
+};
+
+/// A NUView log folder holds "image.strm" or "N_image.strm"; the first such file, if any.
+std::optional<fs::path> findImageStrm(const fs::path& folder)
+{
+    std::vector<fs::path> found;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(folder, ec)) {
+        const std::string name = lowercase(entry.path().filename().string());
+        if (name.size() >= 10 && name.compare(name.size() - 10, 10, "image.strm") == 0)
+            found.push_back(entry.path());
+    }
+    if (found.empty())
+        return std::nullopt;
+    std::sort(found.begin(), found.end(), [](const fs::path& a, const fs::path& b) {
+        return naturalLess(a.filename().string(), b.filename().string());
+    });
+    return found.front();
+}
+
+} // namespace
+
+ReaderResult openImageFolder(const std::string& folder_arg, const std::string& spec)
+{
+    const fs::path folder(folder_arg);
+    std::vector<std::string> files;
+    std::error_code ec;
+    fs::directory_iterator it(folder, ec);
+    if (ec)
+        return Error{"cannot read " + folder_arg + ": " + ec.message()};
+    for (const auto& entry : it) {
+        std::error_code type_ec;
+        if (entry.is_regular_file(type_ec) && isImageFile(entry.path()))
+            files.push_back(entry.path().filename().string());
+    }
+
+    const fs::path manifest_path = folder / kManifestName;
+    Manifest manifest;
+    const bool has_manifest = fs::exists(manifest_path, ec);
+    if (has_manifest) {
+        auto parsed = parseManifest(manifest_path.string());
+        if (!parsed)
+            return parsed.error();
+        manifest = std::move(parsed).value();
+    }
+    if (files.empty()) {
+        if (!has_manifest)
+            if (const auto strm = findImageStrm(folder))
+                return openStrm(strm->string(), spec);
+        return Error{folder_arg + ": no images in the folder (.png, .jpg, .jpeg, .bmp)"};
+    }
+    std::sort(files.begin(), files.end(), naturalLess);
+
+    std::vector<FrameMeta> meta(files.size());
+    for (const auto& [file, entry] : manifest.frames) {
+        const auto pos = std::find(files.begin(), files.end(), file);
+        if (pos == files.end())
+            return Error{manifest_path.string() + ": frame \"" + file +
+                         "\" is not an image in the folder"};
+        meta[std::size_t(pos - files.begin())] = entry;
+    }
+
+    StreamInfo info;
+    info.path = spec;
+    info.kind = StreamKind::ImageFolder;
+    info.frame_count = files.size();
+    info.fov_deg = manifest.fov_deg;
+    if (manifest.lut) {
+        // Named by the manifest: keep it even if missing, so loading it reports the bad name.
+        const fs::path lut(*manifest.lut);
+        info.default_lut = (lut.is_absolute() ? lut : folder / lut).string();
+    } else if (fs::is_regular_file(folder / "default.lut", ec)) {
+        info.default_lut = (folder / "default.lut").string();
+    }
+
+    auto reader = std::make_unique<ImageFolderReader>(std::move(info), folder, std::move(files),
+                                                      std::move(meta), manifest.pixel_format);
+    // The first frame fixes the stream's size; decoding it now also reports a bad file early.
+    auto first = reader->decode(0);
+    if (!first)
+        return first.error();
+    reader->setSize(first.value().ycbcr.cols, first.value().ycbcr.rows);
+    return std::unique_ptr<StreamReader>(std::move(reader));
+}
+
+} // namespace fieldsight::io

@@ -1,0 +1,66 @@
+// openStream(): decides what a stream argument names and hands it to the matching reader.
+#include "visioncore/stream_reader.h"
+
+#include "io/stream_readers.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+namespace fieldsight {
+
+namespace io {
+
+std::string indexedFrameName(std::size_t index)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06zu", index);
+    return name;
+}
+
+} // namespace io
+
+namespace {
+
+std::string lowercase(std::string s)
+{
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+} // namespace
+
+Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec)
+{
+    namespace fs = std::filesystem;
+    if (spec.empty())
+        return Error{"no stream given"};
+
+    constexpr std::string_view kCameraPrefix = "camera:";
+    if (spec.compare(0, kCameraPrefix.size(), kCameraPrefix) == 0) {
+        const std::string number = spec.substr(kCameraPrefix.size());
+        int device = -1;
+        const auto [end, ec] =
+            std::from_chars(number.data(), number.data() + number.size(), device);
+        if (number.empty() || ec != std::errc() || end != number.data() + number.size() ||
+            device < 0)
+            return Error{spec + ": expected camera:N with N a camera number (0, 1, ...)"};
+        return io::openCamera(device, spec);
+    }
+
+    std::error_code ec;
+    const fs::file_status status = fs::status(spec, ec);
+    if (ec || !fs::exists(status))
+        return Error{spec + ": no such file or folder"};
+    if (fs::is_directory(status))
+        return io::openImageFolder(spec, spec);
+    if (lowercase(fs::path(spec).extension().string()) == ".strm")
+        return io::openStrm(spec, spec);
+    return io::openVideo(spec, spec);
+}
+
+} // namespace fieldsight
