@@ -1,0 +1,392 @@
+// The fieldsight executable's headless commands as a user meets them: exit statuses, one-line
+// errors naming the file, and the JSON of run, bench and eval on a tiny stream.
+#include "visioncore/colour_lut.h"
+
+#include <QtTest>
+
+#include <QDataStream>
+#include <QFile>
+#include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <vector>
+
+namespace {
+
+constexpr int kWidth = 64;
+constexpr int kHeight = 48;
+constexpr int kFrames = 3;
+
+struct Outcome
+{
+    int status = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+QString frameName(int i)
+{
+    return QString("frame_%1.png").arg(i, 6, 10, QChar('0'));
+}
+
+/// A LUT that calls every colour green.
+fieldsight::ColourLut allGreenLut()
+{
+    fieldsight::ColourLut lut;
+    for (std::size_t i = 0; i < fieldsight::ColourLut::kCells; ++i)
+        lut.setCell(i, fieldsight::Colour::Green);
+    return lut;
+}
+
+QJsonObject parseObject(const QByteArray& bytes)
+{
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &error);
+    if (error.error != QJsonParseError::NoError)
+        qWarning() << "JSON parse error:" << error.errorString() << bytes.left(400);
+    return doc.object();
+}
+
+QJsonObject readObject(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return parseObject(file.readAll());
+}
+
+} // namespace
+
+class TestCli : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString m_stream; ///< kFrames solid-green PNGs and default.lut
+
+    Outcome fieldsight(const QStringList& args)
+    {
+        QProcess process;
+        process.setWorkingDirectory(m_dir.path());
+        process.start(QStringLiteral(FIELDSIGHT_EXE), args);
+        Outcome o;
+        if (!process.waitForFinished(120000)) {
+            process.kill();
+            process.waitForFinished();
+            return o;
+        }
+        o.status = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+        o.out = process.readAllStandardOutput();
+        o.err = process.readAllStandardError();
+        return o;
+    }
+
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+
+    void makeStream(const QString& folder, bool with_lut)
+    {
+        QVERIFY(QDir().mkpath(folder));
+        for (int i = 0; i < kFrames; ++i) {
+            QImage image(kWidth, kHeight, QImage::Format_RGB888);
+            image.fill(QColor(40, 150 + 10 * i, 40));
+            QVERIFY(image.save(folder + "/" + frameName(i), "PNG"));
+        }
+        if (with_lut)
+            QVERIFY(allGreenLut().save((folder + "/default.lut").toStdString()).ok());
+    }
+
+    /// Checks the one-line error contract: non-empty, one line, "fieldsight: " prefix.
+    static void verifyOneLineError(const Outcome& o, const QString& must_contain)
+    {
+        const QString err = QString::fromLocal8Bit(o.err).trimmed();
+        QVERIFY2(!err.isEmpty(), "no message on stderr");
+        QVERIFY2(!err.contains('\n'), qPrintable("more than one line: " + err));
+        QVERIFY2(err.startsWith("fieldsight: "), qPrintable(err));
+        QVERIFY2(err.contains(must_contain), qPrintable(err + " does not name " + must_contain));
+    }
+
+    /// A frame with its timings removed, to compare runs.
+    static QJsonObject withoutTimes(QJsonObject frame)
+    {
+        frame.remove("time_ms");
+        return frame;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        QVERIFY2(QFileInfo::exists(QStringLiteral(FIELDSIGHT_EXE)), FIELDSIGHT_EXE);
+        m_stream = path("stream");
+        makeStream(m_stream, true);
+    }
+
+    void missingStreamExitsTwoNamingIt()
+    {
+        const QString missing = path("no_such_stream");
+        const Outcome o = fieldsight({"run", missing});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, missing);
+        QVERIFY(!QFileInfo::exists(path("fieldsight-results.json")));
+    }
+
+    void wrongSizeLutExitsTwoNamingIt()
+    {
+        const QString lut = path("short.lut");
+        QFile file(lut);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QByteArray(1000, '\x02'));
+        file.close();
+        const Outcome o = fieldsight({"run", m_stream, "--lut", lut, "--out", path("x.json")});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, lut);
+        QVERIFY(!QFileInfo::exists(path("x.json")));
+    }
+
+    void streamWithoutLutExitsTwo()
+    {
+        const QString bare = path("bare");
+        makeStream(bare, false);
+        const Outcome o = fieldsight({"run", bare, "--out", path("bare.json")});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "no LUT");
+    }
+
+    void unknownSkipStageExitsTwo()
+    {
+        const Outcome o = fieldsight({"run", m_stream, "--skip", "ball,wormholes"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "wormholes");
+    }
+
+    void badNumberExitsTwo()
+    {
+        Outcome o = fieldsight({"run", m_stream, "--threads", "many"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "--threads");
+        o = fieldsight({"bench", m_stream, "--repeat", "0"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "--repeat");
+    }
+
+    void unknownCommandAndMissingArgumentExitTwo()
+    {
+        Outcome o = fieldsight({"frobnicate"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "frobnicate");
+        o = fieldsight({"run"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "run");
+        o = fieldsight({"help"});
+        QCOMPARE(o.status, 0);
+        QVERIFY(o.out.contains("fieldsight run"));
+    }
+
+    void truncatedStrmExitsTwo()
+    {
+        // One record: header, then only half of the 4-byte pixels (SPEC §4).
+        const QString strm = path("cut.strm");
+        QFile file(strm);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        QDataStream s(&file);
+        s.setByteOrder(QDataStream::LittleEndian);
+        s.setFloatingPointPrecision(QDataStream::DoublePrecision);
+        s.writeRawData("IMAG", 4);
+        s << qint32(1) << qint32(kWidth) << qint32(kHeight) << double(0.0) << quint8(0);
+        const QByteArray pixels(kWidth * kHeight * 4 / 2, '\x80');
+        s.writeRawData(pixels.constData(), int(pixels.size()));
+        file.close();
+        const Outcome o = fieldsight(
+            {"run", strm, "--lut", m_stream + "/default.lut", "--out", path("cut.json")});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, strm);
+    }
+
+    void unreadableImageExitsTwoNamingIt()
+    {
+        const QString broken = path("broken");
+        makeStream(broken, true);
+        QFile file(broken + "/" + frameName(1));
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write("this is not a PNG");
+        file.close();
+        const Outcome o = fieldsight({"run", broken, "--out", path("broken.json")});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, frameName(1));
+    }
+
+    void emptyFolderExitsTwo()
+    {
+        const QString empty = path("empty");
+        QVERIFY(QDir().mkpath(empty));
+        const Outcome o = fieldsight({"run", empty, "--lut", m_stream + "/default.lut"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, empty);
+    }
+
+    void runWritesResultsJson()
+    {
+        const QString out = path("results.json");
+        const Outcome o = fieldsight({"run", m_stream, "--out", out});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.err.isEmpty(), o.err.constData());
+
+        const QJsonObject doc = readObject(out);
+        QCOMPARE(doc.value("format").toString(), QString("fieldsight-results/1"));
+        QCOMPARE(doc.value("stream").toString(), m_stream);
+        QVERIFY(doc.value("lut").toString().endsWith("default.lut"));
+        QCOMPARE(doc.value("width").toInt(), kWidth);
+        QCOMPARE(doc.value("height").toInt(), kHeight);
+
+        const QJsonArray frames = doc.value("frames").toArray();
+        QCOMPARE(frames.size(), kFrames);
+        double total_sum = 0;
+        for (int i = 0; i < kFrames; ++i) {
+            const QJsonObject f = frames[i].toObject();
+            QCOMPARE(f.value("index").toInt(-1), i);
+            QCOMPARE(f.value("name").toString(), frameName(i));
+            const QJsonObject time = f.value("time_ms").toObject();
+            QVERIFY(time.value("total").isDouble());
+            QVERIFY(time.value("total").toDouble() >= 0);
+            for (const char* stage : {"green_horizon", "scanlines", "transitions", "goalposts",
+                                      "field_lines", "ball", "obstacles"})
+                QVERIFY2(time.value(stage).isDouble(), stage);
+            total_sum += time.value("total").toDouble();
+            for (const char* list : {"balls", "goalposts", "obstacles", "field_lines"})
+                QVERIFY2(f.value(list).isArray(), list);
+            // The hull runs from x = 0 to x = width-1 (SPEC §5.1).
+            const QJsonArray hull = f.value("green_horizon").toArray();
+            QVERIFY(!hull.isEmpty());
+            QCOMPARE(hull.first().toArray().at(0).toDouble(), 0.0);
+            QCOMPARE(hull.last().toArray().at(0).toDouble(), double(kWidth - 1));
+            // An all-green frame has no ball, goal or obstacle.
+            QCOMPARE(f.value("balls").toArray().size(), 0);
+            QCOMPARE(f.value("goalposts").toArray().size(), 0);
+        }
+        const QJsonObject summary = doc.value("summary").toObject();
+        QCOMPARE(summary.value("frames").toInt(), kFrames);
+        QVERIFY(qAbs(summary.value("mean_ms").toDouble() - total_sum / kFrames) < 1e-3);
+        QVERIFY(summary.value("std_ms").toDouble() >= 0);
+        QCOMPARE(summary.value("stage_mean_ms").toObject().size(), 7);
+        // The one-line summary names the output.
+        QVERIFY(o.out.contains(out.toLocal8Bit()));
+    }
+
+    void unwritableOutputIsAFailureWhileRunning()
+    {
+        const QString out = path("no_such_folder/results.json");
+        const Outcome o = fieldsight({"run", m_stream, "--out", out});
+        QCOMPARE(o.status, 1);
+        verifyOneLineError(o, out);
+    }
+
+    void runWritesToStandardOutputWithDash()
+    {
+        const Outcome o = fieldsight({"run", m_stream, "--out", "-", "--limit", "2"});
+        QCOMPARE(o.status, 0);
+        const QJsonObject doc = parseObject(o.out);
+        QCOMPARE(doc.value("format").toString(), QString("fieldsight-results/1"));
+        QCOMPARE(doc.value("frames").toArray().size(), 2);
+        QCOMPARE(doc.value("summary").toObject().value("frames").toInt(), 2);
+        QVERIFY(!QFileInfo::exists(path("fieldsight-results.json")));
+    }
+
+    void skippedStageListIsAbsent()
+    {
+        const QString out = path("skip.json");
+        const Outcome o = fieldsight({"run", m_stream, "--skip", "ball", "--out", out});
+        QCOMPARE(o.status, 0);
+        const QJsonObject doc = readObject(out);
+        const QJsonArray frames = doc.value("frames").toArray();
+        QCOMPARE(frames.size(), kFrames);
+        for (const QJsonValue& v : frames) {
+            const QJsonObject f = v.toObject();
+            QVERIFY(!f.contains("balls"));
+            QVERIFY(!f.value("time_ms").toObject().contains("ball"));
+            QVERIFY(f.value("goalposts").isArray());
+            QVERIFY(f.value("obstacles").isArray());
+        }
+        QVERIFY(
+            !doc.value("summary").toObject().value("stage_mean_ms").toObject().contains("ball"));
+    }
+
+    void threadsGiveTheSameFramesInOrder()
+    {
+        QCOMPARE(fieldsight({"run", m_stream, "--out", path("t1.json")}).status, 0);
+        QCOMPARE(fieldsight({"run", m_stream, "--threads", "3", "--out", path("t3.json")}).status,
+                 0);
+        const QJsonArray one = readObject(path("t1.json")).value("frames").toArray();
+        const QJsonArray three = readObject(path("t3.json")).value("frames").toArray();
+        QCOMPARE(one.size(), kFrames);
+        QCOMPARE(three.size(), kFrames);
+        for (int i = 0; i < kFrames; ++i)
+            QCOMPARE(withoutTimes(three[i].toObject()), withoutTimes(one[i].toObject()));
+    }
+
+    void benchPrintsTableAndJson()
+    {
+        const QString json = path("bench.json");
+        const Outcome o = fieldsight({"bench", m_stream, "--repeat", "2", "--json", json});
+        QCOMPARE(o.status, 0);
+        QVERIFY(o.out.contains("pipeline / floor"));
+        QVERIFY(o.out.contains("pipeline / baseline"));
+        const QJsonObject doc = readObject(json);
+        QCOMPARE(doc.value("format").toString(), QString("fieldsight-bench/1"));
+        QCOMPARE(doc.value("frames").toInt(), kFrames);
+        QCOMPARE(doc.value("repeat").toInt(), 2);
+        const QJsonObject pipeline = doc.value("pipeline").toObject();
+        QCOMPARE(pipeline.value("samples").toInt(), 2 * kFrames);
+        QVERIFY(pipeline.value("mean_ms").toDouble() > 0);
+        QCOMPARE(pipeline.value("stages").toObject().size(), 7);
+        QCOMPARE(doc.value("floor").toObject().value("samples").toInt(), 2 * kFrames);
+        QCOMPARE(doc.value("baseline").toObject().value("samples").toInt(), 2 * kFrames);
+        QVERIFY(doc.value("baseline").toObject().value("mean_ms").toDouble() > 0);
+        QVERIFY(doc.value("ratios").toObject().value("pipeline_over_floor").toDouble() > 0);
+        QVERIFY(doc.value("ratios").toObject().value("pipeline_over_baseline").toDouble() > 0);
+    }
+
+    void evalScoresOnlyDoneFrames()
+    {
+        // Frame 0: a ball the all-green frame cannot show (a miss); frame 1: nothing; frame 2 is
+        // not done, so its ball is not counted.
+        const QByteArray truth = R"({"format": "fieldsight-annotations/1", "frames": {
+            "frame_000000.png": {"done": true, "balls": [{"x": 20, "y": 30, "radius": 4}],
+                                 "field_boundary": [[0, 0], [63, 0]]},
+            "frame_000001.png": {"done": true, "field_boundary": [[0, 0], [63, 0]]},
+            "frame_000002.png": {"done": false, "balls": [{"x": 20, "y": 30, "radius": 4}]}}})";
+        const QString truth_path = path("truth.json");
+        QFile file(truth_path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(truth);
+        file.close();
+
+        const QString json = path("eval.json");
+        const Outcome o = fieldsight({"eval", m_stream, "--truth", truth_path, "--json", json});
+        QCOMPARE(o.status, 0);
+        QVERIFY(o.out.contains("precision = 1 when TP+FP = 0"));
+        const QJsonObject doc = readObject(json);
+        QCOMPARE(doc.value("format").toString(), QString("fieldsight-eval/1"));
+        QCOMPARE(doc.value("frames").toInt(), 2);
+        QCOMPARE(doc.value("frames_not_done").toInt(), 1);
+        const QJsonObject ball = doc.value("classes").toObject().value("ball").toObject();
+        QCOMPARE(ball.value("tp").toInt(-1), 0);
+        QCOMPARE(ball.value("fp").toInt(-1), 0);
+        QCOMPARE(ball.value("fn").toInt(-1), 1);
+        QCOMPARE(ball.value("precision").toDouble(), 1.0);
+        QCOMPARE(ball.value("recall").toDouble(), 0.0);
+        QCOMPARE(doc.value("field_boundary").toObject().value("frames").toInt(), 2);
+
+        // A missing truth file is bad input.
+        const Outcome missing = fieldsight({"eval", m_stream, "--truth", path("nope.json")});
+        QCOMPARE(missing.status, 2);
+        verifyOneLineError(missing, path("nope.json"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"

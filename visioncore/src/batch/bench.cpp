@@ -1,0 +1,430 @@
+// `fieldsight bench`: ms per frame as in the paper's Table 1, next to two references measured on
+// the same frames in the same run: the LUT lookups the scan lines need (a floor for any scan-line
+// design) and a full-frame classification with OpenCV connected components (a common baseline).
+#include "visioncore/batch.h"
+
+#include "batch/batch_util.h"
+
+#include "visioncore/control_wrapper.h"
+#include "visioncore/data_wrapper.h"
+
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <thread>
+
+namespace fieldsight {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// Serves frames already in memory, so the timed loop never waits for a decoder.
+class MemoryDataWrapper : public DataWrapper
+{
+public:
+    explicit MemoryDataWrapper(const ColourLut& lut) : m_lut(lut) {}
+    void setFrame(const Frame* frame) { m_frame = frame; }
+
+    const cv::Mat& image() const override { return m_frame ? m_frame->ycbcr : m_empty; }
+    Horizon kinematicHorizon() const override
+    {
+        return m_frame && m_frame->horizon ? *m_frame->horizon : Horizon{};
+    }
+    const ColourLut& lut() const override { return m_lut; }
+
+private:
+    const ColourLut& m_lut;
+    const Frame* m_frame = nullptr;
+    cv::Mat m_empty;
+};
+
+/// Every pixel through the LUT into `classes` (CV_8UC1 of colour ids).
+void classifyFrame(const cv::Mat& image, const ColourLut& lut, cv::Mat& classes)
+{
+    classes.create(image.rows, image.cols, CV_8UC1);
+    for (int y = 0; y < image.rows; ++y) {
+        const std::uint8_t* p = image.ptr<std::uint8_t>(y);
+        std::uint8_t* c = classes.ptr<std::uint8_t>(y);
+        for (int x = 0; x < image.cols; ++x, p += 3)
+            c[x] = std::uint8_t(lut.classify(p[0], p[1], p[2]));
+    }
+}
+
+/// The floor: only the lookups of the pixels the pipeline's scan lines touch (full-width rows at
+/// `rows`, and columns from each start down to the bottom). Returns a checksum of the classes so
+/// the loop cannot be optimised away; `pixels` receives the number of lookups.
+std::uint32_t floorLookups(const cv::Mat& image, const ColourLut& lut, const std::vector<int>& rows,
+                           const std::vector<PixelPoint>& starts, std::size_t& pixels)
+{
+    std::uint32_t sum = 0;
+    std::size_t count = 0;
+    for (int y : rows) {
+        if (y < 0 || y >= image.rows)
+            continue;
+        const std::uint8_t* p = image.ptr<std::uint8_t>(y);
+        for (int x = 0; x < image.cols; ++x, p += 3)
+            sum += std::uint32_t(lut.classify(p[0], p[1], p[2]));
+        count += std::size_t(image.cols);
+    }
+    for (const PixelPoint& s : starts) {
+        if (s.x < 0 || s.x >= image.cols)
+            continue;
+        for (int y = std::max(0, s.y); y < image.rows; ++y) {
+            const std::uint8_t* p = image.ptr<std::uint8_t>(y) + 3 * s.x;
+            sum += std::uint32_t(lut.classify(p[0], p[1], p[2]));
+            ++count;
+        }
+    }
+    pixels = count;
+    return sum;
+}
+
+struct BaselineBuffers
+{
+    cv::Mat classes, mask, labels, stats, centroids;
+};
+
+/// The baseline: a class image of the whole frame, then for the ball (orange) and goal (yellow)
+/// classes a mask and connected components, keeping the largest blob. Returns a checksum.
+std::uint32_t fullFrameBaseline(const cv::Mat& image, const ColourLut& lut, BaselineBuffers& b)
+{
+    classifyFrame(image, lut, b.classes);
+    std::uint32_t sum = 0;
+    for (Colour colour : {Colour::Orange, Colour::Yellow}) {
+        cv::compare(b.classes, cv::Scalar(double(colour)), b.mask, cv::CMP_EQ);
+        const int n =
+            cv::connectedComponentsWithStats(b.mask, b.labels, b.stats, b.centroids, 8, CV_32S);
+        int best = 0;
+        int best_area = 0;
+        for (int i = 1; i < n; ++i) {
+            const int area = b.stats.at<int>(i, cv::CC_STAT_AREA);
+            if (area > best_area) {
+                best_area = area;
+                best = i;
+            }
+        }
+        if (best > 0)
+            sum += std::uint32_t(best_area + b.stats.at<int>(best, cv::CC_STAT_LEFT) +
+                                 b.stats.at<int>(best, cv::CC_STAT_TOP));
+    }
+    return sum;
+}
+
+/// What one worker measured; merged after all workers finish.
+struct Samples
+{
+    std::vector<double> pipeline;
+    std::map<std::size_t, std::vector<double>> stages; ///< by position in the pipeline
+    std::vector<std::string> stage_ids;                ///< pipeline order
+    std::vector<double> floor;
+    std::vector<double> baseline;
+    double floor_pixels = 0;
+};
+
+} // namespace
+
+Result<BenchResults> runBench(BatchInput& input, const BenchOptions& options)
+{
+    std::size_t count = input.info().frame_count;
+    if (options.limit > 0)
+        count = std::min(count, options.limit);
+    int threads = options.threads > 0 ? options.threads
+                                      : int(std::max(1u, std::thread::hardware_concurrency()));
+    if (input.info().kind == StreamKind::Camera)
+        threads = 1;
+    threads = int(std::min<std::size_t>(std::size_t(threads), std::max<std::size_t>(1, count)));
+    const int repeat = std::max(1, options.repeat);
+    const bool in_memory = count < kBenchInMemoryFrames;
+
+    std::vector<Samples> samples{std::size_t(threads)};
+    std::mutex problem_mutex;
+    std::optional<std::string> problem;
+    bool problem_is_failure = false;
+    auto report = [&](std::string message, bool failure) {
+        std::lock_guard lock(problem_mutex);
+        if (!problem) {
+            problem = std::move(message);
+            problem_is_failure = failure;
+        }
+    };
+
+    // Worker t takes a contiguous block of frames, so its reader reads sequentially.
+    auto worker = [&](int t) {
+        try {
+            const std::size_t begin = count * std::size_t(t) / std::size_t(threads);
+            const std::size_t end = count * std::size_t(t + 1) / std::size_t(threads);
+            // Worker 0 reuses the input's reader; the others open their own.
+            std::unique_ptr<StreamReader> own;
+            if (t > 0) {
+                auto opened = openStream(input.stream);
+                if (!opened) {
+                    report(opened.error().message, false);
+                    return;
+                }
+                own = std::move(opened).value();
+            }
+            StreamReader& source = own ? *own : *input.reader;
+            MemoryDataWrapper data(input.lut);
+            ControlWrapper control(data);
+            Samples& out = samples[std::size_t(t)];
+            for (const auto& stage : control.controller().stages())
+                out.stage_ids.push_back(stage->info().id);
+
+            std::vector<Frame> cached;
+            if (in_memory) {
+                cached.reserve(end - begin);
+                for (std::size_t i = begin; i < end; ++i) {
+                    auto frame = source.read(i);
+                    if (!frame) {
+                        report(frame.error().message, false);
+                        return;
+                    }
+                    cached.push_back(std::move(frame).value());
+                }
+            }
+
+            cv::Mat warm;
+            BaselineBuffers buffers;
+            volatile std::uint32_t sink = 0; // keeps the reference loops from being optimised out
+            const std::size_t runs = (end - begin) * std::size_t(repeat);
+            out.pipeline.reserve(runs);
+            out.floor.reserve(runs);
+            out.baseline.reserve(runs);
+            Frame loaded;
+            for (int pass = 0; pass < repeat; ++pass) {
+                for (std::size_t i = begin; i < end; ++i) {
+                    {
+                        std::lock_guard lock(problem_mutex);
+                        if (problem)
+                            return;
+                    }
+                    const Frame* frame = nullptr;
+                    if (in_memory) {
+                        frame = &cached[i - begin];
+                    } else {
+                        auto read = source.read(i);
+                        if (!read) {
+                            report(read.error().message, false);
+                            return;
+                        }
+                        loaded = std::move(read).value();
+                        frame = &loaded;
+                    }
+                    data.setFrame(frame);
+                    // Untimed: bring the frame and its LUT cells into cache, so all three
+                    // measurements below start from the same state.
+                    classifyFrame(frame->ycbcr, input.lut, warm);
+
+                    const auto start = Clock::now();
+                    auto frame_report = control.runFrame();
+                    const double pipeline_ms = msSince(start);
+                    if (!frame_report) {
+                        report(input.stream + ": frame " + frame->name + ": " +
+                                   frame_report.error().message,
+                               true);
+                        return;
+                    }
+                    out.pipeline.push_back(pipeline_ms);
+                    const auto& stages = frame_report.value().stages;
+                    for (std::size_t s = 0; s < stages.size(); ++s)
+                        if (stages[s].ran)
+                            out.stages[s].push_back(stages[s].ms);
+
+                    const Blackboard& bb = control.blackboard();
+                    std::size_t pixels = 0;
+                    const auto floor_start = Clock::now();
+                    sink = sink + floorLookups(frame->ycbcr, input.lut, bb.horizontal_scan_ys,
+                                               bb.vertical_scan_starts, pixels);
+                    out.floor.push_back(msSince(floor_start));
+                    out.floor_pixels += double(pixels);
+
+                    const auto baseline_start = Clock::now();
+                    sink = sink + fullFrameBaseline(frame->ycbcr, input.lut, buffers);
+                    out.baseline.push_back(msSince(baseline_start));
+                }
+            }
+        } catch (const std::exception& e) {
+            report(input.stream + ": " + e.what(), true);
+        }
+    };
+
+    if (threads == 1) {
+        worker(0);
+    } else {
+        std::vector<std::thread> pool;
+        for (int t = 0; t < threads; ++t)
+            pool.emplace_back(worker, t);
+        for (std::thread& th : pool)
+            th.join();
+    }
+    if (problem) {
+        if (problem_is_failure)
+            throw std::runtime_error(*problem);
+        return Error{*problem};
+    }
+
+    // Merge the workers' samples.
+    Samples all;
+    std::vector<std::vector<double>> stage_samples;
+    std::vector<std::string> stage_ids;
+    for (Samples& s : samples) {
+        all.pipeline.insert(all.pipeline.end(), s.pipeline.begin(), s.pipeline.end());
+        all.floor.insert(all.floor.end(), s.floor.begin(), s.floor.end());
+        all.baseline.insert(all.baseline.end(), s.baseline.begin(), s.baseline.end());
+        all.floor_pixels += s.floor_pixels;
+        if (stage_ids.empty() && !s.stage_ids.empty()) {
+            stage_ids = s.stage_ids;
+            stage_samples.resize(stage_ids.size());
+        }
+        for (auto& [position, values] : s.stages)
+            if (position < stage_samples.size())
+                stage_samples[position].insert(stage_samples[position].end(), values.begin(),
+                                               values.end());
+    }
+
+    BenchResults r;
+    r.stream = input.stream;
+    r.lut_path = input.lut_path;
+    r.width = input.info().width;
+    r.height = input.info().height;
+    r.frames = count;
+    r.repeat = repeat;
+    r.threads = threads;
+    r.in_memory = in_memory;
+    r.pipeline = TimingStats::of(all.pipeline);
+    for (std::size_t s = 0; s < stage_ids.size(); ++s)
+        if (!stage_samples[s].empty())
+            r.stages.emplace_back(stage_ids[s], TimingStats::of(stage_samples[s]));
+    r.floor = TimingStats::of(all.floor);
+    r.floor_pixels_per_frame = all.floor.empty() ? 0 : all.floor_pixels / double(all.floor.size());
+    r.baseline = TimingStats::of(all.baseline);
+    return r;
+}
+
+namespace {
+
+double ratio(double a, double b)
+{
+    return b > 0 ? a / b : 0.0;
+}
+
+} // namespace
+
+std::string benchTable(const BenchResults& r)
+{
+    std::string text;
+    char line[256];
+    auto row = [&](const char* label, const TimingStats& s, const std::string& note = {}) {
+        std::snprintf(line, sizeof line, "%-36s %10.4f %10.4f%s\n", label, s.mean_ms, s.std_ms,
+                      note.empty() ? "" : ("   " + note).c_str());
+        text += line;
+    };
+    std::snprintf(
+        line, sizeof line,
+        "fieldsight bench: %s (%dx%d), %zu frames x %d pass%s = %zu runs, %d thread%s%s\n",
+        r.stream.c_str(), r.width, r.height, r.frames, r.repeat, r.repeat == 1 ? "" : "es",
+        r.pipeline.samples, r.threads, r.threads == 1 ? "" : "s",
+        r.in_memory ? ", frames in memory" : ", frames decoded each pass (not timed)");
+    text += line;
+    std::snprintf(line, sizeof line, "%-36s %10s %10s\n", "", "mean ms", "std ms");
+    text += line;
+    row("pipeline (ControlWrapper::runFrame)", r.pipeline);
+    for (const auto& [id, stats] : r.stages)
+        row(("  " + id).c_str(), stats);
+    const double image_pixels = double(r.width) * double(r.height);
+    char note[96];
+    std::snprintf(note, sizeof note, "%.0f px/frame, %.1f%% of the image", r.floor_pixels_per_frame,
+                  image_pixels > 0 ? 100.0 * r.floor_pixels_per_frame / image_pixels : 0.0);
+    row("floor: LUT lookups on scan lines", r.floor, note);
+    row("baseline: full frame + OpenCV CC", r.baseline);
+    std::snprintf(line, sizeof line, "%-36s %10.2fx\n", "pipeline / floor",
+                  ratio(r.pipeline.mean_ms, r.floor.mean_ms));
+    text += line;
+    std::snprintf(line, sizeof line, "%-36s %10.2fx\n", "pipeline / baseline",
+                  ratio(r.pipeline.mean_ms, r.baseline.mean_ms));
+    text += line;
+    text += "(std is the population standard deviation over all runs; the three rows are timed on "
+            "the same frames, each after an untimed full-frame LUT pass)\n";
+    return text;
+}
+
+std::string benchJson(const BenchResults& r)
+{
+    using Json = nlohmann::ordered_json;
+    auto stats = [](const TimingStats& s) {
+        return Json{{"mean_ms", batch::rounded(s.mean_ms, 5)},
+                    {"std_ms", batch::rounded(s.std_ms, 5)},
+                    {"samples", s.samples}};
+    };
+    Json j;
+    j["format"] = "fieldsight-bench/1";
+    j["stream"] = r.stream;
+    j["lut"] = r.lut_path;
+    j["width"] = r.width;
+    j["height"] = r.height;
+    j["frames"] = r.frames;
+    j["repeat"] = r.repeat;
+    j["threads"] = r.threads;
+    j["frames_in_memory"] = r.in_memory;
+    Json pipeline = stats(r.pipeline);
+    Json& stages = pipeline["stages"] = Json::object();
+    for (const auto& [id, s] : r.stages)
+        stages[id] = stats(s);
+    j["pipeline"] = std::move(pipeline);
+    Json floor = stats(r.floor);
+    floor["pixels_per_frame"] = batch::rounded(r.floor_pixels_per_frame, 1);
+    j["floor"] = std::move(floor);
+    j["baseline"] = stats(r.baseline);
+    j["ratios"] = {
+        {"pipeline_over_floor", batch::rounded(ratio(r.pipeline.mean_ms, r.floor.mean_ms), 4)},
+        {"pipeline_over_baseline",
+         batch::rounded(ratio(r.pipeline.mean_ms, r.baseline.mean_ms), 4)}};
+    return j.dump(2) + "\n";
+}
+
+int benchCommand(const BenchOptions& options, std::ostream& out, std::ostream& err)
+{
+    try {
+        if (options.repeat < 1) {
+            batch::printError(err, "--repeat: expected a positive number of passes");
+            return kExitBadInput;
+        }
+        auto input = openBatchInput(options.stream, options.lut);
+        if (!input) {
+            batch::printError(err, input.error().message);
+            return kExitBadInput;
+        }
+        auto results = runBench(input.value(), options);
+        if (!results) {
+            batch::printError(err, results.error().message);
+            return kExitBadInput;
+        }
+        out << benchTable(results.value()) << std::flush;
+        if (!options.json.empty()) {
+            if (Status s = batch::writeOutput(options.json, benchJson(results.value()), out); !s) {
+                batch::printError(err, s.error().message);
+                return kExitFailure;
+            }
+        }
+        return kExitOk;
+    } catch (const std::exception& e) {
+        batch::printError(err, e.what());
+        return kExitFailure;
+    }
+}
+
+} // namespace fieldsight
