@@ -23,7 +23,7 @@ constexpr const char* kUsage =
     "\n"
     "  fieldsight [gui [STREAM] [--lut FILE]]   open the GUI\n"
     "  fieldsight run   STREAM [--lut FILE] [--out FILE|-] [--skip STAGE,...] [--threads N]\n"
-    "                          [--limit N]\n"
+    "                          [--limit N] [--overlays DIR]\n"
     "  fieldsight bench STREAM [--lut FILE] [--repeat N] [--threads N] [--json FILE] [--limit N]\n"
     "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE]\n"
     "  fieldsight synth --out DIR [--scenario NAME] [--frames N] [--seed S] [--strm] [--no-png]\n"
@@ -107,6 +107,7 @@ int runRun(const QStringList& args)
     parser.addOption({"skip", "Stages to switch off, comma separated.", "STAGE,..."});
     parser.addOption(threadsOption("1"));
     parser.addOption({"limit", "Process only the first N frames.", "N"});
+    parser.addOption({"overlays", "Also write every frame with its detections drawn to DIR.", "DIR"});
     if (auto done = parseCommand(parser, "run", args, 1, 1))
         return *done;
 
@@ -125,6 +126,7 @@ int runRun(const QStringList& args)
         return usageError("run: " + error);
     options.threads = int(*threads);
     options.limit = std::size_t(*limit);
+    options.overlays = parser.value("overlays").toStdString();
     return fieldsight::runCommand(options, std::cout, std::cerr);
 }
 

@@ -2,6 +2,7 @@
 // only parses arguments into these option structs, and tests can call the pieces directly.
 #pragma once
 
+#include "visioncore/annotations.h"
 #include "visioncore/blackboard.h"
 #include "visioncore/colour_lut.h"
 #include "visioncore/controller.h"
@@ -89,11 +90,18 @@ struct RunOptions
     std::vector<std::string> skip;               ///< stage ids to switch off
     int threads = 1;                             ///< 0: one per core
     std::size_t limit = 0;                       ///< process only the first `limit` frames; 0: all
+    std::string overlays; ///< when set, write each frame with its detections drawn as PNG here
 };
 
 /// The fieldsight-results/1 document (SPEC §5.1): one line per frame.
 std::string resultsJson(const BatchInput& input, const std::vector<FrameResult>& frames,
                         const std::vector<std::string>& skip);
+
+/// The frame (BGR, twice the size) with the detections drawn, and the truth in dark lines if given.
+cv::Mat renderOverlay(const cv::Mat& ycbcr, const FrameResult& frame, const FrameAnnotation* truth);
+/// Writes renderOverlay() of every frame to `dir`/<frame stem>.png (truth: the stream's annotations).
+Status writeOverlays(BatchInput& input, const std::vector<FrameResult>& frames,
+                     const std::string& dir, const Annotations* truth);
 
 // --- bench -------------------------------------------------------------------------------------
 

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <optional>
 #include <ostream>
 
 namespace fieldsight {
@@ -159,6 +161,21 @@ int runCommand(const RunOptions& options, std::ostream& out, std::ostream& err)
         if (!frames) {
             batch::printError(err, frames.error().message);
             return kExitBadInput;
+        }
+        if (!options.overlays.empty()) {
+            // The stream's annotations, if any, are drawn as the truth beside the detections.
+            const auto folder = std::filesystem::path(options.stream);
+            const auto truth_path = folder / "annotations.json";
+            std::optional<Annotations> truth;
+            if (std::filesystem::is_regular_file(truth_path))
+                if (auto t = Annotations::load(truth_path.string()))
+                    truth = std::move(t.value());
+            if (Status s = writeOverlays(input.value(), frames.value(), options.overlays,
+                                         truth ? &*truth : nullptr);
+                !s) {
+                batch::printError(err, s.error().message);
+                return kExitFailure;
+            }
         }
         const std::string text = resultsJson(input.value(), frames.value(), options.skip);
         if (Status s = batch::writeOutput(options.out, text, out); !s) {

@@ -192,14 +192,18 @@ void BallDetector::run(Blackboard& bb)
         if (group.size() < 3)
             break;
         Circle c;
-        if (group.size() >= 5) {
+        if (!fitCircle(group, c))
+            continue;
+        // A clean ball: the least-squares fit explains every edge point. Otherwise (an occluding
+        // robot, the image border) RANSAC finds the points that lie on one circle.
+        const bool clean = std::all_of(group.begin(), group.end(),
+                                       [&](const PointF& p) { return c.error(p) < m_max_fit_error; });
+        if (!clean && group.size() >= 5) {
             params.min_points = std::max(4, int(group.size() / 2));
             RansacResult<Circle> r;
             std::vector<PointF> pts = group;
             if (!ransacFindModel(pts, params, rng, r) || !fitCircle(r.inliers, c))
                 continue;
-        } else if (!fitCircle(group, c)) {
-            continue;
         }
         if (accept(c)) {
             ball = c;

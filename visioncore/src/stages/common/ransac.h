@@ -4,6 +4,7 @@
 
 #include "visioncore/geometry.h"
 
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -19,8 +20,11 @@ struct RansacParams
 {
     double max_error = 5.0;  ///< px, inlier distance
     int min_points = 6;      ///< inliers needed to accept a model
-    int iterations = 100;    ///< samples per model
+    int iterations = 100;    ///< samples per model, at most
     ConsensusSelection selection = ConsensusSelection::Largest;
+    /// Stop sampling once a better model would have been drawn with this probability (adaptive
+    /// termination, Hartley & Zisserman 4.7.1); 0 always draws `iterations` samples.
+    double confidence = 0.99;
 };
 
 template <class Model>
@@ -50,7 +54,8 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
     double best_error = 0;
     Model best{};
     PointF sample[Model::kSampleSize];
-    for (int it = 0; it < params.iterations; ++it) {
+    int needed = params.iterations;
+    for (int it = 0; it < needed; ++it) {
         std::size_t idx[Model::kSampleSize];
         for (int s = 0; s < Model::kSampleSize; ++s) {
             bool distinct = false;
@@ -87,6 +92,16 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
             best = model;
             best_count = count;
             best_error = mean;
+            if (params.confidence > 0 && params.selection == ConsensusSelection::Largest) {
+                const double w = double(count) / double(n);
+                const double all_in = std::pow(w, Model::kSampleSize);
+                if (all_in >= 1.0) {
+                    needed = it + 1;
+                } else {
+                    const double k = std::log(1 - params.confidence) / std::log(1 - all_in);
+                    needed = std::min(params.iterations, int(std::ceil(k)) + it + 1);
+                }
+            }
         }
     }
     if (!found)

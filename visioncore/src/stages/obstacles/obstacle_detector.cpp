@@ -44,6 +44,13 @@ ObstacleDetector::ObstacleDetector()
     addParam(m_min_distance_from_horizon,
              {"min_distance_from_horizon", "px",
               "the run must reach this far below the green horizon", 0, 0, 100});
+    addParam(m_min_height_ratio,
+             {"min_height_ratio", "",
+              "a run not touching the green horizon must be this tall, as a fraction of its foot's "
+              "distance below the kinematic horizon",
+              0.3, 0, 2});
+    addParam(m_horizon_touch, {"horizon_touch", "px",
+                               "a run starting this close to the green horizon breaks it", 2, 0, 50});
 }
 
 const StageInfo& ObstacleDetector::info() const
@@ -91,9 +98,16 @@ void ObstacleDetector::run(Blackboard& bb)
             if (top >= 0 && k < scan.size() && scan[k].length() <= 3 && k + 1 < scan.size() &&
                 !isFieldColour(scan[k + 1].colour))
                 continue;
-            if (top >= 0 && bottom - top + 1 >= min_run &&
-                bottom - bb.green_horizon.yAt(scan.empty() ? 0 : scan[0].x0) >=
-                    m_min_distance_from_horizon) {
+            // Something standing on the field as tall as the camera reaches the horizon: its run
+            // starts at the green horizon, or is tall for how far below the kinematic horizon its
+            // foot is. Things lying on the field (a blurred distant line) are flat and fail both.
+            const int x = scan.empty() ? 0 : scan[0].x0;
+            const int gh = bb.green_horizon.yAt(x);
+            const double foot_depth = bottom - bb.kinematic_horizon.yAt(x, bb.width());
+            const bool standing = top <= gh + m_horizon_touch ||
+                                  bottom - top + 1 >= m_min_height_ratio * foot_depth;
+            if (top >= 0 && bottom - top + 1 >= min_run && standing &&
+                bottom - gh >= m_min_distance_from_horizon) {
                 best = {scan[0].x0, top, bottom};
                 have = true;
             }

@@ -147,11 +147,18 @@ void TransitionFilter::matchTransitions(const SegmentedRegion& region, Transitio
         TransitionClass cls;
         int min, max;
     };
-    std::array<std::vector<ClassRule>, kColourCount> by_colour;
+    struct Rules
+    {
+        std::array<ClassRule, kTransitionClassCount> rules;
+        int count = 0;
+    };
+    std::array<Rules, kColourCount> by_colour{};
     const auto add = [&](double colour, TransitionClass cls, double min, double max) {
         const int c = int(std::lround(colour));
-        if (isValidColourId(c))
-            by_colour[std::size_t(c)].push_back({cls, int(std::lround(min)), int(std::lround(max))});
+        if (isValidColourId(c)) {
+            Rules& r = by_colour[std::size_t(c)];
+            r.rules[std::size_t(r.count++)] = {cls, int(std::lround(min)), int(std::lround(max))};
+        }
     };
     add(m_ball_colour, TransitionClass::Ball, m_min_ball_length, 1e6);
     add(m_goal_colour, TransitionClass::Goal, m_min_goal_length, 1e6);
@@ -161,11 +168,15 @@ void TransitionFilter::matchTransitions(const SegmentedRegion& region, Transitio
 
     for (std::size_t i = 0; i < region.size(); ++i)
         for (const ColourSegment& s : region[i]) // single-segment scans count too (unlike the original)
-            for (const ClassRule& r : by_colour[std::size_t(s.colour)]) {
+        {
+            const Rules& rules = by_colour[std::size_t(s.colour)];
+            for (int k = 0; k < rules.count; ++k) {
+                const ClassRule& r = rules.rules[std::size_t(k)];
                 const int len = s.length();
                 if (len >= r.min && len <= r.max)
                     out[r.cls].push_back(s);
             }
+        }
 }
 
 void TransitionFilter::run(Blackboard& bb)
