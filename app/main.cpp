@@ -26,6 +26,7 @@ constexpr const char* kUsage =
     "                          [--limit N] [--overlays DIR]\n"
     "  fieldsight bench STREAM [--lut FILE] [--repeat N] [--threads N] [--json FILE] [--limit N]\n"
     "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE]\n"
+    "  (run, bench and eval also take --set STAGE.PARAM=VALUE, e.g. transitions.goal_colour=9)\n"
     "  fieldsight synth --out DIR [--scenario NAME] [--frames N] [--seed S] [--strm] [--no-png]\n"
     "  fieldsight lut convert IN OUT\n"
     "  fieldsight help\n"
@@ -85,6 +86,12 @@ QCommandLineOption lutOption()
     return {"lut", "Colour lookup table (default: the stream's default.lut).", "FILE"};
 }
 
+QCommandLineOption setOption()
+{
+    return {"set", "Set a stage parameter, e.g. transitions.goal_colour=9 (repeatable).",
+            "STAGE.PARAM=VALUE"};
+}
+
 QCommandLineOption threadsOption(const QString& fallback)
 {
     return {"threads",
@@ -100,6 +107,7 @@ int runRun(const QStringList& args)
                                      "fieldsight-results/1 JSON.");
     parser.addPositionalArgument("STREAM", "Image folder, .strm file, video file or camera:N.");
     parser.addOption(lutOption());
+    parser.addOption(setOption());
     parser.addOption({"out",
                       "Output file, or - for standard output (default "
                       "fieldsight-results.json).",
@@ -114,6 +122,8 @@ int runRun(const QStringList& args)
     fieldsight::RunOptions options;
     options.stream = parser.positionalArguments().first().toStdString();
     options.lut = parser.value("lut").toStdString();
+    for (const QString& setting : parser.values("set"))
+        options.set.push_back(setting.toStdString());
     if (parser.isSet("out"))
         options.out = parser.value("out").toStdString();
     for (const QString& list : parser.values("skip"))
@@ -138,6 +148,7 @@ int runBench(const QStringList& args)
         "(only the scan lines' LUT lookups) and a full-frame OpenCV baseline.");
     parser.addPositionalArgument("STREAM", "Image folder, .strm file or video file.");
     parser.addOption(lutOption());
+    parser.addOption(setOption());
     parser.addOption({"repeat", "Passes over the stream (default 1).", "N"});
     parser.addOption(threadsOption("1"));
     parser.addOption({"json", "Also write the numbers as fieldsight-bench/1 JSON.", "FILE"});
@@ -148,6 +159,8 @@ int runBench(const QStringList& args)
     fieldsight::BenchOptions options;
     options.stream = parser.positionalArguments().first().toStdString();
     options.lut = parser.value("lut").toStdString();
+    for (const QString& setting : parser.values("set"))
+        options.set.push_back(setting.toStdString());
     options.json = parser.value("json").toStdString();
     QString error;
     const auto repeat = intOption(parser, "repeat", 1, 1, error);
@@ -169,6 +182,7 @@ int runEval(const QStringList& args)
         "5.3): TP, FP, FN, precision, recall per class, field boundary error in px.");
     parser.addPositionalArgument("STREAM", "Image folder or .strm file.");
     parser.addOption(lutOption());
+    parser.addOption(setOption());
     parser.addOption(
         {"truth", "Annotations (default: annotations.json in the stream folder).", "FILE"});
     parser.addOption({"json", "Also write the scores as fieldsight-eval/1 JSON.", "FILE"});
@@ -178,6 +192,8 @@ int runEval(const QStringList& args)
     fieldsight::EvalOptions options;
     options.stream = parser.positionalArguments().first().toStdString();
     options.lut = parser.value("lut").toStdString();
+    for (const QString& setting : parser.values("set"))
+        options.set.push_back(setting.toStdString());
     options.truth = parser.value("truth").toStdString();
     options.json = parser.value("json").toStdString();
     options.threads = 0; // all cores

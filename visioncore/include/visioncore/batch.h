@@ -5,6 +5,7 @@
 #include "visioncore/annotations.h"
 #include "visioncore/blackboard.h"
 #include "visioncore/colour_lut.h"
+#include "visioncore/control_wrapper.h"
 #include "visioncore/controller.h"
 #include "visioncore/evaluation.h"
 #include "visioncore/result.h"
@@ -14,6 +15,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,6 +33,8 @@ struct BatchInput
     std::unique_ptr<StreamReader> reader; ///< for names and info; workers open their own
     std::string lut_path;                 ///< the LUT file in use
     ColourLut lut;
+    /// Stage parameters set on every core: (stage id, parameter, value).
+    std::vector<std::tuple<std::string, std::string, double>> params;
 
     const StreamInfo& info() const { return reader->info(); }
 };
@@ -38,6 +42,12 @@ struct BatchInput
 /// Opens `stream` and the LUT `lut_path`, or the stream's default LUT when `lut_path` is empty.
 /// Errors name the file and the problem.
 Result<BatchInput> openBatchInput(const std::string& stream, const std::string& lut_path);
+
+/// Parses --set settings "STAGE.PARAM=VALUE" (e.g. transitions.goal_colour=9), checks them against
+/// the pipeline's parameter registry and stores them in input.params.
+Status applySettings(BatchInput& input, const std::vector<std::string>& settings);
+/// Applies input.params to a core (already checked by applySettings).
+Status configureControl(ControlWrapper& control, const BatchInput& input);
 
 /// Checks --skip ids against the pipeline (whether a stage may be skipped is checked when the
 /// control wrappers are set up).
@@ -88,6 +98,7 @@ struct RunOptions
     std::string lut;                             ///< empty: the stream's default LUT
     std::string out = "fieldsight-results.json"; ///< "-" for stdout
     std::vector<std::string> skip;               ///< stage ids to switch off
+    std::vector<std::string> set;                ///< "STAGE.PARAM=VALUE" settings
     int threads = 1;                             ///< 0: one per core
     std::size_t limit = 0;                       ///< process only the first `limit` frames; 0: all
     std::string overlays; ///< when set, write each frame with its detections drawn as PNG here
@@ -110,6 +121,7 @@ struct BenchOptions
     std::string stream;
     std::string lut;       ///< empty: the stream's default LUT
     int repeat = 1;        ///< passes over the stream
+    std::vector<std::string> set; ///< "STAGE.PARAM=VALUE" settings
     int threads = 1;       ///< 0: one per core
     std::size_t limit = 0; ///< only the first `limit` frames; 0: all
     std::string json;      ///< also write fieldsight-bench/1 here when not empty
@@ -151,6 +163,7 @@ struct EvalOptions
     std::string stream;
     std::string lut;   ///< empty: the stream's default LUT
     std::string truth; ///< empty: annotations.json in the stream folder
+    std::vector<std::string> set; ///< "STAGE.PARAM=VALUE" settings
     std::string json;  ///< also write fieldsight-eval/1 here when not empty
     int threads = 0;   ///< 0: one per core
 };

@@ -177,6 +177,10 @@ Result<std::vector<FrameResult>> processFrames(BatchInput& input,
                     return;
                 }
             }
+            if (Status s = configureControl(control, input); !s) {
+                problem.report(0, "--set: " + s.error().message, false);
+                return;
+            }
             while (!problem.stopped()) {
                 const std::size_t begin = next.fetch_add(chunk);
                 if (begin >= indices.size())
@@ -221,6 +225,43 @@ Result<std::vector<FrameResult>> processFrames(BatchInput& input,
         return Error{*problem.message()};
     }
     return results;
+}
+
+Status applySettings(BatchInput& input, const std::vector<std::string>& settings)
+{
+    const Controller pipeline;
+    for (const std::string& text : settings) {
+        const auto dot = text.find('.');
+        const auto eq = text.find('=');
+        if (dot == std::string::npos || eq == std::string::npos || dot > eq)
+            return Error{"--set " + text + ": expected STAGE.PARAM=VALUE"};
+        const std::string stage = text.substr(0, dot);
+        const std::string name = text.substr(dot + 1, eq - dot - 1);
+        double value = 0;
+        try {
+            std::size_t used = 0;
+            value = std::stod(text.substr(eq + 1), &used);
+            if (used != text.size() - eq - 1)
+                throw std::invalid_argument("trailing characters");
+        } catch (const std::exception&) {
+            return Error{"--set " + text + ": the value is not a number"};
+        }
+        Stage* s = pipeline.stage(stage);
+        if (!s)
+            return Error{"--set " + text + ": unknown stage '" + stage + "'"};
+        if (Status ok = s->setParam(name, value); !ok)
+            return Error{"--set " + text + ": " + ok.error().message};
+        input.params.emplace_back(stage, name, value);
+    }
+    return {};
+}
+
+Status configureControl(ControlWrapper& control, const BatchInput& input)
+{
+    for (const auto& [stage, name, value] : input.params)
+        if (Status s = control.setParam(stage, name, value); !s)
+            return s;
+    return {};
 }
 
 } // namespace fieldsight

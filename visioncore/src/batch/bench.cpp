@@ -180,6 +180,10 @@ Result<BenchResults> runBench(BatchInput& input, const BenchOptions& options)
             StreamReader& source = own ? *own : *input.reader;
             MemoryDataWrapper data(input.lut);
             ControlWrapper control(data);
+            if (Status s = configureControl(control, input); !s) {
+                report("--set: " + s.error().message, false);
+                return;
+            }
             Samples& out = samples[std::size_t(t)];
             for (const auto& stage : control.controller().stages())
                 out.stage_ids.push_back(stage->info().id);
@@ -406,6 +410,10 @@ int benchCommand(const BenchOptions& options, std::ostream& out, std::ostream& e
         auto input = openBatchInput(options.stream, options.lut);
         if (!input) {
             batch::printError(err, input.error().message);
+            return kExitBadInput;
+        }
+        if (Status s = applySettings(input.value(), options.set); !s) {
+            batch::printError(err, s.error().message);
             return kExitBadInput;
         }
         auto results = runBench(input.value(), options);

@@ -136,6 +136,10 @@ int evalCommand(const EvalOptions& options, std::ostream& out, std::ostream& err
             batch::printError(err, input.error().message);
             return kExitBadInput;
         }
+        if (Status s = applySettings(input.value(), options.set); !s) {
+            batch::printError(err, s.error().message);
+            return kExitBadInput;
+        }
         const std::string truth_path =
             options.truth.empty() ? defaultTruthPath(options.stream) : options.truth;
         auto truth = Annotations::load(truth_path);

@@ -150,6 +150,10 @@ int runCommand(const RunOptions& options, std::ostream& out, std::ostream& err)
             batch::printError(err, input.error().message);
             return kExitBadInput;
         }
+        if (Status s = applySettings(input.value(), options.set); !s) {
+            batch::printError(err, s.error().message);
+            return kExitBadInput;
+        }
         std::size_t count = input.value().info().frame_count;
         if (options.limit > 0)
             count = std::min(count, options.limit);

@@ -11,11 +11,20 @@ namespace fieldsight {
 
 namespace {
 
-/// Colours that belong to the field or to objects the other stages detect.
-bool isFieldColour(Colour c)
+/// Bit set of colours that belong to the field or to objects the other stages detect.
+unsigned fieldColours(const Blackboard& bb)
 {
-    return c == Colour::Green || c == Colour::White || c == Colour::Orange ||
-           c == Colour::Yellow || c == Colour::YellowOrange || c == Colour::PinkOrange;
+    unsigned mask = 0;
+    for (Colour c : {Colour::Green, Colour::White, Colour::Orange, Colour::Yellow,
+                     Colour::YellowOrange, Colour::PinkOrange})
+        mask |= 1u << unsigned(c);
+    // The goal and ball colours are parameters of the transition filter (blue goals in 2009):
+    // whatever colour their transitions have is not an obstacle.
+    for (const Transitions* t : {&bb.horizontal_transitions, &bb.vertical_transitions})
+        for (TransitionClass cls : {TransitionClass::Goal, TransitionClass::Ball})
+            if (!(*t)[cls].empty())
+                mask |= 1u << unsigned((*t)[cls].front().colour);
+    return mask;
 }
 
 struct Run
@@ -72,6 +81,8 @@ void ObstacleDetector::run(Blackboard& bb)
     const auto& region = bb.vertical_filtered;
     if (region.size() == 0)
         return;
+    const unsigned field_mask = fieldColours(bb);
+    const auto isFieldColour = [field_mask](Colour c) { return (field_mask >> unsigned(c)) & 1u; };
 
     // One run per scan line at most: the lowest long run of non-field colour, i.e. the nearest
     // object (its bottom is where it stands).
