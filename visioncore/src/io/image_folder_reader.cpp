@@ -36,6 +36,7 @@ struct FrameMeta
 struct Manifest
 {
     PixelFormat pixel_format = PixelFormat::Rgb;
+    bool flipped = false; ///< images are stored rotated 180 degrees (as .strm's flipped)
     std::optional<std::string> lut;
     std::optional<std::array<double, 2>> fov_deg;
     std::map<std::string, FrameMeta> frames; ///< by file name
@@ -131,6 +132,11 @@ Result<Manifest> parseManifest(const std::string& path)
         else
             return bad("\"pixel_format\" must be \"rgb\" or \"ycbcr\"");
     }
+    if (const auto it = root.find("flipped"); it != root.end()) {
+        if (!it->is_boolean())
+            return bad("\"flipped\" must be true or false");
+        manifest.flipped = it->get<bool>();
+    }
     if (const auto it = root.find("lut"); it != root.end()) {
         if (!it->is_string())
             return bad("\"lut\" must be a string (a file name relative to the folder)");
@@ -187,9 +193,9 @@ class ImageFolderReader final : public StreamReader
 {
 public:
     ImageFolderReader(StreamInfo info, fs::path folder, std::vector<std::string> files,
-                      std::vector<FrameMeta> meta, PixelFormat format)
+                      std::vector<FrameMeta> meta, PixelFormat format, bool flipped)
         : m_info(std::move(info)), m_folder(std::move(folder)), m_files(std::move(files)),
-          m_meta(std::move(meta)), m_format(format)
+          m_meta(std::move(meta)), m_format(format), m_flipped(flipped)
     {
     }
 
@@ -220,12 +226,14 @@ public:
     Result<Frame> decode(std::size_t index) const
     {
         const std::string path = (m_folder / m_files[index]).string();
-        const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+        cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
         if (bgr.empty())
             return Error{"cannot read " + path + ": " + unreadableReason(path)};
         if (!isSaneFrameSize(bgr.cols, bgr.rows))
             return Error{path + ": absurd frame size " + std::to_string(bgr.cols) + "x" +
                          std::to_string(bgr.rows)};
+        if (m_flipped)
+            cv::flip(bgr, bgr, -1);
         Frame frame;
         if (m_format == PixelFormat::YCbCr) {
             // The PNG's R, G, B hold Y, Cb, Cr; imread delivers them as B, G, R.
@@ -256,6 +264,7 @@ private:
     std::vector<std::string> m_files;
     std::vector<FrameMeta> m_meta;
     PixelFormat m_format;
+    bool m_flipped = false;
 };
 
 /// A NUView log folder holds "image.strm" or "N_image.strm"; the first such file, if any.
@@ -332,7 +341,8 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     }
 
     auto reader = std::make_unique<ImageFolderReader>(std::move(info), folder, std::move(files),
-                                                      std::move(meta), manifest.pixel_format);
+                                                      std::move(meta), manifest.pixel_format,
+                                                      manifest.flipped);
     // The first frame fixes the stream's size; decoding it now also reports a bad file early.
     auto first = reader->decode(0);
     if (!first)
