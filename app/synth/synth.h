@@ -22,7 +22,8 @@ struct SynthOptions
     int width = 320;            ///< px
     int height = 240;           ///< px
     bool write_strm = false;    ///< also write <out_dir>/image.strm with the same frames (YCbCr)
-    bool write_png = true;      ///< write the PNG frames
+    bool write_png = true;      ///< write the PNG frames and stream.json (annotations are keyed
+                                ///< by the PNG names either way)
 };
 
 std::vector<std::string> scenarioNames(); ///< "lab1", "lab2", "difficult", "rc2012", "rc2013"

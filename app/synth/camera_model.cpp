@@ -1,0 +1,87 @@
+// The generator's pinhole camera.
+#include "synth/camera_model.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace fieldsight::synth {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+CameraModel::CameraModel(int width, int height, double fov_x_deg, double fov_y_deg)
+    : m_width(width), m_height(height), m_cx(width / 2.0), m_cy(height / 2.0)
+{
+    m_fx = m_cx / std::tan(fov_x_deg * kPi / 360.0);
+    m_fy = m_cy / std::tan(fov_y_deg * kPi / 360.0);
+    setPose(CameraPose{});
+}
+
+void CameraModel::setPose(const CameraPose& pose)
+{
+    m_pose = pose;
+    // With no rotation the camera looks along +x: right = -y, down = -z, forward = +x.
+    Eigen::Matrix3d base;
+    base.col(0) = Eigen::Vector3d(0, -1, 0);
+    base.col(1) = Eigen::Vector3d(0, 0, -1);
+    base.col(2) = Eigen::Vector3d(1, 0, 0);
+    const Eigen::Matrix3d rotation =
+        (Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()) *
+         Eigen::AngleAxisd(pose.pitch, Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(pose.roll, Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
+    m_camera_to_world = rotation * base;
+}
+
+Eigen::Vector3d CameraModel::toCamera(const Eigen::Vector3d& world) const
+{
+    return m_camera_to_world.transpose() * (world - m_pose.position);
+}
+
+Eigen::Vector3d CameraModel::directionToWorld(const Eigen::Vector3d& camera_direction) const
+{
+    return m_camera_to_world * camera_direction;
+}
+
+std::optional<PointF> CameraModel::project(const Eigen::Vector3d& world) const
+{
+    const Eigen::Vector3d c = toCamera(world);
+    if (c.z() <= 1e-9)
+        return std::nullopt;
+    return projectCamera(c);
+}
+
+PointF CameraModel::projectCamera(const Eigen::Vector3d& camera) const
+{
+    return {m_cx + m_fx * camera.x() / camera.z(), m_cy + m_fy * camera.y() / camera.z()};
+}
+
+Eigen::Vector3d CameraModel::rayDirection(double u, double v) const
+{
+    const Eigen::Vector3d d((u - m_cx) / m_fx, (v - m_cy) / m_fy, 1.0);
+    return (m_camera_to_world * d).normalized();
+}
+
+double CameraModel::apparentRadius(const Eigen::Vector3d& centre, double radius) const
+{
+    return m_fx * radius / (centre - m_pose.position).norm();
+}
+
+Horizon CameraModel::horizon() const
+{
+    // A ray (a, b, 1) in normalised camera coordinates is horizontal when its world z is 0:
+    // m0 a + m1 b + m2 = 0 with m the world-z row of the camera-to-world rotation.
+    const Eigen::RowVector3d m = m_camera_to_world.row(2);
+    auto yAt = [&](double u) {
+        const double a = (u - m_cx) / m_fx;
+        if (std::abs(m(1)) < 1e-12) // looking straight up or down: no horizon in the image
+            return m(2) < 0 ? -1e6 : 1e6;
+        const double b = -(m(0) * a + m(2)) / m(1);
+        return m_cy + m_fy * b;
+    };
+    return {yAt(0), yAt(m_width - 1)};
+}
+
+} // namespace fieldsight::synth
