@@ -75,6 +75,12 @@ GoalpostDetector::GoalpostDetector()
     addParam(m_matching_tolerance,
              {"matching_tolerance", "", "pairing tolerance for edge angle, length and count", 0.2,
               0, 1});
+    addParam(m_min_support_ratio,
+             {"min_support_ratio", "",
+              "the shorter edge of a post must have this fraction of the longer one's length and "
+              "points (the original used 1 - matching_tolerance, which loses posts half hidden by "
+              "a robot)",
+              0.5, 0, 1});
     addParam(m_min_aspect, {"min_aspect", "", "minimum height / width of a post", 1.5, 0, 20});
     addParam(m_min_width, {"min_width", "px", "narrower posts are dropped", 3, 0, 100});
     addParam(m_min_separation,
@@ -150,8 +156,9 @@ void GoalpostDetector::run(Blackboard& bb)
                                      std::max(1e-9, std::max(s.length(), e.length()));
             const double count_ratio =
                 double(std::min(s.count, e.count)) / double(std::max(s.count, e.count));
-            if (s.line.angleTo(e.line) > tol * std::numbers::pi / 2 || len_ratio < 1 - tol ||
-                count_ratio < 1 - tol || s.meanX() >= e.meanX())
+            if (s.line.angleTo(e.line) > tol * std::numbers::pi / 2 ||
+                len_ratio < m_min_support_ratio || count_ratio < m_min_support_ratio ||
+                s.meanX() >= e.meanX())
                 continue;
             used[i] = true;
             const Quad q{s.low, s.high, e.high, e.low};
@@ -173,6 +180,34 @@ void GoalpostDetector::run(Blackboard& bb)
             break;
         }
     }
+
+    // A post cut by the image border has only its inner edge: most of the goal runs along that
+    // edge reach the border.
+    const auto borderPost = [&](const Edge& e, bool left_border) {
+        int touching = 0, near = 0;
+        for (const ColourSegment& t : transitions) {
+            const double edge_x = left_border ? t.x1 - 0.5 : t.x0 - 0.5;
+            if (std::abs(e.line.xAtY(t.y0) - edge_x) > m_max_error || t.y0 < e.high.y - 1 ||
+                t.y0 > e.low.y + 1)
+                continue;
+            ++near;
+            touching += left_border ? t.x0 == 0 : t.x1 == w;
+        }
+        if (near == 0 || touching * 10 < near * 8)
+            return;
+        const double bx = left_border ? -0.5 : w - 0.5;
+        const Quad q = left_border ? Quad{{bx, e.low.y}, {bx, e.high.y}, e.high, e.low}
+                                   : Quad{e.low, e.high, {bx, e.high.y}, {bx, e.low.y}};
+        if (q.height() / q.width() >= m_min_aspect)
+            posts.push_back(q);
+    };
+    for (std::size_t i = 0; i < ends.size(); ++i)
+        if (!used[i])
+            borderPost(ends[i], true);
+    for (const Edge& s : starts)
+        if (std::none_of(posts.begin(), posts.end(),
+                         [&](const Quad& q) { return q.bl.x == s.low.x && q.tl.x == s.high.x; }))
+            borderPost(s, false);
 
     // Merge posts that overlap or stand within merge_widths of each other (outer envelope).
     for (std::size_t a = 0; a < posts.size(); ++a)

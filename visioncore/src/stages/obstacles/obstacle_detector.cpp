@@ -55,11 +55,13 @@ ObstacleDetector::ObstacleDetector()
               "the run must reach this far below the green horizon", 0, 0, 100});
     addParam(m_min_height_ratio,
              {"min_height_ratio", "",
-              "a run not touching the green horizon must be this tall, as a fraction of its foot's "
-              "distance below the kinematic horizon",
+              "a run must be this tall (less min_run, for blur), as a fraction of its foot's "
+              "distance below the green horizon",
               0.3, 0, 2});
-    addParam(m_horizon_touch, {"horizon_touch", "px",
-                               "a run starting this close to the green horizon breaks it", 2, 0, 50});
+    addParam(m_max_foot_jump,
+             {"max_foot_jump", "px",
+              "neighbouring scan lines whose feet differ more belong to different obstacles", 4, 0,
+              240});
 }
 
 const StageInfo& ObstacleDetector::info() const
@@ -109,14 +111,17 @@ void ObstacleDetector::run(Blackboard& bb)
             if (top >= 0 && k < scan.size() && scan[k].length() <= 3 && k + 1 < scan.size() &&
                 !isFieldColour(scan[k + 1].colour))
                 continue;
-            // Something standing on the field as tall as the camera reaches the horizon: its run
-            // starts at the green horizon, or is tall for how far below the kinematic horizon its
-            // foot is. Things lying on the field (a blurred distant line) are flat and fail both.
+            // Something standing on the field as tall as the camera reaches the horizon, so its run
+            // is tall for how far below the green horizon its foot is (a robot breaking the
+            // horizon runs all the way up to it). Things lying on the field (a blurred distant
+            // line) are flat.
             const int x = scan.empty() ? 0 : scan[0].x0;
             const int gh = bb.green_horizon.yAt(x);
-            const double foot_depth = bottom - bb.kinematic_horizon.yAt(x, bb.width());
-            const bool standing = top <= gh + m_horizon_touch ||
-                                  bottom - top + 1 >= m_min_height_ratio * foot_depth;
+            // Depth of the foot below the green horizon: the field edge lies below the true
+            // horizon, so this works whether or not the stream knows its kinematic horizon.
+            const double foot_depth = bottom - gh;
+            // (min_run of the height is allowed for blur, which flattens nothing real.)
+            const bool standing = bottom - top + 1 - min_run >= m_min_height_ratio * foot_depth;
             if (top >= 0 && bottom - top + 1 >= min_run && standing &&
                 bottom - gh >= m_min_distance_from_horizon) {
                 best = {scan[0].x0, top, bottom};
@@ -141,7 +146,10 @@ void ObstacleDetector::run(Blackboard& bb)
             Group& g = groups.back();
             const bool adjacent = r.x - g.last_x <= max_step;
             const bool overlaps = r.top <= g.last_bottom && g.last_top <= r.bottom;
-            if (adjacent && overlaps) {
+            // Robots side by side at different distances stand on different rows.
+            const bool same_foot = std::abs(r.bottom - g.last_bottom) <= m_max_foot_jump ||
+                                   r.bottom >= h - 1 || g.last_bottom >= h - 1;
+            if (adjacent && overlaps && same_foot) {
                 g.last_x = r.x;
                 g.top = std::min(g.top, r.top);
                 g.bottom = std::max(g.bottom, r.bottom);

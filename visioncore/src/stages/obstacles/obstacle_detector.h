@@ -21,7 +21,7 @@ private:
     double m_max_column_gap = 1;
     double m_min_distance_from_horizon = 0;
     double m_min_height_ratio = 0.3;
-    double m_horizon_touch = 2;
+    double m_max_foot_jump = 4;
 };
 
 } // namespace fieldsight
