@@ -80,7 +80,7 @@ GoalpostDetector::GoalpostDetector()
               "the shorter edge of a post must have this fraction of the longer one's length and "
               "points (the original used 1 - matching_tolerance, which loses posts half hidden by "
               "a robot)",
-              0.5, 0, 1});
+              0.3, 0, 1});
     addParam(m_min_aspect, {"min_aspect", "", "minimum height / width of a post", 1.5, 0, 20});
     addParam(m_min_width, {"min_width", "px", "narrower posts are dropped", 3, 0, 100});
     addParam(m_min_separation,

@@ -19,7 +19,7 @@ private:
     double m_max_error = 5;
     double m_max_lines = 3;
     double m_matching_tolerance = 0.2;
-    double m_min_support_ratio = 0.5;
+    double m_min_support_ratio = 0.3;
     double m_min_aspect = 1.5;
     double m_min_width = 3;
     double m_min_separation = 40;

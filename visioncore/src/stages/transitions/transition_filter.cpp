@@ -46,6 +46,12 @@ const std::vector<ReplacementRule>& defaultReplacementRules()
          M::After},
         {"yellowgoal2", {5, -1, {Colour::Yellow}}, {0, 3, {kUncl}}, {1, -1, {Colour::Yellow}},
          M::After},
+        // Not in the original: sensor noise splits a distant post (a few px wide) into pieces too
+        // short to be transitions. Blue for the 2009 goals.
+        {"goalnoise_yellow", {1, -1, {Colour::Yellow}}, {0, 1, {kUncl}}, {1, -1, {Colour::Yellow}},
+         M::Before},
+        {"goalnoise_blue", {1, -1, {Colour::Blue}}, {0, 1, {kUncl}}, {1, -1, {Colour::Blue}},
+         M::Before},
         {"ball1", {5, -1, {Colour::Orange}}, {0, 3, {kUncl}}, {1, -1, {Colour::Orange}}, M::Before},
         {"line1", {1, -1, {Colour::White}}, {0, 3, {kUncl}}, {5, -1, {Colour::White}}, M::Before},
     };

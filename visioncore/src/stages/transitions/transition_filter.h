@@ -26,7 +26,8 @@ struct ReplacementRule
     Method method;
 };
 
-/// The original's nine default replacement rules (Darwin/Config/*/Rules/ReplacementRules.txt).
+/// The original's nine default replacement rules (Darwin/Config/*/Rules/ReplacementRules.txt),
+/// plus two that mend noise inside distant goalposts.
 const std::vector<ReplacementRule>& defaultReplacementRules();
 
 class TransitionFilter : public Stage
