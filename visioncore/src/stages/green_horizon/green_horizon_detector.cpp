@@ -9,6 +9,45 @@
 
 namespace fieldsight {
 
+namespace {
+
+/// The hull cannot bridge a dip at the image border (a robot standing at the edge of the view):
+/// the border column's point ends the hull, low. Such an end point lies well below the extension
+/// of the next hull segment and no other scan point supports its own segment; it is dropped, and
+/// GreenHorizon::set extrapolates the field edge to the border instead.
+void dropEndDips(std::vector<PointF>& hull, const std::vector<PixelPoint>& points, double margin,
+                 double max_span)
+{
+    const auto supporters = [&](const PointF& a, const PointF& b) {
+        int n = 0;
+        for (const PixelPoint& p : points) {
+            if (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x))
+                continue;
+            const double y = a.y + (b.y - a.y) * (p.x - a.x) / (b.x - a.x);
+            n += std::abs(p.y - y) <= 1.5;
+        }
+        return n;
+    };
+    // A dip: a short end segment (a scan spacing or two) whose end lies below the extension of
+    // the segment next to it.
+    const auto dip = [&](const PointF& end, const PointF& next, const PointF& a, const PointF& b) {
+        if (std::abs(next.x - end.x) > max_span || supporters(end, next) > 2)
+            return false;
+        const double y = a.y + (b.y - a.y) * (end.x - a.x) / (b.x - a.x);
+        return end.y - y > margin;
+    };
+    while (hull.size() >= 3 && dip(hull[0], hull[1], hull[1], hull[2]))
+        hull.erase(hull.begin());
+    while (hull.size() >= 3) {
+        const std::size_t n = hull.size();
+        if (!dip(hull[n - 1], hull[n - 2], hull[n - 3], hull[n - 2]))
+            break;
+        hull.pop_back();
+    }
+}
+
+} // namespace
+
 GreenHorizonDetector::GreenHorizonDetector()
 {
     addParam(m_scan_spacing, {"scan_spacing", "px", "distance between scanned columns", 11, 1, 64});
@@ -101,6 +140,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         }
         hull.push_back(q);
     }
+    dropEndDips(hull, points, min_green, 2.0 * spacing);
     bb.green_horizon.set(std::move(hull), w, h);
 
     if (auto* d = bb.debug.layer("green_horizon.thrown_points"))
