@@ -15,20 +15,47 @@ using Rule = ReplacementRule;
 constexpr Colour kGreen = Colour::Green;
 constexpr Colour kUncl = Colour::Unclassified;
 
-bool partMatches(const Rule::Part& part, const ColourSegment* s)
+/// A rule part compiled for the hot loop: colour lists become bit sets.
+struct CompiledPart
 {
-    if (!s) // the scan's end: only an unconstrained part matches
-        return part.colours.empty() && part.min == 0;
-    const int len = s->length();
-    if (len < part.min || (part.max >= 0 && len > part.max))
-        return false;
-    return part.colours.empty() ||
-           std::find(part.colours.begin(), part.colours.end(), s->colour) != part.colours.end();
+    int min = 0;
+    int max = -1;      ///< < 0: unbounded
+    unsigned mask = 0; ///< 0: any colour
+};
+
+struct CompiledRule
+{
+    CompiledPart before, middle, after;
+    Rule::Method method;
+};
+
+CompiledPart compile(const Rule::Part& part)
+{
+    CompiledPart c{part.min, part.max, 0};
+    for (Colour colour : part.colours)
+        c.mask |= 1u << unsigned(colour);
+    return c;
 }
 
-bool oneWay(const Rule& r, const ColourSegment* b, const ColourSegment& m, const ColourSegment* a)
+[[gnu::always_inline]] inline bool partMatches(const CompiledPart& part, const ColourSegment& s)
 {
-    return partMatches(r.middle, &m) && partMatches(r.before, b) && partMatches(r.after, a);
+    const int len = s.length();
+    return len >= part.min && (part.max < 0 || len <= part.max) &&
+           (part.mask == 0 || (part.mask >> unsigned(s.colour) & 1u));
+}
+
+/// The compiled default rules, grouped by the colours their middle accepts.
+const std::array<std::vector<CompiledRule>, kColourCount>& rulesByMiddleColour()
+{
+    static const auto table = [] {
+        std::array<std::vector<CompiledRule>, kColourCount> t;
+        for (const Rule& r : defaultReplacementRules())
+            for (Colour c : r.middle.colours)
+                t[std::size_t(c)].push_back(
+                    {compile(r.before), compile(r.middle), compile(r.after), r.method});
+        return t;
+    }();
+    return table;
 }
 
 } // namespace
@@ -88,28 +115,23 @@ const StageInfo& TransitionFilter::info() const
 
 void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& out) const
 {
-    const auto& rules = defaultReplacementRules();
-    // Colours that can be a rule's middle at all: most segments (green, white) skip the rules.
-    static const unsigned middle_mask = [] {
-        unsigned mask = 0;
-        for (const Rule& r : defaultReplacementRules())
-            for (Colour c : r.middle.colours)
-                mask |= 1u << unsigned(c);
-        return mask;
-    }();
+    const auto& by_middle = rulesByMiddleColour();
     for (std::size_t i = 0; i < in.size(); ++i) {
         const Scan& scan = in[i];
         Scan& filtered = out.addScan();
         const std::size_t n = scan.size();
         for (std::size_t k = 0; k < n; ++k) {
             ColourSegment seg = scan[k];
-            // Rules look at the original neighbours, so replacements never cascade.
-            if (k > 0 && k + 1 < n && (middle_mask >> unsigned(seg.colour) & 1u)) {
+            // Rules look at the original neighbours, so replacements never cascade. Most segments
+            // (green, white) are no rule's middle and skip this.
+            if (k > 0 && k + 1 < n) {
                 const ColourSegment& b = scan[k - 1];
                 const ColourSegment& a = scan[k + 1];
-                for (const Rule& r : rules) {
-                    const bool forward = oneWay(r, &b, seg, &a);
-                    if (!forward && !oneWay(r, &a, seg, &b))
+                for (const CompiledRule& r : by_middle[std::size_t(seg.colour)]) {
+                    if (!partMatches(r.middle, seg))
+                        continue;
+                    const bool forward = partMatches(r.before, b) && partMatches(r.after, a);
+                    if (!forward && !(partMatches(r.before, a) && partMatches(r.after, b)))
                         continue;
                     const ColourSegment& before = forward ? b : a;
                     const ColourSegment& after = forward ? a : b;
