@@ -128,7 +128,12 @@ BallDetector::BallDetector()
     addParam(m_cluster_distance,
              {"cluster_distance", "px", "edge points closer than this belong together", 10, 1, 100});
     addParam(m_max_fit_error, {"max_fit_error", "px", "circle RANSAC inlier distance", 1.5, 0.1, 20});
-    addParam(m_iterations, {"iterations", "", "circle RANSAC samples", 40, 1, 10000});
+    addParam(m_iterations, {"iterations", "", "circle RANSAC samples (at most)", 100, 1, 10000});
+    addParam(m_min_edge_support,
+             {"min_edge_support", "",
+              "a circle needs this fraction of the edge points its outline should give the scan "
+              "lines (8 r / spacing)",
+              0.25, 0, 1});
     addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
 }
 
@@ -177,6 +182,9 @@ void BallDetector::run(Blackboard& bb)
     if (auto* d = bb.debug.layer("ball.edge_points"))
         d->add(pointsShape(edges, debug_colour::kCyan, 2));
 
+    const double spacing = bb.horizontal_scan_ys.size() >= 2
+                               ? std::abs(bb.horizontal_scan_ys[0] - bb.horizontal_scan_ys[1])
+                               : 4.0;
     std::mt19937 rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_fit_error;
@@ -199,10 +207,16 @@ void BallDetector::run(Blackboard& bb)
         const bool clean = std::all_of(group.begin(), group.end(),
                                        [&](const PointF& p) { return c.error(p) < m_max_fit_error; });
         if (!clean && group.size() >= 5) {
-            params.min_points = std::max(4, int(group.size() / 2));
+            // Shading and highlights break a real ball's colour into pieces, so the cluster also
+            // holds edges inside the ball: judge a circle by how much of its own outline the scan
+            // lines confirm (about 8 r / spacing edge points), not by the share of the cluster.
+            params.min_points = 4;
             RansacResult<Circle> r;
             std::vector<PointF> pts = group;
             if (!ransacFindModel(pts, params, rng, r) || !fitCircle(r.inliers, c))
+                continue;
+            const double expected = 8 * c.radius / spacing;
+            if (double(r.inliers.size()) < std::max(4.0, m_min_edge_support * expected))
                 continue;
         }
         if (accept(c)) {

@@ -18,7 +18,8 @@ private:
     double m_min_orange_fraction = 0.2; // BALL_MIN_PERCENT_ORANGE
     double m_cluster_distance = 10;
     double m_max_fit_error = 1.5;
-    double m_iterations = 40;
+    double m_iterations = 100;
+    double m_min_edge_support = 0.25;
     double m_seed = 1;
 };
 
