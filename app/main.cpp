@@ -10,6 +10,7 @@
 #include <QStringList>
 
 #include <iostream>
+#include <limits>
 #include <optional>
 
 namespace {
@@ -24,7 +25,8 @@ constexpr const char* kUsage =
     "  fieldsight [gui [STREAM] [--lut FILE]]   open the GUI\n"
     "  fieldsight run   STREAM [--lut FILE] [--out FILE|-] [--skip STAGE,...] [--threads N]\n"
     "                          [--limit N] [--overlays DIR]\n"
-    "  fieldsight bench STREAM [--lut FILE] [--repeat N] [--threads N] [--json FILE] [--limit N]\n"
+    "  fieldsight bench STREAM... [--lut FILE] [--repeat N] [--threads N] [--json FILE]\n"
+    "                          [--limit N]   (several streams: a table as the paper's Table 1)\n"
     "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE]\n"
     "  (run, bench and eval also take --set STAGE.PARAM=VALUE, e.g. transitions.goal_colour=9)\n"
     "  fieldsight synth --out DIR [--scenario NAME] [--frames N] [--seed S] [--strm] [--no-png]\n"
@@ -115,7 +117,8 @@ int runRun(const QStringList& args)
     parser.addOption({"skip", "Stages to switch off, comma separated.", "STAGE,..."});
     parser.addOption(threadsOption("1"));
     parser.addOption({"limit", "Process only the first N frames.", "N"});
-    parser.addOption({"overlays", "Also write every frame with its detections drawn to DIR.", "DIR"});
+    parser.addOption(
+        {"overlays", "Also write every frame with its detections drawn to DIR.", "DIR"});
     if (auto done = parseCommand(parser, "run", args, 1, 1))
         return *done;
 
@@ -145,19 +148,26 @@ int runBench(const QStringList& args)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         "Times the pipeline per frame (mean and standard deviation, per stage) next to a floor "
-        "(only the scan lines' LUT lookups) and a full-frame OpenCV baseline.");
-    parser.addPositionalArgument("STREAM", "Image folder, .strm file or video file.");
-    parser.addOption(lutOption());
+        "(only the scan lines' LUT lookups) and a full-frame OpenCV baseline. With several "
+        "streams, each is timed on its own and the table has one row per stream and a combined "
+        "row over all their frames, as the paper's Table 1, then the stages per stream.");
+    parser.addPositionalArgument("STREAM", "Image folder, .strm file or video file; one or more.",
+                                 "STREAM...");
+    parser.addOption({"lut",
+                      "Colour lookup table for every stream (default: each stream's own "
+                      "default.lut).",
+                      "FILE"});
     parser.addOption(setOption());
-    parser.addOption({"repeat", "Passes over the stream (default 1).", "N"});
+    parser.addOption({"repeat", "Passes over each stream (default 1).", "N"});
     parser.addOption(threadsOption("1"));
     parser.addOption({"json", "Also write the numbers as fieldsight-bench/1 JSON.", "FILE"});
-    parser.addOption({"limit", "Use only the first N frames.", "N"});
-    if (auto done = parseCommand(parser, "bench", args, 1, 1))
+    parser.addOption({"limit", "Use only the first N frames of each stream.", "N"});
+    if (auto done = parseCommand(parser, "bench", args, 1, std::numeric_limits<int>::max()))
         return *done;
 
     fieldsight::BenchOptions options;
-    options.stream = parser.positionalArguments().first().toStdString();
+    for (const QString& stream : parser.positionalArguments())
+        options.streams.push_back(stream.toStdString());
     options.lut = parser.value("lut").toStdString();
     for (const QString& setting : parser.values("set"))
         options.set.push_back(setting.toStdString());

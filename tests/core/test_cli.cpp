@@ -1,5 +1,6 @@
 // The fieldsight executable's headless commands as a user meets them: exit statuses, one-line
 // errors naming the file, and the JSON of run, bench and eval on a tiny stream.
+#include "visioncore/batch.h"
 #include "visioncore/colour_lut.h"
 
 #include <QtTest>
@@ -88,10 +89,10 @@ private:
 
     QString path(const QString& name) const { return m_dir.filePath(name); }
 
-    void makeStream(const QString& folder, bool with_lut)
+    void makeStream(const QString& folder, bool with_lut, int frames = kFrames)
     {
         QVERIFY(QDir().mkpath(folder));
-        for (int i = 0; i < kFrames; ++i) {
+        for (int i = 0; i < frames; ++i) {
             QImage image(kWidth, kHeight, QImage::Format_RGB888);
             image.fill(QColor(40, 150 + 10 * i, 40));
             QVERIFY(image.save(folder + "/" + frameName(i), "PNG"));
@@ -348,6 +349,103 @@ private slots:
         QVERIFY(doc.value("baseline").toObject().value("mean_ms").toDouble() > 0);
         QVERIFY(doc.value("ratios").toObject().value("pipeline_over_floor").toDouble() > 0);
         QVERIFY(doc.value("ratios").toObject().value("pipeline_over_baseline").toDouble() > 0);
+    }
+
+    void benchOverSeveralStreamsPrintsTableOne()
+    {
+        const QString lab_a = path("lab_a");
+        const QString lab_b = path("lab_b");
+        makeStream(lab_a, true, 3);
+        makeStream(lab_b, true, 2);
+        const QString json = path("bench_two.json");
+        const Outcome o = fieldsight({"bench", lab_a, lab_b, "--repeat", "2", "--json", json});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.err.isEmpty(), o.err.constData());
+
+        // Table 1: a row per stream named by its folder, then "combined" over all frames.
+        const QStringList lines = QString::fromLocal8Bit(o.out).split('\n');
+        auto row = [&](const QString& name) {
+            for (const QString& line : lines)
+                if (line.startsWith(name + ' '))
+                    return line.split(' ', Qt::SkipEmptyParts);
+            return QStringList();
+        };
+        QCOMPARE(row("lab_a").value(1), QString("3"));
+        QCOMPARE(row("lab_b").value(1), QString("2"));
+        QCOMPARE(row("combined").value(1), QString("5"));
+        // The per-stage table: one column per stream and one for all of them.
+        QVERIFY(o.out.contains("by stage"));
+        for (const char* stage : {"green_horizon", "scanlines", "transitions", "goalposts",
+                                  "field_lines", "ball", "obstacles", "pipeline"}) {
+            const QStringList cells = row(stage);
+            QVERIFY2(cells.size() == 4, qPrintable(QString(stage) + ": " + cells.join(' ')));
+            for (int c = 1; c < 4; ++c) {
+                bool ok = false;
+                QVERIFY2(cells[c].toDouble(&ok) >= 0 && ok, qPrintable(cells.join(' ')));
+            }
+        }
+
+        const QJsonObject doc = readObject(json);
+        QCOMPARE(doc.value("format").toString(), QString("fieldsight-bench/1"));
+        const QJsonArray streams = doc.value("streams").toArray();
+        QCOMPARE(streams.size(), 2);
+        const QJsonObject a = streams[0].toObject();
+        const QJsonObject b = streams[1].toObject();
+        QCOMPARE(a.value("name").toString(), QString("lab_a"));
+        QCOMPARE(a.value("stream").toString(), lab_a);
+        QCOMPARE(a.value("frames").toInt(), 3);
+        QCOMPARE(a.value("pipeline").toObject().value("samples").toInt(), 6);
+        QCOMPARE(b.value("name").toString(), QString("lab_b"));
+        QCOMPARE(b.value("frames").toInt(), 2);
+        QVERIFY(b.value("lut").toString().startsWith(lab_b)); // each stream's own LUT
+
+        const QJsonObject combined = doc.value("combined").toObject();
+        QCOMPARE(combined.value("frames").toInt(), 5);
+        const QJsonObject pipeline = combined.value("pipeline").toObject();
+        QCOMPARE(pipeline.value("samples").toInt(), 10);
+        QCOMPARE(pipeline.value("stages").toObject().size(), 7);
+        // Pooled over frames: the mean weights each stream by its runs (6 and 4).
+        const double mean_a = a.value("pipeline").toObject().value("mean_ms").toDouble();
+        const double mean_b = b.value("pipeline").toObject().value("mean_ms").toDouble();
+        QVERIFY(qAbs(pipeline.value("mean_ms").toDouble() - (6 * mean_a + 4 * mean_b) / 10) < 2e-5);
+        QCOMPARE(combined.value("floor").toObject().value("samples").toInt(), 10);
+        QCOMPARE(combined.value("baseline").toObject().value("samples").toInt(), 10);
+        QVERIFY(combined.value("ratios").toObject().value("pipeline_over_floor").toDouble() > 0);
+    }
+
+    void benchNamesABadSecondStream()
+    {
+        const QString good = path("bench_good");
+        makeStream(good, true, 2);
+        const QString missing = path("bench_missing");
+        Outcome o = fieldsight({"bench", good, missing});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, missing);
+        QVERIFY2(o.out.isEmpty(), o.out.constData()); // checked before anything is timed
+
+        // A second stream without a LUT is named too.
+        const QString bare = path("bench_bare");
+        makeStream(bare, false, 1);
+        o = fieldsight({"bench", good, bare});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, bare);
+    }
+
+    void pooledTimingsEqualTheConcatenatedSamples()
+    {
+        using fieldsight::TimingStats;
+        const std::vector<double> a = {1.0, 2.0, 4.0};
+        const std::vector<double> b = {10.0, 12.0};
+        std::vector<double> all = a;
+        all.insert(all.end(), b.begin(), b.end());
+        const TimingStats pooled = TimingStats::pooled({TimingStats::of(a), TimingStats::of(b)});
+        const TimingStats direct = TimingStats::of(all);
+        QCOMPARE(pooled.samples, std::size_t(5));
+        QVERIFY(qAbs(pooled.mean_ms - 5.8) < 1e-12);
+        QVERIFY(qAbs(pooled.std_ms - direct.std_ms) < 1e-12);
+        // The mean of the means would be 6.67; the streams alone have stds 1.25 and 1.0.
+        QVERIFY(qAbs(pooled.std_ms - 4.4) < 1e-12);
+        QCOMPARE(TimingStats::pooled({}).samples, std::size_t(0));
     }
 
     void evalScoresOnlyDoneFrames()

@@ -88,6 +88,9 @@ struct TimingStats
     std::size_t samples = 0;
 
     static TimingStats of(const std::vector<double>& samples_ms);
+    /// The statistics of all the samples behind `parts` taken together (exactly what of() gives
+    /// on the concatenated samples, up to rounding), not the mean of their means.
+    static TimingStats pooled(const std::vector<TimingStats>& parts);
 };
 
 // --- run ---------------------------------------------------------------------------------------
@@ -110,7 +113,8 @@ std::string resultsJson(const BatchInput& input, const std::vector<FrameResult>&
 
 /// The frame (BGR, twice the size) with the detections drawn, and the truth in dark lines if given.
 cv::Mat renderOverlay(const cv::Mat& ycbcr, const FrameResult& frame, const FrameAnnotation* truth);
-/// Writes renderOverlay() of every frame to `dir`/<frame stem>.png (truth: the stream's annotations).
+/// Writes renderOverlay() of every frame to `dir`/<frame stem>.png (truth: the stream's
+/// annotations).
 Status writeOverlays(BatchInput& input, const std::vector<FrameResult>& frames,
                      const std::string& dir, const Annotations* truth);
 
@@ -118,13 +122,13 @@ Status writeOverlays(BatchInput& input, const std::vector<FrameResult>& frames,
 
 struct BenchOptions
 {
-    std::string stream;
-    std::string lut;       ///< empty: the stream's default LUT
-    int repeat = 1;        ///< passes over the stream
-    std::vector<std::string> set; ///< "STAGE.PARAM=VALUE" settings
-    int threads = 1;       ///< 0: one per core
-    std::size_t limit = 0; ///< only the first `limit` frames; 0: all
-    std::string json;      ///< also write fieldsight-bench/1 here when not empty
+    std::vector<std::string> streams; ///< one or more; each is benched on its own
+    std::string lut;                  ///< empty: each stream's default LUT
+    int repeat = 1;                   ///< passes over each stream
+    std::vector<std::string> set;     ///< "STAGE.PARAM=VALUE" settings
+    int threads = 1;                  ///< 0: one per core
+    std::size_t limit = 0;            ///< only the first `limit` frames; 0: all
+    std::string json;                 ///< also write fieldsight-bench/1 here when not empty
 };
 
 /// Streams with fewer frames than this are decoded once and kept in memory for all passes.
@@ -152,20 +156,44 @@ struct BenchResults
 };
 
 /// Times the pipeline and the two reference loops on the same frames (see BenchResults).
+/// options.streams and options.lut are not used: `input` is already open.
 Result<BenchResults> runBench(BatchInput& input, const BenchOptions& options);
 std::string benchTable(const BenchResults& results);
 std::string benchJson(const BenchResults& results); ///< fieldsight-bench/1
+
+/// Several streams benched with the same options, laid out as the paper's Table 1: one row per
+/// stream and a combined row over all frames of all streams.
+struct MultiBenchResults
+{
+    std::vector<std::string> names;    ///< row labels (benchStreamName), in the order given
+    std::vector<BenchResults> streams; ///< same order as names
+    /// Every run of every stream pooled (TimingStats::pooled), per stage too; frames is the sum,
+    /// stream and lut are empty, width and height are 0 unless all streams share a size.
+    BenchResults combined;
+};
+
+/// A stream's label in the table: the folder's name, or the file name for a .strm or video
+/// file ("camera:N" as it is).
+std::string benchStreamName(const std::string& stream);
+/// Labels the streams (the path as given where two would share a name) and pools them.
+MultiBenchResults combineBenches(const std::vector<std::string>& streams,
+                                 std::vector<BenchResults> results);
+/// The Table-1 style table, then the per-stage table (rows stages, columns streams, mean ms).
+std::string multiBenchTable(const MultiBenchResults& results);
+/// fieldsight-bench/1 with a "streams" array (each entry as benchJson's, plus "name") and
+/// "combined".
+std::string multiBenchJson(const MultiBenchResults& results);
 
 // --- eval --------------------------------------------------------------------------------------
 
 struct EvalOptions
 {
     std::string stream;
-    std::string lut;   ///< empty: the stream's default LUT
-    std::string truth; ///< empty: annotations.json in the stream folder
+    std::string lut;              ///< empty: the stream's default LUT
+    std::string truth;            ///< empty: annotations.json in the stream folder
     std::vector<std::string> set; ///< "STAGE.PARAM=VALUE" settings
-    std::string json;  ///< also write fieldsight-eval/1 here when not empty
-    int threads = 0;   ///< 0: one per core
+    std::string json;             ///< also write fieldsight-eval/1 here when not empty
+    int threads = 0;              ///< 0: one per core
 };
 
 struct EvalReport

@@ -76,6 +76,27 @@ TimingStats TimingStats::of(const std::vector<double>& samples_ms)
     return stats;
 }
 
+TimingStats TimingStats::pooled(const std::vector<TimingStats>& parts)
+{
+    TimingStats stats;
+    double sum = 0;
+    for (const TimingStats& p : parts) {
+        stats.samples += p.samples;
+        sum += double(p.samples) * p.mean_ms;
+    }
+    if (stats.samples == 0)
+        return stats;
+    stats.mean_ms = sum / double(stats.samples);
+    // Each part's sum of squared deviations from the pooled mean is n * (std^2 + (mean - M)^2).
+    double squares = 0;
+    for (const TimingStats& p : parts) {
+        const double offset = p.mean_ms - stats.mean_ms;
+        squares += double(p.samples) * (p.std_ms * p.std_ms + offset * offset);
+    }
+    stats.std_ms = std::sqrt(squares / double(stats.samples));
+    return stats;
+}
+
 namespace {
 
 FrameResult collectResult(std::size_t index, const std::string& name, FrameReport report,

@@ -15,11 +15,13 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 namespace fieldsight {
@@ -209,6 +211,27 @@ Result<BenchResults> runBench(BatchInput& input, const BenchOptions& options)
             out.floor.reserve(runs);
             out.baseline.reserve(runs);
             Frame loaded;
+            // Untimed: one run of all three on the first frame, so one-off costs (allocations,
+            // OpenCV's first calls) do not land on whichever stream is benched first.
+            if (begin < end) {
+                const Frame* first = nullptr;
+                if (in_memory) {
+                    first = &cached.front();
+                } else if (auto read = source.read(begin)) {
+                    loaded = std::move(read).value();
+                    first = &loaded;
+                }
+                if (first) {
+                    data.setFrame(first);
+                    if (control.runFrame()) {
+                        std::size_t pixels = 0;
+                        const Blackboard& bb = control.blackboard();
+                        sink = sink + floorLookups(first->ycbcr, input.lut, bb.horizontal_scan_ys,
+                                                   bb.vertical_scan_starts, pixels);
+                    }
+                    sink = sink + fullFrameBaseline(first->ycbcr, input.lut, buffers);
+                }
+            }
             for (int pass = 0; pass < repeat; ++pass) {
                 for (std::size_t i = begin; i < end; ++i) {
                     {
@@ -366,16 +389,38 @@ std::string benchTable(const BenchResults& r)
     return text;
 }
 
-std::string benchJson(const BenchResults& r)
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json statsJson(const TimingStats& s)
 {
-    using Json = nlohmann::ordered_json;
-    auto stats = [](const TimingStats& s) {
-        return Json{{"mean_ms", batch::rounded(s.mean_ms, 5)},
-                    {"std_ms", batch::rounded(s.std_ms, 5)},
-                    {"samples", s.samples}};
-    };
-    Json j;
-    j["format"] = "fieldsight-bench/1";
+    return Json{{"mean_ms", batch::rounded(s.mean_ms, 5)},
+                {"std_ms", batch::rounded(s.std_ms, 5)},
+                {"samples", s.samples}};
+}
+
+/// The timing fields of fieldsight-bench/1 (frames onwards), appended to `j`.
+void appendTimings(Json& j, const BenchResults& r)
+{
+    Json pipeline = statsJson(r.pipeline);
+    Json& stages = pipeline["stages"] = Json::object();
+    for (const auto& [id, s] : r.stages)
+        stages[id] = statsJson(s);
+    j["pipeline"] = std::move(pipeline);
+    Json floor = statsJson(r.floor);
+    floor["pixels_per_frame"] = batch::rounded(r.floor_pixels_per_frame, 1);
+    j["floor"] = std::move(floor);
+    j["baseline"] = statsJson(r.baseline);
+    j["ratios"] = {
+        {"pipeline_over_floor", batch::rounded(ratio(r.pipeline.mean_ms, r.floor.mean_ms), 4)},
+        {"pipeline_over_baseline",
+         batch::rounded(ratio(r.pipeline.mean_ms, r.baseline.mean_ms), 4)}};
+}
+
+/// One stream's fields of fieldsight-bench/1, after whatever `j` already holds.
+void appendBench(Json& j, const BenchResults& r)
+{
     j["stream"] = r.stream;
     j["lut"] = r.lut_path;
     j["width"] = r.width;
@@ -384,21 +429,234 @@ std::string benchJson(const BenchResults& r)
     j["repeat"] = r.repeat;
     j["threads"] = r.threads;
     j["frames_in_memory"] = r.in_memory;
-    Json pipeline = stats(r.pipeline);
-    Json& stages = pipeline["stages"] = Json::object();
-    for (const auto& [id, s] : r.stages)
-        stages[id] = stats(s);
-    j["pipeline"] = std::move(pipeline);
-    Json floor = stats(r.floor);
-    floor["pixels_per_frame"] = batch::rounded(r.floor_pixels_per_frame, 1);
-    j["floor"] = std::move(floor);
-    j["baseline"] = stats(r.baseline);
-    j["ratios"] = {
-        {"pipeline_over_floor", batch::rounded(ratio(r.pipeline.mean_ms, r.floor.mean_ms), 4)},
-        {"pipeline_over_baseline",
-         batch::rounded(ratio(r.pipeline.mean_ms, r.baseline.mean_ms), 4)}};
+    appendTimings(j, r);
+}
+
+} // namespace
+
+std::string benchJson(const BenchResults& r)
+{
+    Json j;
+    j["format"] = "fieldsight-bench/1";
+    appendBench(j, r);
     return j.dump(2) + "\n";
 }
+
+std::string benchStreamName(const std::string& stream)
+{
+    if (stream.rfind("camera:", 0) == 0)
+        return stream;
+    // Absolute and normal first, so "x/", "." and ".." name the folder they mean.
+    std::error_code ec;
+    std::filesystem::path path = std::filesystem::absolute(stream, ec).lexically_normal();
+    if (ec)
+        return stream;
+    if (!path.has_filename())
+        path = path.parent_path();
+    const std::string name = path.filename().string();
+    return name.empty() ? stream : name;
+}
+
+MultiBenchResults combineBenches(const std::vector<std::string>& streams,
+                                 std::vector<BenchResults> results)
+{
+    MultiBenchResults m;
+    std::vector<std::string> base;
+    for (const std::string& stream : streams)
+        base.push_back(benchStreamName(stream));
+    // Streams that share a name (lab/a/stream, lab/b/stream) are shown as given instead.
+    for (std::size_t i = 0; i < base.size(); ++i) {
+        const bool ambiguous =
+            base[i] == "combined" || std::count(base.begin(), base.end(), base[i]) > 1;
+        m.names.push_back(ambiguous ? streams[i] : base[i]);
+    }
+    m.streams = std::move(results);
+
+    BenchResults& c = m.combined;
+    std::vector<TimingStats> pipeline, floor, baseline;
+    std::vector<std::string> stage_ids; // pipeline order, first seen first
+    double floor_pixels = 0;
+    for (std::size_t i = 0; i < m.streams.size(); ++i) {
+        const BenchResults& r = m.streams[i];
+        if (i == 0) {
+            c.width = r.width;
+            c.height = r.height;
+            c.repeat = r.repeat;
+            c.in_memory = r.in_memory;
+        } else if (r.width != c.width || r.height != c.height) {
+            c.width = c.height = 0;
+        }
+        c.frames += r.frames;
+        c.threads = std::max(c.threads, r.threads);
+        c.in_memory = c.in_memory && r.in_memory;
+        pipeline.push_back(r.pipeline);
+        floor.push_back(r.floor);
+        baseline.push_back(r.baseline);
+        floor_pixels += r.floor_pixels_per_frame * double(r.floor.samples);
+        for (const auto& [id, stats] : r.stages)
+            if (std::find(stage_ids.begin(), stage_ids.end(), id) == stage_ids.end())
+                stage_ids.push_back(id);
+    }
+    c.pipeline = TimingStats::pooled(pipeline);
+    c.floor = TimingStats::pooled(floor);
+    c.baseline = TimingStats::pooled(baseline);
+    c.floor_pixels_per_frame = c.floor.samples > 0 ? floor_pixels / double(c.floor.samples) : 0;
+    for (const std::string& id : stage_ids) {
+        std::vector<TimingStats> parts;
+        for (const BenchResults& r : m.streams)
+            for (const auto& [stage, stats] : r.stages)
+                if (stage == id)
+                    parts.push_back(stats);
+        c.stages.emplace_back(id, TimingStats::pooled(parts));
+    }
+    return m;
+}
+
+namespace {
+
+/// Mean ms of stage `id` in `r`, if it ran.
+const TimingStats* stageStats(const BenchResults& r, const std::string& id)
+{
+    for (const auto& [stage, stats] : r.stages)
+        if (stage == id)
+            return &stats;
+    return nullptr;
+}
+
+} // namespace
+
+std::string multiBenchTable(const MultiBenchResults& m)
+{
+    const BenchResults& c = m.combined;
+    std::string text;
+    char line[512];
+    int min_threads = c.threads;
+    for (const BenchResults& r : m.streams)
+        min_threads = std::min(min_threads, r.threads);
+    std::snprintf(line, sizeof line,
+                  "fieldsight bench: %zu streams, %zu frames x %d pass%s = %zu runs, %s%d "
+                  "thread%s%s\n",
+                  m.streams.size(), c.frames, c.repeat, c.repeat == 1 ? "" : "es",
+                  c.pipeline.samples, min_threads == c.threads ? "" : "up to ", c.threads,
+                  c.threads == 1 ? "" : "s", c.in_memory ? ", frames in memory" : "");
+    text += line;
+    for (std::size_t i = 0; i < m.streams.size(); ++i)
+        if (!m.streams[i].in_memory)
+            text += "  " + m.names[i] + ": frames decoded each pass (not timed)\n";
+
+    int name_width = int(std::string_view("combined").size());
+    for (const std::string& name : m.names)
+        name_width = std::max(name_width, int(name.size()));
+
+    // Table 1: one row per stream, then the combined row.
+    std::snprintf(line, sizeof line, "\n%-*s %7s %9s %20s %10s %10s %9s %9s\n", name_width, "", "",
+                  "", "pipeline ms/frame", "floor", "baseline", "pipeline", "pipeline");
+    text += line;
+    std::snprintf(line, sizeof line, "%-*s %7s %9s %20s %10s %10s %9s %9s\n", name_width, "stream",
+                  "frames", "size", "mean (std)", "mean ms", "mean ms", "/ floor", "/ base");
+    text += line;
+    auto row = [&](const std::string& name, const BenchResults& r) {
+        char size[32] = "mixed";
+        if (r.width > 0)
+            std::snprintf(size, sizeof size, "%dx%d", r.width, r.height);
+        char timing[64];
+        std::snprintf(timing, sizeof timing, "%.4f (%.4f)", r.pipeline.mean_ms, r.pipeline.std_ms);
+        std::snprintf(line, sizeof line, "%-*s %7zu %9s %20s %10.4f %10.4f %8.2fx %8.2fx\n",
+                      name_width, name.c_str(), r.frames, size, timing, r.floor.mean_ms,
+                      r.baseline.mean_ms, ratio(r.pipeline.mean_ms, r.floor.mean_ms),
+                      ratio(r.pipeline.mean_ms, r.baseline.mean_ms));
+        text += line;
+    };
+    for (std::size_t i = 0; i < m.streams.size(); ++i)
+        row(m.names[i], m.streams[i]);
+    text += std::string(std::size_t(name_width) + 81, '-') + "\n";
+    row("combined", c);
+
+    // Per stage: rows stages, columns streams (mean ms per frame; "-" where it did not run).
+    std::vector<int> widths;
+    for (const std::string& name : m.names)
+        widths.push_back(std::max(10, int(name.size())));
+    widths.push_back(10);
+    int stage_width = int(std::string_view("pipeline").size());
+    for (const auto& [id, stats] : c.stages)
+        stage_width = std::max(stage_width, int(id.size()));
+    text += "\nmean ms per frame by stage\n";
+    std::snprintf(line, sizeof line, "%-*s", stage_width, "stage");
+    text += line;
+    for (std::size_t i = 0; i <= m.names.size(); ++i) {
+        std::snprintf(line, sizeof line, " %*s", widths[i],
+                      i < m.names.size() ? m.names[i].c_str() : "combined");
+        text += line;
+    }
+    text += "\n";
+    auto cell = [&](std::size_t column, const TimingStats* stats) {
+        if (stats)
+            std::snprintf(line, sizeof line, " %*.4f", widths[column], stats->mean_ms);
+        else
+            std::snprintf(line, sizeof line, " %*s", widths[column], "-");
+        text += line;
+    };
+    for (const auto& [id, stats] : c.stages) {
+        std::snprintf(line, sizeof line, "%-*s", stage_width, id.c_str());
+        text += line;
+        for (std::size_t i = 0; i < m.streams.size(); ++i)
+            cell(i, stageStats(m.streams[i], id));
+        cell(m.streams.size(), &stats);
+        text += "\n";
+    }
+    std::snprintf(line, sizeof line, "%-*s", stage_width, "pipeline");
+    text += line;
+    for (std::size_t i = 0; i < m.streams.size(); ++i)
+        cell(i, &m.streams[i].pipeline);
+    cell(m.streams.size(), &c.pipeline);
+    text += "\n(std is the population standard deviation; the combined row pools every run of "
+            "every stream, it does not average the streams' means)\n";
+    return text;
+}
+
+std::string multiBenchJson(const MultiBenchResults& m)
+{
+    Json j;
+    j["format"] = "fieldsight-bench/1";
+    j["repeat"] = m.combined.repeat;
+    Json& streams = j["streams"] = Json::array();
+    for (std::size_t i = 0; i < m.streams.size(); ++i) {
+        Json s;
+        s["name"] = m.names[i];
+        appendBench(s, m.streams[i]);
+        streams.push_back(std::move(s));
+    }
+    Json c;
+    c["streams"] = m.streams.size();
+    if (m.combined.width > 0) {
+        c["width"] = m.combined.width;
+        c["height"] = m.combined.height;
+    }
+    c["frames"] = m.combined.frames;
+    appendTimings(c, m.combined);
+    j["combined"] = std::move(c);
+    return j.dump(2) + "\n";
+}
+
+namespace {
+
+/// Opens one stream of a bench and applies the settings. With several streams, an error that
+/// does not name the stream (a bad LUT names the LUT) is prefixed with it.
+Result<BatchInput> openBenchInput(const std::string& stream, const BenchOptions& options)
+{
+    auto input = openBatchInput(stream, options.lut);
+    if (!input) {
+        const std::string& message = input.error().message;
+        if (options.streams.size() > 1 && message.find(stream) == std::string::npos)
+            return Error{stream + ": " + message};
+        return input.error();
+    }
+    if (Status s = applySettings(input.value(), options.set); !s)
+        return s.error();
+    return input;
+}
+
+} // namespace
 
 int benchCommand(const BenchOptions& options, std::ostream& out, std::ostream& err)
 {
@@ -407,23 +665,43 @@ int benchCommand(const BenchOptions& options, std::ostream& out, std::ostream& e
             batch::printError(err, "--repeat: expected a positive number of passes");
             return kExitBadInput;
         }
-        auto input = openBatchInput(options.stream, options.lut);
-        if (!input) {
-            batch::printError(err, input.error().message);
+        if (options.streams.empty()) {
+            batch::printError(err, "bench: no stream given");
             return kExitBadInput;
         }
-        if (Status s = applySettings(input.value(), options.set); !s) {
-            batch::printError(err, s.error().message);
-            return kExitBadInput;
+        // Every stream is opened and checked before any is timed, so a bad last stream does
+        // not cost a long run first.
+        std::vector<BatchInput> inputs;
+        for (const std::string& stream : options.streams) {
+            auto input = openBenchInput(stream, options);
+            if (!input) {
+                batch::printError(err, input.error().message);
+                return kExitBadInput;
+            }
+            inputs.push_back(std::move(input).value());
         }
-        auto results = runBench(input.value(), options);
-        if (!results) {
-            batch::printError(err, results.error().message);
-            return kExitBadInput;
+        std::vector<BenchResults> results;
+        for (BatchInput& input : inputs) {
+            auto r = runBench(input, options);
+            if (!r) {
+                batch::printError(err, r.error().message);
+                return kExitBadInput;
+            }
+            results.push_back(std::move(r).value());
         }
-        out << benchTable(results.value()) << std::flush;
+
+        std::string table, json;
+        if (results.size() == 1) {
+            table = benchTable(results.front());
+            json = benchJson(results.front());
+        } else {
+            const MultiBenchResults m = combineBenches(options.streams, std::move(results));
+            table = multiBenchTable(m);
+            json = multiBenchJson(m);
+        }
+        out << table << std::flush;
         if (!options.json.empty()) {
-            if (Status s = batch::writeOutput(options.json, benchJson(results.value()), out); !s) {
+            if (Status s = batch::writeOutput(options.json, json, out); !s) {
                 batch::printError(err, s.error().message);
                 return kExitFailure;
             }
