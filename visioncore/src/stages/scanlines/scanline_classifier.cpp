@@ -5,6 +5,9 @@
 #include "visioncore/blackboard.h"
 
 #include <algorithm>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <cmath>
 
 namespace fieldsight {
@@ -17,27 +20,44 @@ inline std::uint8_t lookup(const std::uint8_t* lut, const std::uint8_t* px)
 }
 
 /// Run-length encodes `count` pixels starting at `px`, `stride` bytes apart, into `scan`. Segment
-/// ends are exclusive; `x0,y0` is the first pixel and (dx, dy) the step.
+/// ends are exclusive; `x0,y0` is the first pixel and (dx, dy) the step. Two passes: the lookups
+/// alone into `classes` (branch-free, as fast as the lookups can be), then the class changes,
+/// found 16 at a time.
 void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_t stride,
-                  int count, int x0, int y0, int dx, int dy, Scan& scan)
+                  int count, int x0, int y0, int dx, int dy, std::vector<std::uint8_t>& classes,
+                  Scan& scan)
 {
     if (count <= 0)
         return;
-    std::uint8_t current = lookup(lut, px);
+    if (classes.size() < std::size_t(count) + 16)
+        classes.resize(std::size_t(count) + 16);
+    std::uint8_t* c = classes.data();
+    for (int i = 0; i < count; ++i, px += stride)
+        c[i] = lookup(lut, px);
+
     int start = 0;
-    for (int i = 1; i < count; ++i) {
-        px += stride;
-        const std::uint8_t c = lookup(lut, px);
-        if (c == current)
-            continue;
+    const auto emit = [&](int end) {
         scan.push_back({std::int16_t(x0 + start * dx), std::int16_t(y0 + start * dy),
-                        std::int16_t(x0 + i * dx), std::int16_t(y0 + i * dy), Colour(current)});
-        current = c;
-        start = i;
+                        std::int16_t(x0 + end * dx), std::int16_t(y0 + end * dy),
+                        Colour(c[start])});
+        start = end;
+    };
+    int i = 1;
+#if defined(__SSE2__)
+    for (; i + 16 <= count; i += 16) {
+        const __m128i here = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c + i));
+        const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c + i - 1));
+        unsigned changes = ~unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(here, before))) & 0xFFFFu;
+        while (changes) {
+            emit(i + __builtin_ctz(changes));
+            changes &= changes - 1;
+        }
     }
-    scan.push_back({std::int16_t(x0 + start * dx), std::int16_t(y0 + start * dy),
-                    std::int16_t(x0 + count * dx), std::int16_t(y0 + count * dy),
-                    Colour(current)});
+#endif
+    for (; i < count; ++i)
+        if (c[i] != c[i - 1])
+            emit(i);
+    emit(count);
 }
 
 } // namespace
@@ -77,7 +97,7 @@ void ScanlineClassifier::run(Blackboard& bb)
     // bottom row up, as in the original.
     for (int y = h - 1; y >= 0; y -= hs) {
         bb.horizontal_scan_ys.push_back(y);
-        classifyLine(lut, image.ptr<std::uint8_t>(y), 3, w, 0, y, 1, 0,
+        classifyLine(lut, image.ptr<std::uint8_t>(y), 3, w, 0, y, 1, 0, m_classes,
                      bb.horizontal_segments.addScan());
     }
     // Vertical lines only below the green horizon.
@@ -86,7 +106,7 @@ void ScanlineClassifier::run(Blackboard& bb)
         const int y0 = bb.green_horizon.yAt(x);
         bb.vertical_scan_starts.push_back({x, y0});
         classifyLine(lut, image.ptr<std::uint8_t>(y0) + 3 * x, step, h - y0, x, y0, 0, 1,
-                     bb.vertical_segments.addScan());
+                     m_classes, bb.vertical_segments.addScan());
     }
 
     if (auto* d = bb.debug.layer("scanlines.horizontal"))

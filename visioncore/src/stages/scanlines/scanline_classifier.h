@@ -4,6 +4,9 @@
 
 #include "visioncore/stage.h"
 
+#include <cstdint>
+#include <vector>
+
 namespace fieldsight {
 
 class ScanlineClassifier : public Stage
@@ -16,6 +19,7 @@ public:
 private:
     double m_horizontal_spacing = 4;
     double m_vertical_spacing = 4;
+    std::vector<std::uint8_t> m_classes; ///< one scan line's classes (scratch, kept across frames)
 };
 
 } // namespace fieldsight
