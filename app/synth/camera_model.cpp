@@ -27,11 +27,10 @@ void CameraModel::setPose(const CameraPose& pose)
     base.col(0) = Eigen::Vector3d(0, -1, 0);
     base.col(1) = Eigen::Vector3d(0, 0, -1);
     base.col(2) = Eigen::Vector3d(1, 0, 0);
-    const Eigen::Matrix3d rotation =
-        (Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()) *
-         Eigen::AngleAxisd(pose.pitch, Eigen::Vector3d::UnitY()) *
-         Eigen::AngleAxisd(pose.roll, Eigen::Vector3d::UnitX()))
-            .toRotationMatrix();
+    const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitZ()) *
+                                      Eigen::AngleAxisd(pose.pitch, Eigen::Vector3d::UnitY()) *
+                                      Eigen::AngleAxisd(pose.roll, Eigen::Vector3d::UnitX()))
+                                         .toRotationMatrix();
     m_camera_to_world = rotation * base;
 }
 
@@ -67,6 +66,31 @@ Eigen::Vector3d CameraModel::rayDirection(double u, double v) const
 double CameraModel::apparentRadius(const Eigen::Vector3d& centre, double radius) const
 {
     return m_fx * radius / (centre - m_pose.position).norm();
+}
+
+std::vector<PointF> CameraModel::sphereOutline(const Eigen::Vector3d& centre, double radius,
+                                               int points) const
+{
+    const Eigen::Vector3d c = toCamera(centre);
+    const double d = c.norm();
+    if (d <= radius)
+        return {};
+    const Eigen::Vector3d axis = c / d;
+    const double sin_a = radius / d;
+    const double cos_a = std::sqrt(1 - sin_a * sin_a);
+    if (axis.z() * cos_a - std::sqrt(1 - axis.z() * axis.z()) * sin_a <= 1e-6)
+        return {}; // part of the cone is not in front of the camera
+    const Eigen::Vector3d e1 = axis.unitOrthogonal();
+    const Eigen::Vector3d e2 = axis.cross(e1);
+    std::vector<PointF> outline;
+    outline.reserve(std::size_t(points));
+    for (int i = 0; i < points; ++i) {
+        const double phi = 2 * kPi * i / points;
+        const Eigen::Vector3d ray =
+            cos_a * axis + sin_a * (std::cos(phi) * e1 + std::sin(phi) * e2);
+        outline.push_back(projectCamera(ray));
+    }
+    return outline;
 }
 
 Horizon CameraModel::horizon() const

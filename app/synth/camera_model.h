@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include <vector>
 
 namespace fieldsight::synth {
 
@@ -49,6 +50,10 @@ public:
     Eigen::Vector3d rayDirection(double u, double v) const;
     /// Apparent radius (px) of a sphere: f_x * radius / distance from the camera centre.
     double apparentRadius(const Eigen::Vector3d& centre, double radius) const;
+    /// The image outline of a sphere (where its tangent cone from the camera meets the image):
+    /// `points` image points, a convex loop. Empty when the sphere is not wholly in front.
+    std::vector<PointF> sphereOutline(const Eigen::Vector3d& centre, double radius,
+                                      int points = 360) const;
     /// Where the ground plane at infinity projects: image y at x = 0 and x = width-1.
     Horizon horizon() const;
 

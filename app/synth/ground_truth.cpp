@@ -77,7 +77,8 @@ long unoccludedPixels(const Scene& scene, int object, const CameraModel& camera)
         if (p.object != object || !p.counts_for_visibility)
             continue;
         parts.push_back(&p);
-        const double ex = p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
+        const double ex =
+            p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
         const double z0 = p.shape == Primitive::Shape::Sphere ? p.centre.z() - p.radius : p.z0;
         const double z1 = p.shape == Primitive::Shape::Sphere ? p.centre.z() + p.radius : p.z1;
         for (int i = 0; i < 8; ++i) {
@@ -176,7 +177,58 @@ void simplify(const std::vector<PointF>& points, std::size_t first, std::size_t 
     }
 }
 
+/// Calls f(x, y) for every pixel centre inside a convex image polygon.
+template <class F> void forEachPixelInside(const std::vector<PointF>& polygon, F&& f)
+{
+    double top = 1e300;
+    double bottom = -1e300;
+    for (const PointF& p : polygon) {
+        top = std::min(top, p.y);
+        bottom = std::max(bottom, p.y);
+    }
+    for (int y = int(std::ceil(top)); y <= int(std::floor(bottom)); ++y) {
+        double left = 1e300;
+        double right = -1e300;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const PointF& a = polygon[i];
+            const PointF& b = polygon[(i + 1) % polygon.size()];
+            if ((a.y <= y && b.y >= y) || (b.y <= y && a.y >= y)) {
+                const double x =
+                    std::abs(b.y - a.y) < 1e-12 ? a.x : a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+                left = std::min(left, x);
+                right = std::max(right, x);
+            }
+        }
+        for (int x = int(std::ceil(left)); x <= int(std::floor(right)); ++x)
+            f(x, y);
+    }
+}
+
 } // namespace
+
+std::optional<BallImage> ballImage(const CameraModel& camera, const Eigen::Vector3d& centre,
+                                   double radius)
+{
+    BallImage image;
+    image.outline = camera.sphereOutline(centre, radius);
+    if (image.outline.size() < 3)
+        return std::nullopt;
+    // Shoelace area and centroid of the outline polygon.
+    double area2 = 0;
+    double cx = 0;
+    double cy = 0;
+    for (std::size_t i = 0; i < image.outline.size(); ++i) {
+        const PointF& a = image.outline[i];
+        const PointF& b = image.outline[(i + 1) % image.outline.size()];
+        const double cross = a.x * b.y - b.x * a.y;
+        area2 += cross;
+        cx += (a.x + b.x) * cross;
+        cy += (a.y + b.y) * cross;
+    }
+    image.centre = {cx / (3 * area2), cy / (3 * area2)};
+    image.radius = std::sqrt(std::abs(area2) / 2 / 3.14159265358979323846);
+    return image;
+}
 
 std::vector<double> fieldTopPerColumn(const CameraModel& camera)
 {
@@ -186,7 +238,8 @@ std::vector<double> fieldTopPerColumn(const CameraModel& camera)
     constexpr double kNear = 0.01;
     const double hx = FieldGeometry::kCarpetHalfLength;
     const double hy = FieldGeometry::kCarpetHalfWidth;
-    const Vec3 corners[4] = {Vec3(-hx, -hy, 0), Vec3(hx, -hy, 0), Vec3(hx, hy, 0), Vec3(-hx, hy, 0)};
+    const Vec3 corners[4] = {Vec3(-hx, -hy, 0), Vec3(hx, -hy, 0), Vec3(hx, hy, 0),
+                             Vec3(-hx, hy, 0)};
     std::vector<Vec3> polygon;
     for (int i = 0; i < 4; ++i) {
         const Vec3 a = camera.toCamera(corners[i]);
@@ -250,8 +303,7 @@ std::vector<FieldLine> projectedFieldLines(const CameraModel& camera)
     return out;
 }
 
-FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera,
-                            const cv::Mat& primitive)
+FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const cv::Mat& primitive)
 {
     const int w = camera.width();
     const int h = camera.height();
@@ -264,30 +316,23 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera,
         const PixelBox& box = seen.all[o];
         switch (object.kind) {
         case ObjectKind::Ball: {
-            const auto centre = camera.project(object.position);
-            if (!centre || centre->x < 0 || centre->x > w - 1 || centre->y < 0 || centre->y > h - 1)
-                break;
-            const double r = camera.apparentRadius(object.position, object.radius);
-            if (r < 3.0)
+            const auto image = ballImage(camera, object.position, object.radius);
+            if (!image || image->centre.x < 0 || image->centre.x > w - 1 || image->centre.y < 0 ||
+                image->centre.y > h - 1 || image->radius < 3.0)
                 break;
             long disc = 0;
             long visible = 0;
-            for (int y = int(std::floor(centre->y - r)); y <= int(std::ceil(centre->y + r)); ++y) {
-                for (int x = int(std::floor(centre->x - r)); x <= int(std::ceil(centre->x + r)); ++x) {
-                    const double dx = x - centre->x;
-                    const double dy = y - centre->y;
-                    if (dx * dx + dy * dy > r * r)
-                        continue;
-                    ++disc;
-                    if (x < 0 || y < 0 || x >= w || y >= h)
-                        continue;
-                    const int i = primitive.at<std::int32_t>(y, x);
-                    if (i >= 0 && scene.primitives[std::size_t(i)].object == int(o))
-                        ++visible;
-                }
-            }
+            forEachPixelInside(image->outline, [&](int x, int y) {
+                ++disc;
+                if (x < 0 || y < 0 || x >= w || y >= h)
+                    return;
+                const int i = primitive.at<std::int32_t>(y, x);
+                if (i >= 0 && scene.primitives[std::size_t(i)].object == int(o))
+                    ++visible;
+            });
             if (disc > 0 && double(visible) >= 0.6 * double(disc))
-                truth.balls.push_back({round2(centre->x), round2(centre->y), round2(r)});
+                truth.balls.push_back(
+                    {round2(image->centre.x), round2(image->centre.y), round2(image->radius)});
             break;
         }
         case ObjectKind::Post:

@@ -71,7 +71,8 @@ ColourLut IdealLutBuilder::build() const
     for (int y = 0; y < 128; ++y) {
         for (int b = 0; b < 128; ++b) {
             for (int r = 0; r < 128; ++r) {
-                const std::size_t cell = std::size_t(y) << 14 | std::size_t(b) << 7 | std::size_t(r);
+                const std::size_t cell =
+                    std::size_t(y) << 14 | std::size_t(b) << 7 | std::size_t(r);
                 if (decided[cell])
                     continue;
                 std::array<int, kColourCount> count{};

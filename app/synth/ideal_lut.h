@@ -3,9 +3,11 @@
 // Votes come from "core" pixels only: every supersample of every pixel within `kCoreMargin` px
 // saw the same class, so blur and 4:2:2 chroma cannot have mixed two classes into the vote. Each
 // touched 128^3 cell takes its plurality label if that has >= kMinVotes votes and beats the
-// runner-up; otherwise it stays unclassified. Then every class grows by one cell (6-neighbourhood)
-// into cells that no background majority claimed, so colours just outside the training set still
-// classify. Background (walls, people, floor) votes "unclassified", so its cells stay unclassified.
+// runner-up; otherwise (a tie) it stays unclassified. A single vote counts: core pixels are
+// certain, and rare colours (a ball in a dark corner) would otherwise never be learnt. Then every
+// class grows by one cell (6-neighbourhood) into cells that no background majority claimed, so
+// colours just outside the training set still classify. Background (walls, people, floor) votes
+// "unclassified", so its cells stay unclassified.
 #pragma once
 
 #include "visioncore/colour.h"
@@ -23,7 +25,7 @@ class IdealLutBuilder
 {
 public:
     static constexpr int kCoreMargin = 2;
-    static constexpr std::uint32_t kMinVotes = 2;
+    static constexpr std::uint32_t kMinVotes = 1;
 
     /// `ycbcr` CV_8UC3 (Y, Cb, Cr), `labels` CV_8U from the renderer.
     void addFrame(const cv::Mat& ycbcr, const cv::Mat& labels);

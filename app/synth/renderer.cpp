@@ -32,8 +32,8 @@ ScreenRect screenRect(const Primitive& p, const CameraModel& camera)
     double z0 = p.z0;
     double z1 = p.z1;
     if (p.shape == Primitive::Shape::Box) {
-        const double c = std::abs(std::cos(p.yaw));
-        const double s = std::abs(std::sin(p.yaw));
+        const double c = std::abs(p.cos_yaw);
+        const double s = std::abs(p.sin_yaw);
         ex = c * p.half_x + s * p.half_y;
         ey = s * p.half_x + c * p.half_y;
     }
@@ -61,6 +61,59 @@ ScreenRect screenRect(const Primitive& p, const CameraModel& camera)
     r.top = int(std::max(0.0, std::floor(v0) - 1));
     r.bottom = int(std::min(double(camera.height() - 1), std::ceil(v1) + 1));
     return r;
+}
+
+/// A lower bound on the distance from `origin` to any point of the primitive.
+double nearestDistance(const Primitive& p, const Vec3& origin)
+{
+    Vec3 centre = p.centre;
+    double radius = p.radius;
+    if (p.shape != Primitive::Shape::Sphere) {
+        const double half_z = (p.z1 - p.z0) / 2;
+        centre.z() = p.z0 + half_z;
+        const double half_xy =
+            p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
+        radius = std::hypot(half_xy, half_z);
+    }
+    return std::max(0.0, (centre - origin).norm() - radius);
+}
+
+/// A straight painted band: field lines and the arms of the marks, with precomputed frame.
+struct Feature
+{
+    Eigen::Vector2d a;
+    Eigen::Vector2d direction; ///< unit, from a along the band
+    Eigen::Vector2d normal;    ///< unit, across the band
+    double length = 0;         ///< m; the paint reaches half a line width past both ends
+};
+
+std::vector<Feature> makeFeatures()
+{
+    std::vector<Feature> features;
+    auto add = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        Feature f;
+        f.a = a;
+        f.length = (b - a).norm();
+        f.direction = (b - a) / f.length;
+        f.normal = Eigen::Vector2d(-f.direction.y(), f.direction.x());
+        features.push_back(f);
+    };
+    for (const LineSegment& s : straightFieldLines())
+        add(s.a, s.b);
+    // Penalty marks and the centre mark: crosses of 10 cm, arms one line wide.
+    constexpr double arm = 0.05 - FieldGeometry::kLineWidth / 2;
+    const double mark_x = FieldGeometry::kLength / 2 - FieldGeometry::kPenaltyMark;
+    for (const double mx : {-mark_x, 0.0, mark_x}) {
+        add(Eigen::Vector2d(mx - arm, 0), Eigen::Vector2d(mx + arm, 0));
+        add(Eigen::Vector2d(mx, -arm), Eigen::Vector2d(mx, arm));
+    }
+    return features;
+}
+
+const std::vector<Feature>& paintedFeatures()
+{
+    static const std::vector<Feature> features = makeFeatures();
+    return features;
 }
 
 double carpetTexture(double x, double y, std::uint64_t seed)
@@ -93,6 +146,7 @@ struct Sample
     Rgbf colour;
     Colour label = Colour::Unclassified;
     int primitive = -1;
+    bool partial = false; ///< a blend of classes (a line thinner than the footprint)
 };
 
 Rgbf wallColour(const Surroundings& s, int wall, double u, double z)
@@ -116,7 +170,16 @@ Rgbf wallColour(const Surroundings& s, int wall, double u, double z)
 }
 
 /// The surroundings along a ray: carpet, floor, walls or ceiling.
-Sample environment(const Scene& scene, const Vec3& o, const Vec3& d, double& t_hit)
+/// How far a ground hit moves per supersample step in image x and y (field metres).
+struct GroundSteps
+{
+    Vec3 right;   ///< the camera's x axis in the world, over f_x, times the step (px)
+    Vec3 down;    ///< the camera's y axis in the world, over f_y, times the step (px)
+    Vec3 forward; ///< the camera's optical axis in the world
+};
+
+Sample environment(const Scene& scene, const Vec3& o, const Vec3& d, const GroundSteps& steps,
+                   double& t_hit)
 {
     const Surroundings& s = scene.surroundings;
     double t = std::numeric_limits<double>::infinity();
@@ -143,19 +206,27 @@ Sample environment(const Scene& scene, const Vec3& o, const Vec3& d, double& t_h
     const Vec3 p = o + t * d;
     Sample out;
     if (surface == 4) {
-        const double light = scene.lighting.fieldFactor(p.x(), p.y()) * shadowFactor(scene, p.x(), p.y());
+        const double light =
+            scene.lighting.fieldFactor(p.x(), p.y()) * shadowFactor(scene, p.x(), p.y());
         if (std::abs(p.x()) <= FieldGeometry::kCarpetHalfLength &&
             std::abs(p.y()) <= FieldGeometry::kCarpetHalfWidth) {
             const double tex = carpetTexture(p.x(), p.y(), scene.texture_seed);
-            if (onFieldLine(p.x(), p.y())) {
-                out.colour = scene.line * (0.97 + 0.3 * (tex - 1.0)) * light;
-                out.label = Colour::White;
-            } else {
-                out.colour = scene.carpet * tex * light;
-                out.label = Colour::Green;
-            }
+            // The ray r = d / (d . forward) has unit depth; its ground hit is o - o.z r / r.z, so
+            // moving the image point moves the hit by -o.z (r' r.z - r r'.z) / r.z^2.
+            const Vec3 r = d / d.dot(steps.forward);
+            auto move = [&](const Vec3& dr) {
+                const Vec3 dp = -o.z() * (dr * r.z() - r * dr.z()) / (r.z() * r.z());
+                return Eigen::Vector2d(dp.x(), dp.y());
+            };
+            const double paint = lineCoverage(p.x(), p.y(), move(steps.right), move(steps.down));
+            const Rgbf green = scene.carpet * tex * light;
+            const Rgbf white = scene.line * (0.97 + 0.3 * (tex - 1.0)) * light;
+            out.colour = green + paint * (white - green);
+            out.label = paint >= 0.5 ? Colour::White : Colour::Green;
+            out.partial = paint > 0.02 && paint < 0.98;
         } else {
-            const double tex = 0.95 + 0.1 * valueNoise(p.x() / 0.8, p.y() / 0.8, scene.texture_seed + 7);
+            const double tex =
+                0.95 + 0.1 * valueNoise(p.x() / 0.8, p.y() / 0.8, scene.texture_seed + 7);
             out.colour = s.floor * tex * light;
         }
         return out;
@@ -241,33 +312,43 @@ cv::Mat gaussianBlur(const cv::Mat& src, double sigma)
 
 } // namespace
 
-bool onFieldLine(double x, double y)
+double lineCoverage(double x, double y, const Eigen::Vector2d& step_x,
+                    const Eigen::Vector2d& step_y)
 {
     constexpr double hw = FieldGeometry::kLineWidth / 2;
-    if (std::abs(x) > FieldGeometry::kLength / 2 + 0.1 || std::abs(y) > FieldGeometry::kWidth / 2 + 0.1)
-        return false;
-    for (const LineSegment& s : straightFieldLines()) {
-        const Eigen::Vector2d ab = s.b - s.a;
-        const double len = ab.norm();
-        const Eigen::Vector2d dir = ab / len;
-        const Eigen::Vector2d ap(x - s.a.x(), y - s.a.y());
-        const double along = ap.dot(dir);
-        const double across = std::abs(ap.x() * dir.y() - ap.y() * dir.x());
-        if (across <= hw && along >= -hw && along <= len + hw)
-            return true;
+    if (std::abs(x) > FieldGeometry::kLength / 2 + 0.5 ||
+        std::abs(y) > FieldGeometry::kWidth / 2 + 0.5)
+        return 0;
+    // A band of half width hw around a centre line, seen through a footprint whose extent across
+    // the band is e: the overlap of [s - e/2, s + e/2] with [-hw, hw], as a share of e.
+    auto band = [&](double s, const Eigen::Vector2d& normal) {
+        const double e = std::abs(normal.dot(step_x)) + std::abs(normal.dot(step_y));
+        if (e < 1e-9)
+            return std::abs(s) <= hw ? 1.0 : 0.0;
+        const double lo = std::max(s - e / 2, -hw);
+        const double hi = std::min(s + e / 2, hw);
+        return std::clamp((hi - lo) / e, 0.0, 1.0);
+    };
+    double coverage = 0;
+    for (const Feature& f : paintedFeatures()) {
+        const Eigen::Vector2d ap(x - f.a.x(), y - f.a.y());
+        const double along = ap.dot(f.direction);
+        if (along < -hw || along > f.length + hw)
+            continue;
+        coverage = std::max(coverage, band(ap.dot(f.normal), f.normal));
+        if (coverage >= 1)
+            return 1;
     }
     const double r = std::hypot(x, y);
-    if (std::abs(r - FieldGeometry::kCircleRadius) <= hw)
-        return true;
-    constexpr double arm = 0.05; // marks: crosses of 10 cm
-    const double mark_x = FieldGeometry::kLength / 2 - FieldGeometry::kPenaltyMark;
-    for (const double mx : {-mark_x, 0.0, mark_x}) {
-        const double dx = std::abs(x - mx);
-        const double dy = std::abs(y);
-        if ((dx <= arm && dy <= hw) || (dy <= arm && dx <= hw))
-            return true;
-    }
-    return false;
+    if (r > 1e-9)
+        coverage = std::max(coverage,
+                            band(r - FieldGeometry::kCircleRadius, Eigen::Vector2d(x / r, y / r)));
+    return coverage;
+}
+
+bool onFieldLine(double x, double y)
+{
+    return lineCoverage(x, y, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()) >= 0.5;
 }
 
 RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
@@ -277,22 +358,34 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
     const int h = camera.height();
     const Vec3 origin = camera.pose().position;
 
-    // Which primitives can cover each row, so a pixel only tests plausible ones.
+    // Which primitives can cover each row, nearest first, so a pixel only tests plausible ones
+    // and stops at the first whose bounding sphere lies beyond the nearest hit so far.
     std::vector<ScreenRect> rects(scene.primitives.size());
-    std::vector<std::vector<int>> rows;
-    rows.resize(std::size_t(h));
+    std::vector<double> nearest(scene.primitives.size());
+    std::vector<int> order;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         rects[i] = screenRect(scene.primitives[i], camera);
-        for (int y = rects[i].top; y <= rects[i].bottom; ++y)
-            if (rects[i].left <= rects[i].right)
-                rows[std::size_t(y)].push_back(int(i));
+        nearest[i] = nearestDistance(scene.primitives[i], origin);
+        if (rects[i].left <= rects[i].right)
+            order.push_back(int(i));
     }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return nearest[std::size_t(a)] < nearest[std::size_t(b)];
+    });
+    std::vector<std::vector<int>> rows;
+    rows.resize(std::size_t(h));
+    for (const int i : order)
+        for (int y = rects[std::size_t(i)].top; y <= rects[std::size_t(i)].bottom; ++y)
+            rows[std::size_t(y)].push_back(i);
 
     cv::Mat image(h, w, CV_32FC3);
     RenderedFrame out;
     out.labels.create(h, w, CV_8U);
     out.primitive.create(h, w, CV_32S);
     constexpr std::array<double, 3> kOffsets = {-1.0 / 3, 0.0, 1.0 / 3};
+    const GroundSteps steps{camera.directionToWorld(Vec3(1, 0, 0)) / (3 * camera.fx()),
+                            camera.directionToWorld(Vec3(0, 1, 0)) / (3 * camera.fy()),
+                            camera.directionToWorld(Vec3(0, 0, 1))};
     for (int y = 0; y < h; ++y) {
         const std::vector<int>& row = rows[std::size_t(y)];
         for (int x = 0; x < w; ++x) {
@@ -305,11 +398,13 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                     const Vec3 d = camera.rayDirection(x + kOffsets[std::size_t(sx)],
                                                        y + kOffsets[std::size_t(sy)]);
                     double t_env = 0;
-                    Sample s = environment(scene, origin, d, t_env);
+                    Sample s = environment(scene, origin, d, steps, t_env);
                     double best = t_env;
                     int best_index = -1;
                     Hit best_hit;
                     for (const int i : row) {
+                        if (nearest[std::size_t(i)] >= best)
+                            break;
                         const ScreenRect& r = rects[std::size_t(i)];
                         if (x < r.left || x > r.right)
                             continue;
@@ -325,12 +420,14 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                         s.colour = shadePrimitive(scene, p, origin + best * d, best_hit.normal, d);
                         s.label = p.label;
                         s.primitive = best_index;
+                        s.partial = false;
                     }
                     sum += s.colour;
                     if (first_label < 0)
                         first_label = int(s.label);
                     else if (first_label != int(s.label))
                         mixed = true;
+                    mixed = mixed || s.partial;
                     if (sx == 1 && sy == 1)
                         centre_primitive = s.primitive;
                 }

@@ -36,8 +36,7 @@ Wander randomWander(Rng& rng, double amplitude, double w_lo, double w_hi)
     return w;
 }
 
-template <std::size_t N>
-Rgbf pick(Rng& rng, const std::array<Rgbf, N>& palette)
+template <std::size_t N> Rgbf pick(Rng& rng, const std::array<Rgbf, N>& palette)
 {
     return palette[std::size_t(rng.below(int(N)))];
 }
@@ -45,16 +44,16 @@ Rgbf pick(Rng& rng, const std::array<Rgbf, N>& palette)
 // Background colours are all chromatic and far from the field classes, so that a grey line in
 // dim light, a robot's black or the ball's orange never shares a LUT cell with the surroundings
 // by majority. The Difficult scenario adds deliberate near-misses (distractors).
-const std::array<Rgbf, 10> kShirts = {Rgbf(170, 40, 48),  Rgbf(35, 45, 100),  Rgbf(100, 55, 122),
-                                      Rgbf(122, 40, 58),  Rgbf(125, 88, 62),  Rgbf(168, 122, 100),
+const std::array<Rgbf, 10> kShirts = {Rgbf(170, 40, 48),   Rgbf(35, 45, 100),   Rgbf(100, 55, 122),
+                                      Rgbf(122, 40, 58),   Rgbf(125, 88, 62),   Rgbf(168, 122, 100),
                                       Rgbf(150, 170, 205), Rgbf(112, 120, 155), Rgbf(182, 158, 202),
                                       Rgbf(200, 120, 150)};
 const std::array<Rgbf, 4> kTrousers = {Rgbf(62, 76, 118), Rgbf(38, 42, 78), Rgbf(152, 136, 102),
                                        Rgbf(96, 72, 56)};
 const std::array<Rgbf, 4> kSkin = {Rgbf(226, 182, 152), Rgbf(202, 152, 122), Rgbf(152, 106, 80),
                                    Rgbf(112, 76, 56)};
-const std::array<Rgbf, 6> kBanners = {Rgbf(36, 60, 150),  Rgbf(178, 40, 46),  Rgbf(112, 50, 132),
-                                      Rgbf(176, 150, 220), Rgbf(30, 40, 92),   Rgbf(150, 60, 110)};
+const std::array<Rgbf, 6> kBanners = {Rgbf(36, 60, 150),   Rgbf(178, 40, 46), Rgbf(112, 50, 132),
+                                      Rgbf(176, 150, 220), Rgbf(30, 40, 92),  Rgbf(150, 60, 110)};
 const std::array<Rgbf, 5> kPosters = {Rgbf(172, 52, 52), Rgbf(52, 82, 162), Rgbf(122, 72, 142),
                                       Rgbf(200, 160, 170), Rgbf(96, 110, 170)};
 
@@ -90,7 +89,7 @@ Primitive sceneryBox(const Vec2& centre, double yaw, double hx, double hy, doubl
     Primitive p;
     p.shape = Primitive::Shape::Box;
     p.centre = Eigen::Vector3d(centre.x(), centre.y(), 0);
-    p.yaw = yaw;
+    p.setYaw(yaw);
     p.half_x = hx;
     p.half_y = hy;
     p.z0 = z0;
@@ -143,7 +142,9 @@ ScenarioScript::ScenarioScript(Scenario scenario, std::uint64_t seed, int width,
         s.camera_distance_max = 2.0;
         s.bob = 0.7;
         s.robot_clearance = 1.0;
-        s.effects = {0.65, 0.15, 1.0, 0.9, true, {1, 1, 1}};
+        // Stable, high-quality images: no visible sensor noise (this also keeps the bundled
+        // PNGs small; per-pixel noise triples their size).
+        s.effects = {0.65, 0.15, 0.0, 0.0, true, {1, 1, 1}};
         m_carpet = Rgbf(45, 125, 50);
         break;
     case Scenario::Difficult:
@@ -157,7 +158,7 @@ ScenarioScript::ScenarioScript(Scenario scenario, std::uint64_t seed, int width,
         m_carpet = Rgbf(42, 116, 48);
         break;
     case Scenario::RC2012:
-        s.gradient_x = -0.12;
+        s.gradient_x = -0.14; // 1.5x the light at one end, 0.5x at the other
         s.spots = 0.06;
         s.track_bias = 0.1;
         s.camera_distance_max = 2.8;
@@ -172,7 +173,7 @@ ScenarioScript::ScenarioScript(Scenario scenario, std::uint64_t seed, int width,
         s.track_bias = 0.5;
         s.camera_distance_min = 0.8;
         s.camera_distance_max = 2.6;
-        s.effects = {0.6, 0.15, 1.0, 0.9, true, {1, 1, 1}};
+        s.effects = {0.6, 0.15, 0.0, 0.0, true, {1, 1, 1}}; // "predominantly high quality"
         m_carpet = Rgbf(50, 132, 48);
         break;
     }
@@ -208,8 +209,8 @@ void ScenarioScript::buildSurroundings(Rng& rng)
             const double extent = wall < 2 ? s.half_y : s.half_x;
             const double u = rng.uniform(-extent + 0.3, extent - 1.0);
             const double z = rng.uniform(0.9, 1.5);
-            s.patches.push_back(
-                {wall, u, u + rng.uniform(0.4, 0.8), z, z + rng.uniform(0.5, 0.8), pick(rng, kPosters), false});
+            s.patches.push_back({wall, u, u + rng.uniform(0.4, 0.8), z, z + rng.uniform(0.5, 0.8),
+                                 pick(rng, kPosters), false});
         }
         // Furniture along the walls: desks and cupboards.
         const int desks = m_scenario == Scenario::Lab1 ? 5 : 3;
@@ -224,17 +225,16 @@ void ScenarioScript::buildSurroundings(Rng& rng)
         const int cupboards = m_scenario == Scenario::Lab1 ? 4 : 2;
         for (int i = 0; i < cupboards; ++i) {
             const Vec2 p = offFieldPoint(rng, s, 0.35);
-            m_static.primitives.push_back(sceneryBox(p, 0, 0.3, 0.3, 0.0, rng.uniform(1.2, 1.9),
-                                                     rng.chance(0.5) ? Rgbf(126, 130, 160)
-                                                                     : Rgbf(150, 108, 74)));
+            m_static.primitives.push_back(
+                sceneryBox(p, 0, 0.3, 0.3, 0.0, rng.uniform(1.2, 1.9),
+                           rng.chance(0.5) ? Rgbf(126, 130, 160) : Rgbf(150, 108, 74)));
         }
         if (m_scenario == Scenario::Lab1) {
             for (int i = 0; i < 4; ++i) { // boxes and bags on the floor: the background noise
                 const Vec2 p = offFieldPoint(rng, s, 0.2);
-                m_static.primitives.push_back(sceneryBox(p, rng.uniform(0, kPi), 0.2, 0.15, 0.0,
-                                                         rng.uniform(0.2, 0.5),
-                                                         rng.chance(0.5) ? Rgbf(172, 140, 100)
-                                                                         : Rgbf(120, 60, 96)));
+                m_static.primitives.push_back(
+                    sceneryBox(p, rng.uniform(0, kPi), 0.2, 0.15, 0.0, rng.uniform(0.2, 0.5),
+                               rng.chance(0.5) ? Rgbf(172, 140, 100) : Rgbf(120, 60, 96)));
             }
         }
         return;
@@ -243,14 +243,15 @@ void ScenarioScript::buildSurroundings(Rng& rng)
     s.half_y = 4.8;
     s.ceiling = 6.0;
     s.floor = Rgbf(74, 70, 116);
-    s.wall = Rgbf(70, 60, 108);
+    s.wall = Rgbf(50, 54, 102); // dark blue curtains
     s.ceiling_colour = Rgbf(56, 50, 84);
     s.skirting = false;
     for (int wall = 0; wall < 4; ++wall) {
         const double extent = wall < 2 ? s.half_y : s.half_x;
         for (double u = -extent; u < extent - 1.0; u += rng.uniform(2.0, 3.2)) {
             const double len = rng.uniform(1.2, 2.2);
-            s.patches.push_back({wall, u, u + len, 0.4, rng.uniform(1.1, 1.6), pick(rng, kBanners), true});
+            s.patches.push_back(
+                {wall, u, u + len, 0.4, rng.uniform(1.1, 1.6), pick(rng, kBanners), true});
         }
     }
     // Team tables behind the touch lines.
@@ -275,18 +276,18 @@ void ScenarioScript::buildSurroundings(Rng& rng)
     if (m_scenario == Scenario::Difficult) {
         // Distractors: ball-orange-ish and goal-yellow-ish things off the field.
         PersonLook orange = randomPerson(rng);
-        orange.shirt = Rgbf(226, 116, 62);
+        orange.shirt = Rgbf(226, 118, 80);
         addPerson(m_static, Vec2(rng.uniform(-2.5, 2.5), FieldGeometry::kCarpetHalfWidth + 0.5),
                   -kPi / 2, orange, false);
         PersonLook yellow = randomPerson(rng);
         yellow.shirt = Rgbf(214, 190, 86);
         addPerson(m_static, Vec2(FieldGeometry::kCarpetHalfLength + 0.6, rng.uniform(-2.0, 2.0)),
                   kPi, yellow, false);
-        m_static.primitives.push_back(sceneryBox(
-            Vec2(-FieldGeometry::kCarpetHalfLength - 0.4, rng.uniform(-1.5, 1.5)), 0.3, 0.2, 0.2,
-            0.0, 0.55, Rgbf(232, 98, 52)));
+        m_static.primitives.push_back(
+            sceneryBox(Vec2(-FieldGeometry::kCarpetHalfLength - 0.4, rng.uniform(-1.5, 1.5)), 0.3,
+                       0.2, 0.2, 0.0, 0.55, Rgbf(228, 104, 72)));
         s.patches.push_back({1, -1.5, 0.5, 0.5, 1.4, Rgbf(216, 188, 80), false});
-        s.patches.push_back({3, 0.5, 2.5, 0.5, 1.3, Rgbf(230, 126, 70), true});
+        s.patches.push_back({3, 0.5, 2.5, 0.5, 1.3, Rgbf(230, 128, 86), true});
     }
 }
 
@@ -356,6 +357,7 @@ void ScenarioScript::planObjects(Rng& rng)
     auto occluder = [&](bool blue, double fraction) {
         RobotPlan r = robot(RobotRole::Occlude, blue);
         r.radius = fraction;
+        r.wy = randomWander(rng, 1.0, 0.5, 0.9); // crosses the line of sight now and then
         m_robots.push_back(r);
     };
     auto person = [&](Vec2 home, double amplitude, bool on_field) {
@@ -407,7 +409,7 @@ void ScenarioScript::planObjects(Rng& rng)
         keeper(true, goal);
         keeper(false, -goal);
         person(Vec2(rng.uniform(-1, 1), rng.uniform(-0.5, 0.5)), 1.8, true);
-        m_people.back().follows_play = true; // the referee
+        m_people.back().follows_play = true;                                         // the referee
         person(Vec2(rng.uniform(-2, 2), rng.chance(0.5) ? 2.35 : -2.35), 1.0, true); // captain
         break;
     }
@@ -509,8 +511,7 @@ Scene ScenarioScript::sceneAt(int index) const
         case RobotRole::Crowd: {
             const Vec2 b = ballAt(t - r.lag);
             const Vec2 away = b - cam;
-            const double bearing =
-                std::atan2(away.y(), away.x()) + r.bearing + 0.35 * r.turn.at(t);
+            const double bearing = std::atan2(away.y(), away.x()) + r.bearing + 0.35 * r.turn.at(t);
             p = b + (r.radius + 0.25 * r.wx.at(t)) * Vec2(std::cos(bearing), std::sin(bearing));
             break;
         }
@@ -520,7 +521,7 @@ Scene ScenarioScript::sceneAt(int index) const
         case RobotRole::Occlude: {
             const Vec2 along = ball - cam;
             const Vec2 across = Vec2(-along.y(), along.x()).normalized();
-            p = cam + (r.radius + 0.1 * r.wx.at(t)) * along + 0.25 * r.wy.at(t) * across;
+            p = cam + (r.radius + 0.1 * r.wx.at(t)) * along + 0.6 * r.wy.at(t) * across;
             break;
         }
         case RobotRole::Keeper:

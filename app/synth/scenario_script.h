@@ -46,10 +46,10 @@ private:
     {
         RobotRole role = RobotRole::Wander;
         Eigen::Vector2d home{0, 0};
-        double radius = 1.0;   ///< m from the ball (FollowBall), wander amplitude, or share of
-                               ///< the way from the camera to the ball (Occlude)
-        double bearing = 0;    ///< rad, from the ball (FollowBall) or base heading (Wander)
-        double lag = 0.5;      ///< s behind the ball (FollowBall)
+        double radius = 1.0; ///< m from the ball (FollowBall), wander amplitude, or share of
+                             ///< the way from the camera to the ball (Occlude)
+        double bearing = 0;  ///< rad, from the ball (FollowBall) or base heading (Wander)
+        double lag = 0.5;    ///< s behind the ball (FollowBall)
         Wander wx, wy, turn;
         RobotLook look;
     };

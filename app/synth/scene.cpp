@@ -24,9 +24,9 @@ std::vector<LineSegment> makeStraightLines()
     const double ax = hx - F::kGoalAreaDepth;
     const double ay = F::kGoalAreaWidth / 2;
     std::vector<LineSegment> lines = {
-        {{-hx, hy}, {hx, hy}},   {{-hx, -hy}, {hx, -hy}}, // touch lines
-        {{hx, -hy}, {hx, hy}},   {{-hx, -hy}, {-hx, hy}}, // goal lines
-        {{0, -hy}, {0, hy}},                              // halfway line
+        {{-hx, hy}, {hx, hy}}, {{-hx, -hy}, {hx, -hy}}, // touch lines
+        {{hx, -hy}, {hx, hy}}, {{-hx, -hy}, {-hx, hy}}, // goal lines
+        {{0, -hy}, {0, hy}},                            // halfway line
     };
     for (const double s : {1.0, -1.0}) {
         lines.push_back({{s * ax, -ay}, {s * ax, ay}});
@@ -42,7 +42,7 @@ Primitive makeBox(const Vec2& centre, double heading, double half_x, double half
     Primitive p;
     p.shape = Primitive::Shape::Box;
     p.centre = Vec3(centre.x(), centre.y(), 0);
-    p.yaw = heading;
+    p.setYaw(heading);
     p.half_x = half_x;
     p.half_y = half_y;
     p.z0 = z0;
@@ -134,8 +134,8 @@ std::optional<Hit> intersectCylinder(const Primitive& p, const Vec3& o, const Ve
 
 std::optional<Hit> intersectBox(const Primitive& p, const Vec3& o, const Vec3& d)
 {
-    const double c = std::cos(p.yaw);
-    const double s = std::sin(p.yaw);
+    const double c = p.cos_yaw;
+    const double s = p.sin_yaw;
     const double px = o.x() - p.centre.x();
     const double py = o.y() - p.centre.y();
     const Vec3 lo(c * px + s * py, -s * px + c * py, o.z());
@@ -187,7 +187,8 @@ double Lighting::fieldFactor(double x, double y) const
 {
     double f = level * std::max(0.25, 1.0 + gradient_x * x);
     if (spot_strength > 0)
-        f *= 1.0 + spot_strength * (2.0 * valueNoise(x / 1.7 + 11.3, y / 1.7 + 5.1, spot_seed) - 1.0);
+        f *= 1.0 +
+             spot_strength * (2.0 * valueNoise(x / 1.7 + 11.3, y / 1.7 + 5.1, spot_seed) - 1.0);
     return f;
 }
 
@@ -195,9 +196,12 @@ std::optional<Hit> intersect(const Primitive& p, const Eigen::Vector3d& origin,
                              const Eigen::Vector3d& direction)
 {
     switch (p.shape) {
-    case Primitive::Shape::Sphere: return intersectSphere(p, origin, direction);
-    case Primitive::Shape::Cylinder: return intersectCylinder(p, origin, direction);
-    case Primitive::Shape::Box: return intersectBox(p, origin, direction);
+    case Primitive::Shape::Sphere:
+        return intersectSphere(p, origin, direction);
+    case Primitive::Shape::Cylinder:
+        return intersectCylinder(p, origin, direction);
+    case Primitive::Shape::Box:
+        return intersectBox(p, origin, direction);
     }
     return std::nullopt;
 }
@@ -205,10 +209,10 @@ std::optional<Hit> intersect(const Primitive& p, const Eigen::Vector3d& origin,
 int addBall(Scene& scene, const Eigen::Vector3d& centre)
 {
     const int object = int(scene.objects.size());
-    scene.objects.push_back({ObjectKind::Ball, centre, FieldGeometry::kBallDiameter / 2,
-                             FieldGeometry::kBallDiameter});
-    Primitive ball = makeSphere(centre, FieldGeometry::kBallDiameter / 2, Rgbf(252, 100, 12),
-                                Colour::Orange);
+    scene.objects.push_back(
+        {ObjectKind::Ball, centre, FieldGeometry::kBallDiameter / 2, FieldGeometry::kBallDiameter});
+    Primitive ball =
+        makeSphere(centre, FieldGeometry::kBallDiameter / 2, Rgbf(252, 100, 12), Colour::Orange);
     ball.kind = ObjectKind::Ball;
     ball.object = object;
     ball.ambient = 0.5;
@@ -233,9 +237,9 @@ void addGoal(Scene& scene, double goal_line_x)
         post.ambient = 0.72;
         scene.primitives.push_back(post);
     }
-    Primitive bar = makeBox(Vec2(goal_line_x, 0), 0, F::kPostDiameter / 2, post_y - 0.02,
-                            F::kPostHeight - F::kPostDiameter, F::kPostHeight, yellow,
-                            Colour::Yellow);
+    Primitive bar =
+        makeBox(Vec2(goal_line_x, 0), 0, F::kPostDiameter / 2, post_y - 0.02,
+                F::kPostHeight - F::kPostDiameter, F::kPostHeight, yellow, Colour::Yellow);
     bar.kind = ObjectKind::Crossbar;
     bar.ambient = 0.72;
     scene.primitives.push_back(bar);
@@ -243,14 +247,12 @@ void addGoal(Scene& scene, double goal_line_x)
     const double back = goal_line_x + (goal_line_x > 0 ? 0.4 : -0.4);
     const Rgbf frame(92, 88, 100);
     for (const double side : {1.0, -1.0}) {
-        Primitive support =
-            makeBox(Vec2((goal_line_x + back) / 2, side * post_y), 0, 0.2, 0.015, 0.0, 0.03, frame,
-                    Colour::Unclassified);
+        Primitive support = makeBox(Vec2((goal_line_x + back) / 2, side * post_y), 0, 0.2, 0.015,
+                                    0.0, 0.03, frame, Colour::Unclassified);
         support.ambient = 0.7;
         scene.primitives.push_back(support);
-        Primitive upright =
-            makeCylinder(Vec2(back, side * post_y), 0.015, 0, F::kPostHeight, frame,
-                         Colour::Unclassified);
+        Primitive upright = makeCylinder(Vec2(back, side * post_y), 0.015, 0, F::kPostHeight, frame,
+                                         Colour::Unclassified);
         upright.ambient = 0.7;
         scene.primitives.push_back(upright);
     }
@@ -275,21 +277,22 @@ int addRobot(Scene& scene, const Eigen::Vector2d& position, double heading, cons
     };
     const Colour dark = Colour::ShadowObject;
     for (const double side : {1.0, -1.0}) {
-        box(0.015, side * 0.045, 0.055, 0.03, 0, 0.025, look.limbs, dark);        // foot
-        box(0, side * 0.045, 0.028, 0.026, 0.025, 0.21, look.limbs, dark);        // leg
-        box(0, side * 0.086, 0.02, 0.014, 0.19, 0.35, look.limbs, dark);          // arm
-        box(0, side * 0.086, 0.023, 0.017, 0.30, 0.34, look.marker, look.marker_label); // arm marker
+        box(0.015, side * 0.045, 0.055, 0.03, 0, 0.025, look.limbs, dark); // foot
+        box(0, side * 0.045, 0.028, 0.026, 0.025, 0.21, look.limbs, dark); // leg
+        box(0, side * 0.086, 0.02, 0.014, 0.19, 0.35, look.limbs, dark);   // arm
+        box(0, side * 0.086, 0.023, 0.017, 0.30, 0.34, look.marker,
+            look.marker_label); // arm marker
     }
-    box(0, 0, 0.045, 0.07, 0.21, 0.25, look.body, dark);                          // pelvis
-    box(0, 0, 0.05, 0.07, 0.25, 0.36, look.body, dark);                           // torso
-    box(0, 0, 0.053, 0.073, 0.262, 0.302, look.marker, look.marker_label);        // team band
-    box(0, 0, 0.015, 0.015, 0.36, 0.376, look.limbs, dark);                       // neck
-    box(0.005, 0, 0.045, 0.05, 0.376, 0.45, look.body, dark);                     // head
+    box(0, 0, 0.045, 0.07, 0.21, 0.25, look.body, dark);                   // pelvis
+    box(0, 0, 0.05, 0.07, 0.25, 0.36, look.body, dark);                    // torso
+    box(0, 0, 0.053, 0.073, 0.262, 0.302, look.marker, look.marker_label); // team band
+    box(0, 0, 0.015, 0.015, 0.36, 0.376, look.limbs, dark);                // neck
+    box(0.005, 0, 0.045, 0.05, 0.376, 0.45, look.body, dark);              // head
     return object;
 }
 
-int addPerson(Scene& scene, const Eigen::Vector2d& position, double heading,
-              const PersonLook& look, bool on_field)
+int addPerson(Scene& scene, const Eigen::Vector2d& position, double heading, const PersonLook& look,
+              bool on_field)
 {
     int object = -1;
     if (on_field) {

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -16,18 +17,18 @@ namespace fieldsight::synth {
 /// RoboCup 2013 kid-size field, metres (line positions are line centres).
 struct FieldGeometry
 {
-    static constexpr double kLength = 6.0;           ///< m, goal line to goal line
-    static constexpr double kWidth = 4.0;            ///< m, touch line to touch line
-    static constexpr double kBorder = 0.7;           ///< m, green strip beyond the lines
-    static constexpr double kLineWidth = 0.05;       ///< m
-    static constexpr double kCircleRadius = 0.6;     ///< m
-    static constexpr double kGoalAreaDepth = 0.6;    ///< m
-    static constexpr double kGoalAreaWidth = 2.2;    ///< m
-    static constexpr double kPenaltyMark = 1.8;      ///< m from the goal line
-    static constexpr double kGoalWidth = 1.5;        ///< m between the posts' inner faces
-    static constexpr double kPostDiameter = 0.1;     ///< m
-    static constexpr double kPostHeight = 0.8;       ///< m
-    static constexpr double kBallDiameter = 0.14;    ///< m (the rules allow 6.5 to 15 cm)
+    static constexpr double kLength = 6.0;        ///< m, goal line to goal line
+    static constexpr double kWidth = 4.0;         ///< m, touch line to touch line
+    static constexpr double kBorder = 0.7;        ///< m, green strip beyond the lines
+    static constexpr double kLineWidth = 0.05;    ///< m
+    static constexpr double kCircleRadius = 0.6;  ///< m
+    static constexpr double kGoalAreaDepth = 0.6; ///< m
+    static constexpr double kGoalAreaWidth = 2.2; ///< m
+    static constexpr double kPenaltyMark = 1.8;   ///< m from the goal line
+    static constexpr double kGoalWidth = 1.5;     ///< m between the posts' inner faces
+    static constexpr double kPostDiameter = 0.1;  ///< m
+    static constexpr double kPostHeight = 0.8;    ///< m
+    static constexpr double kBallDiameter = 0.14; ///< m (the rules allow 6.5 to 15 cm)
     static constexpr double kCarpetHalfLength = kLength / 2 + kBorder; ///< m
     static constexpr double kCarpetHalfWidth = kWidth / 2 + kBorder;   ///< m
 };
@@ -55,15 +56,22 @@ struct Primitive
     double half_y = 0;               ///< m, box half extent across its heading
     double z0 = 0;                   ///< m, box and cylinder bottom
     double z1 = 0;                   ///< m, box and cylinder top
-    double yaw = 0;                  ///< rad, box heading
+    double cos_yaw = 1;              ///< box heading as cosine and sine (see setYaw)
+    double sin_yaw = 0;
     Rgbf albedo{128, 128, 128};
     Colour label = Colour::Unclassified; ///< class of its pixels for the ideal LUT
     ObjectKind kind = ObjectKind::Background;
-    int object = -1;       ///< index into Scene::objects, or -1 for scenery
+    int object = -1;                   ///< index into Scene::objects, or -1 for scenery
     bool counts_for_visibility = true; ///< part of the object's visibility test (obstacles)
     bool field_lit = true; ///< lit by the field lighting (gradient), not just the global level
     double ambient = 0.55; ///< share of light that does not depend on the surface normal
     double specular = 0;   ///< highlight strength
+
+    void setYaw(double yaw) ///< rad
+    {
+        cos_yaw = std::cos(yaw);
+        sin_yaw = std::sin(yaw);
+    }
 };
 
 /// Something the ground truth reports on (ball, posts, robots, people on the field).
@@ -78,11 +86,11 @@ struct SceneObject
 /// A rectangle painted on a wall (poster, door, window, banner).
 struct WallPatch
 {
-    int wall = 0;       ///< 0: +x, 1: -x, 2: +y, 3: -y
-    double u0 = 0;      ///< m, along the wall (world y for x walls, world x for y walls)
-    double u1 = 0;      ///< m
-    double z0 = 0;      ///< m
-    double z1 = 0;      ///< m
+    int wall = 0;  ///< 0: +x, 1: -x, 2: +y, 3: -y
+    double u0 = 0; ///< m, along the wall (world y for x walls, world x for y walls)
+    double u1 = 0; ///< m
+    double z0 = 0; ///< m
+    double z1 = 0; ///< m
     Rgbf colour{128, 128, 128};
     bool stripes = false; ///< banner text: darker horizontal stripes
 };
@@ -90,9 +98,9 @@ struct WallPatch
 /// The room or hall around the field.
 struct Surroundings
 {
-    double half_x = 6;     ///< m, walls at x = +-half_x
-    double half_y = 5;     ///< m
-    double ceiling = 4;    ///< m
+    double half_x = 6;  ///< m, walls at x = +-half_x
+    double half_y = 5;  ///< m
+    double ceiling = 4; ///< m
     Rgbf floor{110, 118, 150};
     Rgbf wall{190, 175, 150};
     Rgbf ceiling_colour{170, 165, 160};
@@ -103,8 +111,8 @@ struct Surroundings
 /// Light at one instant: global level times a field-frame gradient times soft spots.
 struct Lighting
 {
-    double level = 1.0;      ///< global multiplier
-    double gradient_x = 0;   ///< relative change per metre along +x on the field
+    double level = 1.0;       ///< global multiplier
+    double gradient_x = 0;    ///< relative change per metre along +x on the field
     double spot_strength = 0; ///< amplitude of the overhead-lamp pattern
     std::uint64_t spot_seed = 0;
     double fieldFactor(double x, double y) const;
@@ -144,8 +152,7 @@ struct RobotLook
     Colour marker_label = Colour::Blue;
 };
 /// A DARwIn-OP-sized robot (0.45 m tall, 0.2 m wide) facing `heading` (rad).
-int addRobot(Scene& scene, const Eigen::Vector2d& position, double heading,
-             const RobotLook& look);
+int addRobot(Scene& scene, const Eigen::Vector2d& position, double heading, const RobotLook& look);
 struct PersonLook
 {
     Rgbf shirt{90, 100, 130};
@@ -156,7 +163,7 @@ struct PersonLook
 };
 /// A standing person. On the field it is an obstacle whose parts below 0.5 m decide its
 /// visibility; off the field it is scenery (returns -1).
-int addPerson(Scene& scene, const Eigen::Vector2d& position, double heading,
-              const PersonLook& look, bool on_field);
+int addPerson(Scene& scene, const Eigen::Vector2d& position, double heading, const PersonLook& look,
+              bool on_field);
 
 } // namespace fieldsight::synth

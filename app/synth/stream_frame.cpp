@@ -23,8 +23,8 @@ StreamFrame renderStreamFrame(const ScenarioScript& script, int index)
     frame.scene = script.sceneAt(index);
     frame.camera = CameraModel(script.width(), script.height());
     frame.camera.setPose(frame.scene.camera);
-    frame.image = renderScene(frame.scene, frame.camera, script.effectsAt(index),
-                              script.noiseSeed(index));
+    frame.image =
+        renderScene(frame.scene, frame.camera, script.effectsAt(index), script.noiseSeed(index));
     frame.truth = groundTruth(frame.scene, frame.camera, frame.image.primitive);
     frame.horizon = frame.camera.horizon();
     return frame;

@@ -59,11 +59,16 @@ std::string scenarioName(Scenario scenario)
 int paperFrameCount(Scenario scenario)
 {
     switch (scenario) {
-    case Scenario::Lab1: return 5090;
-    case Scenario::Lab2: return 470;
-    case Scenario::Difficult: return 175;
-    case Scenario::RC2012: return 2640;
-    case Scenario::RC2013: return 625;
+    case Scenario::Lab1:
+        return 5090;
+    case Scenario::Lab2:
+        return 470;
+    case Scenario::Difficult:
+        return 175;
+    case Scenario::RC2012:
+        return 2640;
+    case Scenario::RC2013:
+        return 625;
     }
     return 0;
 }
@@ -76,9 +81,9 @@ Status generateStream(const SynthOptions& options)
     if (options.frames < 1 || options.frames > kMaxFrames)
         return Error{options.out_dir + ": frame count " + std::to_string(options.frames) +
                      " is out of range (1.." + std::to_string(kMaxFrames) + ")"};
-    if (options.width < 32 || options.height < 24 || options.width > 4096 || options.height > 4096)
+    if (options.width < 16 || options.height < 16 || options.width > 4096 || options.height > 4096)
         return Error{options.out_dir + ": image size " + std::to_string(options.width) + "x" +
-                     std::to_string(options.height) + " is out of range (32x24..4096x4096)"};
+                     std::to_string(options.height) + " is out of range (16x16..4096x4096)"};
     std::error_code ec;
     fs::create_directories(options.out_dir, ec);
     if (ec || !fs::is_directory(options.out_dir))
@@ -108,8 +113,8 @@ Status generateStream(const SynthOptions& options)
             std::vector<unsigned char> png;
             try {
                 cv::imencode(".png", frame.image.bgr, png,
-                            {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
-                             cv::IMWRITE_PNG_STRATEGY_FILTERED});
+                             {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
+                              cv::IMWRITE_PNG_STRATEGY_FILTERED});
             } catch (const cv::Exception& e) {
                 return Error{(dir / frame.name).string() + ": cannot encode PNG: " + e.what()};
             }
@@ -127,9 +132,10 @@ Status generateStream(const SynthOptions& options)
                 return s;
         }
         annotations.frames[frame.name] = frame.truth;
-        frames.push_back({{"file", frame.name},
-                          {"timestamp_ms", frame.timestamp_ms},
-                          {"horizon", {round2(frame.horizon.y_left), round2(frame.horizon.y_right)}}});
+        frames.push_back(
+            {{"file", frame.name},
+             {"timestamp_ms", frame.timestamp_ms},
+             {"horizon", {round2(frame.horizon.y_left), round2(frame.horizon.y_right)}}});
     }
     if (strm)
         if (Status s = strm->close(); !s)
@@ -141,16 +147,15 @@ Status generateStream(const SynthOptions& options)
         return s;
     if (!options.write_png)
         return {}; // a manifest would name frames that do not exist
-    const nlohmann::json manifest = {
-        {"format", "fieldsight-stream/1"},
-        {"pixel_format", "rgb"},
-        {"lut", "default.lut"},
-        {"camera", {{"fov_deg", {62.8, 48.8}}, {"height_m", 0.45}}},
-        {"generator",
-         {{"scenario", scenarioName(options.scenario)},
-          {"seed", options.seed},
-          {"ball_diameter_m", FieldGeometry::kBallDiameter}}},
-        {"frames", frames}};
+    const nlohmann::json manifest = {{"format", "fieldsight-stream/1"},
+                                     {"pixel_format", "rgb"},
+                                     {"lut", "default.lut"},
+                                     {"camera", {{"fov_deg", {62.8, 48.8}}, {"height_m", 0.45}}},
+                                     {"generator",
+                                      {{"scenario", scenarioName(options.scenario)},
+                                       {"seed", options.seed},
+                                       {"ball_diameter_m", FieldGeometry::kBallDiameter}}},
+                                     {"frames", frames}};
     return writeFileAtomically((dir / "stream.json").string(), manifest.dump(1) + "\n");
 }
 

@@ -16,14 +16,15 @@ enum class Scenario { Lab1, Lab2, Difficult, RC2012, RC2013 };
 struct SynthOptions
 {
     Scenario scenario = Scenario::Lab2;
-    int frames = 30;            ///< number of frames to render
-    std::uint64_t seed = 1;     ///< same seed, same bytes
-    std::string out_dir;        ///< stream folder to create (frames, stream.json, default.lut, annotations.json)
-    int width = 320;            ///< px
-    int height = 240;           ///< px
-    bool write_strm = false;    ///< also write <out_dir>/image.strm with the same frames (YCbCr)
-    bool write_png = true;      ///< write the PNG frames and stream.json (annotations are keyed
-                                ///< by the PNG names either way)
+    int frames = 30;        ///< number of frames to render
+    std::uint64_t seed = 1; ///< same seed, same bytes
+    /// Stream folder to create (frames, stream.json, default.lut, annotations.json).
+    std::string out_dir;
+    int width = 320;         ///< px
+    int height = 240;        ///< px
+    bool write_strm = false; ///< also write <out_dir>/image.strm with the same frames (YCbCr)
+    bool write_png = true;   ///< write the PNG frames and stream.json (annotations are keyed
+                             ///< by the PNG names either way)
 };
 
 std::vector<std::string> scenarioNames(); ///< "lab1", "lab2", "difficult", "rc2012", "rc2013"
