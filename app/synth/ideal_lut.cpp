@@ -7,6 +7,10 @@
 
 namespace fieldsight::synth {
 
+namespace {
+constexpr int kGreenLumaCells = 6; ///< 12 levels of Y
+} // namespace
+
 cv::Mat IdealLutBuilder::coreMask(const cv::Mat& labels, int margin)
 {
     cv::Mat core(labels.rows, labels.cols, CV_8U, cv::Scalar(0));
@@ -105,6 +109,26 @@ ColourLut IdealLutBuilder::build() const
                 }
                 if (best_count > 0 && !tie)
                     lut.setCell(cell, Colour(best));
+            }
+        }
+    }
+
+    // Green also grows along Y (brightness) by kGreenLumaCells: blends of carpet with a thin far
+    // line, shading and lamp spots change brightness, not hue, and a person building a LUT at a
+    // venue clicks those pixels green too. Cells the background won stay as they are.
+    const ColourLut grown = lut;
+    for (std::size_t cell = 0; cell < ColourLut::kCells; ++cell) {
+        if (decided[cell] || grown.cell(cell) != Colour::Unclassified)
+            continue;
+        const int y = int(cell >> 14);
+        for (int d = -kGreenLumaCells; d <= kGreenLumaCells; ++d) {
+            const int yy = y + d;
+            if (yy < 0 || yy > 127)
+                continue;
+            const std::size_t n = (std::size_t(yy) << 14) | (cell & 0x3FFF);
+            if (grown.cell(n) == Colour::Green && voted.cell(n) == Colour::Green) {
+                lut.setCell(cell, Colour::Green);
+                break;
             }
         }
     }

@@ -53,6 +53,7 @@ GreenHorizonDetector::GreenHorizonDetector()
     addParam(m_scan_spacing, {"scan_spacing", "px", "distance between scanned columns", 11, 1, 64});
     addParam(m_min_green_pixels,
              {"min_green_pixels", "px", "consecutive green pixels that start the field", 5, 1, 50});
+    addParam(m_max_gap, {"max_gap", "px", "non-green pixels a green run may bridge", 3, 0, 20});
     addParam(m_upper_threshold_mult,
              {"upper_threshold_mult", "sigma",
               "drop scan points more than this many std devs above the mean", 2.5, 0, 10});
@@ -79,19 +80,30 @@ void GreenHorizonDetector::run(Blackboard& bb)
     const int h = bb.height();
     const int spacing = std::max(1, int(std::lround(m_scan_spacing)));
     const int min_green = std::max(1, int(std::lround(m_min_green_pixels)));
+    const int max_gap = std::max(0, int(std::lround(m_max_gap)));
 
     auto& points = bb.gh_scan_points;
     for (int x = 0; x < w; x += spacing) {
         const int y0 = std::clamp(int(bb.kinematic_horizon.yAt(x, w)), 0, h - 1);
-        int run = 0;
+        // A run starts on green and counts green pixels; it bridges gaps of up to max_gap pixels
+        // (far lines and the thin strip beyond them blend into colours no class claims), like
+        // the transition filter's field-noise rules. The original required min_green pixels of
+        // uninterrupted green and so put the horizon below the far touch line.
+        int green = 0;
+        int gap = 0;
+        int start = 0;
         for (int y = y0; y < h; ++y) {
-            if (bb.classify(x, y) != Colour::Green) {
-                run = 0;
-                continue;
-            }
-            if (++run == min_green) {
-                points.push_back({x, y - min_green + 1});
-                break;
+            if (bb.classify(x, y) == Colour::Green) {
+                if (green == 0)
+                    start = y;
+                gap = 0;
+                if (++green == min_green) {
+                    points.push_back({x, start});
+                    break;
+                }
+            } else if (green > 0 && ++gap > max_gap) {
+                green = 0;
+                gap = 0;
             }
         }
     }

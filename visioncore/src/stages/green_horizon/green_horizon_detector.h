@@ -16,6 +16,7 @@ public:
 private:
     double m_scan_spacing = 11;
     double m_min_green_pixels = 5;
+    double m_max_gap = 3;
     double m_upper_threshold_mult = 2.5;
 };
 
