@@ -8,7 +8,7 @@
 namespace fieldsight::synth {
 
 namespace {
-constexpr int kGreenLumaCells = 6; ///< 12 levels of Y
+constexpr int kLumaCells = 6; ///< 12 levels of Y
 } // namespace
 
 cv::Mat IdealLutBuilder::coreMask(const cv::Mat& labels, int margin)
@@ -113,21 +113,24 @@ ColourLut IdealLutBuilder::build() const
         }
     }
 
-    // Green also grows along Y (brightness) by kGreenLumaCells: blends of carpet with a thin far
-    // line, shading and lamp spots change brightness, not hue, and a person building a LUT at a
-    // venue clicks those pixels green too. Cells the background won stay as they are.
+    // Green, and the ball and goal colours, also grow along Y (brightness) by kLumaCells: blends
+    // of carpet with a thin far line, the shaded side of a post or ball, and lamp spots change
+    // brightness, not hue, and a person building a LUT at a venue clicks those pixels too. Cells
+    // the background won stay as they are.
     const ColourLut grown = lut;
     for (std::size_t cell = 0; cell < ColourLut::kCells; ++cell) {
         if (decided[cell] || grown.cell(cell) != Colour::Unclassified)
             continue;
         const int y = int(cell >> 14);
-        for (int d = -kGreenLumaCells; d <= kGreenLumaCells; ++d) {
+        for (int d = -kLumaCells; d <= kLumaCells; ++d) {
             const int yy = y + d;
             if (yy < 0 || yy > 127)
                 continue;
             const std::size_t n = (std::size_t(yy) << 14) | (cell & 0x3FFF);
-            if (grown.cell(n) == Colour::Green && voted.cell(n) == Colour::Green) {
-                lut.setCell(cell, Colour::Green);
+            const Colour c = grown.cell(n);
+            if ((c == Colour::Green || c == Colour::Yellow || c == Colour::Orange) &&
+                voted.cell(n) == c) {
+                lut.setCell(cell, c);
                 break;
             }
         }

@@ -119,6 +119,9 @@ void GoalpostDetector::run(Blackboard& bb)
         if (s.x1 < w)
             rights.push_back({s.x1 - 0.5, double(s.y0)});
     }
+    const int hspacing = bb.horizontal_scan_ys.size() >= 2
+                             ? std::abs(bb.horizontal_scan_ys[0] - bb.horizontal_scan_ys[1])
+                             : 4;
     std::mt19937 rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_error;
@@ -182,7 +185,7 @@ void GoalpostDetector::run(Blackboard& bb)
     }
 
     // A post cut by the image border has only its inner edge: most of the goal runs along that
-    // edge reach the border.
+    // edge (at least half: a tilted post leaves the border part-way) reach the border.
     const auto borderPost = [&](const Edge& e, bool left_border) {
         int touching = 0, near = 0;
         for (const ColourSegment& t : transitions) {
@@ -193,7 +196,7 @@ void GoalpostDetector::run(Blackboard& bb)
             ++near;
             touching += left_border ? t.x0 == 0 : t.x1 == w;
         }
-        if (near == 0 || touching * 10 < near * 8)
+        if (near == 0 || touching * 2 < near) // a tilted post leaves the border part-way
             return;
         const double bx = left_border ? -0.5 : w - 0.5;
         const Quad q = left_border ? Quad{{bx, e.low.y}, {bx, e.high.y}, e.high, e.low}
@@ -208,6 +211,42 @@ void GoalpostDetector::run(Blackboard& bb)
         if (std::none_of(posts.begin(), posts.end(),
                          [&](const Quad& q) { return q.bl.x == s.low.x && q.tl.x == s.high.x; }))
             borderPost(s, false);
+
+    // A sliver of a post at the image border is too thin for two edge lines: runs touching the
+    // border on consecutive scan rows (and short, unlike a crossbar) make a post.
+    const auto slivers = [&](bool left_border) {
+        const double max_len = 16;
+        std::vector<const ColourSegment*> rows;
+        for (const ColourSegment& t : transitions)
+            if ((left_border ? t.x0 == 0 : t.x1 == w) && t.length() <= max_len)
+                rows.push_back(&t);
+        std::sort(rows.begin(), rows.end(),
+                  [](const ColourSegment* a, const ColourSegment* b) { return a->y0 < b->y0; });
+        for (std::size_t i = 0; i < rows.size();) {
+            std::size_t j = i + 1;
+            while (j < rows.size() && rows[j]->y0 - rows[j - 1]->y0 <= hspacing)
+                ++j;
+            if (j - i >= 2) {
+                double inner = left_border ? 0 : w;
+                for (std::size_t k = i; k < j; ++k)
+                    inner = left_border ? std::max(inner, rows[k]->x1 - 0.5)
+                                        : std::min(inner, rows[k]->x0 - 0.5);
+                const double outer = left_border ? -0.5 : w - 0.5;
+                const double top = rows[i]->y0, bottom = rows[j - 1]->y0;
+                const Quad q = left_border
+                                   ? Quad{{outer, bottom}, {outer, top}, {inner, top}, {inner, bottom}}
+                                   : Quad{{inner, bottom}, {inner, top}, {outer, top}, {outer, bottom}};
+                const bool covered = std::any_of(posts.begin(), posts.end(), [&](const Quad& p) {
+                    return p.left() <= q.right() && q.left() <= p.right();
+                });
+                if (!covered)
+                    posts.push_back(q);
+            }
+            i = j;
+        }
+    };
+    slivers(true);
+    slivers(false);
 
     // Merge posts that overlap or stand within merge_widths of each other (outer envelope).
     for (std::size_t a = 0; a < posts.size(); ++a)

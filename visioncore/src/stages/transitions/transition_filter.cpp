@@ -93,7 +93,9 @@ TransitionFilter::TransitionFilter()
     addParam(m_ball_colour, {"ball_colour", "class id", "colour class of the ball",
                              double(Colour::Orange), 0, kColourCount - 1});
     addParam(m_min_ball_length, {"min_ball_length", "px", "shortest ball segment", 3, 1, 100});
-    addParam(m_min_goal_length, {"min_goal_length", "px", "shortest goal segment", 3, 1, 100});
+    addParam(m_min_goal_length, {"min_goal_length", "px",
+                                 "shortest goal segment (3 in the original; a far post is 2 px wide)",
+                                 2, 1, 100});
     addParam(m_min_line_length, {"min_line_length", "px", "shortest line segment", 2, 1, 100});
     addParam(m_min_team_length, {"min_team_length", "px", "shortest team marker segment", 2, 1, 100});
     addParam(m_max_team_length, {"max_team_length", "px", "longest team marker segment", 50, 1, 1000});

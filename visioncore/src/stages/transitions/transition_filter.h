@@ -44,7 +44,7 @@ private:
     double m_goal_colour = double(Colour::Yellow);
     double m_ball_colour = double(Colour::Orange);
     double m_min_ball_length = 3;
-    double m_min_goal_length = 3;
+    double m_min_goal_length = 2;
     double m_min_line_length = 2;
     double m_min_team_length = 2;
     double m_max_team_length = 50;
