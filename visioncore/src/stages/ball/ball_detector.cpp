@@ -125,9 +125,10 @@ BallDetector::BallDetector()
     addParam(m_min_radius, {"min_radius", "px", "smaller balls are dropped", 2.5, 0, 100});
     addParam(m_min_orange_fraction,
              {"min_orange_fraction", "", "ball colour needed inside the fitted circle", 0.2, 0, 1});
-    addParam(m_cluster_distance,
-             {"cluster_distance", "px", "edge points closer than this belong together", 10, 1, 100});
-    addParam(m_max_fit_error, {"max_fit_error", "px", "circle RANSAC inlier distance", 1.5, 0.1, 20});
+    addParam(m_cluster_distance, {"cluster_distance", "px",
+                                  "edge points closer than this belong together", 10, 1, 100});
+    addParam(m_max_fit_error,
+             {"max_fit_error", "px", "circle RANSAC inlier distance", 1.5, 0.1, 20});
     addParam(m_iterations, {"iterations", "", "circle RANSAC samples (at most)", 100, 1, 10000});
     addParam(m_min_edge_support,
              {"min_edge_support", "",
@@ -140,12 +141,9 @@ BallDetector::BallDetector()
 const StageInfo& BallDetector::info() const
 {
     static const StageInfo info{
-        "ball",
-        "Ball",
-        true,
-        {"horizontal_transitions", "vertical_transitions", "green_horizon"},
-        {"balls"},
-        {{"ball.edge_points", "Ball edge points"}, {"ball.balls", "Balls"}}};
+        "ball",    "Ball",
+        true,      {"horizontal_transitions", "vertical_transitions", "green_horizon"},
+        {"balls"}, {{"ball.edge_points", "Ball edge points"}, {"ball.balls", "Balls"}}};
     return info;
 }
 
@@ -204,8 +202,9 @@ void BallDetector::run(Blackboard& bb)
             continue;
         // A clean ball: the least-squares fit explains every edge point. Otherwise (an occluding
         // robot, the image border) RANSAC finds the points that lie on one circle.
-        const bool clean = std::all_of(group.begin(), group.end(),
-                                       [&](const PointF& p) { return c.error(p) < m_max_fit_error; });
+        const bool clean = std::all_of(group.begin(), group.end(), [&](const PointF& p) {
+            return c.error(p) < m_max_fit_error;
+        });
         if (!clean && group.size() >= 5) {
             // Shading and highlights break a real ball's colour into pieces, so the cluster also
             // holds edges inside the ball: judge a circle by how much of its own outline the scan
@@ -228,8 +227,9 @@ void BallDetector::run(Blackboard& bb)
     if (!found && !chords.empty()) {
         // A ball too small for three edge points: the longest chord stands for its diameter.
         const ColourSegment* s = *std::max_element(
-            chords.begin(), chords.end(),
-            [](const ColourSegment* a, const ColourSegment* b) { return a->length() < b->length(); });
+            chords.begin(), chords.end(), [](const ColourSegment* a, const ColourSegment* b) {
+                return a->length() < b->length();
+            });
         Circle c{{(s->x0 + s->x1 - 1) / 2.0, double(s->y0)}, s->length() / 2.0};
         if (accept(c)) {
             ball = c;

@@ -18,17 +18,16 @@ enum class ConsensusSelection {
 
 struct RansacParams
 {
-    double max_error = 5.0;  ///< px, inlier distance
-    int min_points = 6;      ///< inliers needed to accept a model
-    int iterations = 100;    ///< samples per model, at most
+    double max_error = 5.0; ///< px, inlier distance
+    int min_points = 6;     ///< inliers needed to accept a model
+    int iterations = 100;   ///< samples per model, at most
     ConsensusSelection selection = ConsensusSelection::Largest;
     /// Stop sampling once a better model would have been drawn with this probability (adaptive
     /// termination, Hartley & Zisserman 4.7.1); 0 always draws `iterations` samples.
     double confidence = 0.99;
 };
 
-template <class Model>
-struct RansacResult
+template <class Model> struct RansacResult
 {
     Model model;
     std::vector<PointF> inliers;
@@ -37,7 +36,10 @@ struct RansacResult
 
 /// Draws an index in [0, n) from the raw engine output, so the sequence is the same on every
 /// standard library (std::uniform_int_distribution is implementation-defined).
-inline std::size_t drawIndex(std::mt19937& rng, std::size_t n) { return std::size_t(rng() % n); }
+inline std::size_t drawIndex(std::mt19937& rng, std::size_t n)
+{
+    return std::size_t(rng() % n);
+}
 
 /// One model from `points`. Model needs: static constexpr int kSampleSize; bool fromSample(const
 /// PointF* sample); double error(const PointF&) const. On success the inliers are moved out of

@@ -18,8 +18,7 @@ inline constexpr Rgb kBall{255, 160, 0};
 inline constexpr Rgb kWhite{255, 255, 255};
 } // namespace debug_colour
 
-template <class P>
-DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)
+template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)
 {
     DebugShape shape{ShapeKind::Points, {}, colour, size, false};
     shape.points.reserve(points.size());

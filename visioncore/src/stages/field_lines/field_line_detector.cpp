@@ -35,9 +35,8 @@ double averageDistance(const Fitted& a, const Fitted& b)
 /// become one long line; keeps the pieces with enough points.
 void splitAtGaps(Fitted f, double max_gap, std::size_t min_points, std::vector<Fitted>& out)
 {
-    std::sort(f.points.begin(), f.points.end(), [&](const PointF& p, const PointF& q) {
-        return f.line.along(p) < f.line.along(q);
-    });
+    std::sort(f.points.begin(), f.points.end(),
+              [&](const PointF& p, const PointF& q) { return f.line.along(p) < f.line.along(q); });
     std::size_t begin = 0;
     for (std::size_t i = 1; i <= f.points.size(); ++i) {
         if (i < f.points.size() &&
@@ -62,8 +61,8 @@ FieldLineDetector::FieldLineDetector()
     addParam(m_iterations, {"iterations", "", "RANSAC samples per line", 40, 1, 10000});
     addParam(m_max_error, {"max_error", "px", "RANSAC inlier distance", 2.5, 0.5, 50});
     addParam(m_max_lines, {"max_lines", "", "most lines per frame", 10, 1, 50});
-    addParam(m_merge_angle, {"merge_angle", "rad", "colinear lines within this angle merge", 0.1,
-                             0, 1.6});
+    addParam(m_merge_angle,
+             {"merge_angle", "rad", "colinear lines within this angle merge", 0.1, 0, 1.6});
     addParam(m_merge_distance,
              {"merge_distance", "px", "colinear lines within this distance merge", 6, 0, 100});
     addParam(m_max_gap, {"max_gap", "px", "largest gap between points of one line", 40, 1, 1000});
@@ -72,13 +71,13 @@ FieldLineDetector::FieldLineDetector()
 
 const StageInfo& FieldLineDetector::info() const
 {
-    static const StageInfo info{"field_lines",
-                                "Field lines",
-                                true,
-                                {"horizontal_transitions", "vertical_transitions", "green_horizon"},
-                                {"field_lines"},
-                                {{"field_lines.points", "Line points"},
-                                 {"field_lines.lines", "Field lines"}}};
+    static const StageInfo info{
+        "field_lines",
+        "Field lines",
+        true,
+        {"horizontal_transitions", "vertical_transitions", "green_horizon"},
+        {"field_lines"},
+        {{"field_lines.points", "Line points"}, {"field_lines.lines", "Field lines"}}};
     return info;
 }
 

@@ -52,7 +52,8 @@ struct Quad
     double width() const { return (std::abs(br.x - bl.x) + std::abs(tr.x - tl.x)) / 2 + 1; }
     double height() const
     {
-        return (std::hypot(bl.x - tl.x, bl.y - tl.y) + std::hypot(br.x - tr.x, br.y - tr.y)) / 2 + 1;
+        return (std::hypot(bl.x - tl.x, bl.y - tl.y) + std::hypot(br.x - tr.x, br.y - tr.y)) / 2 +
+               1;
     }
     PointF bottomCentre() const { return {(bl.x + br.x) / 2, (bl.y + br.y) / 2}; }
     PointF topCentre() const { return {(tl.x + tr.x) / 2, (tl.y + tr.y) / 2}; }
@@ -155,8 +156,8 @@ void GoalpostDetector::run(Blackboard& bb)
         });
         for (std::size_t i : order) {
             const Edge& e = ends[i];
-            const double len_ratio = std::min(s.length(), e.length()) /
-                                     std::max(1e-9, std::max(s.length(), e.length()));
+            const double len_ratio =
+                std::min(s.length(), e.length()) / std::max(1e-9, std::max(s.length(), e.length()));
             const double count_ratio =
                 double(std::min(s.count, e.count)) / double(std::max(s.count, e.count));
             if (s.line.angleTo(e.line) > tol * std::numbers::pi / 2 ||
@@ -169,15 +170,15 @@ void GoalpostDetector::run(Blackboard& bb)
             if (q.height() / q.width() < m_min_aspect || q.width() <= m_min_width)
                 break;
             // A post stands roughly perpendicular to the horizon.
-            const ImageLine axis{q.bottomCentre(),
-                                 {q.topCentre().x - q.bottomCentre().x,
-                                  q.topCentre().y - q.bottomCentre().y}};
-            const double hx = double(w - 1), hy = bb.kinematic_horizon.y_right -
-                                                  bb.kinematic_horizon.y_left;
+            const ImageLine axis{
+                q.bottomCentre(),
+                {q.topCentre().x - q.bottomCentre().x, q.topCentre().y - q.bottomCentre().y}};
+            const double hx = double(w - 1),
+                         hy = bb.kinematic_horizon.y_right - bb.kinematic_horizon.y_left;
             const double hl = std::hypot(hx, hy);
             const double al = std::hypot(axis.direction.x, axis.direction.y);
-            const double cosang = std::abs(axis.direction.x * hx + axis.direction.y * hy) /
-                                  std::max(1e-9, al * hl);
+            const double cosang =
+                std::abs(axis.direction.x * hx + axis.direction.y * hy) / std::max(1e-9, al * hl);
             if (std::acos(std::min(1.0, cosang)) >= 0.75 * std::numbers::pi / 2)
                 posts.push_back(q);
             break;
@@ -233,9 +234,10 @@ void GoalpostDetector::run(Blackboard& bb)
                                         : std::min(inner, rows[k]->x0 - 0.5);
                 const double outer = left_border ? -0.5 : w - 0.5;
                 const double top = rows[i]->y0, bottom = rows[j - 1]->y0;
-                const Quad q = left_border
-                                   ? Quad{{outer, bottom}, {outer, top}, {inner, top}, {inner, bottom}}
-                                   : Quad{{inner, bottom}, {inner, top}, {outer, top}, {outer, bottom}};
+                const Quad q =
+                    left_border
+                        ? Quad{{outer, bottom}, {outer, top}, {inner, top}, {inner, bottom}}
+                        : Quad{{inner, bottom}, {inner, top}, {outer, top}, {outer, bottom}};
                 const bool covered = std::any_of(posts.begin(), posts.end(), [&](const Quad& p) {
                     return p.left() <= q.right() && q.left() <= p.right();
                 });
@@ -269,7 +271,7 @@ void GoalpostDetector::run(Blackboard& bb)
 
     for (const Quad& q : posts) {
         Goalpost g;
-        g.left = int(std::ceil(q.left()));   // edges are at pixel borders (x - 0.5)
+        g.left = int(std::ceil(q.left())); // edges are at pixel borders (x - 0.5)
         g.right = int(std::floor(q.right()));
         g.top = int(std::lround(q.top()));
         g.base_x = q.bottomCentre().x;
@@ -303,8 +305,8 @@ void GoalpostDetector::run(Blackboard& bb)
         for (const Goalpost& g : bb.goalposts) {
             d->add(rectShape(g.left, g.top, g.right, g.bottom, debug_colour::kYellow,
                              g.side != GoalpostSide::Unknown, 2));
-            d->add(DebugShape{ShapeKind::Points, {{g.base_x, g.base_y}}, debug_colour::kBlue, 5,
-                              false});
+            d->add(DebugShape{
+                ShapeKind::Points, {{g.base_x, g.base_y}}, debug_colour::kBlue, 5, false});
         }
 }
 

@@ -14,7 +14,7 @@ public:
     void run(Blackboard& bb) override;
 
 private:
-    double m_min_points = 6;          // 25 / HORIZONTAL_SCANLINE_SPACING in the original
+    double m_min_points = 6; // 25 / HORIZONTAL_SCANLINE_SPACING in the original
     double m_iterations = 100;
     double m_max_error = 5;
     double m_max_lines = 3;

@@ -61,16 +61,15 @@ GreenHorizonDetector::GreenHorizonDetector()
 
 const StageInfo& GreenHorizonDetector::info() const
 {
-    static const StageInfo info{
-        "green_horizon",
-        "Green horizon",
-        false,
-        {"image", "lut", "kinematic_horizon"},
-        {"green_horizon", "gh_scan_points", "gh_thrown_points"},
-        {{"green_horizon.kinematic_horizon", "Kinematic horizon"},
-         {"green_horizon.scan_points", "Green horizon scan points"},
-         {"green_horizon.thrown_points", "Green horizon thrown points"},
-         {"green_horizon.hull", "Green horizon"}}};
+    static const StageInfo info{"green_horizon",
+                                "Green horizon",
+                                false,
+                                {"image", "lut", "kinematic_horizon"},
+                                {"green_horizon", "gh_scan_points", "gh_thrown_points"},
+                                {{"green_horizon.kinematic_horizon", "Kinematic horizon"},
+                                 {"green_horizon.scan_points", "Green horizon scan points"},
+                                 {"green_horizon.thrown_points", "Green horizon thrown points"},
+                                 {"green_horizon.hull", "Green horizon"}}};
     return info;
 }
 

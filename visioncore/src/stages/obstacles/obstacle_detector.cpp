@@ -44,10 +44,9 @@ struct Group
 
 ObstacleDetector::ObstacleDetector()
 {
-    addParam(m_min_run, {"min_run", "px", "shortest run of non-field colour on a scan line", 6, 1,
-                         240});
-    addParam(m_min_columns,
-             {"min_columns", "", "scan lines an obstacle must span", 2, 1, 100});
+    addParam(m_min_run,
+             {"min_run", "px", "shortest run of non-field colour on a scan line", 6, 1, 240});
+    addParam(m_min_columns, {"min_columns", "", "scan lines an obstacle must span", 2, 1, 100});
     addParam(m_max_column_gap,
              {"max_column_gap", "", "scan lines an obstacle may skip (a white stripe)", 1, 0, 10});
     addParam(m_min_distance_from_horizon,
@@ -58,6 +57,15 @@ ObstacleDetector::ObstacleDetector()
               "a run must be this tall (less min_run, for blur), as a fraction of its foot's "
               "distance below the green horizon",
               0.3, 0, 2});
+    addParam(m_min_edge_dip,
+             {"min_edge_dip", "px",
+              "a scan starting with this many more non-field pixels than the median column is "
+              "covered at the field edge (0: off)",
+              4, 0, 50});
+    addParam(m_max_width_ratio,
+             {"max_width_ratio", "",
+              "neighbouring pieces merge while the union is at most this wide for its height", 0.75,
+              0, 5});
     addParam(m_max_foot_jump,
              {"max_foot_jump", "px",
               "neighbouring scan lines whose feet differ more belong to different obstacles", 4, 0,
@@ -66,13 +74,13 @@ ObstacleDetector::ObstacleDetector()
 
 const StageInfo& ObstacleDetector::info() const
 {
-    static const StageInfo info{"obstacles",
-                                "Obstacles",
-                                true,
-                                {"vertical_filtered", "horizontal_filtered", "green_horizon"},
-                                {"obstacles", "obstacle_points"},
-                                {{"obstacles.points", "Obstacle points"},
-                                 {"obstacles.obstacles", "Obstacles"}}};
+    static const StageInfo info{
+        "obstacles",
+        "Obstacles",
+        true,
+        {"vertical_filtered", "horizontal_filtered", "green_horizon", "goalposts"},
+        {"obstacles", "obstacle_points"},
+        {{"obstacles.points", "Obstacle points"}, {"obstacles.obstacles", "Obstacles"}}};
     return info;
 }
 
@@ -92,6 +100,23 @@ void ObstacleDetector::run(Blackboard& bb)
     int spacing = 1;
     if (bb.vertical_scan_starts.size() >= 2)
         spacing = std::max(1, bb.vertical_scan_starts[1].x - bb.vertical_scan_starts[0].x);
+    // How many non-field pixels each vertical scan starts with: the field edge's own blend band
+    // is about the same everywhere, so a column well deeper than the median is covered by
+    // something standing at the edge of the field (a robot behind the goal line, whose foot is
+    // barely below the green horizon and so too short for a run of its own).
+    std::vector<int> edge_depth(region.size(), 0);
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        const Scan& scan = region[i];
+        for (std::size_t k = 0; k < scan.size() && !isFieldColour(scan[k].colour); ++k)
+            edge_depth[i] += scan[k].length();
+    }
+    std::vector<int> sorted_depth = edge_depth;
+    std::nth_element(sorted_depth.begin(),
+                     sorted_depth.begin() + std::ptrdiff_t(sorted_depth.size() / 2),
+                     sorted_depth.end());
+    const int usual_depth = sorted_depth[sorted_depth.size() / 2];
+    const int min_edge_dip = int(std::lround(m_min_edge_dip));
+
     for (std::size_t i = 0; i < region.size(); ++i) {
         const Scan& scan = region[i];
         bool have = false;
@@ -129,7 +154,17 @@ void ObstacleDetector::run(Blackboard& bb)
             }
             top = -1;
         }
-        // A run reaching the image bottom has no visible foot: still an obstacle (very near).
+        // A goalpost covers the field edge too.
+        const bool at_post =
+            !scan.empty() &&
+            std::any_of(bb.goalposts.begin(), bb.goalposts.end(), [&](const Goalpost& g) {
+                return scan[0].x0 >= g.left - spacing && scan[0].x0 <= g.right + spacing;
+            });
+        if (!have && !at_post && !scan.empty() && min_edge_dip > 0 &&
+            edge_depth[i] >= min_edge_dip && edge_depth[i] >= usual_depth + min_edge_dip) {
+            best = {scan[0].x0, scan[0].y0, scan[0].y0 + edge_depth[i] - 1};
+            have = true;
+        }
         if (have) {
             runs.push_back(best);
             bb.obstacle_points.push_back({best.x, best.bottom});
@@ -162,14 +197,48 @@ void ObstacleDetector::run(Blackboard& bb)
         groups.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
     }
 
+    // Pieces of one robot (arms ending above the legs, the gap between the legs) are split by the
+    // foot rule; neighbouring pieces merge while the union is still shaped like something
+    // standing (narrower than max_width_ratio of its height) and some horizontal scan line crosses
+    // from one to the other without seeing field (the torso). Two robots side by side are not.
+    const auto& rows = bb.horizontal_scan_ys;
+    const auto joined = [&](int x0, int x1, int top, int bottom) {
+        for (std::size_t i = 0; i < rows.size() && i < bb.horizontal_filtered.size(); ++i) {
+            if (rows[i] < top || rows[i] > bottom)
+                continue;
+            bool open = false;
+            for (const ColourSegment& s : bb.horizontal_filtered[i])
+                open = open || (s.x1 > x0 && s.x0 <= x1 && isFieldColour(s.colour));
+            if (!open)
+                return true;
+        }
+        return false;
+    };
+    for (std::size_t i = 0; i + 1 < groups.size();) {
+        Group& a = groups[i];
+        const Group& b = groups[i + 1];
+        const int top = std::min(a.top, b.top), bottom = std::max(a.bottom, b.bottom);
+        const int width = b.last_x - a.first_x + spacing;
+        if (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
+            joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom))) {
+            a.last_x = b.last_x;
+            a.top = top;
+            a.bottom = bottom;
+            a.columns += b.columns;
+            groups.erase(groups.begin() + std::ptrdiff_t(i) + 1);
+        } else {
+            ++i;
+        }
+    }
+
     // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
     // near its foot (it ends somewhere between two scan lines).
-    const auto& rows = bb.horizontal_scan_ys;
     for (const Group& g : groups) {
         if (g.columns < int(std::lround(m_min_columns)))
             continue;
-        Obstacle o{std::max(0, g.first_x - spacing / 2), std::min(bb.width() - 1, g.last_x + spacing / 2),
-                   g.top, std::min(g.bottom, h - 1)};
+        Obstacle o{std::max(0, g.first_x - spacing / 2),
+                   std::min(bb.width() - 1, g.last_x + spacing / 2), g.top,
+                   std::min(g.bottom, h - 1)};
         for (std::size_t i = 0; i < rows.size() && i < bb.horizontal_filtered.size(); ++i) {
             const int y = rows[i];
             if (y > g.bottom || y < g.bottom - 3 * spacing - 2 || y < g.top)

@@ -22,6 +22,8 @@ private:
     double m_min_distance_from_horizon = 0;
     double m_min_height_ratio = 0.3;
     double m_max_foot_jump = 4;
+    double m_max_width_ratio = 0.75;
+    double m_min_edge_dip = 4;
 };
 
 } // namespace fieldsight

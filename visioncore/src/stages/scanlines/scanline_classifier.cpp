@@ -23,9 +23,8 @@ inline std::uint8_t lookup(const std::uint8_t* lut, const std::uint8_t* px)
 /// ends are exclusive; `x0,y0` is the first pixel and (dx, dy) the step. Two passes: the lookups
 /// alone into `classes` (branch-free, as fast as the lookups can be), then the class changes,
 /// found 16 at a time.
-void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_t stride,
-                  int count, int x0, int y0, int dx, int dy, std::vector<std::uint8_t>& classes,
-                  Scan& scan)
+void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_t stride, int count,
+                  int x0, int y0, int dx, int dy, std::vector<std::uint8_t>& classes, Scan& scan)
 {
     if (count <= 0)
         return;
@@ -105,8 +104,8 @@ void ScanlineClassifier::run(Blackboard& bb)
     for (int x = 0; x < w; x += vs) {
         const int y0 = bb.green_horizon.yAt(x);
         bb.vertical_scan_starts.push_back({x, y0});
-        classifyLine(lut, image.ptr<std::uint8_t>(y0) + 3 * x, step, h - y0, x, y0, 0, 1,
-                     m_classes, bb.vertical_segments.addScan());
+        classifyLine(lut, image.ptr<std::uint8_t>(y0) + 3 * x, step, h - y0, x, y0, 0, 1, m_classes,
+                     bb.vertical_segments.addScan());
     }
 
     if (auto* d = bb.debug.layer("scanlines.horizontal"))

@@ -68,16 +68,32 @@ const std::vector<ReplacementRule>& defaultReplacementRules()
         {"fieldnoise_v_med", {6, -1, {kGreen}}, {0, 2, {kUncl}}, {6, -1, {kGreen}}, M::Before},
         {"fieldnoise_v_large", {12, -1, {kGreen}}, {0, 4, {kUncl}}, {12, -1, {kGreen}}, M::Before},
         {"fieldnoise_v_oneway", {1, -1, {kGreen}}, {0, 4, {kUncl}}, {12, -1, {kGreen}}, M::Before},
-        {"fieldnoise_v_oneway2", {3, -1, {kGreen}}, {0, 10, {kUncl}}, {20, -1, {kGreen}}, M::Before},
-        {"yellowgoal1", {1, -1, {Colour::Yellow}}, {0, 1, {Colour::Orange}}, {5, -1, {Colour::Yellow}},
+        {"fieldnoise_v_oneway2",
+         {3, -1, {kGreen}},
+         {0, 10, {kUncl}},
+         {20, -1, {kGreen}},
+         M::Before},
+        {"yellowgoal1",
+         {1, -1, {Colour::Yellow}},
+         {0, 1, {Colour::Orange}},
+         {5, -1, {Colour::Yellow}},
          M::After},
-        {"yellowgoal2", {5, -1, {Colour::Yellow}}, {0, 3, {kUncl}}, {1, -1, {Colour::Yellow}},
+        {"yellowgoal2",
+         {5, -1, {Colour::Yellow}},
+         {0, 3, {kUncl}},
+         {1, -1, {Colour::Yellow}},
          M::After},
         // Not in the original: sensor noise splits a distant post (a few px wide) into pieces too
         // short to be transitions. Blue for the 2009 goals.
-        {"goalnoise_yellow", {1, -1, {Colour::Yellow}}, {0, 1, {kUncl}}, {1, -1, {Colour::Yellow}},
+        {"goalnoise_yellow",
+         {1, -1, {Colour::Yellow}},
+         {0, 1, {kUncl}},
+         {1, -1, {Colour::Yellow}},
          M::Before},
-        {"goalnoise_blue", {1, -1, {Colour::Blue}}, {0, 1, {kUncl}}, {1, -1, {Colour::Blue}},
+        {"goalnoise_blue",
+         {1, -1, {Colour::Blue}},
+         {0, 1, {kUncl}},
+         {1, -1, {Colour::Blue}},
          M::Before},
         {"ball1", {5, -1, {Colour::Orange}}, {0, 3, {kUncl}}, {1, -1, {Colour::Orange}}, M::Before},
         {"line1", {1, -1, {Colour::White}}, {0, 3, {kUncl}}, {5, -1, {Colour::White}}, M::Before},
@@ -93,25 +109,26 @@ TransitionFilter::TransitionFilter()
     addParam(m_ball_colour, {"ball_colour", "class id", "colour class of the ball",
                              double(Colour::Orange), 0, kColourCount - 1});
     addParam(m_min_ball_length, {"min_ball_length", "px", "shortest ball segment", 3, 1, 100});
-    addParam(m_min_goal_length, {"min_goal_length", "px",
-                                 "shortest goal segment (3 in the original; a far post is 2 px wide)",
-                                 2, 1, 100});
+    addParam(m_min_goal_length,
+             {"min_goal_length", "px",
+              "shortest goal segment (3 in the original; a far post is 2 px wide)", 2, 1, 100});
     addParam(m_min_line_length, {"min_line_length", "px", "shortest line segment", 2, 1, 100});
-    addParam(m_min_team_length, {"min_team_length", "px", "shortest team marker segment", 2, 1, 100});
-    addParam(m_max_team_length, {"max_team_length", "px", "longest team marker segment", 50, 1, 1000});
+    addParam(m_min_team_length,
+             {"min_team_length", "px", "shortest team marker segment", 2, 1, 100});
+    addParam(m_max_team_length,
+             {"max_team_length", "px", "longest team marker segment", 50, 1, 1000});
 }
 
 const StageInfo& TransitionFilter::info() const
 {
-    static const StageInfo info{
-        "transitions",
-        "Transition filter",
-        false,
-        {"horizontal_segments", "vertical_segments"},
-        {"horizontal_filtered", "vertical_filtered", "horizontal_transitions",
-         "vertical_transitions"},
-        {{"transitions.filtered_segments", "Filtered segments"},
-         {"transitions.transitions", "Transitions"}}};
+    static const StageInfo info{"transitions",
+                                "Transition filter",
+                                false,
+                                {"horizontal_segments", "vertical_segments"},
+                                {"horizontal_filtered", "vertical_filtered",
+                                 "horizontal_transitions", "vertical_transitions"},
+                                {{"transitions.filtered_segments", "Filtered segments"},
+                                 {"transitions.transitions", "Transitions"}}};
     return info;
 }
 
@@ -197,7 +214,8 @@ void TransitionFilter::matchTransitions(const SegmentedRegion& region, Transitio
     add(double(Colour::Pink), TransitionClass::TeamMagenta, m_min_team_length, m_max_team_length);
 
     for (std::size_t i = 0; i < region.size(); ++i)
-        for (const ColourSegment& s : region[i]) // single-segment scans count too (unlike the original)
+        for (const ColourSegment& s :
+             region[i]) // single-segment scans count too (unlike the original)
         {
             const Rules& rules = by_colour[std::size_t(s.colour)];
             for (int k = 0; k < rules.count; ++k) {
