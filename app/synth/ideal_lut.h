@@ -24,7 +24,7 @@ namespace fieldsight::synth {
 class IdealLutBuilder
 {
 public:
-    static constexpr int kCoreMargin = 2;
+    static constexpr int kCoreMargin = 1;
     static constexpr std::uint32_t kMinVotes = 1;
 
     /// `ycbcr` CV_8UC3 (Y, Cb, Cr), `labels` CV_8U from the renderer.
