@@ -219,7 +219,10 @@ int runSynth(const QStringList& args)
     for (const std::string& name : synth::scenarioNames())
         names += (names.isEmpty() ? "" : ", ") + QString::fromStdString(name);
     parser.addOption({"scenario", "One of " + names + " (default lab2).", "NAME"});
-    parser.addOption({"frames", "Number of frames (default 30).", "N"});
+    parser.addOption({"frames",
+                      "Number of frames (default 30), or 'paper' for the paper's length of the "
+                      "scenario (5090, 470, 175, 2640, 625).",
+                      "N"});
     parser.addOption({"seed", "Random seed (default 1).", "S"});
     parser.addOption({"out", "Stream folder to create.", "DIR"});
     parser.addOption({"width", "Image width in px (default 320).", "PX"});
@@ -241,7 +244,11 @@ int runSynth(const QStringList& args)
         options.scenario = scenario.value();
     }
     QString error;
-    const auto frames = intOption(parser, "frames", options.frames, 1, error);
+    if (parser.value("frames") == "paper")
+        options.frames = synth::paperFrameCount(options.scenario);
+    const auto frames = parser.value("frames") == "paper"
+                            ? std::optional<long long>(options.frames)
+                            : intOption(parser, "frames", options.frames, 1, error);
     const auto width = intOption(parser, "width", options.width, 16, error);
     const auto height = intOption(parser, "height", options.height, 16, error);
     if (!frames || !width || !height)
