@@ -20,16 +20,6 @@ bool ImageLine::fromSample(const PointF* sample)
     return true;
 }
 
-double ImageLine::error(const PointF& p) const
-{
-    return std::abs((p.x - point.x) * direction.y - (p.y - point.y) * direction.x);
-}
-
-double ImageLine::along(const PointF& p) const
-{
-    return (p.x - point.x) * direction.x + (p.y - point.y) * direction.y;
-}
-
 double ImageLine::xAtY(double y) const
 {
     if (std::abs(direction.y) < 1e-12)

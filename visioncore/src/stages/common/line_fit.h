@@ -15,10 +15,17 @@ struct ImageLine
 
     static constexpr int kSampleSize = 2;
     bool fromSample(const PointF* sample);
-    /// px, perpendicular distance.
-    double error(const PointF& p) const;
+    /// px, perpendicular distance. (Inline: RANSAC calls it for every point of every sample.)
+    double error(const PointF& p) const
+    {
+        const double d = (p.x - point.x) * direction.y - (p.y - point.y) * direction.x;
+        return d < 0 ? -d : d;
+    }
     /// Position of p's projection along the line.
-    double along(const PointF& p) const;
+    double along(const PointF& p) const
+    {
+        return (p.x - point.x) * direction.x + (p.y - point.y) * direction.y;
+    }
     PointF at(double t) const { return {point.x + t * direction.x, point.y + t * direction.y}; }
     /// x where the line crosses row y (the line's point x when it is horizontal).
     double xAtY(double y) const;
