@@ -110,6 +110,35 @@ private slots:
 
     void stageExceptionBecomesDiagnostic()
     {
+        // A stage that throws, between two that work: the frame goes on, the throw is recorded.
+        class Throwing : public Stage
+        {
+        public:
+            const StageInfo& info() const override
+            {
+                static const StageInfo i{"thrower", "Thrower", true, {}, {}, {}};
+                return i;
+            }
+            void run(Blackboard&) override { throw std::runtime_error("bad input to thrower"); }
+        };
+        std::vector<std::unique_ptr<Stage>> stages = makePipelineStages();
+        stages.insert(stages.begin() + 3, std::make_unique<Throwing>());
+        Controller controller(std::move(stages));
+        Blackboard bb;
+        const cv::Mat image = sceneFrame();
+        const ColourLut lut = test::testLut();
+        bb.beginFrame(image, lut, {});
+        const FrameReport report = controller.runFrame(bb, {});
+        QCOMPARE(bb.diagnostics.size(), std::size_t(1));
+        QCOMPARE(bb.diagnostics[0].stage, std::string("thrower"));
+        QCOMPARE(bb.diagnostics[0].message, std::string("bad input to thrower"));
+        QCOMPARE(report.stages.size(), std::size_t(8));
+        QVERIFY(report.stages[3].ran);
+        QCOMPARE(bb.balls.size(), std::size_t(1)); // stages after the throw still ran
+    }
+
+    void refusesOutOfRangeParametersAndEmptyFrames()
+    {
         MemoryDataWrapper data(sceneFrame(), test::testLut());
         ControlWrapper core(data);
         // Out of range is refused by the parameter registry...

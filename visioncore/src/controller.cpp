@@ -7,6 +7,7 @@
 namespace fieldsight {
 
 Controller::Controller() : m_stages(makePipelineStages()) {}
+Controller::Controller(std::vector<std::unique_ptr<Stage>> stages) : m_stages(std::move(stages)) {}
 Controller::~Controller() = default;
 
 Stage* Controller::stage(std::string_view id) const

@@ -29,7 +29,10 @@ struct FrameReport
 class Controller
 {
 public:
+    /// The pipeline of stage_list.cpp.
     Controller();
+    /// Another list of stages, in order (tests, experiments).
+    explicit Controller(std::vector<std::unique_ptr<Stage>> stages);
     ~Controller();
     Controller(const Controller&) = delete;
     Controller& operator=(const Controller&) = delete;
