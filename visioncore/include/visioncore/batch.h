@@ -40,8 +40,9 @@ struct BatchInput
 };
 
 /// Opens `stream` and the LUT `lut_path`, or the stream's default LUT when `lut_path` is empty.
-/// Errors name the file and the problem.
-Result<BatchInput> openBatchInput(const std::string& stream, const std::string& lut_path);
+/// Errors name the file and the problem. `settings` are --set values (see applySettings).
+Result<BatchInput> openBatchInput(const std::string& stream, const std::string& lut_path,
+                                  const std::vector<std::string>& settings = {});
 
 /// Parses --set settings "STAGE.PARAM=VALUE" (e.g. transitions.goal_colour=9), checks them against
 /// the pipeline's parameter registry and stores them in input.params.

@@ -14,6 +14,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,19 @@ public:
     // Scanline classifier.
     std::vector<int> horizontal_scan_ys;           ///< px, y of every horizontal scan line
     std::vector<PixelPoint> vertical_scan_starts;  ///< px, top of every vertical scan line
+    /// px between neighbouring scan lines (`fallback` before the scanline stage has run).
+    int horizontalScanSpacing(int fallback = 4) const
+    {
+        return horizontal_scan_ys.size() >= 2
+                   ? std::abs(horizontal_scan_ys[0] - horizontal_scan_ys[1])
+                   : fallback;
+    }
+    int verticalScanSpacing(int fallback = 4) const
+    {
+        return vertical_scan_starts.size() >= 2
+                   ? std::abs(vertical_scan_starts[1].x - vertical_scan_starts[0].x)
+                   : fallback;
+    }
     SegmentedRegion horizontal_segments{ScanDirection::Horizontal, {}, 0};
     SegmentedRegion vertical_segments{ScanDirection::Vertical, {}, 0};
 

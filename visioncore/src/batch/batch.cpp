@@ -14,7 +14,8 @@
 
 namespace fieldsight {
 
-Result<BatchInput> openBatchInput(const std::string& stream, const std::string& lut_path)
+Result<BatchInput> openBatchInput(const std::string& stream, const std::string& lut_path,
+                                  const std::vector<std::string>& settings)
 {
     auto reader = openStream(stream);
     if (!reader)
@@ -29,6 +30,8 @@ Result<BatchInput> openBatchInput(const std::string& stream, const std::string& 
     if (!lut)
         return lut.error();
     input.lut = std::move(lut).value();
+    if (Status s = applySettings(input, settings); !s)
+        return s.error();
     return input;
 }
 

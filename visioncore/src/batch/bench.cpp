@@ -644,15 +644,13 @@ namespace {
 /// does not name the stream (a bad LUT names the LUT) is prefixed with it.
 Result<BatchInput> openBenchInput(const std::string& stream, const BenchOptions& options)
 {
-    auto input = openBatchInput(stream, options.lut);
+    auto input = openBatchInput(stream, options.lut, options.set);
     if (!input) {
         const std::string& message = input.error().message;
         if (options.streams.size() > 1 && message.find(stream) == std::string::npos)
             return Error{stream + ": " + message};
         return input.error();
     }
-    if (Status s = applySettings(input.value(), options.set); !s)
-        return s.error();
     return input;
 }
 

@@ -131,13 +131,9 @@ std::string evalJson(const EvalReport& report)
 int evalCommand(const EvalOptions& options, std::ostream& out, std::ostream& err)
 {
     try {
-        auto input = openBatchInput(options.stream, options.lut);
+        auto input = openBatchInput(options.stream, options.lut, options.set);
         if (!input) {
             batch::printError(err, input.error().message);
-            return kExitBadInput;
-        }
-        if (Status s = applySettings(input.value(), options.set); !s) {
-            batch::printError(err, s.error().message);
             return kExitBadInput;
         }
         const std::string truth_path =

@@ -145,13 +145,9 @@ int runCommand(const RunOptions& options, std::ostream& out, std::ostream& err)
             batch::printError(err, s.error().message);
             return kExitBadInput;
         }
-        auto input = openBatchInput(options.stream, options.lut);
+        auto input = openBatchInput(options.stream, options.lut, options.set);
         if (!input) {
             batch::printError(err, input.error().message);
-            return kExitBadInput;
-        }
-        if (Status s = applySettings(input.value(), options.set); !s) {
-            batch::printError(err, s.error().message);
             return kExitBadInput;
         }
         std::size_t count = input.value().info().frame_count;

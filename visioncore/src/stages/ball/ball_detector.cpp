@@ -180,9 +180,7 @@ void BallDetector::run(Blackboard& bb)
     if (auto* d = bb.debug.layer("ball.edge_points"))
         d->add(pointsShape(edges, debug_colour::kCyan, 2));
 
-    const double spacing = bb.horizontal_scan_ys.size() >= 2
-                               ? std::abs(bb.horizontal_scan_ys[0] - bb.horizontal_scan_ys[1])
-                               : 4.0;
+    const double spacing = bb.horizontalScanSpacing();
     std::mt19937 rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_fit_error;

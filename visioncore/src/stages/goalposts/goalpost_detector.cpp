@@ -120,9 +120,7 @@ void GoalpostDetector::run(Blackboard& bb)
         if (s.x1 < w)
             rights.push_back({s.x1 - 0.5, double(s.y0)});
     }
-    const int hspacing = bb.horizontal_scan_ys.size() >= 2
-                             ? std::abs(bb.horizontal_scan_ys[0] - bb.horizontal_scan_ys[1])
-                             : 4;
+    const int hspacing = bb.horizontalScanSpacing();
     std::mt19937 rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_error;

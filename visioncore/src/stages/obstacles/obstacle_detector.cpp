@@ -97,9 +97,7 @@ void ObstacleDetector::run(Blackboard& bb)
     // One run per scan line at most: the lowest long run of non-field colour, i.e. the nearest
     // object (its bottom is where it stands).
     std::vector<Run> runs;
-    int spacing = 1;
-    if (bb.vertical_scan_starts.size() >= 2)
-        spacing = std::max(1, bb.vertical_scan_starts[1].x - bb.vertical_scan_starts[0].x);
+    const int spacing = std::max(1, bb.verticalScanSpacing(1));
     // How many non-field pixels each vertical scan starts with: the field edge's own blend band
     // is about the same everywhere, so a column well deeper than the median is covered by
     // something standing at the edge of the field (a robot behind the goal line, whose foot is
