@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -25,6 +26,10 @@ struct RansacParams
     /// Stop sampling once a better model would have been drawn with this probability (adaptive
     /// termination, Hartley & Zisserman 4.7.1); 0 always draws `iterations` samples.
     double confidence = 0.99;
+    /// When > 0, every sample point after the first is drawn within this many positions of the
+    /// first in the input order (points in scan order are near each other in the image, so a
+    /// sample lies on one model far more often than with independent draws).
+    std::size_t locality = 0;
 };
 
 template <class Model> struct RansacResult
@@ -62,7 +67,13 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
         for (int s = 0; s < Model::kSampleSize; ++s) {
             bool distinct = false;
             while (!distinct) {
-                idx[s] = drawIndex(rng, n);
+                if (s == 0 || params.locality == 0) {
+                    idx[s] = drawIndex(rng, n);
+                } else {
+                    const std::size_t lo = idx[0] > params.locality ? idx[0] - params.locality : 0;
+                    const std::size_t hi = std::min(n - 1, idx[0] + params.locality);
+                    idx[s] = lo + drawIndex(rng, hi - lo + 1);
+                }
                 distinct = true;
                 for (int t = 0; t < s; ++t)
                     distinct = distinct && idx[t] != idx[s];

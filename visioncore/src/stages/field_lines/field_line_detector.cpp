@@ -58,7 +58,9 @@ void splitAtGaps(Fitted f, double max_gap, std::size_t min_points, std::vector<F
 FieldLineDetector::FieldLineDetector()
 {
     addParam(m_min_points, {"min_points", "", "line points needed for a line", 12, 2, 1000});
-    addParam(m_iterations, {"iterations", "", "RANSAC samples per line", 40, 1, 10000});
+    // With locality sampling 15 samples find what the original's 40 independent ones did (B-Human
+    // log: 559 lines in 160 frames vs 558; 10 samples lost 7%), in half the time.
+    addParam(m_iterations, {"iterations", "", "RANSAC samples per line", 15, 1, 10000});
     addParam(m_max_error, {"max_error", "px", "RANSAC inlier distance", 2.5, 0.5, 50});
     addParam(m_max_lines, {"max_lines", "", "most lines per frame", 10, 1, 50});
     addParam(m_merge_angle,
@@ -66,6 +68,11 @@ FieldLineDetector::FieldLineDetector()
     addParam(m_merge_distance,
              {"merge_distance", "px", "colinear lines within this distance merge", 6, 0, 100});
     addParam(m_max_gap, {"max_gap", "px", "largest gap between points of one line", 40, 1, 1000});
+    addParam(m_locality,
+             {"locality", "",
+              "the second RANSAC sample point is drawn within this many points (in scan "
+              "order) of the first; 0 draws it anywhere",
+              8, 0, 1000});
     addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
 }
 
@@ -98,6 +105,7 @@ void FieldLineDetector::run(Blackboard& bb)
     params.max_error = m_max_error;
     params.min_points = int(std::lround(m_min_points));
     params.iterations = int(std::lround(m_iterations));
+    params.locality = std::size_t(std::lround(m_locality));
     std::vector<Fitted> lines;
     for (auto& r : ransacFindModels<ImageLine>(std::move(points), params,
                                                int(std::lround(m_max_lines)), rng)) {

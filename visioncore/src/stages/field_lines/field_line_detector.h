@@ -15,12 +15,13 @@ public:
 
 private:
     double m_min_points = 12;
-    double m_iterations = 40;
+    double m_iterations = 15;
     double m_max_error = 2.5;
     double m_max_lines = 10;
     double m_merge_angle = 0.1;
     double m_merge_distance = 6;
     double m_max_gap = 40;
+    double m_locality = 8;
     double m_seed = 1;
 };
 
