@@ -14,9 +14,13 @@ namespace fieldsight {
 
 namespace {
 
-inline std::uint8_t lookup(const std::uint8_t* lut, const std::uint8_t* px)
+/// The lookups alone. `__restrict`: the class bytes written never alias the pixels or the LUT, so
+/// the compiler need not reload them after every store (uint8_t pointers may alias anything).
+void lookupRun(const std::uint8_t* __restrict lut, const std::uint8_t* __restrict px,
+               std::ptrdiff_t stride, int count, std::uint8_t* __restrict c)
 {
-    return lut[ColourLut::index(px[0], px[1], px[2])];
+    for (int i = 0; i < count; ++i, px += stride)
+        c[i] = lut[ColourLut::index(px[0], px[1], px[2])];
 }
 
 /// Run-length encodes `count` pixels starting at `px`, `stride` bytes apart, into `scan`. Segment
@@ -31,8 +35,7 @@ void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_
     if (classes.size() < std::size_t(count) + 16)
         classes.resize(std::size_t(count) + 16);
     std::uint8_t* c = classes.data();
-    for (int i = 0; i < count; ++i, px += stride)
-        c[i] = lookup(lut, px);
+    lookupRun(lut, px, stride, count, c);
 
     int start = 0;
     const auto emit = [&](int end) {
