@@ -44,15 +44,27 @@ CompiledPart compile(const Rule::Part& part)
            (part.mask == 0 || (part.mask >> unsigned(s.colour) & 1u));
 }
 
-/// The compiled default rules, grouped by the colours their middle accepts.
-const std::array<std::vector<CompiledRule>, kColourCount>& rulesByMiddleColour()
+/// The compiled default rules of one middle colour, and the colours any of them accepts next to
+/// it (a segment whose neighbours are not both among those skips the rules).
+struct RulesForColour
+{
+    std::vector<CompiledRule> rules;
+    unsigned neighbours = 0;
+};
+
+const std::array<RulesForColour, kColourCount>& rulesByMiddleColour()
 {
     static const auto table = [] {
-        std::array<std::vector<CompiledRule>, kColourCount> t;
+        std::array<RulesForColour, kColourCount> t;
         for (const Rule& r : defaultReplacementRules())
-            for (Colour c : r.middle.colours)
-                t[std::size_t(c)].push_back(
+            for (Colour c : r.middle.colours) {
+                RulesForColour& entry = t[std::size_t(c)];
+                entry.rules.push_back(
                     {compile(r.before), compile(r.middle), compile(r.after), r.method});
+                for (const CompiledPart& part :
+                     {entry.rules.back().before, entry.rules.back().after})
+                    entry.neighbours |= part.mask == 0 ? ~0u : part.mask;
+            }
         return t;
     }();
     return table;
@@ -135,6 +147,7 @@ const StageInfo& TransitionFilter::info() const
 void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& out) const
 {
     const auto& by_middle = rulesByMiddleColour();
+    static const std::vector<CompiledRule> kNoRules;
     for (std::size_t i = 0; i < in.size(); ++i) {
         const Scan& scan = in[i];
         Scan& filtered = out.addScan();
@@ -146,7 +159,10 @@ void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& 
             if (k > 0 && k + 1 < n) {
                 const ColourSegment& b = scan[k - 1];
                 const ColourSegment& a = scan[k + 1];
-                for (const CompiledRule& r : by_middle[std::size_t(seg.colour)]) {
+                const RulesForColour& candidates = by_middle[std::size_t(seg.colour)];
+                const bool possible = (candidates.neighbours >> unsigned(b.colour) & 1u) &&
+                                      (candidates.neighbours >> unsigned(a.colour) & 1u);
+                for (const CompiledRule& r : possible ? candidates.rules : kNoRules) {
                     if (!partMatches(r.middle, seg))
                         continue;
                     const bool forward = partMatches(r.before, b) && partMatches(r.after, a);
