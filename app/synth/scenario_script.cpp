@@ -86,15 +86,7 @@ RobotLook robotLook(Rng& rng, bool blue)
 Primitive sceneryBox(const Vec2& centre, double yaw, double hx, double hy, double z0, double z1,
                      const Rgbf& colour)
 {
-    Primitive p;
-    p.shape = Primitive::Shape::Box;
-    p.centre = Eigen::Vector3d(centre.x(), centre.y(), 0);
-    p.setYaw(yaw);
-    p.half_x = hx;
-    p.half_y = hy;
-    p.z0 = z0;
-    p.z1 = z1;
-    p.albedo = colour;
+    Primitive p = makeBox(centre, yaw, hx, hy, z0, z1, colour, Colour::Unclassified);
     p.field_lit = false;
     p.ambient = 0.65;
     return p;

@@ -36,22 +36,6 @@ std::vector<LineSegment> makeStraightLines()
     return lines;
 }
 
-Primitive makeBox(const Vec2& centre, double heading, double half_x, double half_y, double z0,
-                  double z1, const Rgbf& albedo, Colour label)
-{
-    Primitive p;
-    p.shape = Primitive::Shape::Box;
-    p.centre = Vec3(centre.x(), centre.y(), 0);
-    p.setYaw(heading);
-    p.half_x = half_x;
-    p.half_y = half_y;
-    p.z0 = z0;
-    p.z1 = z1;
-    p.albedo = albedo;
-    p.label = label;
-    return p;
-}
-
 Primitive makeCylinder(const Vec2& centre, double radius, double z0, double z1, const Rgbf& albedo,
                        Colour label)
 {
@@ -176,6 +160,22 @@ std::optional<Hit> intersectBox(const Primitive& p, const Vec3& o, const Vec3& d
 }
 
 } // namespace
+
+Primitive makeBox(const Vec2& centre, double heading, double half_x, double half_y, double z0,
+                  double z1, const Rgbf& albedo, Colour label)
+{
+    Primitive p;
+    p.shape = Primitive::Shape::Box;
+    p.centre = Vec3(centre.x(), centre.y(), 0);
+    p.setYaw(heading);
+    p.half_x = half_x;
+    p.half_y = half_y;
+    p.z0 = z0;
+    p.z1 = z1;
+    p.albedo = albedo;
+    p.label = label;
+    return p;
+}
 
 const std::vector<LineSegment>& straightFieldLines()
 {

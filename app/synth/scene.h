@@ -74,6 +74,10 @@ struct Primitive
     }
 };
 
+/// A box standing on the ground, turned by `heading` (rad), sizes in m.
+Primitive makeBox(const Eigen::Vector2d& centre, double heading, double half_x, double half_y,
+                  double z0, double z1, const Rgbf& albedo, Colour label);
+
 /// Something the ground truth reports on (ball, posts, robots, people on the field).
 struct SceneObject
 {
