@@ -24,14 +24,6 @@ std::vector<ParamInfo> Stage::params() const
     return out;
 }
 
-const double* Stage::param(std::string_view name) const
-{
-    for (const Bound& b : m_params)
-        if (b.info.name == name)
-            return b.storage;
-    return nullptr;
-}
-
 Status Stage::setParam(std::string_view name, double value)
 {
     for (Bound& b : m_params) {

@@ -52,8 +52,6 @@ public:
 
     std::vector<ParamInfo> params() const;
     Status setParam(std::string_view name, double value);
-    /// nullptr if there is no such parameter.
-    const double* param(std::string_view name) const;
 
 protected:
     /// Registers a parameter stored in `storage` (a member of the stage), with its default.

@@ -22,7 +22,6 @@ public:
     int yAt(int x) const { return m_column_y[std::size_t(x < 0 ? 0 : (x >= m_width ? m_width - 1 : x))]; }
     bool isBelow(int x, int y) const { return y > yAt(x); }
     int width() const { return m_width; }
-    bool valid() const { return m_width > 0; }
 
 private:
     std::vector<PointF> m_hull;
