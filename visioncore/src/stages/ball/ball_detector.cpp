@@ -38,10 +38,13 @@ struct Circle
         radius = std::hypot(ax - centre.x, ay - centre.y);
         return std::isfinite(radius);
     }
-    double error(const PointF& p) const
+    /// px, distance from the outline; V is float, double or RANSAC's Lanes (four points).
+    template <class V> V errorOf(V x, V y) const
     {
-        return std::abs(std::hypot(p.x - centre.x, p.y - centre.y) - radius);
+        const V dx = x - V(centre.x), dy = y - V(centre.y);
+        return absOf(sqrtOf(dx * dx + dy * dy) - V(radius));
     }
+    double error(const PointF& p) const { return errorOf(p.x, p.y); }
 };
 
 /// Algebraic least-squares circle (Kasa): x^2 + y^2 + D x + E y + F = 0.

@@ -12,7 +12,7 @@ bool ImageLine::fromSample(const PointF* sample)
 {
     const double dx = sample[1].x - sample[0].x;
     const double dy = sample[1].y - sample[0].y;
-    const double len = std::hypot(dx, dy);
+    const double len = std::sqrt(dx * dx + dy * dy);
     if (len < 1e-9)
         return false;
     point = sample[0];

@@ -1,6 +1,7 @@
 // Straight lines in the image: the two-point RANSAC model and the total-least-squares fit.
 #pragma once
 
+#include "stages/common/ransac.h"
 #include "visioncore/geometry.h"
 
 #include <vector>
@@ -15,12 +16,12 @@ struct ImageLine
 
     static constexpr int kSampleSize = 2;
     bool fromSample(const PointF* sample);
-    /// px, perpendicular distance. (Inline: RANSAC calls it for every point of every sample.)
-    double error(const PointF& p) const
+    /// px, perpendicular distance of (x, y); V is float, double or RANSAC's Lanes (four points).
+    template <class V> V errorOf(V x, V y) const
     {
-        const double d = (p.x - point.x) * direction.y - (p.y - point.y) * direction.x;
-        return d < 0 ? -d : d;
+        return absOf((x - V(point.x)) * V(direction.y) - (y - V(point.y)) * V(direction.x));
     }
+    double error(const PointF& p) const { return errorOf(p.x, p.y); }
     /// Position of p's projection along the line.
     double along(const PointF& p) const
     {

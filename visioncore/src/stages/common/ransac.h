@@ -8,6 +8,9 @@
 #include <cstdint>
 #include <algorithm>
 #include <random>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 #include <vector>
 
 namespace fieldsight {
@@ -46,16 +49,129 @@ inline std::size_t drawIndex(std::mt19937& rng, std::size_t n)
     return std::size_t(rng() % n);
 }
 
+/// Four floats at once (SSE2 on x86-64, plain arrays elsewhere), for the consensus loop: a model's
+/// `errorOf` is written once as a template and runs on `float`, `double` and `Lanes`.
+struct Lanes
+{
+#if defined(__SSE2__)
+    __m128 v;
+    Lanes() = default;
+    Lanes(__m128 x) : v(x) {}
+    explicit Lanes(float f) : v(_mm_set1_ps(f)) {}
+    explicit Lanes(double d) : Lanes(float(d)) {}
+    static Lanes load(const float* p) { return {_mm_loadu_ps(p)}; }
+    friend Lanes operator+(Lanes a, Lanes b) { return {_mm_add_ps(a.v, b.v)}; }
+    friend Lanes operator-(Lanes a, Lanes b) { return {_mm_sub_ps(a.v, b.v)}; }
+    friend Lanes operator*(Lanes a, Lanes b) { return {_mm_mul_ps(a.v, b.v)}; }
+    friend Lanes absOf(Lanes a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
+    friend Lanes sqrtOf(Lanes a) { return {_mm_sqrt_ps(a.v)}; }
+    /// Lanes where a < b keep `a`, the others become 0; `mask` gets one bit per such lane.
+    friend Lanes keepBelow(Lanes a, Lanes b, unsigned& mask)
+    {
+        const __m128 below = _mm_cmplt_ps(a.v, b.v);
+        mask = unsigned(_mm_movemask_ps(below));
+        return {_mm_and_ps(below, a.v)};
+    }
+    float sum() const
+    {
+        alignas(16) float f[4];
+        _mm_store_ps(f, v);
+        return (f[0] + f[1]) + (f[2] + f[3]);
+    }
+#else
+    float v[4];
+    Lanes() = default;
+    Lanes(float a, float b, float c, float d) : v{a, b, c, d} {}
+    explicit Lanes(float f) : v{f, f, f, f} {}
+    explicit Lanes(double d) : Lanes(float(d)) {}
+    static Lanes load(const float* p) { return {p[0], p[1], p[2], p[3]}; }
+    template <class Op> static Lanes map(Lanes a, Lanes b, Op op)
+    {
+        return {op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])};
+    }
+    friend Lanes operator+(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x + y; }); }
+    friend Lanes operator-(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x - y; }); }
+    friend Lanes operator*(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x * y; }); }
+    friend Lanes absOf(Lanes a) { return map(a, a, [](float x, float) { return std::abs(x); }); }
+    friend Lanes sqrtOf(Lanes a) { return map(a, a, [](float x, float) { return std::sqrt(x); }); }
+    friend Lanes keepBelow(Lanes a, Lanes b, unsigned& mask)
+    {
+        mask = 0;
+        for (int i = 0; i < 4; ++i) {
+            const bool below = a.v[i] < b.v[i];
+            mask |= unsigned(below) << i;
+            a.v[i] = below ? a.v[i] : 0.0f;
+        }
+        return a;
+    }
+    float sum() const { return (v[0] + v[1]) + (v[2] + v[3]); }
+#endif
+};
+
+inline float absOf(float f) { return std::abs(f); }
+inline double absOf(double d) { return std::abs(d); }
+inline float sqrtOf(float f) { return std::sqrt(f); }
+inline double sqrtOf(double d) { return std::sqrt(d); }
+
+/// The points as float columns padded to a multiple of four, for `countInliers`.
+struct PointColumns
+{
+    std::vector<float> x, y;
+    std::size_t n = 0;
+
+    void assign(const std::vector<PointF>& points)
+    {
+        n = points.size();
+        const std::size_t padded = (n + 3) / 4 * 4;
+        x.assign(padded, 0.0f);
+        y.assign(padded, 0.0f);
+        for (std::size_t i = 0; i < n; ++i) {
+            x[i] = float(points[i].x);
+            y[i] = float(points[i].y);
+        }
+    }
+};
+
+/// Inliers of `model` (error below `max_error`) among `cols`, and the sum of their errors, four
+/// points at a time. Branch-free: points stay in scan order, so a line's inliers come in runs;
+/// shuffling them for an early bail-out cut instructions but cost more in mispredicted branches.
+template <class Model>
+std::size_t countInliers(const Model& model, const PointColumns& cols, float max_error, float& sum)
+{
+    const std::size_t full = cols.n / 4 * 4;
+    const Lanes limit = Lanes(max_error);
+    Lanes sums = Lanes(0.0f);
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < full; i += 4) {
+        unsigned mask = 0;
+        sums = sums + keepBelow(model.errorOf(Lanes::load(&cols.x[i]), Lanes::load(&cols.y[i])),
+                                limit, mask);
+        count += std::size_t(__builtin_popcount(mask));
+    }
+    sum = sums.sum();
+    for (std::size_t i = full; i < cols.n; ++i) {
+        const float e = model.errorOf(cols.x[i], cols.y[i]);
+        if (e < max_error) {
+            ++count;
+            sum += e;
+        }
+    }
+    return count;
+}
+
 /// One model from `points`. Model needs: static constexpr int kSampleSize; bool fromSample(const
-/// PointF* sample); double error(const PointF&) const. On success the inliers are moved out of
-/// `points` (which keeps the outliers) and the model is returned.
+/// PointF* sample); template <class V> V errorOf(V x, V y) const (V is float, double or Lanes;
+/// built from +, -, *, absOf and sqrtOf, constants through V(...) for scalars). On success the
+/// inliers are moved out of `points` (which keeps the outliers) and the model is returned.
 template <class Model>
 bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, std::mt19937& rng,
-                     RansacResult<Model>& out)
+                     RansacResult<Model>& out, PointColumns& cols)
 {
     const std::size_t n = points.size();
     if (n < std::size_t(params.min_points) || n < std::size_t(Model::kSampleSize))
         return false;
+    cols.assign(points);
+    const float max_error = float(params.max_error);
     bool found = false;
     std::size_t best_count = 0;
     double best_error = 0;
@@ -83,20 +199,11 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
         Model model;
         if (!model.fromSample(sample))
             continue;
-        // Branch-free, so the compiler can vectorise the hot loop of every RANSAC user. (Points
-        // stay in scan order: a line's inliers come in runs; shuffling them for an early
-        // bail-out cut instructions but cost more time in mispredicted branches.)
-        std::size_t count = 0;
-        double sum = 0;
-        for (const PointF& p : points) {
-            const double e = model.error(p);
-            const bool inlier = e < params.max_error;
-            count += inlier;
-            sum += inlier ? e : 0.0;
-        }
+        float sum = 0;
+        const std::size_t count = countInliers(model, cols, max_error, sum);
         if (count < std::size_t(params.min_points))
             continue;
-        const double mean = sum / double(count);
+        const double mean = double(sum) / double(count);
         bool better = !found;
         if (found && params.selection == ConsensusSelection::Largest)
             better = count > best_count || (count == best_count && mean < best_error);
@@ -124,12 +231,24 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
     out.model = best;
     out.mean_error = best_error;
     out.inliers.clear();
-    std::vector<PointF> rest;
-    rest.reserve(n - best_count);
-    for (const PointF& p : points)
-        (best.error(p) < params.max_error ? out.inliers : rest).push_back(p);
-    points.swap(rest);
+    // Split with the same float errors the count used, so inliers.size() == the count.
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (best.errorOf(cols.x[i], cols.y[i]) < max_error)
+            out.inliers.push_back(points[i]);
+        else
+            points[kept++] = points[i];
+    }
+    points.resize(kept);
     return true;
+}
+
+template <class Model>
+bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, std::mt19937& rng,
+                     RansacResult<Model>& out)
+{
+    PointColumns cols;
+    return ransacFindModel(points, params, rng, out, cols);
 }
 
 /// Up to `max_models` models, each from what the previous ones left over.
@@ -140,7 +259,8 @@ std::vector<RansacResult<Model>> ransacFindModels(std::vector<PointF> points,
 {
     std::vector<RansacResult<Model>> found;
     RansacResult<Model> result;
-    while (int(found.size()) < max_models && ransacFindModel(points, params, rng, result))
+    PointColumns cols;
+    while (int(found.size()) < max_models && ransacFindModel(points, params, rng, result, cols))
         found.push_back(result);
     return found;
 }
