@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace fieldsight {
 
@@ -15,59 +16,90 @@ using Rule = ReplacementRule;
 constexpr Colour kGreen = Colour::Green;
 constexpr Colour kUncl = Colour::Unclassified;
 
-/// A rule part compiled for the hot loop: colour lists become bit sets.
-struct CompiledPart
+/// One rule in one orientation, for one (before, middle, after) colour triple: only the length
+/// bounds are left to check. Unbounded maxima are INT_MAX.
+struct OrientedRule
 {
-    int min = 0;
-    int max = -1;      ///< < 0: unbounded
-    unsigned mask = 0; ///< 0: any colour
+    int min_b, max_b, min_m, max_m, min_a, max_a;
+    Colour result;      ///< the middle's new colour (Before/After)
+    bool split = false; ///< Split: halves take the colours of their own neighbours
 };
 
-struct CompiledRule
+/// The oriented rules that can apply to a colour triple, in the order the rules are tried (rule by
+/// rule, forward before backward; the first whose lengths fit wins). `uniform`: every one of them
+/// gives `result`, so whether any fits is all that matters and no early exit is needed.
+struct TripleRules
 {
-    CompiledPart before, middle, after;
-    Rule::Method method;
+    std::uint16_t begin = 0, end = 0;
+    bool uniform = true;
+    Colour result = Colour::Unclassified;
 };
 
-CompiledPart compile(const Rule::Part& part)
+constexpr std::size_t tripleIndex(Colour b, Colour m, Colour a)
 {
-    CompiledPart c{part.min, part.max, 0};
-    for (Colour colour : part.colours)
-        c.mask |= 1u << unsigned(colour);
-    return c;
+    return (std::size_t(b) * kColourCount + std::size_t(m)) * kColourCount + std::size_t(a);
 }
 
-[[gnu::always_inline]] inline bool partMatches(const CompiledPart& part, const ColourSegment& s)
+struct RuleTable
 {
-    const int len = s.length();
-    return len >= part.min && (part.max < 0 || len <= part.max) &&
-           (part.mask == 0 || (part.mask >> unsigned(s.colour) & 1u));
-}
-
-/// The compiled default rules of one middle colour, and the colours any of them accepts next to
-/// it (a segment whose neighbours are not both among those skips the rules).
-struct RulesForColour
-{
-    std::vector<CompiledRule> rules;
-    unsigned neighbours = 0;
+    std::vector<OrientedRule> rules;
+    std::array<TripleRules, std::size_t(kColourCount) * kColourCount * kColourCount> triples{};
+    bool any_split = false;
 };
 
-const std::array<RulesForColour, kColourCount>& rulesByMiddleColour()
+bool colourFits(const Rule::Part& part, Colour c)
 {
-    static const auto table = [] {
-        std::array<RulesForColour, kColourCount> t;
-        for (const Rule& r : defaultReplacementRules())
-            for (Colour c : r.middle.colours) {
-                RulesForColour& entry = t[std::size_t(c)];
-                entry.rules.push_back(
-                    {compile(r.before), compile(r.middle), compile(r.after), r.method});
-                for (const CompiledPart& part :
-                     {entry.rules.back().before, entry.rules.back().after})
-                    entry.neighbours |= part.mask == 0 ? ~0u : part.mask;
-            }
+    return part.colours.empty() ||
+           std::find(part.colours.begin(), part.colours.end(), c) != part.colours.end();
+}
+
+int upper(int max) { return max < 0 ? std::numeric_limits<int>::max() : max; }
+
+/// The default rules compiled per colour triple, so the hot loop does one table lookup per segment
+/// and a few branch-free length comparisons (noise makes every data-dependent branch a coin toss).
+const RuleTable& ruleTable()
+{
+    static const RuleTable table = [] {
+        RuleTable t;
+        for (int bi = 0; bi < kColourCount; ++bi)
+            for (int mi = 0; mi < kColourCount; ++mi)
+                for (int ai = 0; ai < kColourCount; ++ai) {
+                    const Colour b = Colour(bi), m = Colour(mi), a = Colour(ai);
+                    TripleRules& entry = t.triples[tripleIndex(b, m, a)];
+                    entry.begin = std::uint16_t(t.rules.size());
+                    for (const Rule& r : defaultReplacementRules()) {
+                        if (r.middle.colours.empty() || !colourFits(r.middle, m))
+                            continue;
+                        for (const bool forward : {true, false}) {
+                            const Colour nb = forward ? b : a, na = forward ? a : b;
+                            if (!colourFits(r.before, nb) || !colourFits(r.after, na))
+                                continue;
+                            // Lengths stay in scan order: backward, "before" is the next segment.
+                            const Rule::Part& first = forward ? r.before : r.after;
+                            const Rule::Part& last = forward ? r.after : r.before;
+                            OrientedRule o{first.min, upper(first.max), r.middle.min,
+                                           upper(r.middle.max), last.min, upper(last.max),
+                                           r.method == Rule::Method::Before ? nb : na,
+                                           r.method == Rule::Method::Split};
+                            t.any_split = t.any_split || o.split;
+                            if (entry.end == entry.begin) // first one: sets the result
+                                entry.result = o.result;
+                            entry.uniform = entry.uniform && !o.split && o.result == entry.result;
+                            t.rules.push_back(o);
+                            entry.end = std::uint16_t(t.rules.size());
+                        }
+                    }
+                }
         return t;
     }();
     return table;
+}
+
+[[gnu::always_inline]] inline bool lengthsFit(const OrientedRule& r, int lb, int lm, int la)
+{
+    // & rather than &&: no branches.
+    return (lb >= r.min_b) & (lb <= r.max_b) & (lm >= r.min_m) & (lm <= r.max_m) &
+           (la >= r.min_a) & (la <= r.max_a);
 }
 
 } // namespace
@@ -146,35 +178,50 @@ const StageInfo& TransitionFilter::info() const
 
 void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& out) const
 {
-    const auto& by_middle = rulesByMiddleColour();
-    static const std::vector<CompiledRule> kNoRules;
+    const RuleTable& table = ruleTable();
     for (std::size_t i = 0; i < in.size(); ++i) {
         const Scan& scan = in[i];
         Scan& filtered = out.addScan();
         const std::size_t n = scan.size();
-        for (std::size_t k = 0; k < n; ++k) {
+        if (n == 0)
+            continue;
+        // Written by index and trimmed at the end (a split adds at most one segment).
+        filtered.resize(table.any_split ? 2 * n : n);
+        ColourSegment* o = filtered.data();
+        std::size_t m = 0;
+        // Appends `seg`, joined with the last output segment when the colours now agree.
+        // Branch-free: the join decides by arithmetic where the segment lands.
+        const auto append = [&](const ColourSegment& seg) {
+            const bool join = m > 0 && o[m - 1].colour == seg.colour;
+            ColourSegment& dst = o[m - std::size_t(join)];
+            const std::int16_t x0 = join ? dst.x0 : seg.x0, y0 = join ? dst.y0 : seg.y0;
+            dst = seg;
+            dst.x0 = x0;
+            dst.y0 = y0;
+            m += std::size_t(!join);
+        };
+        append(scan[0]);
+        int lb = scan[0].length();
+        int lm = n > 1 ? scan[1].length() : 0;
+        // Rules look at the original neighbours, so replacements never cascade; the first and
+        // last segments have one neighbour and are never replaced.
+        for (std::size_t k = 1; k + 1 < n; ++k) {
+            const ColourSegment& b = scan[k - 1];
             ColourSegment seg = scan[k];
-            // Rules look at the original neighbours, so replacements never cascade. Most segments
-            // (green, white) are no rule's middle and skip this.
-            if (k > 0 && k + 1 < n) {
-                const ColourSegment& b = scan[k - 1];
-                const ColourSegment& a = scan[k + 1];
-                const RulesForColour& candidates = by_middle[std::size_t(seg.colour)];
-                const bool possible = (candidates.neighbours >> unsigned(b.colour) & 1u) &&
-                                      (candidates.neighbours >> unsigned(a.colour) & 1u);
-                for (const CompiledRule& r : possible ? candidates.rules : kNoRules) {
-                    if (!partMatches(r.middle, seg))
+            const ColourSegment& a = scan[k + 1];
+            const int la = a.length();
+            const TripleRules& t = table.triples[tripleIndex(b.colour, seg.colour, a.colour)];
+            if (t.uniform) {
+                bool fits = false;
+                for (std::size_t r = t.begin; r < t.end; ++r)
+                    fits |= lengthsFit(table.rules[r], lb, lm, la);
+                seg.colour = fits ? t.result : seg.colour;
+            } else {
+                for (std::size_t r = t.begin; r < t.end; ++r) {
+                    const OrientedRule& rule = table.rules[r];
+                    if (!lengthsFit(rule, lb, lm, la))
                         continue;
-                    const bool forward = partMatches(r.before, b) && partMatches(r.after, a);
-                    if (!forward && !(partMatches(r.before, a) && partMatches(r.after, b)))
-                        continue;
-                    const ColourSegment& before = forward ? b : a;
-                    const ColourSegment& after = forward ? a : b;
-                    if (r.method == Rule::Method::Before) {
-                        seg.colour = before.colour;
-                    } else if (r.method == Rule::Method::After) {
-                        seg.colour = after.colour;
-                    } else {
+                    if (rule.split) {
                         // Split at the midpoint: each half takes its own neighbour's colour.
                         ColourSegment first = seg, second = seg;
                         const int mx = (seg.x0 + seg.x1) / 2, my = (seg.y0 + seg.y1) / 2;
@@ -183,20 +230,22 @@ void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& 
                         first.colour = b.colour;
                         second.colour = a.colour;
                         if (first.length() > 0)
-                            filtered.push_back(first);
+                            append(first);
                         seg = second;
+                    } else {
+                        seg.colour = rule.result;
                     }
                     break;
                 }
             }
-            // Join with the previous segment when the colours now agree.
-            if (!filtered.empty() && filtered.back().colour == seg.colour) {
-                filtered.back().x1 = seg.x1;
-                filtered.back().y1 = seg.y1;
-            } else if (seg.length() > 0) {
-                filtered.push_back(seg);
-            }
+            if (seg.length() > 0)
+                append(seg);
+            lb = lm;
+            lm = la;
         }
+        if (n > 1)
+            append(scan[n - 1]);
+        filtered.resize(m);
     }
 }
 
