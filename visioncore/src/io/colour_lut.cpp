@@ -11,6 +11,26 @@ namespace fieldsight {
 
 ColourLut::ColourLut() : m_cells(kCells, std::uint8_t(Colour::Unclassified)) {}
 
+namespace {
+
+/// `__restrict`: the class bytes written never alias the pixels or the table, so the compiler need
+/// not reload them after every store (uint8_t pointers may alias anything).
+void lookupRun(const std::uint8_t* __restrict cells, const std::uint8_t* __restrict px,
+               std::ptrdiff_t stride, int count, std::uint8_t* __restrict out)
+{
+#pragma GCC unroll 4
+    for (int i = 0; i < count; ++i, px += stride)
+        out[i] = cells[ColourLut::index(px[0], px[1], px[2])];
+}
+
+} // namespace
+
+void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int count,
+                            std::uint8_t* out) const
+{
+    lookupRun(m_cells.data(), px, stride, count, out);
+}
+
 Result<ColourLut> ColourLut::fromBytes(std::vector<std::uint8_t> bytes, const std::string& source)
 {
     if (bytes.size() != kCells)

@@ -14,36 +14,24 @@ namespace fieldsight {
 
 namespace {
 
-/// The lookups alone. `__restrict`: the class bytes written never alias the pixels or the LUT, so
-/// the compiler need not reload them after every store (uint8_t pointers may alias anything).
-void lookupRun(const std::uint8_t* __restrict lut, const std::uint8_t* __restrict px,
-               std::ptrdiff_t stride, int count, std::uint8_t* __restrict c)
-{
-    for (int i = 0; i < count; ++i, px += stride)
-        c[i] = lut[ColourLut::index(px[0], px[1], px[2])];
-}
-
 /// Run-length encodes `count` pixels starting at `px`, `stride` bytes apart, into `scan`. Segment
-/// ends are exclusive; `x0,y0` is the first pixel and (dx, dy) the step. Two passes: the lookups
-/// alone into `classes` (branch-free, as fast as the lookups can be), then the class changes,
-/// found 16 at a time.
-void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_t stride, int count,
-                  int x0, int y0, int dx, int dy, std::vector<std::uint8_t>& classes, Scan& scan)
+/// ends are exclusive; `x0,y0` is the first pixel and (dx, dy) the step. Three tight passes: the
+/// lookups alone into `classes` (branch-free, as fast as the lookups can be), the positions where
+/// the class changes (found 16 at a time) into `ends`, then the segments, written by index.
+void classifyLine(const ColourLut& lut, const std::uint8_t* px, std::ptrdiff_t stride, int count,
+                  int x0, int y0, int dx, int dy, ScanlineBuffers& buffers, Scan& scan)
 {
     if (count <= 0)
         return;
-    if (classes.size() < std::size_t(count) + 16)
-        classes.resize(std::size_t(count) + 16);
-    std::uint8_t* c = classes.data();
-    lookupRun(lut, px, stride, count, c);
+    if (buffers.classes.size() < std::size_t(count) + 16) {
+        buffers.classes.resize(std::size_t(count) + 16);
+        buffers.ends.resize(std::size_t(count) + 1);
+    }
+    std::uint8_t* c = buffers.classes.data();
+    lut.classifyRun(px, stride, count, c);
 
-    int start = 0;
-    const auto emit = [&](int end) {
-        scan.push_back({std::int16_t(x0 + start * dx), std::int16_t(y0 + start * dy),
-                        std::int16_t(x0 + end * dx), std::int16_t(y0 + end * dy),
-                        Colour(c[start])});
-        start = end;
-    };
+    int* ends = buffers.ends.data();
+    int n = 0;
     int i = 1;
 #if defined(__SSE2__)
     for (; i + 16 <= count; i += 16) {
@@ -51,15 +39,26 @@ void classifyLine(const std::uint8_t* lut, const std::uint8_t* px, std::ptrdiff_
         const __m128i before = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c + i - 1));
         unsigned changes = ~unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(here, before))) & 0xFFFFu;
         while (changes) {
-            emit(i + __builtin_ctz(changes));
+            ends[n++] = i + __builtin_ctz(changes);
             changes &= changes - 1;
         }
     }
 #endif
-    for (; i < count; ++i)
-        if (c[i] != c[i - 1])
-            emit(i);
-    emit(count);
+    for (; i < count; ++i) {
+        ends[n] = i;
+        n += c[i] != c[i - 1];
+    }
+    ends[n++] = count;
+
+    scan.resize(std::size_t(n));
+    ColourSegment* out = scan.data();
+    int start = 0;
+    for (int k = 0; k < n; ++k) {
+        const int end = ends[k];
+        out[k] = {std::int16_t(x0 + start * dx), std::int16_t(y0 + start * dy),
+                  std::int16_t(x0 + end * dx), std::int16_t(y0 + end * dy), Colour(c[start])};
+        start = end;
+    }
 }
 
 } // namespace
@@ -91,7 +90,7 @@ void ScanlineClassifier::run(Blackboard& bb)
     const cv::Mat& image = bb.image();
     const int w = image.cols;
     const int h = image.rows;
-    const std::uint8_t* lut = bb.lut().data();
+    const ColourLut& lut = bb.lut();
     const int hs = std::max(1, int(std::lround(m_horizontal_spacing)));
     const int vs = std::max(1, int(std::lround(m_vertical_spacing)));
 
@@ -99,7 +98,7 @@ void ScanlineClassifier::run(Blackboard& bb)
     // bottom row up, as in the original.
     for (int y = h - 1; y >= 0; y -= hs) {
         bb.horizontal_scan_ys.push_back(y);
-        classifyLine(lut, image.ptr<std::uint8_t>(y), 3, w, 0, y, 1, 0, m_classes,
+        classifyLine(lut, image.ptr<std::uint8_t>(y), 3, w, 0, y, 1, 0, m_buffers,
                      bb.horizontal_segments.addScan());
     }
     // Vertical lines only below the green horizon.
@@ -107,7 +106,7 @@ void ScanlineClassifier::run(Blackboard& bb)
     for (int x = 0; x < w; x += vs) {
         const int y0 = bb.green_horizon.yAt(x);
         bb.vertical_scan_starts.push_back({x, y0});
-        classifyLine(lut, image.ptr<std::uint8_t>(y0) + 3 * x, step, h - y0, x, y0, 0, 1, m_classes,
+        classifyLine(lut, image.ptr<std::uint8_t>(y0) + 3 * x, step, h - y0, x, y0, 0, 1, m_buffers,
                      bb.vertical_segments.addScan());
     }
 

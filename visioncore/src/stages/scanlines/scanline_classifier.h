@@ -9,6 +9,13 @@
 
 namespace fieldsight {
 
+/// One scan line's scratch, kept across frames.
+struct ScanlineBuffers
+{
+    std::vector<std::uint8_t> classes; ///< the class of every pixel on the line
+    std::vector<int> ends;             ///< where each segment ends (exclusive), along the line
+};
+
 class ScanlineClassifier : public Stage
 {
 public:
@@ -19,7 +26,7 @@ public:
 private:
     double m_horizontal_spacing = 4;
     double m_vertical_spacing = 4;
-    std::vector<std::uint8_t> m_classes; ///< one scan line's classes (scratch, kept across frames)
+    ScanlineBuffers m_buffers;
 };
 
 } // namespace fieldsight
