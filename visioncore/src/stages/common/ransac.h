@@ -177,7 +177,19 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
     double best_error = 0;
     Model best{};
     PointF sample[Model::kSampleSize];
-    int needed = params.iterations;
+    // Samples needed to draw an all-inlier sample with probability `confidence` when the inlier
+    // share is w (Hartley & Zisserman 4.7.1).
+    const auto samplesFor = [&](double w) {
+        const double all_in = std::pow(w, Model::kSampleSize);
+        if (all_in >= 1.0)
+            return 1;
+        const double k = std::log(1 - params.confidence) / std::log(1 - all_in);
+        return int(std::min(double(params.iterations), std::ceil(k)));
+    };
+    const bool adaptive = params.confidence > 0 && params.selection == ConsensusSelection::Largest;
+    // Until a model is found, assume the smallest acceptable one: if even that would have been
+    // drawn by now, there is none (a search that finds nothing no longer runs every iteration).
+    int needed = adaptive ? samplesFor(double(params.min_points) / double(n)) : params.iterations;
     for (int it = 0; it < needed; ++it) {
         std::size_t idx[Model::kSampleSize];
         for (int s = 0; s < Model::kSampleSize; ++s) {
@@ -214,16 +226,8 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
             best = model;
             best_count = count;
             best_error = mean;
-            if (params.confidence > 0 && params.selection == ConsensusSelection::Largest) {
-                const double w = double(count) / double(n);
-                const double all_in = std::pow(w, Model::kSampleSize);
-                if (all_in >= 1.0) {
-                    needed = it + 1;
-                } else {
-                    const double k = std::log(1 - params.confidence) / std::log(1 - all_in);
-                    needed = std::min(params.iterations, int(std::ceil(k)) + it + 1);
-                }
-            }
+            if (adaptive)
+                needed = std::min(params.iterations, samplesFor(double(count) / double(n)) + it + 1);
         }
     }
     if (!found)
