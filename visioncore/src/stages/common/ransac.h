@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <random>
 #if defined(__SSE2__)
-#include <xmmintrin.h>
+#include <emmintrin.h>
 #endif
 #include <vector>
 
@@ -49,6 +49,23 @@ inline std::size_t drawIndex(std::mt19937& rng, std::size_t n)
     return std::size_t(rng() % n);
 }
 
+/// Per-lane counters for `Lanes`.
+struct LaneCounts
+{
+#if defined(__SSE2__)
+    __m128i v = _mm_setzero_si128();
+    std::size_t total() const
+    {
+        alignas(16) std::uint32_t c[4];
+        _mm_store_si128(reinterpret_cast<__m128i*>(c), v);
+        return std::size_t(c[0]) + c[1] + c[2] + c[3];
+    }
+#else
+    std::uint32_t v[4] = {0, 0, 0, 0};
+    std::size_t total() const { return std::size_t(v[0]) + v[1] + v[2] + v[3]; }
+#endif
+};
+
 /// Four floats at once (SSE2 on x86-64, plain arrays elsewhere), for the consensus loop: a model's
 /// `errorOf` is written once as a template and runs on `float`, `double` and `Lanes`.
 struct Lanes
@@ -65,11 +82,11 @@ struct Lanes
     friend Lanes operator*(Lanes a, Lanes b) { return {_mm_mul_ps(a.v, b.v)}; }
     friend Lanes absOf(Lanes a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
     friend Lanes sqrtOf(Lanes a) { return {_mm_sqrt_ps(a.v)}; }
-    /// Lanes where a < b keep `a`, the others become 0; `mask` gets one bit per such lane.
-    friend Lanes keepBelow(Lanes a, Lanes b, unsigned& mask)
+    /// Lanes where a < b keep `a`, the others become 0; `counts` counts such lanes, per lane.
+    friend Lanes keepBelow(Lanes a, Lanes b, LaneCounts& counts)
     {
         const __m128 below = _mm_cmplt_ps(a.v, b.v);
-        mask = unsigned(_mm_movemask_ps(below));
+        counts.v = _mm_sub_epi32(counts.v, _mm_castps_si128(below)); // a true lane is -1
         return {_mm_and_ps(below, a.v)};
     }
     float sum() const
@@ -94,12 +111,11 @@ struct Lanes
     friend Lanes operator*(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x * y; }); }
     friend Lanes absOf(Lanes a) { return map(a, a, [](float x, float) { return std::abs(x); }); }
     friend Lanes sqrtOf(Lanes a) { return map(a, a, [](float x, float) { return std::sqrt(x); }); }
-    friend Lanes keepBelow(Lanes a, Lanes b, unsigned& mask)
+    friend Lanes keepBelow(Lanes a, Lanes b, LaneCounts& counts)
     {
-        mask = 0;
         for (int i = 0; i < 4; ++i) {
             const bool below = a.v[i] < b.v[i];
-            mask |= unsigned(below) << i;
+            counts.v[i] += std::uint32_t(below);
             a.v[i] = below ? a.v[i] : 0.0f;
         }
         return a;
@@ -141,13 +157,11 @@ std::size_t countInliers(const Model& model, const PointColumns& cols, float max
     const std::size_t full = cols.n / 4 * 4;
     const Lanes limit = Lanes(max_error);
     Lanes sums = Lanes(0.0f);
-    std::size_t count = 0;
-    for (std::size_t i = 0; i < full; i += 4) {
-        unsigned mask = 0;
+    LaneCounts counts;
+    for (std::size_t i = 0; i < full; i += 4)
         sums = sums + keepBelow(model.errorOf(Lanes::load(&cols.x[i]), Lanes::load(&cols.y[i])),
-                                limit, mask);
-        count += std::size_t(__builtin_popcount(mask));
-    }
+                                limit, counts);
+    std::size_t count = counts.total();
     sum = sums.sum();
     for (std::size_t i = full; i < cols.n; ++i) {
         const float e = model.errorOf(cols.x[i], cols.y[i]);
