@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace fieldsight {
@@ -13,13 +14,15 @@ namespace fieldsight {
 /// A run of pixels of one class along a scan line. The end is exclusive along the scan direction
 /// for every segment, including the last one (the original mixed inclusive and exclusive ends,
 /// design note §2.2), so length() is always the run length in pixels.
+/// Trivial (no member initialisers), so scans copy and grow as raw memory in the hot loops; write
+/// `ColourSegment s{}` for a zeroed one.
 struct ColourSegment
 {
-    std::int16_t x0 = 0; ///< px, first pixel
-    std::int16_t y0 = 0; ///< px
-    std::int16_t x1 = 0; ///< px, one past the last pixel along the scan direction
-    std::int16_t y1 = 0; ///< px
-    Colour colour = Colour::Unclassified;
+    std::int16_t x0; ///< px, first pixel
+    std::int16_t y0; ///< px
+    std::int16_t x1; ///< px, one past the last pixel along the scan direction
+    std::int16_t y1; ///< px
+    Colour colour;
 
     int length() const { return (x1 - x0) + (y1 - y0); }
     PointF centre() const { return {(x0 + x1 - (x1 > x0 ? 1 : 0)) * 0.5, (y0 + y1 - (y1 > y0 ? 1 : 0)) * 0.5}; }
@@ -27,6 +30,8 @@ struct ColourSegment
     PixelPoint last() const { return {x1 > x0 ? x1 - 1 : x1, y1 > y0 ? y1 - 1 : y1}; }
     PixelPoint first() const { return {x0, y0}; }
 };
+
+static_assert(std::is_trivial_v<ColourSegment>);
 
 enum class ScanDirection { Horizontal, Vertical };
 

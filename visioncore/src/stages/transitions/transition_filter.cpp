@@ -185,22 +185,28 @@ void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& 
         const std::size_t n = scan.size();
         if (n == 0)
             continue;
-        // Written by index and trimmed at the end (a split adds at most one segment).
-        filtered.resize(table.any_split ? 2 * n : n);
+        // Written by index and trimmed at the end. The output never has more segments than the
+        // input unless a rule splits, so a copy of the input is storage enough (and cheaper than
+        // resize(), which would construct every element first).
+        if (table.any_split)
+            filtered.resize(2 * n);
+        else
+            filtered.assign(scan.begin(), scan.end());
         ColourSegment* o = filtered.data();
         std::size_t m = 0;
-        // Appends `seg`, joined with the last output segment when the colours now agree.
-        // Branch-free: the join decides by arithmetic where the segment lands.
+        // The segment being built, joined with every following one of its colour. Branch-free:
+        // it is stored at o[m] every time, and m only moves on when the colour changes.
+        ColourSegment cur = scan[0];
         const auto append = [&](const ColourSegment& seg) {
-            const bool join = m > 0 && o[m - 1].colour == seg.colour;
-            ColourSegment& dst = o[m - std::size_t(join)];
-            const std::int16_t x0 = join ? dst.x0 : seg.x0, y0 = join ? dst.y0 : seg.y0;
-            dst = seg;
-            dst.x0 = x0;
-            dst.y0 = y0;
-            m += std::size_t(!join);
+            const bool changes = cur.colour != seg.colour;
+            o[m] = cur;
+            m += std::size_t(changes);
+            cur.x0 = changes ? seg.x0 : cur.x0;
+            cur.y0 = changes ? seg.y0 : cur.y0;
+            cur.x1 = seg.x1;
+            cur.y1 = seg.y1;
+            cur.colour = seg.colour;
         };
-        append(scan[0]);
         int lb = scan[0].length();
         int lm = n > 1 ? scan[1].length() : 0;
         // Rules look at the original neighbours, so replacements never cascade; the first and
@@ -245,6 +251,7 @@ void TransitionFilter::filterRegion(const SegmentedRegion& in, SegmentedRegion& 
         }
         if (n > 1)
             append(scan[n - 1]);
+        o[m++] = cur;
         filtered.resize(m);
     }
 }
