@@ -2,19 +2,18 @@
 // because the std:: distributions are allowed to differ between standard libraries.
 #pragma once
 
+#include "visioncore/splitmix.h"
+
 #include <cmath>
 #include <cstdint>
 #include <random>
 
 namespace fieldsight::synth {
 
-/// SplitMix64 finaliser: turns related inputs (seed, scenario, frame) into unrelated seeds.
+/// Turns related inputs (seed, scenario, frame) into unrelated seeds (the SplitMix64 finaliser).
 constexpr std::uint64_t mixSeed(std::uint64_t a, std::uint64_t b)
 {
-    std::uint64_t z = a + 0x9E3779B97F4A7C15ull * (b + 1);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    return splitMix64(a + kGoldenGamma * (b + 1));
 }
 
 /// A value in [0, 1) that depends only on the integer lattice point (i, j) and `salt`: the basis

@@ -235,7 +235,7 @@ private slots:
         for (int i = 0; i < 20; ++i)
             pts.push_back({double((i * 37) % 40), double((i * 53) % 90)}); // clutter
         RansacParams params{1.0, 10, 50, ConsensusSelection::Largest};
-        std::mt19937 rng1{7}, rng2{7};
+        RansacRng rng1{7}, rng2{7};
         auto a = ransacFindModels<ImageLine>(pts, params, 2, rng1);
         auto b = ransacFindModels<ImageLine>(pts, params, 2, rng2);
         QVERIFY(!a.empty());

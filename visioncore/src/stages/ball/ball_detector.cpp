@@ -184,7 +184,7 @@ void BallDetector::run(Blackboard& bb)
         d->add(pointsShape(edges, debug_colour::kCyan, 2));
 
     const double spacing = bb.horizontalScanSpacing();
-    std::mt19937 rng{std::uint32_t(m_seed)};
+    RansacRng rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_fit_error;
     params.iterations = int(std::lround(m_iterations));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "visioncore/geometry.h"
+#include "visioncore/splitmix.h"
 
 #include <cmath>
 #include <cstdint>
@@ -42,9 +43,13 @@ template <class Model> struct RansacResult
     double mean_error = 0;
 };
 
+/// The RANSAC random engine: the same sequence everywhere, and seeding it is free (std::mt19937
+/// spent ~15k instructions a frame filling its 624-word state for the stages' per-frame seeds).
+using RansacRng = SplitMix64;
+
 /// Draws an index in [0, n) from the raw engine output, so the sequence is the same on every
 /// standard library (std::uniform_int_distribution is implementation-defined).
-inline std::size_t drawIndex(std::mt19937& rng, std::size_t n)
+inline std::size_t drawIndex(RansacRng& rng, std::size_t n)
 {
     return std::size_t(rng() % n);
 }
@@ -178,7 +183,7 @@ std::size_t countInliers(const Model& model, const PointColumns& cols, float max
 /// built from +, -, *, absOf and sqrtOf, constants through V(...) for scalars). On success the
 /// inliers are moved out of `points` (which keeps the outliers) and the model is returned.
 template <class Model>
-bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, std::mt19937& rng,
+bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, RansacRng& rng,
                      RansacResult<Model>& out, PointColumns& cols)
 {
     const std::size_t n = points.size();
@@ -262,7 +267,7 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
 }
 
 template <class Model>
-bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, std::mt19937& rng,
+bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, RansacRng& rng,
                      RansacResult<Model>& out)
 {
     PointColumns cols;
@@ -273,7 +278,7 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, st
 template <class Model>
 std::vector<RansacResult<Model>> ransacFindModels(std::vector<PointF> points,
                                                   const RansacParams& params, int max_models,
-                                                  std::mt19937& rng)
+                                                  RansacRng& rng)
 {
     std::vector<RansacResult<Model>> found;
     RansacResult<Model> result;

@@ -33,19 +33,24 @@ double averageDistance(const Fitted& a, const Fitted& b)
 /// Splits inliers where consecutive points along the line are further apart than max_gap, so one
 /// model through two distant collinear pieces (or a chord through scattered points) does not
 /// become one long line; keeps the pieces with enough points.
-void splitAtGaps(Fitted f, double max_gap, std::size_t min_points, std::vector<Fitted>& out)
+void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::vector<Fitted>& out)
 {
-    std::sort(f.points.begin(), f.points.end(),
-              [&](const PointF& p, const PointF& q) { return f.line.along(p) < f.line.along(q); });
+    // Sorted by position along the line, computed once per point rather than per comparison.
+    std::vector<std::pair<double, PointF>> sorted;
+    sorted.reserve(f.points.size());
+    for (const PointF& p : f.points)
+        sorted.push_back({f.line.along(p), p});
+    std::sort(sorted.begin(), sorted.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
     std::size_t begin = 0;
-    for (std::size_t i = 1; i <= f.points.size(); ++i) {
-        if (i < f.points.size() &&
-            f.line.along(f.points[i]) - f.line.along(f.points[i - 1]) <= max_gap)
+    for (std::size_t i = 1; i <= sorted.size(); ++i) {
+        if (i < sorted.size() && sorted[i].first - sorted[i - 1].first <= max_gap)
             continue;
         if (i - begin >= min_points) {
             Fitted piece;
-            piece.points.assign(f.points.begin() + std::ptrdiff_t(begin),
-                                f.points.begin() + std::ptrdiff_t(i));
+            piece.points.reserve(i - begin);
+            for (std::size_t k = begin; k < i; ++k)
+                piece.points.push_back(sorted[k].second);
             piece.line = fitLineTls(piece.points);
             out.push_back(std::move(piece));
         }
@@ -100,7 +105,7 @@ void FieldLineDetector::run(Blackboard& bb)
     if (auto* d = bb.debug.layer("field_lines.points"))
         d->add(pointsShape(points, debug_colour::kWhite, 2));
 
-    std::mt19937 rng{std::uint32_t(m_seed)};
+    RansacRng rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_error;
     params.min_points = int(std::lround(m_min_points));
@@ -110,7 +115,7 @@ void FieldLineDetector::run(Blackboard& bb)
     for (auto& r : ransacFindModels<ImageLine>(std::move(points), params,
                                                int(std::lround(m_max_lines)), rng)) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
-        splitAtGaps(std::move(f), m_max_gap, std::size_t(params.min_points), lines);
+        splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines);
     }
 
     // Merge colinear lines (the original computed this and then discarded the result).

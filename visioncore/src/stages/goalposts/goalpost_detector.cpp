@@ -26,7 +26,7 @@ struct Edge
 };
 
 std::vector<Edge> fitEdges(const std::vector<PointF>& points, const RansacParams& params,
-                           int max_lines, std::mt19937& rng)
+                           int max_lines, RansacRng& rng)
 {
     std::vector<Edge> edges;
     for (auto& r : ransacFindModels<ImageLine>(points, params, max_lines, rng)) {
@@ -121,7 +121,7 @@ void GoalpostDetector::run(Blackboard& bb)
             rights.push_back({s.x1 - 0.5, double(s.y0)});
     }
     const int hspacing = bb.horizontalScanSpacing();
-    std::mt19937 rng{std::uint32_t(m_seed)};
+    RansacRng rng{std::uint32_t(m_seed)};
     RansacParams params;
     params.max_error = m_max_error;
     params.min_points = int(std::lround(m_min_points));
