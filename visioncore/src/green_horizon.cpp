@@ -40,7 +40,7 @@ void GreenHorizon::set(std::vector<PointF> hull, int width, int height)
         while (seg + 2 < hull.size() && hull[seg + 1].x < x)
             ++seg;
         const double y = extrapolate(hull[seg], hull[seg + 1], x);
-        m_column_y[std::size_t(x)] = int(std::lround(clampY(y, height)));
+        m_column_y[std::size_t(x)] = int(clampY(y, height) + 0.5); // lround (a libm call) for y >= 0
     }
     m_hull = std::move(hull);
 }
