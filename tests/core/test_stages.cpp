@@ -1,11 +1,13 @@
 // Each stage on small synthetic frames whose correct answer is known.
 #include "stages/common/line_fit.h"
 #include "stages/common/ransac.h"
+#include "stages/transitions/transition_filter.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/control_wrapper.h"
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace fieldsight;
@@ -46,6 +48,48 @@ const Blackboard& run(ControlWrapper& core)
     if (!r.ok())
         qFatal("runFrame failed: %s", r.error().message.c_str());
     return core.blackboard();
+}
+
+bool partFits(const ReplacementRule::Part& part, const ColourSegment& s)
+{
+    const int len = s.length();
+    return len >= part.min && (part.max < 0 || len <= part.max) &&
+           (part.colours.empty() ||
+            std::find(part.colours.begin(), part.colours.end(), s.colour) != part.colours.end());
+}
+
+/// The replacement rules applied the plain way (rule by rule, forward then backward, first match
+/// wins, against the original neighbours), then equal neighbours joined: what the compiled
+/// filter must reproduce.
+Scan referenceFilter(const Scan& scan, std::vector<int>& fired)
+{
+    const auto& rules = defaultReplacementRules();
+    fired.resize(rules.size());
+    Scan out;
+    for (std::size_t k = 0; k < scan.size(); ++k) {
+        ColourSegment seg = scan[k];
+        if (k > 0 && k + 1 < scan.size()) {
+            const ColourSegment& b = scan[k - 1];
+            const ColourSegment& a = scan[k + 1];
+            for (std::size_t i = 0; i < rules.size(); ++i) {
+                const ReplacementRule& r = rules[i];
+                if (r.middle.colours.empty() || !partFits(r.middle, seg))
+                    continue;
+                const bool forward = partFits(r.before, b) && partFits(r.after, a);
+                if (!forward && !(partFits(r.before, a) && partFits(r.after, b)))
+                    continue;
+                const bool before = r.method == ReplacementRule::Method::Before;
+                seg.colour = (before == forward ? b : a).colour;
+                ++fired[i];
+                break;
+            }
+        }
+        if (!out.empty() && out.back().colour == seg.colour)
+            out.back().x1 = seg.x1;
+        else
+            out.push_back(seg);
+    }
+    return out;
 }
 
 } // namespace
@@ -225,6 +269,102 @@ private slots:
         QVERIFY(std::abs(bb.obstacles[0].right - 79) <= 2);
         QCOMPARE(bb.obstacles[0].bottom, 170);
         QVERIFY(std::abs(bb.obstacles[0].top - 120) <= 1);
+    }
+
+    void compiledReplacementRulesMatchThePlainRules()
+    {
+        for (const ReplacementRule& r : defaultReplacementRules())
+            QVERIFY(r.method != ReplacementRule::Method::Split); // the reference knows no splits
+        // Random scans of the colours the rules name, mostly field and noise, runs short and
+        // long, so every rule fires, in both directions and next to each other.
+        const Colour colours[] = {Colour::Green,  Colour::Green,  Colour::Green, Colour::Unclassified,
+                                  Colour::Unclassified, Colour::White, Colour::Yellow,
+                                  Colour::Orange, Colour::Blue};
+        SplitMix64 rng{11};
+        cv::Mat image(1, 8000, CV_8UC3, cv::Scalar(0, 0, 0));
+        const ColourLut lut;
+        Blackboard bb;
+        bb.beginFrame(image, lut, {});
+        std::vector<Scan> scans;
+        for (int i = 0; i < 400; ++i) {
+            Scan& scan = bb.horizontal_segments.addScan();
+            const int count = 1 + int(rng() % 40);
+            int x = 0;
+            Colour previous = Colour::Pink; // not among `colours`
+            for (int k = 0; k < count; ++k) {
+                Colour c = previous;
+                while (c == previous)
+                    c = colours[rng() % 9];
+                const int len = rng() % 3 == 0 ? 1 + int(rng() % 30) : 1 + int(rng() % 5);
+                scan.push_back({std::int16_t(x), 0, std::int16_t(x + len), 0, c});
+                x += len;
+                previous = c;
+            }
+            scans.push_back(scan);
+        }
+        TransitionFilter filter;
+        filter.run(bb);
+        QCOMPARE(bb.horizontal_filtered.size(), scans.size());
+        std::vector<int> fired;
+        for (std::size_t i = 0; i < scans.size(); ++i) {
+            const Scan expected = referenceFilter(scans[i], fired);
+            const Scan& got = bb.horizontal_filtered[i];
+            QCOMPARE(got.size(), expected.size());
+            for (std::size_t k = 0; k < got.size(); ++k) {
+                QCOMPARE(got[k].x0, expected[k].x0);
+                QCOMPARE(got[k].x1, expected[k].x1);
+                QCOMPARE(got[k].colour, expected[k].colour);
+            }
+        }
+        for (std::size_t r = 0; r < fired.size(); ++r) // every rule was exercised
+            QVERIFY2(fired[r] > 0, defaultReplacementRules()[r].name);
+    }
+
+    void vectorInlierCountMatchesThePlainCount()
+    {
+        SplitMix64 rng{3};
+        for (int trial = 0; trial < 300; ++trial) {
+            const std::size_t n = 2 + rng() % 60; // every remainder of n / 4
+            const PointF a{double(rng() % 320), double(rng() % 240)};
+            const PointF b{a.x + 1 + rng() % 60, a.y + double(rng() % 80) - 40};
+            std::vector<PointF> points;
+            for (std::size_t i = 0; i < n; ++i) {
+                // Half near the line through a and b, half anywhere.
+                const double t = double(rng() % 1000) / 500.0 - 0.5;
+                const double off = double(rng() % 1000) / 100.0 - 5;
+                points.push_back(rng() % 2 ? PointF{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) + off}
+                                           : PointF{double(rng() % 320), double(rng() % 240)});
+            }
+            const PointF sample[2] = {a, b};
+            ImageLine line;
+            QVERIFY(line.fromSample(sample));
+            PointColumns cols;
+            cols.assign(points);
+            float sum = 0;
+            const std::size_t count = countInliers(line, cols, 2.5f, sum);
+            std::size_t expected = 0;
+            double expected_sum = 0;
+            for (const PointF& p : points) {
+                const float e = line.errorOf(float(p.x), float(p.y));
+                if (e < 2.5f) {
+                    ++expected;
+                    expected_sum += e;
+                }
+            }
+            QCOMPARE(count, expected);
+            QVERIFY(std::abs(double(sum) - expected_sum) < 1e-3 * (1 + expected_sum));
+        }
+    }
+
+    void splitMixGivesThePublishedSequence()
+    {
+        // SplitMix64 from state 0: e220a8397b1dcdaf 6e789e6aa1b965f4 06c45d188009454f (the
+        // reference implementation's first outputs); the engine returns their upper halves.
+        SplitMix64 rng{0};
+        QCOMPARE(rng(), 0xe220a839u);
+        QCOMPARE(rng(), 0x6e789e6au);
+        QCOMPARE(rng(), 0x06c45d18u);
+        QCOMPARE(splitMix64(0x9E3779B97F4A7C15ull), 0xe220a8397b1dcdafull);
     }
 
     void ransacWithAFixedSeedIsReproducible()
