@@ -2,6 +2,7 @@
 #pragma once
 
 #include "visioncore/atomic_file.h"
+#include "visioncore/batch.h"
 #include "visioncore/result.h"
 
 #include <cmath>
@@ -40,6 +41,21 @@ inline Status writeOutput(const std::string& path, const std::string& text, std:
         return {};
     }
     return writeFileAtomically(path, text);
+}
+
+/// The end of a reporting command: prints `table` to `out`, then writes `json` to `json_path`
+/// when one was given. Returns the command's exit code.
+inline int finishReport(std::ostream& out, std::ostream& err, const std::string& table,
+                        const std::string& json_path, const std::string& json)
+{
+    out << table << std::flush;
+    if (!json_path.empty()) {
+        if (Status s = writeOutput(json_path, json, out); !s) {
+            printError(err, s.error().message);
+            return kExitFailure;
+        }
+    }
+    return kExitOk;
 }
 
 } // namespace fieldsight::batch

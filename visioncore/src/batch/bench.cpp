@@ -697,14 +697,7 @@ int benchCommand(const BenchOptions& options, std::ostream& out, std::ostream& e
             table = multiBenchTable(m);
             json = multiBenchJson(m);
         }
-        out << table << std::flush;
-        if (!options.json.empty()) {
-            if (Status s = batch::writeOutput(options.json, json, out); !s) {
-                batch::printError(err, s.error().message);
-                return kExitFailure;
-            }
-        }
-        return kExitOk;
+        return batch::finishReport(out, err, table, options.json, json);
     } catch (const std::exception& e) {
         batch::printError(err, e.what());
         return kExitFailure;

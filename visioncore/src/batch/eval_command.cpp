@@ -172,14 +172,7 @@ int evalCommand(const EvalOptions& options, std::ostream& out, std::ostream& err
         report.truth_path = truth_path;
         report.scores = evaluate(detected, truth.value(), input.value().info().width,
                                  input.value().info().height);
-        out << evalTable(report) << std::flush;
-        if (!options.json.empty()) {
-            if (Status s = batch::writeOutput(options.json, evalJson(report), out); !s) {
-                batch::printError(err, s.error().message);
-                return kExitFailure;
-            }
-        }
-        return kExitOk;
+        return batch::finishReport(out, err, evalTable(report), options.json, evalJson(report));
     } catch (const std::exception& e) {
         batch::printError(err, e.what());
         return kExitFailure;
