@@ -2,6 +2,7 @@
 #include "synth/renderer.h"
 
 #include "synth/synth_random.h"
+#include "visioncore/ycbcr.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -486,11 +487,7 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
             out.bgr.at<cv::Vec3b>(y, x) = cv::Vec3b(to8(b), to8(g), to8(r));
         }
     }
-    cv::Mat ycrcb;
-    cv::cvtColor(out.bgr, ycrcb, cv::COLOR_BGR2YCrCb);
-    const int from_to[] = {0, 0, 1, 2, 2, 1};
-    out.ycbcr.create(h, w, CV_8UC3);
-    cv::mixChannels(&ycrcb, 1, &out.ycbcr, 1, from_to, 3);
+    out.ycbcr = bgrToYcbcr(out.bgr);
     return out;
 }
 

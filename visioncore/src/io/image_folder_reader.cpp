@@ -15,6 +15,7 @@
 #include <system_error>
 
 #include "visioncore/atomic_file.h"
+#include "visioncore/ycbcr.h"
 
 namespace fieldsight::io {
 
@@ -239,11 +240,7 @@ public:
             // The PNG's R, G, B hold Y, Cb, Cr; imread delivers them as B, G, R.
             cv::cvtColor(bgr, frame.ycbcr, cv::COLOR_BGR2RGB);
         } else {
-            cv::Mat ycrcb;
-            cv::cvtColor(bgr, ycrcb, cv::COLOR_BGR2YCrCb);
-            frame.ycbcr.create(ycrcb.size(), CV_8UC3);
-            const int from_to[] = {0, 0, 1, 2, 2, 1}; // Y, Cr, Cb -> Y, Cb, Cr
-            cv::mixChannels(&ycrcb, 1, &frame.ycbcr, 1, from_to, 3);
+            frame.ycbcr = bgrToYcbcr(bgr);
         }
         frame.name = m_files[index];
         const FrameMeta& meta = m_meta[index];

@@ -1,6 +1,8 @@
 // Video files and live cameras through OpenCV videoio, converted to Y, Cb, Cr like RGB folders.
 #include "io/stream_readers.h"
 
+#include "visioncore/ycbcr.h"
+
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -9,17 +11,6 @@
 namespace fieldsight::io {
 
 namespace {
-
-/// BT.601 full range, as for RGB image folders (SPEC §2).
-cv::Mat bgrToYCbCr(const cv::Mat& bgr)
-{
-    cv::Mat ycrcb;
-    cv::cvtColor(bgr, ycrcb, cv::COLOR_BGR2YCrCb);
-    cv::Mat ycbcr(ycrcb.size(), CV_8UC3);
-    const int from_to[] = {0, 0, 1, 2, 2, 1};
-    cv::mixChannels(&ycrcb, 1, &ycbcr, 1, from_to, 3);
-    return ycbcr;
-}
 
 /// Brings a decoded frame to 8-bit BGR (cameras may deliver grey or 4-channel images).
 cv::Mat toBgr(const cv::Mat& image)
@@ -70,7 +61,7 @@ public:
         }
         m_next = index + 1;
         Frame frame;
-        frame.ycbcr = bgrToYCbCr(toBgr(decoded));
+        frame.ycbcr = bgrToYcbcr(toBgr(decoded));
         if (frame.ycbcr.cols != m_info.width || frame.ycbcr.rows != m_info.height)
             return Error{m_info.path + ": frame " + std::to_string(index) + " is " +
                          std::to_string(frame.ycbcr.cols) + "x" + std::to_string(frame.ycbcr.rows) +
