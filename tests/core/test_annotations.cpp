@@ -1,5 +1,10 @@
 // Ground-truth annotation files (SPEC §5.2): round trip, derived goalpost base, bad input.
-#include "visioncore/annotations.h"
+#include "visioncore/io/annotations.h"
+#include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/field_boundary.h"
+#include "visioncore/percepts/field_line.h"
+#include "visioncore/percepts/goalpost.h"
+#include "visioncore/percepts/obstacle.h"
 
 #include <QtTest>
 
@@ -32,23 +37,23 @@ private slots:
         QCOMPARE(a.frames.size(), std::size_t(1));
         const FrameAnnotation& f = a.frames.at("frame_000000.png");
         QVERIFY(f.done);
-        QCOMPARE(f.balls.size(), std::size_t(1));
-        QCOMPARE(f.balls[0].x, 207.7);
-        QCOMPARE(f.balls[0].y, 107.9);
-        QCOMPARE(f.balls[0].radius, 6.2);
-        QCOMPARE(f.goalposts.size(), std::size_t(1));
-        QCOMPARE(f.goalposts[0].left, 131);
-        QCOMPARE(f.goalposts[0].right, 139);
-        QCOMPARE(f.goalposts[0].top, 0);
-        QCOMPARE(f.goalposts[0].bottom, 61);
-        QCOMPARE(f.goalposts[0].base_x, 135.0); // (left + right) / 2
-        QCOMPARE(f.goalposts[0].base_y, 61.0);  // bottom
-        QCOMPARE(f.obstacles.size(), std::size_t(1));
-        QCOMPARE(f.obstacles[0].right, 99);
-        QCOMPARE(f.obstacles[0].bottom, 80);
-        QCOMPARE(f.field_boundary, (std::vector<PointF>{{0, 62}, {319, 58}}));
-        QCOMPARE(f.field_lines.size(), std::size_t(1));
-        QCOMPARE(f.field_lines[0].y2, 181.0);
+        QCOMPARE(f.truth.list<Ball>().size(), std::size_t(1));
+        QCOMPARE(f.truth.list<Ball>()[0].x, 207.7);
+        QCOMPARE(f.truth.list<Ball>()[0].y, 107.9);
+        QCOMPARE(f.truth.list<Ball>()[0].radius, 6.2);
+        QCOMPARE(f.truth.list<Goalpost>().size(), std::size_t(1));
+        QCOMPARE(f.truth.list<Goalpost>()[0].left, 131);
+        QCOMPARE(f.truth.list<Goalpost>()[0].right, 139);
+        QCOMPARE(f.truth.list<Goalpost>()[0].top, 0);
+        QCOMPARE(f.truth.list<Goalpost>()[0].bottom, 61);
+        QCOMPARE(f.truth.list<Goalpost>()[0].base_x, 135.0); // (left + right) / 2
+        QCOMPARE(f.truth.list<Goalpost>()[0].base_y, 61.0);  // bottom
+        QCOMPARE(f.truth.list<Obstacle>().size(), std::size_t(1));
+        QCOMPARE(f.truth.list<Obstacle>()[0].right, 99);
+        QCOMPARE(f.truth.list<Obstacle>()[0].bottom, 80);
+        QCOMPARE(boundaryOf(f.truth), (std::vector<PointF>{{0, 62}, {319, 58}}));
+        QCOMPARE(f.truth.list<FieldLine>().size(), std::size_t(1));
+        QCOMPARE(f.truth.list<FieldLine>()[0].y2, 181.0);
     }
 
     void saveThenLoadRoundTrips()
@@ -56,16 +61,16 @@ private slots:
         Annotations a;
         FrameAnnotation& f = a.frames["f001.png"];
         f.done = true;
-        f.balls.push_back({1.0 / 3.0, 2.5, 6.125});
+        f.truth.output<Ball>().push_back({1.0 / 3.0, 2.5, 6.125});
         Goalpost post;
         post.left = 10;
         post.right = 13;
         post.top = 2;
         post.bottom = 90;
-        f.goalposts.push_back(post);
-        f.obstacles.push_back({5, 6, 7, 8});
-        f.field_boundary = {{0, 60.5}, {100, 58.25}, {319, 61}};
-        f.field_lines.push_back({1, 2, 3, 4});
+        f.truth.output<Goalpost>().push_back(post);
+        f.truth.output<Obstacle>().push_back({5, 6, 7, 8});
+        f.truth.output<FieldBoundary>() = {{{{0, 60.5}, {100, 58.25}, {319, 61}}}};
+        f.truth.output<FieldLine>().push_back({1, 2, 3, 4});
         a.frames["f000.png"].done = false; // a frame with nothing yet
 
         QTemporaryDir dir;
@@ -78,17 +83,17 @@ private slots:
         QVERIFY(!b.frames.at("f000.png").done);
         const FrameAnnotation& g = b.frames.at("f001.png");
         QVERIFY(g.done);
-        QCOMPARE(g.balls.size(), std::size_t(1));
-        QCOMPARE(g.balls[0].x, 1.0 / 3.0); // doubles survive exactly
-        QCOMPARE(g.balls[0].radius, 6.125);
-        QCOMPARE(g.goalposts[0].left, 10);
-        QCOMPARE(g.goalposts[0].bottom, 90);
-        QCOMPARE(g.goalposts[0].base_x, 11.5);
-        QCOMPARE(g.goalposts[0].base_y, 90.0);
-        QCOMPARE(g.obstacles[0].left, 5);
-        QCOMPARE(g.obstacles[0].bottom, 8);
-        QCOMPARE(g.field_boundary, f.field_boundary);
-        QCOMPARE(g.field_lines[0].x2, 3.0);
+        QCOMPARE(g.truth.list<Ball>().size(), std::size_t(1));
+        QCOMPARE(g.truth.list<Ball>()[0].x, 0.333); // written to 0.001 px
+        QCOMPARE(g.truth.list<Ball>()[0].radius, 6.125);
+        QCOMPARE(g.truth.list<Goalpost>()[0].left, 10);
+        QCOMPARE(g.truth.list<Goalpost>()[0].bottom, 90);
+        QCOMPARE(g.truth.list<Goalpost>()[0].base_x, 11.5);
+        QCOMPARE(g.truth.list<Goalpost>()[0].base_y, 90.0);
+        QCOMPARE(g.truth.list<Obstacle>()[0].left, 5);
+        QCOMPARE(g.truth.list<Obstacle>()[0].bottom, 8);
+        QCOMPARE(boundaryOf(g.truth), boundaryOf(f.truth));
+        QCOMPARE(g.truth.list<FieldLine>()[0].x2, 3.0);
         // Saving what was loaded gives the same text.
         QCOMPARE(b.toJson(), a.toJson());
         QVERIFY(a.toJson().find("\"format\": \"fieldsight-annotations/1\"") != std::string::npos);

@@ -1,6 +1,6 @@
 // The fieldsight executable's headless commands as a user meets them: exit statuses, one-line
 // errors naming the file, and the JSON of run, bench and eval on a tiny stream.
-#include "visioncore/batch.h"
+#include "visioncore/services/stream_runner.h"
 #include "visioncore/colour_lut.h"
 
 #include <QtTest>

@@ -1,5 +1,5 @@
 // The native .lut format (SPEC §3) and atomic saving.
-#include "visioncore/atomic_file.h"
+#include "visioncore/io/atomic_file.h"
 #include "visioncore/colour_lut.h"
 
 #include <QtTest>

@@ -1,5 +1,6 @@
 // The eval matching rules of SPEC §5.3 on hand-made detections and truths, so every scorer agrees.
-#include "visioncore/evaluation.h"
+#include "visioncore/percepts/field_boundary.h"
+#include "visioncore/services/evaluation.h"
 
 #include <QtTest>
 
@@ -231,26 +232,26 @@ private slots:
         Annotations truth;
         FrameAnnotation done;
         done.done = true;
-        done.balls = {{50, 50, 5}};
-        done.goalposts = {truePost(10, 19, 0, 60)};
-        done.field_boundary = {{0, 30}, {99, 30}};
+        done.truth.output<Ball>() = {{50, 50, 5}};
+        done.truth.output<Goalpost>() = {truePost(10, 19, 0, 60)};
+        done.truth.output<FieldBoundary>() = {{{{0, 30}, {99, 30}}}};
         FrameAnnotation notDone = done;
         notDone.done = false;
         FrameAnnotation emptyDone;
         emptyDone.done = true;
-        emptyDone.field_boundary = {{0, 40}, {99, 40}};
+        emptyDone.truth.output<FieldBoundary>() = {{{{0, 40}, {99, 40}}}};
         truth.frames["a.png"] = done;
         truth.frames["b.png"] = notDone;
         truth.frames["c.png"] = emptyDone;
         truth.frames["d.png"] = emptyDone; // done, but no detections given
 
-        std::map<std::string, FrameDetections> detected;
-        detected["a.png"].balls = {{51, 50, 5}};
-        detected["a.png"].green_horizon = {{0, 32}, {99, 32}};
-        detected["b.png"].balls = {{10, 10, 5}}; // would be a false positive if scored
-        detected["b.png"].obstacles = {obstacle(0, 9)};
-        detected["c.png"].obstacles = {obstacle(0, 9)};
-        detected["c.png"].green_horizon = {{0, 44}, {99, 44}};
+        std::map<std::string, PerceptSet> detected;
+        detected["a.png"].output<Ball>() = {{51, 50, 5}};
+        detected["a.png"].output<FieldBoundary>() = {{{{0, 32}, {99, 32}}}};
+        detected["b.png"].output<Ball>() = {{10, 10, 5}}; // would be a false positive if scored
+        detected["b.png"].output<Obstacle>() = {obstacle(0, 9)};
+        detected["c.png"].output<Obstacle>() = {obstacle(0, 9)};
+        detected["c.png"].output<FieldBoundary>() = {{{{0, 44}, {99, 44}}}};
 
         const EvaluationScores s = evaluate(detected, truth, 100, 120);
         QCOMPARE(s.frames, std::size_t(3));

@@ -1,6 +1,6 @@
 // Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
-#include "visioncore/stream_data_wrapper.h"
-#include "visioncore/stream_reader.h"
+#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/io/stream_reader.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>

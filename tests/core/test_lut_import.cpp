@@ -1,5 +1,5 @@
 // Importing other teams' colour tables: B-Human .c64, rUNSWift .nnmc.bz2, UPenn .raw.
-#include "visioncore/lut_import.h"
+#include "visioncore/io/lut_import.h"
 
 #include "support/synthetic_frames.h"
 

@@ -3,7 +3,12 @@
 #include "stages/common/ransac.h"
 #include "stages/transitions/transition_filter.h"
 #include "support/synthetic_frames.h"
-#include "visioncore/control_wrapper.h"
+#include "visioncore/framework/control_wrapper.h"
+#include "visioncore/io/memory_data_wrapper.h"
+#include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/field_line.h"
+#include "visioncore/percepts/goalpost.h"
+#include "visioncore/percepts/obstacle.h"
 
 #include <QtTest>
 
@@ -16,23 +21,6 @@ using test::fillCircle;
 using test::fillRect;
 
 namespace {
-
-class FrameData : public DataWrapper
-{
-public:
-    explicit FrameData(cv::Mat image, Horizon horizon = {})
-        : m_image(std::move(image)), m_lut(test::testLut()), m_horizon(horizon)
-    {
-    }
-    const cv::Mat& image() const override { return m_image; }
-    Horizon kinematicHorizon() const override { return m_horizon; }
-    const ColourLut& lut() const override { return m_lut; }
-
-private:
-    cv::Mat m_image;
-    ColourLut m_lut;
-    Horizon m_horizon;
-};
 
 /// Sky above row `edge`, field below.
 cv::Mat field(int edge = 60)
@@ -100,7 +88,7 @@ class TestStages : public QObject
 private slots:
     void greenHorizonFollowsAStraightFieldEdge()
     {
-        FrameData data(field(60));
+        MemoryDataWrapper data(field(60), test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
         for (int x : {0, 77, 160, 319})
@@ -112,7 +100,7 @@ private slots:
     {
         cv::Mat f = field(60);
         fillRect(f, 100, 30, 139, 150, Colour::ShadowObject); // a robot hiding the field edge
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
         for (int x = 0; x < 320; x += 20)
@@ -123,17 +111,18 @@ private slots:
             low += p.y > 140;
         QVERIFY(low >= 3);
         // ...and the obstacle stage reports it where it is.
-        QCOMPARE(bb.obstacles.size(), std::size_t(1));
-        QVERIFY(std::abs(bb.obstacles[0].left - 100) <= 2);
-        QVERIFY(std::abs(bb.obstacles[0].right - 139) <= 2);
-        QVERIFY(std::abs(bb.obstacles[0].bottom - 150) <= 1);
+        QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 100) <= 2);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 139) <= 2);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].bottom - 150) <= 1);
     }
 
     void greenHorizonIgnoresGreenAboveTheKinematicHorizon()
     {
         cv::Mat f = field(100);
         fillRect(f, 0, 0, 319, 20, Colour::Green); // a green banner in the stands
-        FrameData data(f, Horizon{40, 40});
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
         QCOMPARE(bb.green_horizon.yAt(160), 100);
@@ -141,7 +130,7 @@ private slots:
 
     void scanlinesCoverTheImageWithExclusiveEnds()
     {
-        FrameData data(field(60));
+        MemoryDataWrapper data(field(60), test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
         QCOMPARE(bb.horizontal_scan_ys.size(), std::size_t(60)); // 239, 235, ..., 3
@@ -165,7 +154,7 @@ private slots:
         cv::Mat f = field(60);
         // One unclassified pixel in the middle of the field on scan line y = 203.
         f.at<cv::Vec3b>(203, 150) = cv::Vec3b(10, 10, 10);
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
         std::size_t row = 0;
@@ -180,14 +169,16 @@ private slots:
     {
         cv::Mat f = field(60);
         fillCircle(f, 120.0, 160.0, 9, Colour::Orange);
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
-        QCOMPARE(bb.balls.size(), std::size_t(1));
-        QVERIFY2(std::abs(bb.balls[0].x - 120.0) < 0.75, qPrintable(QString::number(bb.balls[0].x)));
-        QVERIFY2(std::abs(bb.balls[0].y - 160.0) < 0.75, qPrintable(QString::number(bb.balls[0].y)));
-        QVERIFY2(std::abs(bb.balls[0].radius - 9.5) < 1.0,
-                 qPrintable(QString::number(bb.balls[0].radius)));
+        QCOMPARE(bb.percepts.list<Ball>().size(), std::size_t(1));
+        QVERIFY2(std::abs(bb.percepts.list<Ball>()[0].x - 120.0) < 0.75,
+                 qPrintable(QString::number(bb.percepts.list<Ball>()[0].x)));
+        QVERIFY2(std::abs(bb.percepts.list<Ball>()[0].y - 160.0) < 0.75,
+                 qPrintable(QString::number(bb.percepts.list<Ball>()[0].y)));
+        QVERIFY2(std::abs(bb.percepts.list<Ball>()[0].radius - 9.5) < 1.0,
+                 qPrintable(QString::number(bb.percepts.list<Ball>()[0].radius)));
     }
 
     void ballHalfHiddenByARobotIsStillCentred()
@@ -195,29 +186,30 @@ private slots:
         cv::Mat f = field(60);
         fillCircle(f, 150.0, 170.0, 12, Colour::Orange);
         fillRect(f, 150, 100, 200, 200, Colour::ShadowObject); // hides the right half
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
-        QCOMPARE(bb.balls.size(), std::size_t(1));
-        QVERIFY(std::hypot(bb.balls[0].x - 150, bb.balls[0].y - 170) < 2.0);
+        QCOMPARE(bb.percepts.list<Ball>().size(), std::size_t(1));
+        QVERIFY(std::hypot(bb.percepts.list<Ball>()[0].x - 150,
+                           bb.percepts.list<Ball>()[0].y - 170) < 2.0);
     }
 
     void noBallWithoutBallColour()
     {
-        FrameData data(field(60));
+        MemoryDataWrapper data(field(60), test::testLut());
         ControlWrapper core(data);
-        QCOMPARE(run(core).balls.size(), std::size_t(0));
+        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(0));
     }
 
     void goalpostIsFoundAtItsKnownColumn()
     {
         cv::Mat f = field(60);
         fillRect(f, 200, 5, 209, 100, Colour::Yellow); // 10 px wide, foot at y = 100
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
-        QCOMPARE(bb.goalposts.size(), std::size_t(1));
-        const Goalpost& g = bb.goalposts[0];
+        QCOMPARE(bb.percepts.list<Goalpost>().size(), std::size_t(1));
+        const Goalpost& g = bb.percepts.list<Goalpost>()[0];
         QCOMPARE(g.left, 200);
         QCOMPARE(g.right, 209);
         QVERIFY(std::abs(g.base_x - 204.5) < 1.0);
@@ -230,12 +222,14 @@ private slots:
         cv::Mat f = field(60);
         fillRect(f, 60, 5, 69, 100, Colour::Yellow);
         fillRect(f, 240, 5, 249, 100, Colour::Yellow);
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
-        QCOMPARE(bb.goalposts.size(), std::size_t(2));
-        const auto& left = bb.goalposts[0].base_x < bb.goalposts[1].base_x ? bb.goalposts[0]
-                                                                            : bb.goalposts[1];
+        QCOMPARE(bb.percepts.list<Goalpost>().size(), std::size_t(2));
+        const auto& left =
+            bb.percepts.list<Goalpost>()[0].base_x < bb.percepts.list<Goalpost>()[1].base_x
+                ? bb.percepts.list<Goalpost>()[0]
+                : bb.percepts.list<Goalpost>()[1];
         QCOMPARE(left.side, GoalpostSide::Left);
         QVERIFY(std::abs(left.base_x - 64.5) < 1.0);
     }
@@ -244,11 +238,11 @@ private slots:
     {
         cv::Mat f = field(60);
         drawLine(f, 0, 200, 319, 140, 3, Colour::White);
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
-        QCOMPARE(bb.field_lines.size(), std::size_t(1));
-        const FieldLine& l = bb.field_lines[0];
+        QCOMPARE(bb.percepts.list<FieldLine>().size(), std::size_t(1));
+        const FieldLine& l = bb.percepts.list<FieldLine>()[0];
         const double slope = (l.y2 - l.y1) / (l.x2 - l.x1);
         QVERIFY(std::abs(slope - (-60.0 / 319.0)) < 0.02);
         const double y_at_160 = l.y1 + slope * (160 - l.x1);
@@ -261,14 +255,14 @@ private slots:
         cv::Mat f = field(50);
         fillRect(f, 60, 120, 79, 170, Colour::ShadowObject);
         fillRect(f, 64, 130, 75, 136, Colour::Pink); // team marker
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
-        QCOMPARE(bb.obstacles.size(), std::size_t(1));
-        QVERIFY(std::abs(bb.obstacles[0].left - 60) <= 2);
-        QVERIFY(std::abs(bb.obstacles[0].right - 79) <= 2);
-        QCOMPARE(bb.obstacles[0].bottom, 170);
-        QVERIFY(std::abs(bb.obstacles[0].top - 120) <= 1);
+        QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 60) <= 2);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 79) <= 2);
+        QCOMPARE(bb.percepts.list<Obstacle>()[0].bottom, 170);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].top - 120) <= 1);
     }
 
     void compiledReplacementRulesMatchThePlainRules()
@@ -277,9 +271,9 @@ private slots:
             QVERIFY(r.method != ReplacementRule::Method::Split); // the reference knows no splits
         // Random scans of the colours the rules name, mostly field and noise, runs short and
         // long, so every rule fires, in both directions and next to each other.
-        const Colour colours[] = {Colour::Green,  Colour::Green,  Colour::Green, Colour::Unclassified,
-                                  Colour::Unclassified, Colour::White, Colour::Yellow,
-                                  Colour::Orange, Colour::Blue};
+        const Colour colours[] = {Colour::Green,        Colour::Green,        Colour::Green,
+                                  Colour::Unclassified, Colour::Unclassified, Colour::White,
+                                  Colour::Yellow,       Colour::Orange,       Colour::Blue};
         SplitMix64 rng{11};
         cv::Mat image(1, 8000, CV_8UC3, cv::Scalar(0, 0, 0));
         const ColourLut lut;
@@ -332,8 +326,9 @@ private slots:
                 // Half near the line through a and b, half anywhere.
                 const double t = double(rng() % 1000) / 500.0 - 0.5;
                 const double off = double(rng() % 1000) / 100.0 - 5;
-                points.push_back(rng() % 2 ? PointF{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) + off}
-                                           : PointF{double(rng() % 320), double(rng() % 240)});
+                points.push_back(rng() % 2
+                                     ? PointF{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) + off}
+                                     : PointF{double(rng() % 320), double(rng() % 240)});
             }
             const PointF sample[2] = {a, b};
             ImageLine line;
@@ -392,12 +387,12 @@ private slots:
         fillCircle(f, 100, 150, 7, Colour::Orange);
         drawLine(f, 0, 220, 319, 120, 3, Colour::White);
         drawLine(f, 30, 239, 200, 70, 3, Colour::White);
-        FrameData data(f);
+        MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
         run(core);
-        const std::vector<FieldLine> first = core.blackboard().field_lines;
+        const std::vector<FieldLine> first = core.blackboard().percepts.list<FieldLine>();
         run(core);
-        const auto& second = core.blackboard().field_lines;
+        const auto& second = core.blackboard().percepts.list<FieldLine>();
         QCOMPARE(second.size(), first.size());
         for (std::size_t i = 0; i < first.size(); ++i)
             QCOMPARE(second[i].x1, first[i].x1);

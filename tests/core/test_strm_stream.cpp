@@ -1,6 +1,6 @@
 // Original NUbots image streams (.strm): writer/reader round trip, flips, and damaged files.
-#include "visioncore/stream_data_wrapper.h"
-#include "visioncore/stream_reader.h"
+#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/io/stream_reader.h"
 
 #include "support/synthetic_frames.h"
 

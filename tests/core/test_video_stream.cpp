@@ -1,5 +1,5 @@
 // Video-file streams through OpenCV videoio: random access and the RGB to YCbCr conversion.
-#include "visioncore/stream_reader.h"
+#include "visioncore/io/stream_reader.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>

@@ -2,8 +2,8 @@
 // stored output. Regenerate on purpose with FIELDSIGHT_REGENERATE_GOLDEN=1 (the run then fails, so
 // regeneration can never pass CI silently).
 #include "support/synthetic_frames.h"
-#include "visioncore/atomic_file.h"
-#include "visioncore/batch.h"
+#include "visioncore/io/atomic_file.h"
+#include "visioncore/services/stream_runner.h"
 
 #include <QtTest>
 #include <nlohmann/json.hpp>
@@ -17,29 +17,13 @@ using nlohmann::json;
 
 namespace {
 
-double r2(double v) { return std::round(v * 100) / 100; }
-
-/// Everything the pipeline decided for a frame, without timings.
+/// Everything the pipeline decided for a frame, without timings: its percept lists as results
+/// JSON (so a new kind of percept is covered without changing this test).
 json frameJson(const FrameResult& f)
 {
-    json j;
-    json gh = json::array();
-    for (const PointF& p : f.green_horizon)
-        gh.push_back({r2(p.x), r2(p.y)});
-    j["green_horizon"] = gh;
-    j["balls"] = json::array();
-    for (const Ball& b : f.balls)
-        j["balls"].push_back({r2(b.x), r2(b.y), r2(b.radius)});
-    j["goalposts"] = json::array();
-    for (const Goalpost& g : f.goalposts)
-        j["goalposts"].push_back({g.left, g.right, g.top, g.bottom, r2(g.base_x), r2(g.base_y)});
-    j["obstacles"] = json::array();
-    for (const Obstacle& o : f.obstacles)
-        j["obstacles"].push_back({o.left, o.right, o.top, o.bottom});
-    j["field_lines"] = json::array();
-    for (const FieldLine& l : f.field_lines)
-        j["field_lines"].push_back({r2(l.x1), r2(l.y1), r2(l.x2), r2(l.y2)});
-    return j;
+    nlohmann::ordered_json j = nlohmann::ordered_json::object();
+    f.percepts.toJson(j, PerceptNames::Results);
+    return json::parse(j.dump());
 }
 
 /// Compares two JSON trees, numbers within `tol`; returns the first difference's path.
@@ -51,9 +35,11 @@ std::string firstDifference(const json& a, const json& b, const std::string& pat
         return path;
     if (a.is_array()) {
         if (a.size() != b.size())
-            return path + " (size " + std::to_string(a.size()) + " vs " + std::to_string(b.size()) + ")";
+            return path + " (size " + std::to_string(a.size()) + " vs " + std::to_string(b.size()) +
+                   ")";
         for (std::size_t i = 0; i < a.size(); ++i)
-            if (auto d = firstDifference(a[i], b[i], path + "[" + std::to_string(i) + "]", tol); !d.empty())
+            if (auto d = firstDifference(a[i], b[i], path + "[" + std::to_string(i) + "]", tol);
+                !d.empty())
                 return d;
         return "";
     }
@@ -61,7 +47,8 @@ std::string firstDifference(const json& a, const json& b, const std::string& pat
         for (auto it = a.begin(); it != a.end(); ++it) {
             if (!b.contains(it.key()))
                 return path + "." + it.key() + " (missing)";
-            if (auto d = firstDifference(it.value(), b[it.key()], path + "." + it.key(), tol); !d.empty())
+            if (auto d = firstDifference(it.value(), b[it.key()], path + "." + it.key(), tol);
+                !d.empty())
                 return d;
         }
         return a.size() == b.size() ? "" : path + " (extra keys)";
@@ -88,14 +75,12 @@ private slots:
         const std::string dir = test::sampleStreamsDir() + "/" + stream.toStdString();
         if (!std::filesystem::is_directory(dir))
             QFAIL(qPrintable("missing bundled stream " + QString::fromStdString(dir)));
-        auto input = openBatchInput(dir, "");
+        auto input = openStreamInput(dir, "");
         QVERIFY2(input.ok(), input.ok() ? "" : input.error().message.c_str());
-        std::vector<std::size_t> indices(input.value().info().frame_count);
-        std::iota(indices.begin(), indices.end(), 0);
-        auto results = processFrames(input.value(), indices, {}, 2);
-        QVERIFY2(results.ok(), results.ok() ? "" : results.error().message.c_str());
+        auto run = runStream(input.value(), firstFrames(input.value().info().frame_count), 2);
+        QVERIFY2(run.ok(), run.ok() ? "" : run.error().message.c_str());
         json actual = json::object();
-        for (const FrameResult& f : results.value())
+        for (const FrameResult& f : run.value().frames)
             actual[f.name] = frameJson(f);
 
         const std::string golden = std::string(FIELDSIGHT_SOURCE_DIR) +
@@ -109,7 +94,8 @@ private slots:
         QVERIFY2(text.ok(), text.ok() ? "" : text.error().message.c_str());
         const json expected = json::parse(text.value());
         const std::string diff = firstDifference(expected, actual, stream.toStdString(), 0.05);
-        QVERIFY2(diff.empty(), qPrintable("output differs from golden at " + QString::fromStdString(diff)));
+        QVERIFY2(diff.empty(),
+                 qPrintable("output differs from golden at " + QString::fromStdString(diff)));
     }
 };
 

@@ -2,9 +2,13 @@
 // table that shipped beside it, and NUbots lab frames with the NUbots lab LUT. The expected counts
 // were measured once through the CLI; the margins leave room for tuning but not for a broken stage.
 #include "support/synthetic_frames.h"
-#include "visioncore/batch.h"
-#include "visioncore/lut_import.h"
-#include "visioncore/stream_reader.h"
+#include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/field_boundary.h"
+#include "visioncore/percepts/field_line.h"
+#include "visioncore/percepts/goalpost.h"
+#include "visioncore/services/stream_runner.h"
+#include "visioncore/io/lut_import.h"
+#include "visioncore/io/stream_reader.h"
 
 #include <QtTest>
 
@@ -95,25 +99,24 @@ double hullYAt(const std::vector<PointF>& hull, double x)
 }
 
 /// Runs the whole stream with `settings`; fails the calling test on any error.
-std::vector<FrameResult> runStream(const QString& stream, const std::vector<std::string>& settings)
+std::vector<FrameResult> runWhole(const QString& stream, const std::vector<std::string>& settings)
 {
-    auto input = openBatchInput(stream.toStdString(), "");
+    auto input = openStreamInput(stream.toStdString(), "");
     if (!input) {
         qWarning() << input.error().message.c_str();
         return {};
     }
-    if (Status s = applySettings(input.value(), settings); !s) {
-        qWarning() << s.error().message.c_str();
+    for (const std::string& setting : settings)
+        if (Status s = input.value().params.parseSetting(setting); !s) {
+            qWarning() << s.error().message.c_str();
+            return {};
+        }
+    auto run = runStream(input.value(), firstFrames(input.value().info().frame_count), 2);
+    if (!run) {
+        qWarning() << run.error().message.c_str();
         return {};
     }
-    std::vector<std::size_t> indices(input.value().info().frame_count);
-    std::iota(indices.begin(), indices.end(), std::size_t(0));
-    auto results = processFrames(input.value(), indices, {}, 2);
-    if (!results) {
-        qWarning() << results.error().message.c_str();
-        return {};
-    }
-    return std::move(results).value();
+    return std::move(run).value().frames;
 }
 
 const FrameResult* findFrame(const std::vector<FrameResult>& frames, const std::string& name)
@@ -196,8 +199,8 @@ private slots:
         QVERIFY(m_dir.isValid());
         makeBhumanStream();
         makeNubotsStream();
-        m_bhuman_blue = runStream(m_bhuman, {"transitions.goal_colour=9"});
-        m_bhuman_yellow = runStream(m_bhuman, {});
+        m_bhuman_blue = runWhole(m_bhuman, {"transitions.goal_colour=9"});
+        m_bhuman_yellow = runWhole(m_bhuman, {});
         QCOMPARE(int(m_bhuman_blue.size()), kBhumanFrames);
         QCOMPARE(int(m_bhuman_yellow.size()), kBhumanFrames);
     }
@@ -207,8 +210,8 @@ private slots:
         if (!m_have_reference)
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
         // Measured: 116 of 160 (the ball leaves the view while the robot turns to the goal).
-        const int with_ball =
-            countFrames(m_bhuman_blue, [](const FrameResult& f) { return !f.balls.empty(); });
+        const int with_ball = countFrames(
+            m_bhuman_blue, [](const FrameResult& f) { return !f.percepts.list<Ball>().empty(); });
         QVERIFY2(with_ball >= 105 && with_ball <= 150, qPrintable(QString::number(with_ball)));
     }
 
@@ -220,10 +223,10 @@ private slots:
         QVERIFY(f);
         // The ball fills the middle of the frame: centre about (166, 135), radius about 40 px
         // (preview/f070_rgb.png), resting on a field line.
-        QVERIFY2(
-            f->balls.size() == 1,
-            qPrintable(QString("f070: %1 balls, expected the large one").arg(f->balls.size())));
-        const Ball& ball = f->balls.front();
+        QVERIFY2(f->percepts.list<Ball>().size() == 1,
+                 qPrintable(QString("f070: %1 balls, expected the large one")
+                                .arg(f->percepts.list<Ball>().size())));
+        const Ball& ball = f->percepts.list<Ball>().front();
         QVERIFY2(ball.x >= 0 && ball.x < kBhumanWidth && ball.y >= 0 && ball.y < kBhumanHeight,
                  qPrintable(QString("ball at %1, %2").arg(ball.x).arg(ball.y)));
         QVERIFY2(ball.radius >= 10, qPrintable(QString("radius %1").arg(ball.radius)));
@@ -234,8 +237,8 @@ private slots:
         if (!m_have_reference)
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
         for (const FrameResult& f : m_bhuman_blue)
-            for (const Ball& ball : f.balls) {
-                const double horizon = hullYAt(f.green_horizon, ball.x);
+            for (const Ball& ball : f.percepts.list<Ball>()) {
+                const double horizon = hullYAt(boundaryOf(f.percepts), ball.x);
                 QVERIFY2(ball.y >= horizon,
                          qPrintable(QString("%1: ball at y %2 above the green horizon at y %3")
                                         .arg(QString::fromStdString(f.name))
@@ -249,11 +252,12 @@ private slots:
         if (!m_have_reference)
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
         // Measured: 65 frames (the goal is in view from about frame 115 on, and briefly before).
-        const int with_posts =
-            countFrames(m_bhuman_blue, [](const FrameResult& f) { return !f.goalposts.empty(); });
+        const int with_posts = countFrames(m_bhuman_blue, [](const FrameResult& f) {
+            return !f.percepts.list<Goalpost>().empty();
+        });
         QVERIFY2(with_posts >= 55 && with_posts <= 100, qPrintable(QString::number(with_posts)));
         for (const FrameResult& f : m_bhuman_blue)
-            for (const Goalpost& post : f.goalposts) {
+            for (const Goalpost& post : f.percepts.list<Goalpost>()) {
                 QVERIFY(post.left <= post.right && post.top <= post.bottom);
                 QVERIFY(post.left >= 0 && post.right < kBhumanWidth);
             }
@@ -264,8 +268,9 @@ private slots:
         if (!m_have_reference)
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
         // Only the sky-blue goal is in this log, so the parameter decides whether posts are seen.
-        const int with_posts =
-            countFrames(m_bhuman_yellow, [](const FrameResult& f) { return !f.goalposts.empty(); });
+        const int with_posts = countFrames(m_bhuman_yellow, [](const FrameResult& f) {
+            return !f.percepts.list<Goalpost>().empty();
+        });
         QVERIFY2(with_posts <= 5, qPrintable(QString::number(with_posts)));
     }
 
@@ -275,15 +280,15 @@ private slots:
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
         for (const FrameResult& f : m_bhuman_blue) {
             const QString name = QString::fromStdString(f.name);
-            QVERIFY2(f.green_horizon.size() >= 2, qPrintable(name));
-            QCOMPARE(f.green_horizon.front().x, 0.0);
-            QCOMPARE(f.green_horizon.back().x, double(kBhumanWidth - 1));
+            QVERIFY2(boundaryOf(f.percepts).size() >= 2, qPrintable(name));
+            QCOMPARE(boundaryOf(f.percepts).front().x, 0.0);
+            QCOMPARE(boundaryOf(f.percepts).back().x, double(kBhumanWidth - 1));
             const double top =
-                std::min_element(f.green_horizon.begin(), f.green_horizon.end(),
+                std::min_element(boundaryOf(f.percepts).begin(), boundaryOf(f.percepts).end(),
                                  [](const PointF& a, const PointF& b) { return a.y < b.y; })
                     ->y;
             QVERIFY2(top < kBhumanHeight - 1, qPrintable(name + ": no green horizon"));
-            QVERIFY2(!f.field_lines.empty(), qPrintable(name + ": no field lines"));
+            QVERIFY2(!f.percepts.list<FieldLine>().empty(), qPrintable(name + ": no field lines"));
         }
     }
 
@@ -291,21 +296,21 @@ private slots:
     {
         if (!m_have_reference)
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
-        const std::vector<FrameResult> frames = runStream(m_nubots, {});
+        const std::vector<FrameResult> frames = runWhole(m_nubots, {});
         QCOMPARE(int(frames.size()), 3);
         const FrameResult* f = findFrame(frames, "test_image2_2014-05-03.jpg");
         QVERIFY(f);
-        QCOMPARE(int(f->balls.size()), 1);
-        const Ball& ball = f->balls.front();
+        QCOMPARE(int(f->percepts.list<Ball>().size()), 1);
+        const Ball& ball = f->percepts.list<Ball>().front();
         const QString where =
             QString("ball at (%1, %2) r %3").arg(ball.x).arg(ball.y).arg(ball.radius);
         QVERIFY2(std::hypot(ball.x - 134.5, ball.y - 188.8) <= 4.0, qPrintable(where));
         QVERIFY2(std::abs(ball.radius - 19.7) <= 3.0, qPrintable(where));
 
-        QCOMPARE(int(f->goalposts.size()), 2);
-        const int left_of_centre =
-            int(std::count_if(f->goalposts.begin(), f->goalposts.end(),
-                              [](const Goalpost& g) { return g.base_x < 160; }));
+        QCOMPARE(int(f->percepts.list<Goalpost>().size()), 2);
+        const int left_of_centre = int(
+            std::count_if(f->percepts.list<Goalpost>().begin(), f->percepts.list<Goalpost>().end(),
+                          [](const Goalpost& g) { return g.base_x < 160; }));
         QCOMPARE(left_of_centre, 1);
     }
 

@@ -10,14 +10,22 @@ namespace fieldsight::test {
 ClassPixel pixelFor(Colour colour)
 {
     switch (colour) {
-    case Colour::White: return {230, 128, 128};
-    case Colour::Green: return {100, 90, 80};
-    case Colour::Orange: return {140, 70, 200};
-    case Colour::Yellow: return {190, 40, 150};
-    case Colour::Blue: return {60, 200, 90};
-    case Colour::Pink: return {120, 150, 210};
-    case Colour::ShadowObject: return {40, 128, 128};
-    default: return {10, 10, 10};
+    case Colour::White:
+        return {230, 128, 128};
+    case Colour::Green:
+        return {100, 90, 80};
+    case Colour::Orange:
+        return {140, 70, 200};
+    case Colour::Yellow:
+        return {190, 40, 150};
+    case Colour::Blue:
+        return {60, 200, 90};
+    case Colour::Pink:
+        return {120, 150, 210};
+    case Colour::ShadowObject:
+        return {40, 128, 128};
+    default:
+        return {10, 10, 10};
     }
 }
 
@@ -69,10 +77,14 @@ void drawLine(cv::Mat& frame, int x1, int y1, int x2, int y2, int thickness, Col
 
 std::string referenceDataDir()
 {
-    const std::filesystem::path dir = std::filesystem::path(FIELDSIGHT_SHARED_DIR) / "reference_data";
+    const std::filesystem::path dir =
+        std::filesystem::path(FIELDSIGHT_SHARED_DIR) / "reference_data";
     return std::filesystem::is_directory(dir) ? dir.string() : std::string();
 }
 
-std::string sampleStreamsDir() { return FIELDSIGHT_SAMPLE_STREAMS_DIR; }
+std::string sampleStreamsDir()
+{
+    return FIELDSIGHT_SAMPLE_STREAMS_DIR;
+}
 
 } // namespace fieldsight::test

@@ -37,6 +37,9 @@ std::string_view colourName(Colour colour);
 /// Accepts the SPEC names and the original's display names ("shadow object", "pink - orange").
 std::optional<Colour> colourFromName(std::string_view name);
 Rgb colourDisplayRgb(Colour colour);
-inline bool isValidColourId(int id) { return id >= 0 && id < kColourCount; }
+inline bool isValidColourId(int id)
+{
+    return id >= 0 && id < kColourCount;
+}
 
 } // namespace fieldsight

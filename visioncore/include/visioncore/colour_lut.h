@@ -28,8 +28,8 @@ public:
         return Colour(m_cells[index(y, cb, cr)]);
     }
     /// Classifies `count` pixels (Y, Cb, Cr bytes) starting at `px`, `stride` bytes apart, into
-    /// `out`. The one lookup loop of the scan lines, the bench floor and its full-frame baseline, so
-    /// their times compare the same machine code.
+    /// `out`. The one lookup loop of the scan lines, the bench floor and its full-frame baseline,
+    /// so their times compare the same machine code.
     void classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int count,
                      std::uint8_t* out) const;
     Colour cell(std::size_t i) const { return Colour(m_cells[i]); }

@@ -13,8 +13,7 @@ struct Error
     std::string message;
 };
 
-template <class T>
-class [[nodiscard]] Result
+template <class T> class [[nodiscard]] Result
 {
 public:
     Result(T value) : m_data(std::move(value)) {}

@@ -25,7 +25,10 @@ struct ColourSegment
     Colour colour;
 
     int length() const { return (x1 - x0) + (y1 - y0); }
-    PointF centre() const { return {(x0 + x1 - (x1 > x0 ? 1 : 0)) * 0.5, (y0 + y1 - (y1 > y0 ? 1 : 0)) * 0.5}; }
+    PointF centre() const
+    {
+        return {(x0 + x1 - (x1 > x0 ? 1 : 0)) * 0.5, (y0 + y1 - (y1 > y0 ? 1 : 0)) * 0.5};
+    }
     /// The last pixel of the run (inclusive end).
     PixelPoint last() const { return {x1 > x0 ? x1 - 1 : x1, y1 > y0 ? y1 - 1 : y1}; }
     PixelPoint first() const { return {x0, y0}; }
@@ -68,7 +71,10 @@ struct Transitions
 {
     std::array<std::vector<ColourSegment>, kTransitionClassCount> of{};
     std::vector<ColourSegment>& operator[](TransitionClass c) { return of[std::size_t(c)]; }
-    const std::vector<ColourSegment>& operator[](TransitionClass c) const { return of[std::size_t(c)]; }
+    const std::vector<ColourSegment>& operator[](TransitionClass c) const
+    {
+        return of[std::size_t(c)];
+    }
     void clear()
     {
         for (auto& v : of)

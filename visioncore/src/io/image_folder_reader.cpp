@@ -14,7 +14,7 @@
 #include <map>
 #include <system_error>
 
-#include "visioncore/atomic_file.h"
+#include "visioncore/io/atomic_file.h"
 #include "visioncore/ycbcr.h"
 
 namespace fieldsight::io {

@@ -1,9 +1,10 @@
 // StreamDataWrapper: the DataWrapper the CLI and tests use, fed frame by frame from a StreamReader.
-#include "visioncore/stream_data_wrapper.h"
+#include "visioncore/io/stream_data_wrapper.h"
 
 namespace fieldsight {
 
-StreamDataWrapper::StreamDataWrapper(std::unique_ptr<StreamReader> reader, ColourLut lut)
+StreamDataWrapper::StreamDataWrapper(std::unique_ptr<StreamReader> reader,
+                                     std::shared_ptr<const ColourLut> lut)
     : m_reader(std::move(reader)), m_lut(std::move(lut))
 {
 }

@@ -1,5 +1,5 @@
 // openStream(): decides what a stream argument names and hands it to the matching reader.
-#include "visioncore/stream_reader.h"
+#include "visioncore/io/stream_reader.h"
 
 #include "io/stream_readers.h"
 

@@ -1,7 +1,7 @@
 // The concrete stream readers behind openStream(): one factory per kind of source.
 #pragma once
 
-#include "visioncore/stream_reader.h"
+#include "visioncore/io/stream_reader.h"
 
 #include <memory>
 #include <string>

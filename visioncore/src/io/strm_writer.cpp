@@ -1,5 +1,5 @@
 // StrmWriter: writes version-1 NUbots image-stream records (Y duplicated into both luma bytes).
-#include "visioncore/stream_reader.h"
+#include "visioncore/io/stream_reader.h"
 
 #include "io/strm_format.h"
 #include "io/stream_readers.h"

@@ -1,5 +1,5 @@
 // THE pipeline, in order. Adding a stage = its folder + one line here.
-#include "visioncore/controller.h"
+#include "visioncore/framework/controller.h"
 
 #include "stages/ball/ball_detector.h"
 #include "stages/field_lines/field_line_detector.h"
@@ -11,25 +11,17 @@
 
 namespace fieldsight {
 
-std::vector<std::unique_ptr<Stage>> makePipelineStages()
+const Pipeline& Pipeline::standard()
 {
-    std::vector<std::unique_ptr<Stage>> stages;
-    stages.push_back(std::make_unique<GreenHorizonDetector>());
-    stages.push_back(std::make_unique<ScanlineClassifier>());
-    stages.push_back(std::make_unique<TransitionFilter>());
-    stages.push_back(std::make_unique<GoalpostDetector>());
-    stages.push_back(std::make_unique<FieldLineDetector>());
-    stages.push_back(std::make_unique<BallDetector>());
-    stages.push_back(std::make_unique<ObstacleDetector>());
-    return stages;
-}
-
-std::vector<std::string> pipelineStageIds()
-{
-    std::vector<std::string> ids;
-    for (const auto& stage : makePipelineStages())
-        ids.push_back(stage->info().id);
-    return ids;
+    static const Pipeline pipeline = Pipeline()
+                                         .add<GreenHorizonDetector>()
+                                         .add<ScanlineClassifier>()
+                                         .add<TransitionFilter>()
+                                         .add<GoalpostDetector>()
+                                         .add<FieldLineDetector>()
+                                         .add<BallDetector>()
+                                         .add<ObstacleDetector>();
+    return pipeline;
 }
 
 } // namespace fieldsight

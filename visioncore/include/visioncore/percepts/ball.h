@@ -1,6 +1,8 @@
 // Ball percept: where a ball was seen in the image.
 #pragma once
 
+#include "visioncore/percepts/percept_set.h"
+
 namespace fieldsight {
 
 struct Ball
@@ -8,6 +10,19 @@ struct Ball
     double x = 0;      ///< px, centre
     double y = 0;      ///< px, centre
     double radius = 0; ///< px
+};
+
+template <> struct PerceptTraits<Ball>
+{
+    static constexpr std::string_view key = "balls";
+    static constexpr std::string_view truth_key = key;
+    static constexpr std::string_view title = "Balls";
+    static constexpr Rgb colour{255, 160, 0};
+    static void toJson(const std::vector<Ball>& balls, PerceptNames names,
+                       nlohmann::ordered_json& value);
+    static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
+                                               const std::string& where, std::vector<Ball>& out);
+    static void draw(const std::vector<Ball>& balls, Rgb colour, double width, DebugDrawing& out);
 };
 
 } // namespace fieldsight

@@ -19,7 +19,10 @@ public:
 
     const std::vector<PointF>& hull() const { return m_hull; }
     /// px, the horizon's y at column x (clamped to the image).
-    int yAt(int x) const { return m_column_y[std::size_t(x < 0 ? 0 : (x >= m_width ? m_width - 1 : x))]; }
+    int yAt(int x) const
+    {
+        return m_column_y[std::size_t(x < 0 ? 0 : (x >= m_width ? m_width - 1 : x))];
+    }
     bool isBelow(int x, int y) const { return y > yAt(x); }
     int width() const { return m_width; }
 

@@ -1,6 +1,8 @@
 // Obstacle percept: an image box of something standing on the field (robots, people).
 #pragma once
 
+#include "visioncore/percepts/percept_set.h"
+
 namespace fieldsight {
 
 struct Obstacle
@@ -9,6 +11,21 @@ struct Obstacle
     int right = 0;  ///< px, inclusive
     int top = 0;    ///< px, inclusive
     int bottom = 0; ///< px, inclusive; where it stands on the field
+};
+
+template <> struct PerceptTraits<Obstacle>
+{
+    static constexpr std::string_view key = "obstacles";
+    static constexpr std::string_view truth_key = key;
+    static constexpr std::string_view title = "Obstacles";
+    static constexpr Rgb colour{0, 255, 255};
+    static void toJson(const std::vector<Obstacle>& obstacles, PerceptNames names,
+                       nlohmann::ordered_json& value);
+    static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
+                                               const std::string& where,
+                                               std::vector<Obstacle>& out);
+    static void draw(const std::vector<Obstacle>& obstacles, Rgb colour, double width,
+                     DebugDrawing& out);
 };
 
 } // namespace fieldsight

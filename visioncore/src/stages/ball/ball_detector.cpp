@@ -7,7 +7,8 @@
 
 #include "stages/common/ransac.h"
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/percepts/ball.h"
 
 #include <Eigen/Dense>
 
@@ -71,7 +72,10 @@ bool fitCircle(const std::vector<PointF>& pts, Circle& out)
     return true;
 }
 
-/// Connected groups of points closer than `link` to some other member, largest first.
+/// Connected groups of points closer than `link` to some other member, largest first. A small
+/// union-find rather than cv::partition: the same O(n^2) pairing, but no conversion of the points,
+/// and groups numbered by first member, so the order of equal-sized groups (which decides which
+/// cluster is tried first) is fixed by the scan order, not by cv::partition's labelling.
 std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double link)
 {
     std::vector<std::size_t> parent(pts.size());
@@ -123,30 +127,18 @@ double colourFraction(const Blackboard& bb, const Circle& c, Colour colour)
 
 } // namespace
 
-BallDetector::BallDetector()
-{
-    addParam(m_min_radius, {"min_radius", "px", "smaller balls are dropped", 2.5, 0, 100});
-    addParam(m_min_orange_fraction,
-             {"min_orange_fraction", "", "ball colour needed inside the fitted circle", 0.2, 0, 1});
-    addParam(m_cluster_distance, {"cluster_distance", "px",
-                                  "edge points closer than this belong together", 10, 1, 100});
-    addParam(m_max_fit_error,
-             {"max_fit_error", "px", "circle RANSAC inlier distance", 1.5, 0.1, 20});
-    addParam(m_iterations, {"iterations", "", "circle RANSAC samples (at most)", 100, 1, 10000});
-    addParam(m_min_edge_support,
-             {"min_edge_support", "",
-              "a circle needs this fraction of the edge points its outline should give the scan "
-              "lines (8 r / spacing)",
-              0.25, 0, 1});
-    addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
-}
-
 const StageInfo& BallDetector::info() const
 {
     static const StageInfo info{
-        "ball",    "Ball",
-        true,      {"horizontal_transitions", "vertical_transitions", "green_horizon"},
-        {"balls"}, {{"ball.edge_points", "Ball edge points"}, {"ball.balls", "Balls"}}};
+        "ball",
+        "Ball",
+        "Clusters the edges of ball-coloured runs below the green horizon and fits a circle to "
+        "them.",
+        true,
+        {"transitions", "scan_lines", "green_horizon", "image", "lut"},
+        {},
+        {&perceptKind<Ball>()},
+        {{"ball.edge_points", "Ball edge points", debug_colour::kCyan}}};
     return info;
 }
 
@@ -184,10 +176,10 @@ void BallDetector::run(Blackboard& bb)
         d->add(pointsShape(edges, debug_colour::kCyan, 2));
 
     const double spacing = bb.horizontalScanSpacing();
-    RansacRng rng{std::uint32_t(m_seed)};
+    RansacRng rng{m_seed.value()};
     RansacParams params;
     params.max_error = m_max_fit_error;
-    params.iterations = int(std::lround(m_iterations));
+    params.iterations = m_iterations;
     const auto accept = [&](const Circle& c) {
         return c.radius >= m_min_radius && c.radius <= std::max(w, h) &&
                colourFraction(bb, c, colour) >= m_min_orange_fraction;
@@ -237,11 +229,8 @@ void BallDetector::run(Blackboard& bb)
             found = true;
         }
     }
-    if (!found)
-        return;
-    bb.balls.push_back({ball.centre.x, ball.centre.y, ball.radius});
-    if (auto* d = bb.debug.layer("ball.balls"))
-        d->add(circleShape(ball.centre, ball.radius, debug_colour::kBall));
+    if (found)
+        bb.percepts.output<Ball>().push_back({ball.centre.x, ball.centre.y, ball.radius});
 }
 
 } // namespace fieldsight

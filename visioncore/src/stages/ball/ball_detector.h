@@ -2,25 +2,45 @@
 // horizon are clustered and a circle is fitted to the largest cluster by RANSAC.
 #pragma once
 
-#include "visioncore/stage.h"
+#include "visioncore/framework/stage.h"
+
+#include <cstdint>
 
 namespace fieldsight {
 
 class BallDetector : public Stage
 {
 public:
-    BallDetector();
     const StageInfo& info() const override;
     void run(Blackboard& bb) override;
 
 private:
-    double m_min_radius = 2.5;          // MIN_BALL_DIAMETER_PIXELS 5 in the original
-    double m_min_orange_fraction = 0.2; // BALL_MIN_PERCENT_ORANGE
-    double m_cluster_distance = 10;
-    double m_max_fit_error = 1.5;
-    double m_iterations = 100;
-    double m_min_edge_support = 0.25;
-    double m_seed = 1;
+    Param<double> m_min_radius{
+        this, 2.5, {"min_radius", "px", 0, 100, 0.5, "Balls with a smaller radius are ignored."}};
+    Param<double> m_min_orange_fraction{
+        this,
+        0.2,
+        {"min_orange_fraction", "", 0, 1, 0.05,
+         "Share of ball-coloured pixels needed inside a fitted circle."}};
+    Param<double> m_cluster_distance{
+        this,
+        10,
+        {"cluster_distance", "px", 1, 100, 1,
+         "Edge points closer than this are taken to belong to the same ball."}};
+    Param<double> m_max_fit_error{
+        this,
+        1.5,
+        {"max_fit_error", "px", 0.1, 20, 0.1, "How far an edge point may lie from the circle."}};
+    Param<int> m_iterations{
+        this, 100, {"iterations", "", 1, 10000, 1, "Circle RANSAC samples, at most."}};
+    Param<double> m_min_edge_support{
+        this,
+        0.25,
+        {"min_edge_support", "", 0, 1, 0.05,
+         "A partly hidden ball needs this share of the edge points its outline would give the "
+         "scan lines."}};
+    Param<std::uint32_t> m_seed{
+        this, 1, {"seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."}};
 };
 
 } // namespace fieldsight

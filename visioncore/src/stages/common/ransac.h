@@ -67,7 +67,10 @@ struct LaneCounts
     }
 #else
     std::uint32_t v[4] = {0, 0, 0, 0};
-    std::size_t total() const { return std::size_t(v[0]) + v[1] + v[2] + v[3]; }
+    std::size_t total() const
+    {
+        return std::size_t(v[0]) + v[1] + v[2] + v[3];
+    }
 #endif
 };
 
@@ -81,12 +84,30 @@ struct Lanes
     Lanes(__m128 x) : v(x) {}
     explicit Lanes(float f) : v(_mm_set1_ps(f)) {}
     explicit Lanes(double d) : Lanes(float(d)) {}
-    static Lanes load(const float* p) { return {_mm_loadu_ps(p)}; }
-    friend Lanes operator+(Lanes a, Lanes b) { return {_mm_add_ps(a.v, b.v)}; }
-    friend Lanes operator-(Lanes a, Lanes b) { return {_mm_sub_ps(a.v, b.v)}; }
-    friend Lanes operator*(Lanes a, Lanes b) { return {_mm_mul_ps(a.v, b.v)}; }
-    friend Lanes absOf(Lanes a) { return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)}; }
-    friend Lanes sqrtOf(Lanes a) { return {_mm_sqrt_ps(a.v)}; }
+    static Lanes load(const float* p)
+    {
+        return {_mm_loadu_ps(p)};
+    }
+    friend Lanes operator+(Lanes a, Lanes b)
+    {
+        return {_mm_add_ps(a.v, b.v)};
+    }
+    friend Lanes operator-(Lanes a, Lanes b)
+    {
+        return {_mm_sub_ps(a.v, b.v)};
+    }
+    friend Lanes operator*(Lanes a, Lanes b)
+    {
+        return {_mm_mul_ps(a.v, b.v)};
+    }
+    friend Lanes absOf(Lanes a)
+    {
+        return {_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)};
+    }
+    friend Lanes sqrtOf(Lanes a)
+    {
+        return {_mm_sqrt_ps(a.v)};
+    }
     /// Lanes where a < b keep `a`, the others become 0; `counts` counts such lanes, per lane.
     friend Lanes keepBelow(Lanes a, Lanes b, LaneCounts& counts)
     {
@@ -106,16 +127,34 @@ struct Lanes
     Lanes(float a, float b, float c, float d) : v{a, b, c, d} {}
     explicit Lanes(float f) : v{f, f, f, f} {}
     explicit Lanes(double d) : Lanes(float(d)) {}
-    static Lanes load(const float* p) { return {p[0], p[1], p[2], p[3]}; }
+    static Lanes load(const float* p)
+    {
+        return {p[0], p[1], p[2], p[3]};
+    }
     template <class Op> static Lanes map(Lanes a, Lanes b, Op op)
     {
         return {op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])};
     }
-    friend Lanes operator+(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x + y; }); }
-    friend Lanes operator-(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x - y; }); }
-    friend Lanes operator*(Lanes a, Lanes b) { return map(a, b, [](float x, float y) { return x * y; }); }
-    friend Lanes absOf(Lanes a) { return map(a, a, [](float x, float) { return std::abs(x); }); }
-    friend Lanes sqrtOf(Lanes a) { return map(a, a, [](float x, float) { return std::sqrt(x); }); }
+    friend Lanes operator+(Lanes a, Lanes b)
+    {
+        return map(a, b, [](float x, float y) { return x + y; });
+    }
+    friend Lanes operator-(Lanes a, Lanes b)
+    {
+        return map(a, b, [](float x, float y) { return x - y; });
+    }
+    friend Lanes operator*(Lanes a, Lanes b)
+    {
+        return map(a, b, [](float x, float y) { return x * y; });
+    }
+    friend Lanes absOf(Lanes a)
+    {
+        return map(a, a, [](float x, float) { return std::abs(x); });
+    }
+    friend Lanes sqrtOf(Lanes a)
+    {
+        return map(a, a, [](float x, float) { return std::sqrt(x); });
+    }
     friend Lanes keepBelow(Lanes a, Lanes b, LaneCounts& counts)
     {
         for (int i = 0; i < 4; ++i) {
@@ -125,14 +164,29 @@ struct Lanes
         }
         return a;
     }
-    float sum() const { return (v[0] + v[1]) + (v[2] + v[3]); }
+    float sum() const
+    {
+        return (v[0] + v[1]) + (v[2] + v[3]);
+    }
 #endif
 };
 
-inline float absOf(float f) { return std::abs(f); }
-inline double absOf(double d) { return std::abs(d); }
-inline float sqrtOf(float f) { return std::sqrt(f); }
-inline double sqrtOf(double d) { return std::sqrt(d); }
+inline float absOf(float f)
+{
+    return std::abs(f);
+}
+inline double absOf(double d)
+{
+    return std::abs(d);
+}
+inline float sqrtOf(float f)
+{
+    return std::sqrt(f);
+}
+inline double sqrtOf(double d)
+{
+    return std::sqrt(d);
+}
 
 /// The points as float columns padded to a multiple of four, for `countInliers`.
 struct PointColumns
@@ -246,7 +300,8 @@ bool ransacFindModel(std::vector<PointF>& points, const RansacParams& params, Ra
             best_count = count;
             best_error = mean;
             if (adaptive)
-                needed = std::min(params.iterations, samplesFor(double(count) / double(n)) + it + 1);
+                needed =
+                    std::min(params.iterations, samplesFor(double(count) / double(n)) + it + 1);
         }
     }
     if (!found)

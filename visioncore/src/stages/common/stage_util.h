@@ -1,7 +1,8 @@
-// Small helpers the stages share: debug colours and shape builders.
+// Small helpers the stages share: the colours of their debug layers (also in their LayerInfo,
+// the legend) and shape builders.
 #pragma once
 
-#include "visioncore/debug_drawing.h"
+#include "visioncore/framework/debug_drawing.h"
 
 #include <vector>
 
@@ -20,7 +21,7 @@ inline constexpr Rgb kWhite{255, 255, 255};
 
 template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)
 {
-    DebugShape shape{ShapeKind::Points, {}, colour, size, false};
+    DebugShape shape{ShapeKind::Points, {}, colour, size, true, 1};
     shape.points.reserve(points.size());
     for (const P& p : points)
         shape.points.push_back({double(p.x), double(p.y)});
@@ -29,18 +30,7 @@ template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colo
 
 inline DebugShape lineShape(PointF a, PointF b, Rgb colour, double width = 1)
 {
-    return DebugShape{ShapeKind::Line, {a, b}, colour, width, false};
-}
-
-inline DebugShape rectShape(double left, double top, double right, double bottom, Rgb colour,
-                            bool filled = false, double width = 1)
-{
-    return DebugShape{ShapeKind::Rect, {{left, top}, {right, bottom}}, colour, width, filled};
-}
-
-inline DebugShape circleShape(PointF centre, double radius, Rgb colour)
-{
-    return DebugShape{ShapeKind::Circle, {centre}, colour, radius, false};
+    return DebugShape{ShapeKind::Line, {a, b}, colour, 1, false, width};
 }
 
 } // namespace fieldsight

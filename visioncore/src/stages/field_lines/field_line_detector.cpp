@@ -6,7 +6,8 @@
 #include "stages/common/line_fit.h"
 #include "stages/common/ransac.h"
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/percepts/field_line.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,36 +61,18 @@ void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::v
 
 } // namespace
 
-FieldLineDetector::FieldLineDetector()
-{
-    addParam(m_min_points, {"min_points", "", "line points needed for a line", 12, 2, 1000});
-    // With locality sampling 15 samples find what the original's 40 independent ones did (B-Human
-    // log: 559 lines in 160 frames vs 558; 10 samples lost 7%), in half the time.
-    addParam(m_iterations, {"iterations", "", "RANSAC samples per line", 15, 1, 10000});
-    addParam(m_max_error, {"max_error", "px", "RANSAC inlier distance", 2.5, 0.5, 50});
-    addParam(m_max_lines, {"max_lines", "", "most lines per frame", 10, 1, 50});
-    addParam(m_merge_angle,
-             {"merge_angle", "rad", "colinear lines within this angle merge", 0.1, 0, 1.6});
-    addParam(m_merge_distance,
-             {"merge_distance", "px", "colinear lines within this distance merge", 6, 0, 100});
-    addParam(m_max_gap, {"max_gap", "px", "largest gap between points of one line", 40, 1, 1000});
-    addParam(m_locality,
-             {"locality", "",
-              "the second RANSAC sample point is drawn within this many points (in scan "
-              "order) of the first; 0 draws it anywhere",
-              8, 0, 1000});
-    addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
-}
-
 const StageInfo& FieldLineDetector::info() const
 {
     static const StageInfo info{
         "field_lines",
         "Field lines",
+        "RANSAC lines through the centres of white runs below the green horizon; colinear lines "
+        "merged.",
         true,
-        {"horizontal_transitions", "vertical_transitions", "green_horizon"},
-        {"field_lines"},
-        {{"field_lines.points", "Line points"}, {"field_lines.lines", "Field lines"}}};
+        {"transitions", "green_horizon"},
+        {},
+        {&perceptKind<FieldLine>()},
+        {{"field_lines.points", "Line points", debug_colour::kWhite}}};
     return info;
 }
 
@@ -105,15 +88,14 @@ void FieldLineDetector::run(Blackboard& bb)
     if (auto* d = bb.debug.layer("field_lines.points"))
         d->add(pointsShape(points, debug_colour::kWhite, 2));
 
-    RansacRng rng{std::uint32_t(m_seed)};
+    RansacRng rng{m_seed.value()};
     RansacParams params;
     params.max_error = m_max_error;
-    params.min_points = int(std::lround(m_min_points));
-    params.iterations = int(std::lround(m_iterations));
-    params.locality = std::size_t(std::lround(m_locality));
+    params.min_points = m_min_points;
+    params.iterations = m_iterations;
+    params.locality = std::size_t(m_locality.value());
     std::vector<Fitted> lines;
-    for (auto& r : ransacFindModels<ImageLine>(std::move(points), params,
-                                               int(std::lround(m_max_lines)), rng)) {
+    for (auto& r : ransacFindModels<ImageLine>(std::move(points), params, m_max_lines, rng)) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
         splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines);
     }
@@ -135,14 +117,12 @@ void FieldLineDetector::run(Blackboard& bb)
             }
     }
 
+    std::vector<FieldLine>& out = bb.percepts.output<FieldLine>();
     for (const Fitted& f : lines) {
         PointF a, b;
         lineExtent(f.line, f.points, a, b);
-        bb.field_lines.push_back({a.x, a.y, b.x, b.y});
+        out.push_back({a.x, a.y, b.x, b.y});
     }
-    if (auto* d = bb.debug.layer("field_lines.lines"))
-        for (const FieldLine& l : bb.field_lines)
-            d->add(lineShape({l.x1, l.y1}, {l.x2, l.y2}, debug_colour::kRed, 2));
 }
 
 } // namespace fieldsight

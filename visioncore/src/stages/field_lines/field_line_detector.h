@@ -2,27 +2,51 @@
 // green horizon, then colinear lines merged.
 #pragma once
 
-#include "visioncore/stage.h"
+#include "visioncore/framework/stage.h"
+
+#include <cstdint>
 
 namespace fieldsight {
 
 class FieldLineDetector : public Stage
 {
 public:
-    FieldLineDetector();
     const StageInfo& info() const override;
     void run(Blackboard& bb) override;
 
 private:
-    double m_min_points = 12;
-    double m_iterations = 15;
-    double m_max_error = 2.5;
-    double m_max_lines = 10;
-    double m_merge_angle = 0.1;
-    double m_merge_distance = 6;
-    double m_max_gap = 40;
-    double m_locality = 8;
-    double m_seed = 1;
+    Param<int> m_min_points{
+        this, 12, {"min_points", "", 2, 1000, 1, "Line points needed for a field line."}};
+    // With locality sampling 15 samples find what 40 independent ones did (B-Human log: 559 lines
+    // in 160 frames against 558; 10 samples lost 7%), in half the time.
+    Param<int> m_iterations{
+        this, 15, {"iterations", "", 1, 10000, 1, "RANSAC samples per line, at most."}};
+    Param<double> m_max_error{
+        this,
+        2.5,
+        {"max_error", "px", 0.5, 50, 0.5, "How far a line point may lie from its line."}};
+    Param<int> m_max_lines{this, 10, {"max_lines", "", 1, 50, 1, "Most lines found per frame."}};
+    Param<double> m_merge_angle{
+        this,
+        0.1,
+        {"merge_angle", "rad", 0, 1.6, 0.01,
+         "Lines within this angle of each other (and close) are merged into one."}};
+    Param<double> m_merge_distance{
+        this,
+        6,
+        {"merge_distance", "px", 0, 100, 0.5,
+         "Lines this close to each other (and parallel) are merged into one."}};
+    Param<double> m_max_gap{
+        this,
+        40,
+        {"max_gap", "px", 1, 1000, 1, "A line is split where its points leave a longer gap."}};
+    Param<int> m_locality{this,
+                          8,
+                          {"locality", "", 0, 1000, 1,
+                           "The second RANSAC point is drawn within this many points (in scan "
+                           "order) of the first; 0 draws it anywhere."}};
+    Param<std::uint32_t> m_seed{
+        this, 1, {"seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."}};
 };
 
 } // namespace fieldsight

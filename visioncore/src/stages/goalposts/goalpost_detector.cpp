@@ -4,7 +4,8 @@
 #include "stages/common/line_fit.h"
 #include "stages/common/ransac.h"
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/percepts/goalpost.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,45 +68,24 @@ double meanEndDistance(const Edge& a, const Edge& b)
 
 } // namespace
 
-GoalpostDetector::GoalpostDetector()
-{
-    addParam(m_min_points, {"min_points", "", "edge points needed for an edge line", 6, 2, 100});
-    addParam(m_iterations, {"iterations", "", "RANSAC samples per line", 100, 1, 10000});
-    addParam(m_max_error, {"max_error", "px", "RANSAC inlier distance", 5, 0.5, 50});
-    addParam(m_max_lines, {"max_lines", "", "edge lines per side", 3, 1, 10});
-    addParam(m_matching_tolerance,
-             {"matching_tolerance", "", "pairing tolerance for edge angle, length and count", 0.2,
-              0, 1});
-    addParam(m_min_support_ratio,
-             {"min_support_ratio", "",
-              "the shorter edge of a post must have this fraction of the longer one's length and "
-              "points (the original used 1 - matching_tolerance, which loses posts half hidden by "
-              "a robot)",
-              0.3, 0, 1});
-    addParam(m_min_aspect, {"min_aspect", "", "minimum height / width of a post", 1.5, 0, 20});
-    addParam(m_min_width, {"min_width", "px", "narrower posts are dropped", 3, 0, 100});
-    addParam(m_min_separation,
-             {"min_separation", "px", "two posts further apart are labelled left and right", 40, 0,
-              1000});
-    addParam(m_merge_widths,
-             {"merge_widths", "", "posts closer than this many widths are merged", 1.5, 0, 10});
-    addParam(m_seed, {"seed", "", "RANSAC seed (every frame starts from it)", 1, 0, 4294967295.0});
-}
-
 const StageInfo& GoalpostDetector::info() const
 {
     static const StageInfo info{
         "goalposts",
         "Goalposts",
+        "RANSAC lines through the left and right edges of goal-coloured runs, paired into posts.",
         true,
-        {"horizontal_transitions", "vertical_transitions", "kinematic_horizon"},
-        {"goalposts"},
-        {{"goalposts.edge_lines", "Goal edge lines"}, {"goalposts.posts", "Goalposts"}}};
+        {"transitions", "scan_lines", "kinematic_horizon"},
+        {},
+        {&perceptKind<Goalpost>()},
+        {{"goalposts.edge_lines", "Post edge lines (left cyan, right magenta)",
+          debug_colour::kCyan}}};
     return info;
 }
 
 void GoalpostDetector::run(Blackboard& bb)
 {
+    std::vector<Goalpost>& goalposts = bb.percepts.output<Goalpost>();
     const auto& transitions = bb.horizontal_transitions[TransitionClass::Goal];
     if (transitions.empty())
         return;
@@ -121,12 +101,12 @@ void GoalpostDetector::run(Blackboard& bb)
             rights.push_back({s.x1 - 0.5, double(s.y0)});
     }
     const int hspacing = bb.horizontalScanSpacing();
-    RansacRng rng{std::uint32_t(m_seed)};
+    RansacRng rng{m_seed.value()};
     RansacParams params;
     params.max_error = m_max_error;
-    params.min_points = int(std::lround(m_min_points));
-    params.iterations = int(std::lround(m_iterations));
-    const int max_lines = int(std::lround(m_max_lines));
+    params.min_points = m_min_points;
+    params.iterations = m_iterations;
+    const int max_lines = m_max_lines;
     std::vector<Edge> starts = fitEdges(lefts, params, max_lines, rng);
     std::vector<Edge> ends = fitEdges(rights, params, max_lines, rng);
 
@@ -284,28 +264,20 @@ void GoalpostDetector::run(Blackboard& bb)
         // Above the kinematic horizon cannot be a post's foot.
         if (g.base_y < bb.kinematic_horizon.yAt(g.base_x, w))
             continue;
-        bb.goalposts.push_back(g);
+        goalposts.push_back(g);
     }
 
     // Two posts far enough apart are the left and right post of one goal. The original dropped
     // both when they were closer; a distant goal's posts are, so we keep them as unknown.
-    if (bb.goalposts.size() == 2) {
-        auto& a = bb.goalposts[0];
-        auto& b = bb.goalposts[1];
+    if (goalposts.size() == 2) {
+        auto& a = goalposts[0];
+        auto& b = goalposts[1];
         if (std::max(a.left, b.left) - std::min(a.right, b.right) >= m_min_separation) {
             const bool a_left = a.base_x < b.base_x;
             a.side = a_left ? GoalpostSide::Left : GoalpostSide::Right;
             b.side = a_left ? GoalpostSide::Right : GoalpostSide::Left;
         }
     }
-
-    if (auto* d = bb.debug.layer("goalposts.posts"))
-        for (const Goalpost& g : bb.goalposts) {
-            d->add(rectShape(g.left, g.top, g.right, g.bottom, debug_colour::kYellow,
-                             g.side != GoalpostSide::Unknown, 2));
-            d->add(DebugShape{
-                ShapeKind::Points, {{g.base_x, g.base_y}}, debug_colour::kBlue, 5, false});
-        }
 }
 
 } // namespace fieldsight

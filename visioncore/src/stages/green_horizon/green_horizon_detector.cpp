@@ -2,7 +2,8 @@
 #include "stages/green_horizon/green_horizon_detector.h"
 
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/percepts/field_boundary.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,28 +49,19 @@ void dropEndDips(std::vector<PointF>& hull, const std::vector<PixelPoint>& point
 
 } // namespace
 
-GreenHorizonDetector::GreenHorizonDetector()
-{
-    addParam(m_scan_spacing, {"scan_spacing", "px", "distance between scanned columns", 11, 1, 64});
-    addParam(m_min_green_pixels,
-             {"min_green_pixels", "px", "consecutive green pixels that start the field", 5, 1, 50});
-    addParam(m_max_gap, {"max_gap", "px", "non-green pixels a green run may bridge", 3, 0, 20});
-    addParam(m_upper_threshold_mult,
-             {"upper_threshold_mult", "sigma",
-              "drop scan points more than this many std devs above the mean", 2.5, 0, 10});
-}
-
 const StageInfo& GreenHorizonDetector::info() const
 {
-    static const StageInfo info{"green_horizon",
-                                "Green horizon",
-                                false,
-                                {"image", "lut", "kinematic_horizon"},
-                                {"green_horizon", "gh_scan_points", "gh_thrown_points"},
-                                {{"green_horizon.kinematic_horizon", "Kinematic horizon"},
-                                 {"green_horizon.scan_points", "Green horizon scan points"},
-                                 {"green_horizon.thrown_points", "Green horizon thrown points"},
-                                 {"green_horizon.hull", "Green horizon"}}};
+    static const StageInfo info{
+        "green_horizon",
+        "Green horizon",
+        "Where the field starts: the upper hull of the first green in evenly spaced columns.",
+        false,
+        {"image", "lut", "kinematic_horizon"},
+        {"green_horizon"},
+        {&perceptKind<FieldBoundary>()},
+        {{"green_horizon.kinematic_horizon", "Kinematic horizon", debug_colour::kBlue},
+         {"green_horizon.scan_points", "Scan points", debug_colour::kMagenta},
+         {"green_horizon.thrown_points", "Thrown points", debug_colour::kRed}}};
     return info;
 }
 
@@ -77,9 +69,9 @@ void GreenHorizonDetector::run(Blackboard& bb)
 {
     const int w = bb.width();
     const int h = bb.height();
-    const int spacing = std::max(1, int(std::lround(m_scan_spacing)));
-    const int min_green = std::max(1, int(std::lround(m_min_green_pixels)));
-    const int max_gap = std::max(0, int(std::lround(m_max_gap)));
+    const int spacing = m_scan_spacing;
+    const int min_green = m_min_green_pixels;
+    const int max_gap = m_max_gap;
 
     auto& points = bb.gh_scan_points;
     for (int x = 0; x < w; x += spacing) {
@@ -117,6 +109,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         // No field in view: the horizon is the bottom row (original behaviour; unlike the original
         // the scan points above are this frame's, never stale ones).
         bb.green_horizon.set({}, w, h);
+        bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
         return;
     }
 
@@ -139,7 +132,10 @@ void GreenHorizonDetector::run(Blackboard& bb)
             continue;
         }
         // Upper convex hull by Andrew's monotone chain: the envelope above every point, so dips
-        // where a robot hides the field edge are bridged. Points arrive sorted by x.
+        // where a robot hides the field edge are bridged. Written here rather than with
+        // cv::convexHull because the points already arrive sorted by x and only the upper chain
+        // is wanted: one pass, no allocation, no conversion to cv::Point and back, and collinear
+        // points dropped exactly as below (cv::convexHull would return the whole hull, to be cut).
         const PointF q{double(p.x), double(p.y)};
         while (hull.size() >= 2) {
             const PointF& o = hull[hull.size() - 2];
@@ -153,12 +149,10 @@ void GreenHorizonDetector::run(Blackboard& bb)
     }
     dropEndDips(hull, points, min_green, 2.0 * spacing);
     bb.green_horizon.set(std::move(hull), w, h);
+    bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 
     if (auto* d = bb.debug.layer("green_horizon.thrown_points"))
         d->add(pointsShape(bb.gh_thrown_points, debug_colour::kRed, 3));
-    if (auto* d = bb.debug.layer("green_horizon.hull"))
-        d->add(DebugShape{ShapeKind::Polyline, bb.green_horizon.hull(), debug_colour::kMagenta, 2,
-                          false});
 }
 
 } // namespace fieldsight

@@ -2,7 +2,9 @@
 #include "stages/obstacles/obstacle_detector.h"
 
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/percepts/goalpost.h"
+#include "visioncore/percepts/obstacle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,51 +44,26 @@ struct Group
 
 } // namespace
 
-ObstacleDetector::ObstacleDetector()
-{
-    addParam(m_min_run,
-             {"min_run", "px", "shortest run of non-field colour on a scan line", 6, 1, 240});
-    addParam(m_min_columns, {"min_columns", "", "scan lines an obstacle must span", 2, 1, 100});
-    addParam(m_max_column_gap,
-             {"max_column_gap", "", "scan lines an obstacle may skip (a white stripe)", 1, 0, 10});
-    addParam(m_min_distance_from_horizon,
-             {"min_distance_from_horizon", "px",
-              "the run must reach this far below the green horizon", 0, 0, 100});
-    addParam(m_min_height_ratio,
-             {"min_height_ratio", "",
-              "a run must be this tall (less min_run, for blur), as a fraction of its foot's "
-              "distance below the green horizon",
-              0.3, 0, 2});
-    addParam(m_min_edge_dip,
-             {"min_edge_dip", "px",
-              "a scan starting with this many more non-field pixels than the median column is "
-              "covered at the field edge (0: off)",
-              4, 0, 50});
-    addParam(m_max_width_ratio,
-             {"max_width_ratio", "",
-              "neighbouring pieces merge while the union is at most this wide for its height", 0.75,
-              0, 5});
-    addParam(m_max_foot_jump,
-             {"max_foot_jump", "px",
-              "neighbouring scan lines whose feet differ more belong to different obstacles", 4, 0,
-              240});
-}
-
 const StageInfo& ObstacleDetector::info() const
 {
     static const StageInfo info{
         "obstacles",
         "Obstacles",
+        "Robots and people standing on the field: runs of non-field colour on the vertical scan "
+        "lines, grouped across neighbouring lines.",
         true,
-        {"vertical_filtered", "horizontal_filtered", "green_horizon", "goalposts"},
-        {"obstacles", "obstacle_points"},
-        {{"obstacles.points", "Obstacle points"}, {"obstacles.obstacles", "Obstacles"}}};
+        {"filtered_segments", "transitions", "scan_lines", "green_horizon", "goalposts"},
+        {"obstacle_points"},
+        {&perceptKind<Obstacle>()},
+        {{"obstacles.points", "Obstacle feet", debug_colour::kCyan}}};
     return info;
 }
 
 void ObstacleDetector::run(Blackboard& bb)
 {
-    const int min_run = int(std::lround(m_min_run));
+    std::vector<Obstacle>& obstacles = bb.percepts.output<Obstacle>();
+    const std::vector<Goalpost>& goalposts = bb.percepts.list<Goalpost>();
+    const int min_run = m_min_run;
     const int h = bb.height();
     const auto& region = bb.vertical_filtered;
     if (region.size() == 0)
@@ -113,7 +90,7 @@ void ObstacleDetector::run(Blackboard& bb)
                      sorted_depth.begin() + std::ptrdiff_t(sorted_depth.size() / 2),
                      sorted_depth.end());
     const int usual_depth = sorted_depth[sorted_depth.size() / 2];
-    const int min_edge_dip = int(std::lround(m_min_edge_dip));
+    const int min_edge_dip = m_min_edge_dip;
 
     for (std::size_t i = 0; i < region.size(); ++i) {
         const Scan& scan = region[i];
@@ -155,7 +132,7 @@ void ObstacleDetector::run(Blackboard& bb)
         // A goalpost covers the field edge too.
         const bool at_post =
             !scan.empty() &&
-            std::any_of(bb.goalposts.begin(), bb.goalposts.end(), [&](const Goalpost& g) {
+            std::any_of(goalposts.begin(), goalposts.end(), [&](const Goalpost& g) {
                 return scan[0].x0 >= g.left - spacing && scan[0].x0 <= g.right + spacing;
             });
         if (!have && !at_post && !scan.empty() && min_edge_dip > 0 &&
@@ -172,7 +149,7 @@ void ObstacleDetector::run(Blackboard& bb)
         d->add(pointsShape(bb.obstacle_points, debug_colour::kCyan, 3));
 
     // Group runs on neighbouring scan lines that overlap vertically.
-    const int max_step = spacing * (1 + int(std::lround(m_max_column_gap)));
+    const int max_step = spacing * (1 + m_max_column_gap);
     std::vector<Group> groups;
     for (const Run& r : runs) {
         if (!groups.empty()) {
@@ -232,7 +209,7 @@ void ObstacleDetector::run(Blackboard& bb)
     // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
     // near its foot (it ends somewhere between two scan lines).
     for (const Group& g : groups) {
-        if (g.columns < int(std::lround(m_min_columns)))
+        if (g.columns < m_min_columns)
             continue;
         Obstacle o{std::max(0, g.first_x - spacing / 2),
                    std::min(bb.width() - 1, g.last_x + spacing / 2), g.top,
@@ -248,11 +225,8 @@ void ObstacleDetector::run(Blackboard& bb)
                 o.right = std::max(o.right, std::min(s.x1 - 1, g.last_x + spacing));
             }
         }
-        bb.obstacles.push_back(o);
+        obstacles.push_back(o);
     }
-    if (auto* d = bb.debug.layer("obstacles.obstacles"))
-        for (const Obstacle& o : bb.obstacles)
-            d->add(rectShape(o.left, o.top, o.right, o.bottom, debug_colour::kWhite, false, 2));
 }
 
 } // namespace fieldsight

@@ -4,26 +4,55 @@
 // the horizon; a robot in front of open field is found too (the original missed those).
 #pragma once
 
-#include "visioncore/stage.h"
+#include "visioncore/framework/stage.h"
 
 namespace fieldsight {
 
 class ObstacleDetector : public Stage
 {
 public:
-    ObstacleDetector();
     const StageInfo& info() const override;
     void run(Blackboard& bb) override;
 
 private:
-    double m_min_run = 6;
-    double m_min_columns = 2;
-    double m_max_column_gap = 1;
-    double m_min_distance_from_horizon = 0;
-    double m_min_height_ratio = 0.3;
-    double m_max_foot_jump = 4;
-    double m_max_width_ratio = 0.75;
-    double m_min_edge_dip = 4;
+    Param<int> m_min_run{this,
+                         6,
+                         {"min_run", "px", 1, 240, 1,
+                          "Shortest run of non-field colour on a vertical scan line that can be "
+                          "an obstacle."}};
+    Param<int> m_min_columns{
+        this, 2, {"min_columns", "", 1, 100, 1, "Scan lines an obstacle must span."}};
+    Param<int> m_max_column_gap{
+        this,
+        1,
+        {"max_column_gap", "", 0, 10, 1, "Scan lines an obstacle may skip (a white stripe)."}};
+    Param<int> m_min_distance_from_horizon{
+        this,
+        0,
+        {"min_distance_from_horizon", "px", 0, 100, 1,
+         "An obstacle's foot must be at least this far below the green horizon."}};
+    Param<double> m_min_height_ratio{
+        this,
+        0.3,
+        {"min_height_ratio", "", 0, 2, 0.05,
+         "A run must be this tall, as a share of how far its foot is below the green horizon "
+         "(things lying flat are not obstacles)."}};
+    Param<int> m_max_foot_jump{
+        this,
+        4,
+        {"max_foot_jump", "px", 0, 240, 1,
+         "Neighbouring scan lines whose feet differ by more belong to different obstacles."}};
+    Param<double> m_max_width_ratio{
+        this,
+        0.75,
+        {"max_width_ratio", "", 0, 5, 0.05,
+         "Pieces of one robot merge while the whole is at most this wide for its height."}};
+    Param<int> m_min_edge_dip{
+        this,
+        4,
+        {"min_edge_dip", "px", 0, 50, 1,
+         "A column starting this many more non-field pixels than the usual one is covered by "
+         "something at the field edge (0: off)."}};
 };
 
 } // namespace fieldsight

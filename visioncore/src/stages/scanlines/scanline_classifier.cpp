@@ -2,7 +2,7 @@
 #include "stages/scanlines/scanline_classifier.h"
 
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
 
 #include <algorithm>
 #if defined(__SSE2__)
@@ -63,25 +63,20 @@ void classifyLine(const ColourLut& lut, const std::uint8_t* px, std::ptrdiff_t s
 
 } // namespace
 
-ScanlineClassifier::ScanlineClassifier()
-{
-    addParam(m_horizontal_spacing,
-             {"horizontal_spacing", "px", "rows between horizontal scan lines", 4, 1, 64});
-    addParam(m_vertical_spacing,
-             {"vertical_spacing", "px", "columns between vertical scan lines", 4, 1, 64});
-}
-
 const StageInfo& ScanlineClassifier::info() const
 {
     static const StageInfo info{
         "scanlines",
         "Scanline classifier",
+        "Classifies the pixels along horizontal and vertical scan lines through the LUT into runs "
+        "of one colour (segments).",
         false,
         {"image", "lut", "green_horizon"},
-        {"horizontal_scan_ys", "vertical_scan_starts", "horizontal_segments", "vertical_segments"},
-        {{"scanlines.horizontal", "Horizontal scan lines"},
-         {"scanlines.vertical", "Vertical scan lines"},
-         {"scanlines.segments", "Segments"}}};
+        {"scan_lines", "segments"},
+        {},
+        {{"scanlines.horizontal", "Horizontal scan lines", debug_colour::kGrey},
+         {"scanlines.vertical", "Vertical scan lines", debug_colour::kGrey},
+         {"scanlines.segments", "Segments", {}, true}}};
     return info;
 }
 
@@ -91,8 +86,8 @@ void ScanlineClassifier::run(Blackboard& bb)
     const int w = image.cols;
     const int h = image.rows;
     const ColourLut& lut = bb.lut();
-    const int hs = std::max(1, int(std::lround(m_horizontal_spacing)));
-    const int vs = std::max(1, int(std::lround(m_vertical_spacing)));
+    const int hs = m_horizontal_spacing;
+    const int vs = m_vertical_spacing;
 
     // Horizontal lines cover the whole image (goalposts rise above the green horizon), from the
     // bottom row up, as in the original.

@@ -2,7 +2,7 @@
 // the whole image and vertical lines from the green horizon down.
 #pragma once
 
-#include "visioncore/stage.h"
+#include "visioncore/framework/stage.h"
 
 #include <cstdint>
 #include <vector>
@@ -19,13 +19,14 @@ struct ScanlineBuffers
 class ScanlineClassifier : public Stage
 {
 public:
-    ScanlineClassifier();
     const StageInfo& info() const override;
     void run(Blackboard& bb) override;
 
 private:
-    double m_horizontal_spacing = 4;
-    double m_vertical_spacing = 4;
+    Param<int> m_horizontal_spacing{
+        this, 4, {"horizontal_spacing", "px", 1, 64, 1, "Rows between horizontal scan lines."}};
+    Param<int> m_vertical_spacing{
+        this, 4, {"vertical_spacing", "px", 1, 64, 1, "Columns between vertical scan lines."}};
     ScanlineBuffers m_buffers;
 };
 

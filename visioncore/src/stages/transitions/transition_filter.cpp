@@ -2,7 +2,7 @@
 #include "stages/transitions/transition_filter.h"
 
 #include "stages/common/stage_util.h"
-#include "visioncore/blackboard.h"
+#include "visioncore/framework/blackboard.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +53,10 @@ bool colourFits(const Rule::Part& part, Colour c)
            std::find(part.colours.begin(), part.colours.end(), c) != part.colours.end();
 }
 
-int upper(int max) { return max < 0 ? std::numeric_limits<int>::max() : max; }
+int upper(int max)
+{
+    return max < 0 ? std::numeric_limits<int>::max() : max;
+}
 
 /// The default rules compiled per colour triple, so the hot loop does one table lookup per segment
 /// and a few branch-free length comparisons (noise makes every data-dependent branch a coin toss).
@@ -77,8 +80,12 @@ const RuleTable& ruleTable()
                             // Lengths stay in scan order: backward, "before" is the next segment.
                             const Rule::Part& first = forward ? r.before : r.after;
                             const Rule::Part& last = forward ? r.after : r.before;
-                            OrientedRule o{first.min, upper(first.max), r.middle.min,
-                                           upper(r.middle.max), last.min, upper(last.max),
+                            OrientedRule o{first.min,
+                                           upper(first.max),
+                                           r.middle.min,
+                                           upper(r.middle.max),
+                                           last.min,
+                                           upper(last.max),
                                            r.method == Rule::Method::Before ? nb : na,
                                            r.method == Rule::Method::Split};
                             t.any_split = t.any_split || o.split;
@@ -98,8 +105,8 @@ const RuleTable& ruleTable()
 [[gnu::always_inline]] inline bool lengthsFit(const OrientedRule& r, int lb, int lm, int la)
 {
     // & rather than &&: no branches.
-    return (lb >= r.min_b) & (lb <= r.max_b) & (lm >= r.min_m) & (lm <= r.max_m) &
-           (la >= r.min_a) & (la <= r.max_a);
+    return (lb >= r.min_b) & (lb <= r.max_b) & (lm >= r.min_m) & (lm <= r.max_m) & (la >= r.min_a) &
+           (la <= r.max_a);
 }
 
 } // namespace
@@ -145,34 +152,19 @@ const std::vector<ReplacementRule>& defaultReplacementRules()
     return rules;
 }
 
-TransitionFilter::TransitionFilter()
-{
-    addParam(m_goal_colour, {"goal_colour", "class id",
-                             "colour class of the goalposts (8 yellow; 9 blue for B-Human logs)",
-                             double(Colour::Yellow), 0, kColourCount - 1});
-    addParam(m_ball_colour, {"ball_colour", "class id", "colour class of the ball",
-                             double(Colour::Orange), 0, kColourCount - 1});
-    addParam(m_min_ball_length, {"min_ball_length", "px", "shortest ball segment", 3, 1, 100});
-    addParam(m_min_goal_length,
-             {"min_goal_length", "px",
-              "shortest goal segment (3 in the original; a far post is 2 px wide)", 2, 1, 100});
-    addParam(m_min_line_length, {"min_line_length", "px", "shortest line segment", 2, 1, 100});
-    addParam(m_min_team_length,
-             {"min_team_length", "px", "shortest team marker segment", 2, 1, 100});
-    addParam(m_max_team_length,
-             {"max_team_length", "px", "longest team marker segment", 50, 1, 1000});
-}
-
 const StageInfo& TransitionFilter::info() const
 {
-    static const StageInfo info{"transitions",
-                                "Transition filter",
-                                false,
-                                {"horizontal_segments", "vertical_segments"},
-                                {"horizontal_filtered", "vertical_filtered",
-                                 "horizontal_transitions", "vertical_transitions"},
-                                {{"transitions.filtered_segments", "Filtered segments"},
-                                 {"transitions.transitions", "Transitions"}}};
+    static const StageInfo info{
+        "transitions",
+        "Transition filter",
+        "Replacement rules clean noise out of the segments; segments of the object colours become "
+        "that object's transitions.",
+        false,
+        {"segments"},
+        {"filtered_segments", "transitions"},
+        {},
+        {{"transitions.filtered_segments", "Filtered segments", {}, true},
+         {"transitions.transitions", "Transitions", debug_colour::kCyan}}};
     return info;
 }
 
@@ -272,18 +264,16 @@ void TransitionFilter::matchTransitions(const SegmentedRegion& region, Transitio
         int count = 0;
     };
     std::array<Rules, kColourCount> by_colour{};
-    const auto add = [&](double colour, TransitionClass cls, double min, double max) {
-        const int c = int(std::lround(colour));
-        if (isValidColourId(c)) {
-            Rules& r = by_colour[std::size_t(c)];
-            r.rules[std::size_t(r.count++)] = {cls, int(std::lround(min)), int(std::lround(max))};
-        }
+    const auto add = [&](Colour colour, TransitionClass cls, int min, int max) {
+        Rules& r = by_colour[std::size_t(colour)];
+        r.rules[std::size_t(r.count++)] = {cls, min, max};
     };
-    add(m_ball_colour, TransitionClass::Ball, m_min_ball_length, 1e6);
-    add(m_goal_colour, TransitionClass::Goal, m_min_goal_length, 1e6);
-    add(double(Colour::White), TransitionClass::Line, m_min_line_length, 1e6);
-    add(double(Colour::Blue), TransitionClass::TeamCyan, m_min_team_length, m_max_team_length);
-    add(double(Colour::Pink), TransitionClass::TeamMagenta, m_min_team_length, m_max_team_length);
+    constexpr int kUnbounded = 1000000;
+    add(m_ball_colour, TransitionClass::Ball, m_min_ball_length, kUnbounded);
+    add(m_goal_colour, TransitionClass::Goal, m_min_goal_length, kUnbounded);
+    add(Colour::White, TransitionClass::Line, m_min_line_length, kUnbounded);
+    add(Colour::Blue, TransitionClass::TeamCyan, m_min_team_length, m_max_team_length);
+    add(Colour::Pink, TransitionClass::TeamMagenta, m_min_team_length, m_max_team_length);
 
     for (std::size_t i = 0; i < region.size(); ++i)
         for (const ColourSegment& s :

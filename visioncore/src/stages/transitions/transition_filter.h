@@ -4,7 +4,7 @@
 
 #include "visioncore/colour.h"
 #include "visioncore/segments.h"
-#include "visioncore/stage.h"
+#include "visioncore/framework/stage.h"
 
 #include <vector>
 
@@ -33,7 +33,6 @@ const std::vector<ReplacementRule>& defaultReplacementRules();
 class TransitionFilter : public Stage
 {
 public:
-    TransitionFilter();
     const StageInfo& info() const override;
     void run(Blackboard& bb) override;
 
@@ -41,13 +40,25 @@ private:
     void filterRegion(const SegmentedRegion& in, SegmentedRegion& out) const;
     void matchTransitions(const SegmentedRegion& region, Transitions& out) const;
 
-    double m_goal_colour = double(Colour::Yellow);
-    double m_ball_colour = double(Colour::Orange);
-    double m_min_ball_length = 3;
-    double m_min_goal_length = 2;
-    double m_min_line_length = 2;
-    double m_min_team_length = 2;
-    double m_max_team_length = 50;
+    Param<Colour> m_goal_colour{
+        this,
+        Colour::Yellow,
+        {"goal_colour", "", 0, 0, 1, "Colour class of the goalposts (blue for B-Human logs)."}};
+    Param<Colour> m_ball_colour{
+        this, Colour::Orange, {"ball_colour", "", 0, 0, 1, "Colour class of the ball."}};
+    Param<int> m_min_ball_length{
+        this, 3, {"min_ball_length", "px", 1, 100, 1, "Shorter ball-coloured runs are ignored."}};
+    Param<int> m_min_goal_length{
+        this,
+        2,
+        {"min_goal_length", "px", 1, 100, 1,
+         "Shorter goal-coloured runs are ignored (a far post is 2 px wide)."}};
+    Param<int> m_min_line_length{
+        this, 2, {"min_line_length", "px", 1, 100, 1, "Shorter white runs are ignored."}};
+    Param<int> m_min_team_length{
+        this, 2, {"min_team_length", "px", 1, 100, 1, "Shorter team-marker runs are ignored."}};
+    Param<int> m_max_team_length{
+        this, 50, {"max_team_length", "px", 1, 1000, 1, "Longer team-marker runs are ignored."}};
 };
 
 } // namespace fieldsight

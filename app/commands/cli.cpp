@@ -1,0 +1,154 @@
+// The pieces every headless command shares.
+#include "commands/cli.h"
+
+#include "visioncore/io/atomic_file.h"
+
+namespace fieldsight::cli {
+
+double rounded(double value, int decimals)
+{
+    static constexpr double kScales[] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8};
+    if (!std::isfinite(value) || decimals < 0 || decimals > 8)
+        return value;
+    const double scale = kScales[decimals];
+    return std::round(value * scale) / scale;
+}
+
+void printError(std::ostream& err, std::string_view message)
+{
+    std::string line = "fieldsight: ";
+    for (char c : message)
+        line += (c == '\n' || c == '\r') ? ' ' : c;
+    err << line << '\n' << std::flush;
+}
+
+int badInput(const Context& ctx, std::string_view message)
+{
+    printError(ctx.err, message);
+    return kExitBadInput;
+}
+
+int badInput(const Context& ctx, const QString& message)
+{
+    return badInput(ctx, message.toStdString());
+}
+
+Status writeOutput(const std::string& path, const std::string& text, std::ostream& out)
+{
+    if (path == "-") {
+        out << text << std::flush;
+        if (!out)
+            return Error{"standard output: write failed"};
+        return {};
+    }
+    return writeFileAtomically(path, text);
+}
+
+int finishReport(const Context& ctx, const std::string& table, const std::string& json_path,
+                 const std::string& json)
+{
+    ctx.out << table << std::flush;
+    if (!json_path.empty()) {
+        if (Status s = writeOutput(json_path, json, ctx.out); !s) {
+            printError(ctx.err, s.error().message);
+            return kExitFailure;
+        }
+    }
+    return kExitOk;
+}
+
+std::optional<int> parseCommand(QCommandLineParser& parser, const QString& command,
+                                const QStringList& args, int positional_min, int positional_max,
+                                const Context& ctx)
+{
+    parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    const QCommandLineOption help({"h", "help"}, "Show this help.");
+    parser.addOption(help);
+    if (!parser.parse(args))
+        return badInput(ctx, (command + ": " + parser.errorText()).toStdString());
+    if (parser.isSet(help)) {
+        ctx.out << parser.helpText().toStdString();
+        return kExitOk;
+    }
+    const qsizetype count = parser.positionalArguments().size();
+    if (count < positional_min)
+        return badInput(ctx,
+                        (command + ": missing argument; try 'fieldsight " + command + " --help'")
+                            .toStdString());
+    if (count > positional_max)
+        return badInput(ctx, (command + ": unexpected argument '" +
+                              parser.positionalArguments().value(positional_max) + "'")
+                                 .toStdString());
+    return std::nullopt;
+}
+
+std::optional<long long> intOption(const QCommandLineParser& parser, const QString& name,
+                                   long long fallback, long long min, QString& error)
+{
+    if (!parser.isSet(name))
+        return fallback;
+    bool ok = false;
+    const long long value = parser.value(name).toLongLong(&ok);
+    if (!ok || value < min) {
+        error = "--" + name + ": expected a whole number >= " + QString::number(min) + ", got '" +
+                parser.value(name) + "'";
+        return std::nullopt;
+    }
+    return value;
+}
+
+QCommandLineOption lutOption()
+{
+    return {"lut", "Colour lookup table (default: the stream's default.lut).", "FILE"};
+}
+
+QCommandLineOption setOption()
+{
+    return {"set", "Set a stage parameter, e.g. transitions.goal_colour=9 (repeatable).",
+            "STAGE.PARAM=VALUE"};
+}
+
+QCommandLineOption paramsOption()
+{
+    return {"params", "Stage parameters from a fieldsight-params/1 file (--set wins).", "FILE"};
+}
+
+QCommandLineOption threadsOption(const QString& fallback)
+{
+    return {"threads",
+            "Worker threads, each with its own vision core (0: one per core; default " + fallback +
+                "; at most one per core).",
+            "N"};
+}
+
+Result<ParamSet> paramsFrom(const QCommandLineParser& parser)
+{
+    ParamSet params;
+    if (parser.isSet("params")) {
+        auto loaded = ParamSet::load(parser.value("params").toStdString());
+        if (!loaded)
+            return loaded.error();
+        params = std::move(loaded).value();
+    }
+    for (const QString& setting : parser.values("set"))
+        if (Status s = params.parseSetting(setting.toStdString()); !s)
+            return s.error();
+    return params;
+}
+
+Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
+                              const Context& ctx)
+{
+    auto params = paramsFrom(parser);
+    if (!params)
+        return params.error();
+    auto input = openStreamInput(stream, parser.value("lut").toStdString(), ctx.pipeline);
+    if (!input)
+        return input.error();
+    input.value().params = std::move(params).value();
+    if (Status s = input.value().checkSettings(); !s)
+        return s.error();
+    return input;
+}
+
+} // namespace fieldsight::cli

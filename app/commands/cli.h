@@ -1,0 +1,78 @@
+// What the headless commands share: exit codes (SPEC §5), one-line errors, writing outputs,
+// parsing a command's own arguments, and the options several commands take.
+#pragma once
+
+#include "visioncore/framework/controller.h"
+#include "visioncore/result.h"
+#include "visioncore/services/stream_runner.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QString>
+#include <QStringList>
+
+#include <cmath>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+namespace fieldsight::cli {
+
+/// Exit statuses of the commands (SPEC §5).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  ///< failure while running
+inline constexpr int kExitBadInput = 2; ///< bad usage or bad input
+
+/// Where a command runs: the pipeline it drives and where it prints.
+struct Context
+{
+    const Pipeline& pipeline;
+    std::ostream& out;
+    std::ostream& err;
+};
+
+/// Rounds to `decimals` places so JSON shows 0.1234 rather than 0.12340000000000001.
+double rounded(double value, int decimals);
+
+/// Prints "fieldsight: <message>" as exactly one line.
+void printError(std::ostream& err, std::string_view message);
+/// printError, then the exit status for bad input.
+int badInput(const Context& ctx, std::string_view message);
+int badInput(const Context& ctx, const QString& message);
+inline int badInput(const Context& ctx, const char* message)
+{
+    return badInput(ctx, std::string_view(message));
+}
+
+/// Writes `text` to `path` atomically, or to `out` when `path` is "-".
+Status writeOutput(const std::string& path, const std::string& text, std::ostream& out);
+
+/// The end of a reporting command: prints `table` to `out`, then writes `json` to `json_path`
+/// when one was given. Returns the command's exit code.
+int finishReport(const Context& ctx, const std::string& table, const std::string& json_path,
+                 const std::string& json);
+
+/// Parses the arguments after the command word (args[0] is the program name). Returns an exit
+/// status when parsing ends the command (help shown, or a usage error), nothing when it runs.
+std::optional<int> parseCommand(QCommandLineParser& parser, const QString& command,
+                                const QStringList& args, int positional_min, int positional_max,
+                                const Context& ctx);
+
+/// Reads a whole-number option; `min` is the smallest allowed value.
+std::optional<long long> intOption(const QCommandLineParser& parser, const QString& name,
+                                   long long fallback, long long min, QString& error);
+
+QCommandLineOption lutOption();
+QCommandLineOption setOption();
+QCommandLineOption paramsOption();
+QCommandLineOption threadsOption(const QString& fallback);
+
+/// The parameter values of --params FILE and then every --set (which win).
+Result<ParamSet> paramsFrom(const QCommandLineParser& parser);
+
+/// Opens the stream and LUT and applies --params and --set, all checked against the pipeline.
+Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
+                              const Context& ctx);
+
+} // namespace fieldsight::cli

@@ -1,0 +1,23 @@
+// The headless commands of SPEC §5. Each parses its own arguments (args[0] is the program name,
+// then the command's arguments), prints its results to ctx.out and at most one line,
+// "fieldsight: <problem>", to ctx.err, and returns the exit status.
+#pragma once
+
+#include "commands/cli.h"
+
+namespace fieldsight::cli {
+
+int runCommand(const QStringList& args, const Context& ctx);
+int benchCommand(const QStringList& args, const Context& ctx);
+int evalCommand(const QStringList& args, const Context& ctx);
+int synthCommand(const QStringList& args, const Context& ctx);
+int lutCommand(const QStringList& args, const Context& ctx);
+
+/// The overview `fieldsight help` prints, with the pipeline's stage ids.
+std::string usageText(const Pipeline& pipeline);
+
+/// Runs `command` (the word after the program name) with `args`; unknown commands are a usage
+/// error.
+int runHeadless(const QString& command, const QStringList& args, const Context& ctx);
+
+} // namespace fieldsight::cli

@@ -1,0 +1,53 @@
+// The command overview and the dispatch from a command word to its command.
+#include "commands/commands.h"
+
+namespace fieldsight::cli {
+
+std::string usageText(const Pipeline& pipeline)
+{
+    return "usage: fieldsight [COMMAND] [ARGS]\n"
+           "\n"
+           "  fieldsight [gui [STREAM] [--lut FILE]]   open the GUI\n"
+           "  fieldsight run   STREAM [--lut FILE] [--out FILE|-] [--skip STAGE,...] [--threads "
+           "N]\n"
+           "                          [--limit N] [--render DIR [--layers LIST] [--scale N]]\n"
+           "  fieldsight bench STREAM... [--lut FILE] [--repeat N] [--threads N] [--json FILE]\n"
+           "                          [--limit N]   (several streams: a table as the paper's "
+           "Table 1)\n"
+           "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE]\n"
+           "  (run, bench and eval also take --set STAGE.PARAM=VALUE, e.g. "
+           "transitions.goal_colour=9,\n"
+           "   and --params FILE with fieldsight-params/1)\n"
+           "  fieldsight synth --out DIR [--scenario NAME] [--frames N] [--seed S] [--strm] "
+           "[--no-png]\n"
+           "  fieldsight lut convert IN OUT\n"
+           "  fieldsight help\n"
+           "\n"
+           "STREAM is a folder of images, a .strm file, a video file or camera:N.\n"
+           "Stage ids: " +
+           pipeline.idList() +
+           ".\n"
+           "Exit status: 0 success, 1 failure while running, 2 bad usage or bad input.\n"
+           "'fieldsight COMMAND --help' describes one command.\n";
+}
+
+int runHeadless(const QString& command, const QStringList& args, const Context& ctx)
+{
+    if (command == "run")
+        return runCommand(args, ctx);
+    if (command == "bench")
+        return benchCommand(args, ctx);
+    if (command == "eval")
+        return evalCommand(args, ctx);
+    if (command == "synth")
+        return synthCommand(args, ctx);
+    if (command == "lut")
+        return lutCommand(args, ctx);
+    if (command == "help" || command == "--help" || command == "-h") {
+        ctx.out << usageText(ctx.pipeline);
+        return kExitOk;
+    }
+    return badInput(ctx, "unknown command '" + command + "'; try 'fieldsight help'");
+}
+
+} // namespace fieldsight::cli

@@ -1,0 +1,49 @@
+// Rendering frames with their layers to PNG files.
+#include "commands/render.h"
+
+#include "ui/adapters/overlay_painter.h"
+#include "visioncore/io/atomic_file.h"
+
+#include <QBuffer>
+#include <QImage>
+
+#include <filesystem>
+
+namespace fieldsight::cli {
+
+Status prepareRenderFolder(const std::string& dir)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec)
+        return Error{dir + ": cannot create folder: " + ec.message()};
+    return {};
+}
+
+Status renderFrame(const RenderOptions& options, const FrameResult& result, const Frame& frame,
+                   const DebugCanvas& canvas)
+{
+    const PerceptSet* truth = nullptr;
+    if (options.truth) {
+        const auto it = options.truth->frames.find(result.name);
+        if (it != options.truth->frames.end())
+            truth = &it->second.truth;
+    }
+    const std::vector<DebugDrawing> drawings =
+        frameDrawings(*options.pipeline, options.layers, canvas, result.percepts, truth);
+    std::vector<const DebugDrawing*> layers;
+    for (const DebugDrawing& d : drawings)
+        layers.push_back(&d);
+    const QImage image = ui::renderOverlay(frame.ycbcr, layers, options.scale);
+
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG"))
+        return Error{options.dir + ": cannot encode the overlay of " + result.name};
+    const std::string stem = std::filesystem::path(result.name).stem().string();
+    return writeFileAtomically(options.dir + "/" + stem + ".png", png.constData(),
+                               std::size_t(png.size()));
+}
+
+} // namespace fieldsight::cli

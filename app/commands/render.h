@@ -1,0 +1,29 @@
+// `fieldsight run --render DIR`: each frame with the requested layers drawn, as PNG, through the
+// same painter the GUI's frame view uses.
+#pragma once
+
+#include "visioncore/io/annotations.h"
+#include "visioncore/services/layers.h"
+#include "visioncore/services/stream_runner.h"
+
+#include <string>
+
+namespace fieldsight::cli {
+
+struct RenderOptions
+{
+    std::string dir;
+    LayerSet layers;
+    int scale = 2;                      ///< screen px per image px
+    const Annotations* truth = nullptr; ///< drawn on the "truth.*" layers when given
+    const Pipeline* pipeline = &Pipeline::standard();
+};
+
+/// Creates the folder; the message names it when that fails.
+Status prepareRenderFolder(const std::string& dir);
+/// Writes `frame` with its layers to DIR/<frame stem>.png (atomically). Safe to call from several
+/// worker threads at once.
+Status renderFrame(const RenderOptions& options, const FrameResult& result, const Frame& frame,
+                   const DebugCanvas& canvas);
+
+} // namespace fieldsight::cli

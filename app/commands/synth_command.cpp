@@ -1,0 +1,75 @@
+// `fieldsight synth`: a synthetic stream with exact ground truth, from the scene generator.
+#include "commands/commands.h"
+
+#include "synth/synth.h"
+
+namespace fieldsight::cli {
+
+int synthCommand(const QStringList& args, const Context& ctx)
+{
+    namespace synth = fieldsight::synth;
+    QCommandLineParser parser;
+    parser.setApplicationDescription("Renders a synthetic stream with exact ground truth.");
+    QString names;
+    for (const std::string& name : synth::scenarioNames())
+        names += (names.isEmpty() ? "" : ", ") + QString::fromStdString(name);
+    parser.addOption({"scenario", "One of " + names + " (default lab2).", "NAME"});
+    parser.addOption({"frames",
+                      "Number of frames (default 30), or 'paper' for the paper's length of the "
+                      "scenario (5090, 470, 175, 2640, 625).",
+                      "N"});
+    parser.addOption({"seed", "Random seed (default 1).", "S"});
+    parser.addOption({"out", "Stream folder to create.", "DIR"});
+    parser.addOption({"width", "Image width in px (default 320).", "PX"});
+    parser.addOption({"height", "Image height in px (default 240).", "PX"});
+    parser.addOption({"strm", "Also write image.strm."});
+    parser.addOption({"no-png", "Do not write PNG frames (needs --strm)."});
+    if (auto done = parseCommand(parser, "synth", args, 0, 0, ctx))
+        return *done;
+
+    synth::SynthOptions options;
+    if (!parser.isSet("out"))
+        return badInput(ctx, "synth: --out DIR is required");
+    options.out_dir = parser.value("out").toStdString();
+    if (parser.isSet("scenario")) {
+        auto scenario = synth::scenarioFromName(parser.value("scenario").toStdString());
+        if (!scenario)
+            return badInput(ctx, "synth: --scenario: " +
+                                     QString::fromStdString(scenario.error().message));
+        options.scenario = scenario.value();
+    }
+    QString error;
+    if (parser.value("frames") == "paper")
+        options.frames = synth::paperFrameCount(options.scenario);
+    const auto frames = parser.value("frames") == "paper"
+                            ? std::optional<long long>(options.frames)
+                            : intOption(parser, "frames", options.frames, 1, error);
+    const auto width = intOption(parser, "width", options.width, 16, error);
+    const auto height = intOption(parser, "height", options.height, 16, error);
+    if (!frames || !width || !height)
+        return badInput(ctx, "synth: " + error);
+    options.frames = int(*frames);
+    options.width = int(*width);
+    options.height = int(*height);
+    if (parser.isSet("seed")) {
+        bool ok = false;
+        options.seed = parser.value("seed").toULongLong(&ok);
+        if (!ok)
+            return badInput(ctx, "synth: --seed: expected a whole number >= 0, got '" +
+                                     parser.value("seed") + "'");
+    }
+    options.write_strm = parser.isSet("strm");
+    options.write_png = !parser.isSet("no-png");
+    if (!options.write_png && !options.write_strm)
+        return badInput(ctx, "synth: --no-png without --strm would write no frames");
+
+    if (fieldsight::Status s = synth::generateStream(options); !s) {
+        printError(ctx.err, s.error().message);
+        return kExitFailure;
+    }
+    ctx.out << "wrote " << options.frames << " frames of " << synth::scenarioName(options.scenario)
+            << " to " << options.out_dir << '\n';
+    return kExitOk;
+}
+
+} // namespace fieldsight::cli

@@ -1,0 +1,220 @@
+// A stage in one place: an eighth stage, with a parameter, a debug layer and a percept kind of its
+// own, is added to the pipeline by this test alone, and the command line (run's results, --set,
+// --skip, --render, the usage text) knows it without any other change.
+//
+// What adding it took: the Stage subclass and its percept type with PerceptTraits (below), and
+// one Pipeline::add call (the line stage_list.cpp would get).
+#include "commands/commands.h"
+#include "support/synthetic_frames.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/io/atomic_file.h"
+
+#include <QImage>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+using namespace fieldsight;
+
+namespace {
+
+/// The fake stage's percept: one mark per frame carrying its parameter's value.
+struct FakeMark
+{
+    double x = 0;     ///< px
+    double y = 0;     ///< px
+    double value = 0; ///< the stage's `level` parameter
+};
+
+} // namespace
+
+template <> struct fieldsight::PerceptTraits<FakeMark>
+{
+    static constexpr std::string_view key = "fake_marks";
+    static constexpr std::string_view truth_key = key;
+    static constexpr std::string_view title = "Fake marks";
+    static constexpr Rgb colour{12, 200, 34};
+    static void toJson(const std::vector<FakeMark>& marks, PerceptNames,
+                       nlohmann::ordered_json& value)
+    {
+        value = nlohmann::ordered_json::array();
+        for (const FakeMark& m : marks)
+            value.push_back({{"x", m.x}, {"y", m.y}, {"value", m.value}});
+    }
+    static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames,
+                                               const std::string& where, std::vector<FakeMark>& out)
+    {
+        if (!value.is_array())
+            return where + " must be an array";
+        for (const auto& m : value)
+            out.push_back({m.value("x", 0.0), m.value("y", 0.0), m.value("value", 0.0)});
+        return std::nullopt;
+    }
+    static void draw(const std::vector<FakeMark>& marks, Rgb colour, double, DebugDrawing& out)
+    {
+        for (const FakeMark& m : marks)
+            out.add({ShapeKind::Points, {{m.x, m.y}}, colour, 5, true, 1});
+    }
+};
+
+namespace {
+
+constexpr Rgb kFakeLayerColour{250, 10, 200};
+
+class FakeStage : public Stage
+{
+public:
+    const StageInfo& info() const override
+    {
+        static const StageInfo info{"fake",
+                                    "Fake",
+                                    "A test stage: marks one point and fills one box.",
+                                    true,
+                                    {"green_horizon"},
+                                    {},
+                                    {&perceptKind<FakeMark>()},
+                                    {{"fake.box", "Fake box", kFakeLayerColour}}};
+        return info;
+    }
+    void run(Blackboard& bb) override
+    {
+        bb.percepts.output<FakeMark>().push_back({40, 30, m_level});
+        if (auto* d = bb.debug.layer("fake.box"))
+            d->add({ShapeKind::Rect, {{10, 10}, {19, 19}}, kFakeLayerColour, 1, true, 1});
+    }
+
+private:
+    Param<double> m_level{this, 1.5, {"level", "", 0, 10, 0.5, "Written into every mark."}};
+};
+
+Pipeline withFakeStage()
+{
+    Pipeline pipeline = Pipeline::standard();
+    pipeline.add<FakeStage>();
+    return pipeline;
+}
+
+struct Outcome
+{
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+} // namespace
+
+class TestFakeStage : public QObject
+{
+    Q_OBJECT
+
+    Pipeline m_pipeline = withFakeStage();
+    QTemporaryDir m_dir;
+    std::string m_stream;
+
+    Outcome run(const QStringList& args)
+    {
+        std::ostringstream out, err;
+        const cli::Context ctx{m_pipeline, out, err};
+        Outcome o;
+        o.status = cli::runHeadless(args.value(0), QStringList{"fieldsight"} + args.mid(1), ctx);
+        o.out = out.str();
+        o.err = err.str();
+        return o;
+    }
+
+    nlohmann::json runJson(const QStringList& extra)
+    {
+        const QString out = m_dir.filePath("results.json");
+        const Outcome o =
+            run(QStringList{"run", QString::fromStdString(m_stream), "--out", out} + extra);
+        if (o.status != 0)
+            qWarning() << o.err.c_str();
+        auto text = readWholeFile(out.toStdString());
+        return text ? nlohmann::json::parse(text.value()) : nlohmann::json();
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        m_stream = test::sampleStreamsDir() + "/lab1";
+        QCOMPARE(m_pipeline.size(), std::size_t(8));
+        QVERIFY(m_pipeline.validate().ok());
+    }
+
+    void runResultsHaveTheStagesTimeAndPercepts()
+    {
+        const nlohmann::json doc = runJson({"--limit", "2"});
+        QCOMPARE(doc["frames"].size(), std::size_t(2));
+        const auto& frame = doc["frames"][0];
+        QVERIFY(frame["time_ms"].contains("fake"));
+        QCOMPARE(frame["fake_marks"].size(), std::size_t(1));
+        QCOMPARE(frame["fake_marks"][0]["value"].get<double>(), 1.5);
+        QVERIFY(doc["summary"]["stage_mean_ms"].contains("fake"));
+        // The standard stages are still all there.
+        QVERIFY(frame.contains("balls"));
+        QVERIFY(frame["time_ms"].contains("obstacles"));
+    }
+
+    void setReachesTheFakeStage()
+    {
+        const nlohmann::json doc = runJson({"--limit", "1", "--set", "fake.level=3"});
+        QCOMPARE(doc["frames"][0]["fake_marks"][0]["value"].get<double>(), 3.0);
+
+        const Outcome bad = run({"run", QString::fromStdString(m_stream), "--set", "fake.level=11",
+                                 "--out", m_dir.filePath("x.json")});
+        QCOMPARE(bad.status, 2);
+        QVERIFY2(QString::fromStdString(bad.err).contains("fake.level"), bad.err.c_str());
+        const Outcome unknown = run({"run", QString::fromStdString(m_stream), "--set",
+                                     "fake.nope=1", "--out", m_dir.filePath("x.json")});
+        QCOMPARE(unknown.status, 2);
+        QVERIFY2(QString::fromStdString(unknown.err).contains("nope"), unknown.err.c_str());
+    }
+
+    void skipSwitchesTheFakeStageOff()
+    {
+        const nlohmann::json doc = runJson({"--limit", "1", "--skip", "fake"});
+        const auto& frame = doc["frames"][0];
+        QVERIFY(!frame.contains("fake_marks")); // absent, not empty
+        QVERIFY(!frame["time_ms"].contains("fake"));
+        QCOMPARE(doc["skipped_stages"][0].get<std::string>(), std::string("fake"));
+    }
+
+    void renderDrawsTheFakeLayerAndPercept()
+    {
+        const QString dir = m_dir.filePath("render");
+        const Outcome o = run({"run", QString::fromStdString(m_stream), "--limit", "1", "--out",
+                               m_dir.filePath("r.json"), "--render", dir, "--layers",
+                               "fake,percepts.fake_marks", "--scale", "1"});
+        QCOMPARE(o.status, 0);
+        const QImage image(dir + "/frame_000000.png");
+        QVERIFY(!image.isNull());
+        QCOMPARE(image.size(), QSize(320, 240));
+        const QRgb box = qRgb(kFakeLayerColour.r, kFakeLayerColour.g, kFakeLayerColour.b);
+        QCOMPARE(image.pixel(10, 10), box);
+        QCOMPARE(image.pixel(15, 15), box);
+        QCOMPARE(image.pixel(19, 19), box);
+        QVERIFY(image.pixel(21, 21) != box);
+        const Rgb mark = PerceptTraits<FakeMark>::colour;
+        QCOMPARE(image.pixel(40, 30), qRgb(mark.r, mark.g, mark.b));
+        QCOMPARE(image.pixel(42, 32), qRgb(mark.r, mark.g, mark.b)); // 5 px square
+        QVERIFY(image.pixel(44, 30) != qRgb(mark.r, mark.g, mark.b));
+
+        const Outcome bad = run({"run", QString::fromStdString(m_stream), "--limit", "1",
+                                 "--render", dir, "--layers", "fake.nothing"});
+        QCOMPARE(bad.status, 2);
+        QVERIFY2(QString::fromStdString(bad.err).contains("fake.nothing"), bad.err.c_str());
+    }
+
+    void usageListsTheFakeStage()
+    {
+        const Outcome o = run({"help"});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(QString::fromStdString(o.out).contains("obstacles, fake."), o.out.c_str());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFakeStage)
+#include "test_fake_stage.moc"

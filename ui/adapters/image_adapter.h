@@ -1,0 +1,29 @@
+// The only cv::Mat <-> QImage code: frames from the core to QImages for painting and display.
+#pragma once
+
+#include "visioncore/colour.h"
+
+#include <QColor>
+#include <QImage>
+
+#include <opencv2/core/mat.hpp>
+
+namespace fieldsight::ui {
+
+/// A CV_8UC3 Y, Cb, Cr frame (the core's pixel order) as a QImage::Format_RGB888 that owns its
+/// pixels, converted by visioncore's ycbcrToBgr (BT.601 full range). A null QImage when `ycbcr`
+/// is empty or not CV_8UC3.
+QImage ycbcrToQImage(const cv::Mat& ycbcr);
+
+/// A CV_8UC3 Y, Cb, Cr frame enlarged `scale` times (scale < 1 counts as 1) with nearest neighbour,
+/// so each image pixel is a crisp scale x scale block, as a QImage::Format_RGB32 (the format
+/// QPainter draws on and widgets show fastest). A null QImage when `ycbcr` is empty or not CV_8UC3.
+QImage ycbcrToZoomedQImage(const cv::Mat& ycbcr, int scale);
+
+/// A CV_8UC3 B, G, R image as a QImage::Format_RGB888 that owns its pixels (no sharing with
+/// `bgr`). A null QImage when `bgr` is empty or not CV_8UC3.
+QImage bgrToQImage(const cv::Mat& bgr);
+
+QColor toQColor(Rgb colour);
+
+} // namespace fieldsight::ui

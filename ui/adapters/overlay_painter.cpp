@@ -1,0 +1,156 @@
+// Paints DebugDrawings with QPainter, crisp and in image coordinates (see overlay_painter.h).
+#include "ui/adapters/overlay_painter.h"
+
+#include "ui/adapters/image_adapter.h"
+
+#include <QList>
+#include <QPainter>
+#include <QPen>
+#include <QPointF>
+#include <QRectF>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fieldsight::ui {
+
+namespace {
+
+/// Device px by which shapes are nudged up and left. Qt's aliased line stroker works in 1/64 px
+/// fixed point and puts a line that runs exactly through pixel centres at slope -1 one row too low,
+/// so it misses its own end pixels; a nudge this small only moves coordinates that fall exactly on
+/// a pixel boundary, and breaks all those ties the same way.
+constexpr double kTieBreak = 1.0 / 32;
+
+/// Device px per image px (the painter's zoom).
+double deviceScale(const QPainter& painter)
+{
+    return std::sqrt(std::abs(painter.worldTransform().determinant()));
+}
+
+/// Where coordinate c of a shape lands, in image coordinates: c + centre.
+double centreOffset(const QPainter& painter)
+{
+    return 0.5 - kTieBreak / std::max(deviceScale(painter), 1e-6);
+}
+
+QPointF at(const PointF& p, double centre)
+{
+    return {p.x + centre, p.y + centre};
+}
+
+QPen cosmeticPen(const QColor& colour, double width)
+{
+    QPen pen(colour, width);
+    pen.setCosmetic(true);
+    // A square cap keeps both end pixels of a thin line at any zoom; with a flat cap one can drop.
+    pen.setCapStyle(Qt::SquareCap);
+    pen.setJoinStyle(Qt::MiterJoin);
+    return pen;
+}
+
+void paintPoints(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre)
+{
+    const double side = shape.size > 0 ? shape.size : 1.0;
+    QList<QRectF> squares;
+    squares.reserve(qsizetype(shape.points.size()));
+    for (const PointF& p : shape.points)
+        squares.append(QRectF(p.x + centre - side / 2, p.y + centre - side / 2, side, side));
+    // One call for the whole list: scan-line layers hold thousands of points per frame.
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(colour);
+    painter.drawRects(squares.constData(), int(squares.size()));
+}
+
+void paintPolyline(QPainter& painter, const DebugShape& shape, const QColor& colour,
+                   std::size_t count, double centre)
+{
+    if (shape.points.size() < 2)
+        return;
+    QList<QPointF> points;
+    points.reserve(qsizetype(count));
+    for (std::size_t i = 0; i < count; ++i)
+        points.append(at(shape.points[i], centre));
+    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width)));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawPolyline(points.constData(), int(points.size()));
+}
+
+void paintCircle(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre)
+{
+    if (shape.points.empty())
+        return;
+    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width)));
+    painter.setBrush(shape.filled ? QBrush(colour) : QBrush(Qt::NoBrush));
+    painter.drawEllipse(at(shape.points[0], centre), shape.size, shape.size);
+}
+
+void paintRect(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre)
+{
+    if (shape.points.size() < 2)
+        return;
+    const QRectF centres =
+        QRectF(at(shape.points[0], centre), at(shape.points[1], centre)).normalized();
+    if (shape.filled) {
+        // The corner pixels' squares, not their centres, bound the filled area.
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(colour);
+        painter.drawRect(centres.adjusted(-0.5, -0.5, 0.5, 0.5));
+        return;
+    }
+    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width)));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(centres);
+}
+
+} // namespace
+
+void paintShape(QPainter& painter, const DebugShape& shape)
+{
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    const QColor colour = toQColor(shape.colour);
+    const double centre = centreOffset(painter);
+    switch (shape.kind) {
+    case ShapeKind::Points:
+        paintPoints(painter, shape, colour, centre);
+        break;
+    case ShapeKind::Line:
+        paintPolyline(painter, shape, colour, 2, centre);
+        break;
+    case ShapeKind::Polyline:
+        paintPolyline(painter, shape, colour, shape.points.size(), centre);
+        break;
+    case ShapeKind::Circle:
+        paintCircle(painter, shape, colour, centre);
+        break;
+    case ShapeKind::Rect:
+        paintRect(painter, shape, colour, centre);
+        break;
+    }
+}
+
+void paintDrawing(QPainter& painter, const DebugDrawing& drawing)
+{
+    painter.save();
+    for (const DebugShape& shape : drawing.shapes)
+        paintShape(painter, shape);
+    painter.restore();
+}
+
+QImage renderOverlay(const cv::Mat& ycbcr, const std::vector<const DebugDrawing*>& drawings,
+                     int scale)
+{
+    QImage image = ycbcrToZoomedQImage(ycbcr, scale);
+    if (image.isNull())
+        return image;
+    QPainter painter(&image);
+    painter.scale(std::max(1, scale), std::max(1, scale));
+    for (const DebugDrawing* drawing : drawings) {
+        if (drawing)
+            paintDrawing(painter, *drawing);
+    }
+    painter.end();
+    return image;
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,139 @@
+// Stage parameters: each declared once, as a typed member of its stage, with what an editor needs.
+#pragma once
+
+#include "visioncore/colour.h"
+#include "visioncore/result.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace fieldsight {
+
+class Stage;
+
+/// What kind of editor a parameter wants.
+enum class ParamKind {
+    Real,    ///< any number in [min, max]
+    Integer, ///< whole numbers in [min, max]
+    Boolean, ///< 0 or 1
+    Choice,  ///< one of `choices` (a colour class, for example)
+};
+
+std::string_view paramKindName(ParamKind kind); ///< "real", "integer", "boolean", "choice"
+
+/// One allowed value of a Choice parameter.
+struct ParamChoice
+{
+    int value = 0;
+    std::string name; ///< e.g. "yellow"
+};
+
+/// A parameter as a host sees it: enough to build an editor with a "reset to default".
+struct ParamInfo
+{
+    std::string name; ///< snake_case, unique within the stage
+    ParamKind kind = ParamKind::Real;
+    std::string unit;        ///< "px", "rad", "" for counts and ratios
+    std::string description; ///< one or two sentences for a user (a tooltip)
+    double value = 0;        ///< current value
+    double default_value = 0;
+    double min = 0;
+    double max = 0;
+    double step = 1;                  ///< a sensible increment for a spin box or slider
+    std::vector<ParamChoice> choices; ///< Choice only
+};
+
+/// How a parameter is declared, apart from its default (which has the parameter's own type).
+struct ParamSpec
+{
+    const char* name = "";
+    const char* unit = "";
+    double min = 0;
+    double max = 0;
+    double step = 0; ///< 0: 1 for whole numbers, (max - min) / 100 for reals
+    const char* description = "";
+};
+
+/// The untyped side of a parameter, through which a stage lists and sets its parameters.
+class ParamBase
+{
+public:
+    ParamBase(const ParamBase&) = delete; // the stage keeps a pointer to it
+    ParamBase& operator=(const ParamBase&) = delete;
+
+    /// The info with the current value.
+    ParamInfo info() const;
+    double get() const { return load(); }
+    /// Checks `value` against the kind and range; the message names `stage_id`.`name`.
+    Status set(std::string_view stage_id, double value);
+    void reset() { store(m_info.default_value); }
+
+protected:
+    ParamBase(Stage* owner, ParamKind kind, double default_value, const ParamSpec& spec,
+              std::vector<ParamChoice> choices = {});
+    ~ParamBase() = default;
+    virtual double load() const = 0;
+    virtual void store(double value) = 0;
+
+private:
+    ParamInfo m_info; ///< value unused; load() is the truth
+};
+
+namespace detail {
+template <class T> constexpr ParamKind paramKindOf()
+{
+    if constexpr (std::is_same_v<T, bool>)
+        return ParamKind::Boolean;
+    else if constexpr (std::is_same_v<T, Colour>)
+        return ParamKind::Choice;
+    else if constexpr (std::is_integral_v<T>)
+        return ParamKind::Integer;
+    else
+        return ParamKind::Real;
+}
+std::vector<ParamChoice> colourChoices();
+template <class T> constexpr double toDouble(T value)
+{
+    if constexpr (std::is_enum_v<T>)
+        return double(std::underlying_type_t<T>(value));
+    else
+        return double(value);
+}
+} // namespace detail
+
+/// A stage's parameter of type T (double, int, std::uint32_t, bool or Colour), declared as a
+/// member with its default and spec, and read in the stage's code as a plain T:
+///
+///     Param<int> m_iterations{this, 100, {"iterations", "", 1, 10000, 1, "RANSAC samples."}};
+template <class T> class Param final : public ParamBase
+{
+public:
+    Param(Stage* owner, T default_value, const ParamSpec& spec)
+        : ParamBase(owner, detail::paramKindOf<T>(), detail::toDouble(default_value), spec,
+                    std::is_same_v<T, Colour> ? detail::colourChoices()
+                                              : std::vector<ParamChoice>{}),
+          m_value(default_value)
+    {
+    }
+    operator T() const { return m_value; }
+    T value() const { return m_value; }
+
+private:
+    double load() const override { return detail::toDouble(m_value); }
+    void store(double value) override
+    {
+        if constexpr (std::is_same_v<T, bool>)
+            m_value = value != 0;
+        else if constexpr (std::is_enum_v<T>)
+            m_value = T(std::underlying_type_t<T>(value));
+        else
+            m_value = static_cast<T>(value);
+    }
+
+    T m_value;
+};
+
+} // namespace fieldsight

@@ -1,0 +1,37 @@
+// A set of stage parameter values: read from and written to JSON (fieldsight-params/1), parsed
+// from "STAGE.PARAM=VALUE" settings, and applied to a core in one call.
+#pragma once
+
+#include "visioncore/result.h"
+
+#include <map>
+#include <string>
+#include <string_view>
+
+namespace fieldsight {
+
+class Pipeline;
+
+struct ParamSet
+{
+    /// stage id -> parameter name -> value
+    std::map<std::string, std::map<std::string, double, std::less<>>, std::less<>> values;
+
+    bool empty() const { return values.empty(); }
+    void set(std::string_view stage, std::string_view name, double value);
+    /// Adds the values of `other`, replacing those already here.
+    void merge(const ParamSet& other);
+
+    /// Parses "STAGE.PARAM=VALUE" (e.g. transitions.goal_colour=9) into this set.
+    Status parseSetting(std::string_view setting);
+    /// Every value names a stage and parameter of `pipeline` and is valid for it (kind, range).
+    Status check(const Pipeline& pipeline) const;
+
+    /// {"format": "fieldsight-params/1", "stages": {"ball": {"min_radius": 2.5}}}
+    std::string toJson() const;
+    static Result<ParamSet> fromJson(const std::string& text, const std::string& source);
+    static Result<ParamSet> load(const std::string& path);
+    Status save(const std::string& path) const; ///< atomic
+};
+
+} // namespace fieldsight

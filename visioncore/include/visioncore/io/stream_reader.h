@@ -1,0 +1,62 @@
+// Stream readers (SPEC §4): image folders with stream.json, NUbots .strm files, video files.
+// Random access by frame index without loading the whole stream into memory.
+#pragma once
+
+#include "visioncore/io/frame.h"
+#include "visioncore/result.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+enum class StreamKind { ImageFolder, Strm, Video, Camera };
+
+struct StreamInfo
+{
+    std::string path; ///< as given by the user
+    StreamKind kind = StreamKind::ImageFolder;
+    int width = 0;  ///< px, of the first frame
+    int height = 0; ///< px
+    std::size_t frame_count = 0;
+    std::string default_lut; ///< the manifest's lut or <folder>/default.lut; empty if none exists
+    std::optional<std::array<double, 2>> fov_deg; ///< deg, horizontal and vertical
+};
+
+class StreamReader
+{
+public:
+    virtual ~StreamReader() = default;
+    virtual const StreamInfo& info() const = 0;
+    /// Reads frame `index` (< frame_count). Errors name the file and the problem.
+    virtual Result<Frame> read(std::size_t index) = 0;
+    /// The frame's display name without decoding it.
+    virtual std::string frameName(std::size_t index) const = 0;
+};
+
+/// Opens a folder, a .strm file, a video file or "camera:N". Bad input (missing, empty folder,
+/// truncated .strm, bad manifest) gives an Error naming the file and the problem.
+Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec);
+
+/// Writes original NUbots image streams (.strm), for tests, the generator and conversions.
+class StrmWriter
+{
+public:
+    /// Truncates or creates `path`.
+    static Result<StrmWriter> create(const std::string& path);
+    /// Appends one record; with `flipped` the stored raster is the frame rotated 180 degrees.
+    Status append(const Frame& frame, bool flipped = false);
+    Status close();
+
+private:
+    explicit StrmWriter(std::string path) : m_path(std::move(path)) {}
+    std::string m_path;
+    std::vector<char> m_buffer;
+    std::shared_ptr<void> m_file;
+};
+
+} // namespace fieldsight

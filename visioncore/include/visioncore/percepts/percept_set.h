@@ -1,0 +1,187 @@
+// One frame's percepts, of any kind: what the stages write, results JSON, annotations (ground
+// truth) and evaluation all use this one type, with one JSON reader/writer and one drawing.
+#pragma once
+
+#include "visioncore/colour.h"
+#include "visioncore/framework/debug_drawing.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fieldsight {
+
+/// Which JSON names a set is read or written with.
+enum class PerceptNames {
+    Results, ///< PerceptKind::key (fieldsight-results/1)
+    Truth,   ///< PerceptKind::truth_key (fieldsight-annotations/1)
+};
+
+/// Describes percept type P to the framework. Specialise it next to P (see percepts/ball.h) with:
+///
+///     static constexpr std::string_view key = "balls";   // its list in results JSON
+///     static constexpr std::string_view truth_key = key; // its list in annotations (SPEC §5.2)
+///     static constexpr std::string_view title = "Balls"; // for layer lists
+///     static constexpr Rgb colour{255, 160, 0};          // its colour in every drawing
+///     static void toJson(const std::vector<P>&, PerceptNames names, nlohmann::ordered_json&
+///     value);
+///     /// A message "<where>... must be ..." on bad input.
+///     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
+///                                                const std::string& where, std::vector<P>& out);
+///
+/// (`names` tells results from annotations, where a percept may have fewer fields.)
+///     static void draw(const std::vector<P>&, Rgb colour, double width, DebugDrawing& out);
+///
+/// A new kind of percept is its struct, this specialisation, and a stage that declares it in its
+/// StageInfo::percepts; results, annotations, evaluation's JSON and the layers follow.
+template <class P> struct PerceptTraits;
+
+class PerceptEntry;
+
+/// A percept type at run time: its names, its colour, and how to make an empty list of it.
+struct PerceptKind
+{
+    std::string_view key;
+    std::string_view truth_key;
+    std::string_view title;
+    Rgb colour;
+    std::unique_ptr<PerceptEntry> (*make)();
+};
+
+template <class P> const PerceptKind& perceptKind();
+
+/// A list of percepts of one kind, type-erased. Absent (not present) means the stage that writes
+/// it did not run; present and empty means it ran and found nothing.
+class PerceptEntry
+{
+public:
+    virtual ~PerceptEntry() = default;
+    virtual const PerceptKind& kind() const = 0;
+    virtual std::size_t size() const = 0;
+    virtual void clear() = 0;
+    virtual std::unique_ptr<PerceptEntry> clone() const = 0;
+    virtual void toJson(PerceptNames names, nlohmann::ordered_json& value) const = 0;
+    virtual std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
+                                                const std::string& where) = 0;
+    virtual void draw(Rgb colour, double width, DebugDrawing& out) const = 0;
+
+    bool present = false;
+};
+
+template <class P> class PerceptList final : public PerceptEntry
+{
+public:
+    using Traits = PerceptTraits<P>;
+    const PerceptKind& kind() const override { return perceptKind<P>(); }
+    std::size_t size() const override { return items.size(); }
+    void clear() override { items.clear(); }
+    std::unique_ptr<PerceptEntry> clone() const override
+    {
+        return std::make_unique<PerceptList<P>>(*this);
+    }
+    void toJson(PerceptNames names, nlohmann::ordered_json& value) const override
+    {
+        Traits::toJson(items, names, value);
+    }
+    std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
+                                        const std::string& where) override
+    {
+        items.clear();
+        return Traits::fromJson(value, names, where, items);
+    }
+    void draw(Rgb colour, double width, DebugDrawing& out) const override
+    {
+        Traits::draw(items, colour, width, out);
+    }
+
+    std::vector<P> items;
+};
+
+template <class P> const PerceptKind& perceptKind()
+{
+    using T = PerceptTraits<P>;
+    static const PerceptKind kind{
+        T::key, T::truth_key, T::title, T::colour,
+        []() -> std::unique_ptr<PerceptEntry> { return std::make_unique<PerceptList<P>>(); }};
+    return kind;
+}
+
+/// Layer id prefixes of the percept drawings ("percepts.balls", "truth.field_boundary").
+inline constexpr std::string_view kPerceptLayerPrefix = "percepts";
+inline constexpr std::string_view kTruthLayerPrefix = "truth";
+/// Ground truth is drawn in one dark colour under the detections, thin; detections in their
+/// kind's colour.
+inline constexpr Rgb kTruthColour{40, 40, 40};
+inline constexpr double kTruthLineWidth = 1;
+inline constexpr double kPerceptLineWidth = 2;
+
+class PerceptSet
+{
+public:
+    PerceptSet() = default;
+    PerceptSet(const PerceptSet& other);
+    PerceptSet& operator=(const PerceptSet& other);
+    PerceptSet(PerceptSet&&) noexcept = default;
+    PerceptSet& operator=(PerceptSet&&) noexcept = default;
+    ~PerceptSet();
+
+    /// The list a stage writes: marked present (kept, if already present). Kinds appear in JSON
+    /// in the order they were first added.
+    template <class P> std::vector<P>& output()
+    {
+        auto& list = static_cast<PerceptList<P>&>(entry(perceptKind<P>()));
+        list.present = true;
+        return list.items;
+    }
+    /// The list of kind P, or nullptr when absent.
+    template <class P> const std::vector<P>* find() const
+    {
+        const PerceptEntry* e = find(perceptKind<P>());
+        return e && e->present ? &static_cast<const PerceptList<P>*>(e)->items : nullptr;
+    }
+    /// The list of kind P; empty when absent.
+    template <class P> const std::vector<P>& list() const
+    {
+        static const std::vector<P> none;
+        const std::vector<P>* l = find<P>();
+        return l ? *l : none;
+    }
+
+    /// The entry of `kind`, created (absent) when missing.
+    PerceptEntry& entry(const PerceptKind& kind);
+    const PerceptEntry* find(const PerceptKind& kind) const;
+    /// The present entry whose key (or truth key) is `key`, or nullptr.
+    const PerceptEntry* find(std::string_view key,
+                             PerceptNames names = PerceptNames::Results) const;
+    /// Present entries, in order.
+    std::vector<const PerceptEntry*> entries() const;
+    std::size_t presentCount() const;
+    /// Every entry absent and empty (their memory is kept for the next frame).
+    void clear();
+
+    /// Adds every present list to `object` under its key: those of `order` first, in that order
+    /// (so a set's JSON does not depend on the order its lists were made in), then the rest.
+    void toJson(nlohmann::ordered_json& object, PerceptNames names,
+                const std::vector<const PerceptKind*>& order = {}) const;
+    /// Reads the lists of `kinds` found in `object` (others are left absent; unknown keys are
+    /// ignored). On bad input, returns "<where>.<key>... must be ...".
+    std::optional<std::string> fromJson(const nlohmann::json& object,
+                                        const std::vector<const PerceptKind*>& kinds,
+                                        PerceptNames names, const std::string& where);
+
+    /// One layer "<prefix>.<key>" per present list: detections in their kind's colour, or (with
+    /// `truth`) everything thin in kTruthColour, under the prefix "truth" and the truth keys.
+    std::vector<DebugDrawing> drawings(bool truth) const;
+
+private:
+    std::vector<std::unique_ptr<PerceptEntry>> m_entries;
+};
+
+/// The layer ids drawings() gives for `kinds` (detections, or truth).
+std::vector<std::string> perceptLayerIds(const std::vector<const PerceptKind*>& kinds, bool truth);
+
+} // namespace fieldsight

@@ -1,0 +1,104 @@
+// Running the pipeline over a stream: open a stream with its LUT and settings, run frames on
+// several cores with progress and cancel, and collect one FrameResult per frame. No printing:
+// the command line and the GUI both drive it.
+#pragma once
+
+#include "visioncore/colour_lut.h"
+#include "visioncore/framework/blackboard.h"
+#include "visioncore/framework/controller.h"
+#include "visioncore/framework/param_set.h"
+#include "visioncore/io/stream_reader.h"
+#include "visioncore/percepts/percept_set.h"
+#include "visioncore/result.h"
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+/// A stream, its LUT and the pipeline settings a run uses, opened and checked.
+struct StreamInput
+{
+    std::string stream;                   ///< the stream argument as given
+    std::unique_ptr<StreamReader> reader; ///< for names and info; workers open their own
+    std::string lut_path;                 ///< the LUT file in use
+    std::shared_ptr<const ColourLut> lut; ///< shared by every worker, never changed
+    const Pipeline* pipeline = &Pipeline::standard();
+    ParamSet params;               ///< set on every core
+    std::vector<std::string> skip; ///< stage ids switched off on every core
+
+    const StreamInfo& info() const { return reader->info(); }
+    /// The skip list and parameters are known to the pipeline and valid (messages start with
+    /// "--skip: " or "--set: ").
+    Status checkSettings() const;
+};
+
+/// Opens `stream` and the LUT `lut_path`, or the stream's default LUT when `lut_path` is empty.
+/// Errors name the file and the problem.
+Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
+                                    const Pipeline& pipeline = Pipeline::standard());
+
+/// What the pipeline produced for one frame.
+struct FrameResult
+{
+    std::size_t index = 0; ///< frame index in the stream
+    std::string name;
+    FrameReport report;  ///< timings, and which stages ran
+    PerceptSet percepts; ///< a skipped stage's lists are absent
+    std::vector<Diagnostic> diagnostics;
+};
+
+/// The FrameResult of the frame a core just ran.
+FrameResult collectResult(std::size_t index, std::string name, FrameReport report,
+                          const Blackboard& bb);
+
+/// Optional hooks of a run. All are called on worker threads.
+struct RunHooks
+{
+    /// Debug layers the cores draw (passed to on_frame).
+    std::set<std::string, std::less<>> layers;
+    /// Called for every frame once it is done, with its image and the requested drawings; an
+    /// error stops the run (a failure, as for an output that cannot be written).
+    std::function<Status(const FrameResult&, const Frame&, const DebugCanvas&)> on_frame;
+    /// Called (one call at a time) after every frame with the count done so far and the total.
+    std::function<void(std::size_t done, std::size_t total)> progress;
+    /// When it becomes true the workers stop after their current frame.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+struct StreamRun
+{
+    std::vector<FrameResult> frames; ///< in the order of the indices asked for
+    bool cancelled = false;          ///< then `frames` holds only what was done, in order
+};
+
+/// Runs the pipeline over frames `indices` of `input` with `threads` workers (0: one per core).
+/// Every worker has its own StreamReader (the first borrows input.reader) and ControlWrapper.
+/// Bad input (a frame that cannot be read, a bad setting) is an Error; a failure of the pipeline
+/// itself or of on_frame throws std::runtime_error. Problems are reported for the earliest frame
+/// in `indices`, whatever the thread timing.
+Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& indices,
+                            int threads, const RunHooks& hooks = {});
+
+/// 0, 1, ..., n-1
+std::vector<std::size_t> firstFrames(std::size_t n);
+
+/// Population mean and standard deviation of a set of timings.
+struct TimingStats
+{
+    double mean_ms = 0;
+    double std_ms = 0;
+    std::size_t samples = 0;
+
+    static TimingStats of(const std::vector<double>& samples_ms);
+    /// The statistics of all the samples behind `parts` taken together (exactly what of() gives
+    /// on the concatenated samples, up to rounding), not the mean of their means.
+    static TimingStats pooled(const std::vector<TimingStats>& parts);
+};
+
+} // namespace fieldsight

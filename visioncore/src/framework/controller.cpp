@@ -1,0 +1,185 @@
+// The pipeline's stage list and checks, and the controller: stages in order, skips, timing, and
+// exceptions as diagnostics.
+#include "visioncore/framework/controller.h"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <stdexcept>
+
+namespace fieldsight {
+
+bool FrameReport::ran(std::string_view stage_id) const
+{
+    for (const StageTiming& t : stages)
+        if (t.stage == stage_id)
+            return t.ran;
+    return false;
+}
+
+namespace {
+StageDescriptor describe(const Stage& stage)
+{
+    return {stage.info(), stage.params()};
+}
+} // namespace
+
+Pipeline& Pipeline::add(Factory factory, std::size_t position)
+{
+    position = std::min(position, m_factories.size());
+    const StageDescriptor descriptor = describe(*factory());
+    m_factories.insert(m_factories.begin() + std::ptrdiff_t(position), std::move(factory));
+    m_descriptors.insert(m_descriptors.begin() + std::ptrdiff_t(position), descriptor);
+    return *this;
+}
+
+std::vector<std::unique_ptr<Stage>> Pipeline::build() const
+{
+    std::vector<std::unique_ptr<Stage>> stages;
+    stages.reserve(m_factories.size());
+    for (const Factory& make : m_factories)
+        stages.push_back(make());
+    return stages;
+}
+
+const StageDescriptor* Pipeline::find(std::string_view id) const
+{
+    for (const StageDescriptor& d : m_descriptors)
+        if (d.info.id == id)
+            return &d;
+    return nullptr;
+}
+
+std::vector<std::string> Pipeline::ids() const
+{
+    std::vector<std::string> ids;
+    for (const StageDescriptor& d : m_descriptors)
+        ids.push_back(d.info.id);
+    return ids;
+}
+
+std::vector<const PerceptKind*> Pipeline::perceptKinds() const
+{
+    std::vector<const PerceptKind*> kinds;
+    for (const StageDescriptor& d : m_descriptors)
+        for (const PerceptKind* k : d.info.percepts)
+            if (std::find(kinds.begin(), kinds.end(), k) == kinds.end())
+                kinds.push_back(k);
+    return kinds;
+}
+
+std::vector<LayerInfo> Pipeline::layers() const
+{
+    std::vector<LayerInfo> layers;
+    for (const StageDescriptor& d : m_descriptors)
+        layers.insert(layers.end(), d.info.layers.begin(), d.info.layers.end());
+    return layers;
+}
+
+std::string Pipeline::idList() const
+{
+    std::string list;
+    for (const StageDescriptor& d : m_descriptors)
+        list += (list.empty() ? "" : ", ") + d.info.id;
+    return list;
+}
+
+Status Pipeline::validate() const
+{
+    std::vector<std::string> available = blackboardInputs();
+    std::vector<std::string> stage_ids, layer_ids;
+    for (const StageDescriptor& d : m_descriptors) {
+        const StageInfo& info = d.info;
+        if (std::find(stage_ids.begin(), stage_ids.end(), info.id) != stage_ids.end())
+            return Error{"stage '" + info.id + "' is in the pipeline twice"};
+        stage_ids.push_back(info.id);
+        for (const std::string& slot : info.reads)
+            if (std::find(available.begin(), available.end(), slot) == available.end())
+                return Error{"stage '" + info.id + "' reads '" + slot +
+                             "', which no earlier stage writes"};
+        for (const LayerInfo& layer : info.layers) {
+            if (layer.id.rfind(info.id + ".", 0) != 0)
+                return Error{"stage '" + info.id + "': layer '" + layer.id +
+                             "' does not start with '" + info.id + ".'"};
+            if (std::find(layer_ids.begin(), layer_ids.end(), layer.id) != layer_ids.end())
+                return Error{"stage '" + info.id + "': layer '" + layer.id + "' exists twice"};
+            layer_ids.push_back(layer.id);
+        }
+        available.insert(available.end(), info.writes.begin(), info.writes.end());
+        for (const PerceptKind* kind : info.percepts)
+            available.emplace_back(kind->key);
+    }
+    return {};
+}
+
+Controller::Controller(const Pipeline& pipeline)
+{
+    if (Status s = pipeline.validate(); !s)
+        throw std::invalid_argument("invalid pipeline: " + s.error().message);
+    m_stages = pipeline.build();
+}
+
+Controller::~Controller() = default;
+
+Stage* Controller::stage(std::string_view id)
+{
+    for (const auto& s : m_stages)
+        if (s->info().id == id)
+            return s.get();
+    return nullptr;
+}
+
+const Stage* Controller::stage(std::string_view id) const
+{
+    return const_cast<Controller*>(this)->stage(id);
+}
+
+std::vector<StageDescriptor> Controller::descriptors() const
+{
+    std::vector<StageDescriptor> out;
+    for (const auto& s : m_stages)
+        out.push_back(describe(*s));
+    return out;
+}
+
+void Controller::prepare(Blackboard& bb) const
+{
+    for (const auto& s : m_stages)
+        for (const PerceptKind* kind : s->info().percepts)
+            bb.percepts.entry(*kind);
+}
+
+FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std::less<>>& skip)
+{
+    using Clock = std::chrono::steady_clock;
+    FrameReport report;
+    report.stages.reserve(m_stages.size());
+    const auto frame_start = Clock::now();
+    for (const auto& stage : m_stages) {
+        const StageInfo& info = stage->info();
+        StageTiming timing{info.id, 0.0, false};
+        if (!(info.skippable && skip.count(info.id))) {
+            const auto start = Clock::now();
+            for (const PerceptKind* kind : info.percepts)
+                bb.percepts.entry(*kind).present = true;
+            const std::size_t present = bb.percepts.presentCount();
+            try {
+                stage->run(bb);
+            } catch (const std::exception& e) {
+                bb.diagnostics.push_back({info.id, e.what()});
+            } catch (...) {
+                bb.diagnostics.push_back({info.id, "unknown exception"});
+            }
+            if (bb.percepts.presentCount() != present)
+                bb.diagnostics.push_back(
+                    {info.id, "wrote a percept list its StageInfo does not declare"});
+            timing.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            timing.ran = true;
+        }
+        report.stages.push_back(std::move(timing));
+    }
+    report.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
+    return report;
+}
+
+} // namespace fieldsight

@@ -1,0 +1,114 @@
+// Parameter sets: JSON, settings, and the check against a pipeline's parameters.
+#include "visioncore/framework/param_set.h"
+
+#include "visioncore/framework/controller.h"
+#include "visioncore/io/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+
+namespace fieldsight {
+
+namespace {
+constexpr const char* kFormat = "fieldsight-params/1";
+}
+
+void ParamSet::set(std::string_view stage, std::string_view name, double value)
+{
+    values[std::string(stage)][std::string(name)] = value;
+}
+
+void ParamSet::merge(const ParamSet& other)
+{
+    for (const auto& [stage, params] : other.values)
+        for (const auto& [name, value] : params)
+            set(stage, name, value);
+}
+
+Status ParamSet::parseSetting(std::string_view text)
+{
+    const auto dot = text.find('.');
+    const auto eq = text.find('=');
+    const std::string where = "--set " + std::string(text) + ": ";
+    if (dot == std::string_view::npos || eq == std::string_view::npos || dot > eq || dot == 0 ||
+        eq == dot + 1)
+        return Error{where + "expected STAGE.PARAM=VALUE"};
+    const std::string number(text.substr(eq + 1));
+    char* end = nullptr;
+    const double value = std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size())
+        return Error{where + "the value is not a number"};
+    set(text.substr(0, dot), text.substr(dot + 1, eq - dot - 1), value);
+    return {};
+}
+
+Status ParamSet::check(const Pipeline& pipeline) const
+{
+    Controller scratch(pipeline); // fresh stages to try the values on
+    for (const auto& [stage_id, params] : values) {
+        Stage* stage = scratch.stage(stage_id);
+        if (!stage)
+            return Error{"unknown stage '" + stage_id + "' (the stages are " + pipeline.idList() +
+                         ")"};
+        for (const auto& [name, value] : params)
+            if (Status s = stage->setParam(name, value); !s)
+                return s;
+    }
+    return {};
+}
+
+std::string ParamSet::toJson() const
+{
+    nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+    for (const auto& [stage, params] : values)
+        for (const auto& [name, value] : params)
+            stages[stage][name] = value;
+    nlohmann::ordered_json root;
+    root["format"] = kFormat;
+    root["stages"] = std::move(stages);
+    return root.dump(2) + "\n";
+}
+
+Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& source)
+{
+    const nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
+    if (root.is_discarded())
+        return Error{source + ": not valid JSON"};
+    if (!root.is_object() || !root.contains("format") || root["format"] != kFormat)
+        return Error{source + ": expected \"format\": \"" + kFormat + "\""};
+    ParamSet set;
+    const auto stages = root.find("stages");
+    if (stages == root.end())
+        return set;
+    if (!stages->is_object())
+        return Error{source + ": \"stages\" must be an object keyed by stage id"};
+    for (const auto& [stage, params] : stages->items()) {
+        if (!params.is_object())
+            return Error{source + ": stages." + stage + " must be an object"};
+        for (const auto& [name, value] : params.items()) {
+            if (value.is_boolean())
+                set.set(stage, name, value.get<bool>() ? 1.0 : 0.0);
+            else if (value.is_number())
+                set.set(stage, name, value.get<double>());
+            else
+                return Error{source + ": stages." + stage + "." + name + " must be a number"};
+        }
+    }
+    return set;
+}
+
+Result<ParamSet> ParamSet::load(const std::string& path)
+{
+    auto text = readWholeFile(path);
+    if (!text)
+        return text.error();
+    return fromJson(text.value(), path);
+}
+
+Status ParamSet::save(const std::string& path) const
+{
+    return writeFileAtomically(path, toJson());
+}
+
+} // namespace fieldsight

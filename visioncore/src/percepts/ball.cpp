@@ -1,0 +1,33 @@
+// Ball percepts in JSON and as a drawing.
+#include "visioncore/percepts/ball.h"
+
+#include "percepts/percept_json.h"
+
+namespace fieldsight {
+
+using namespace percept_json;
+
+void PerceptTraits<Ball>::toJson(const std::vector<Ball>& balls, PerceptNames, OrderedJson& value)
+{
+    writeList(balls, value, [](const Ball& b) {
+        return OrderedJson{{"x", px(b.x)}, {"y", px(b.y)}, {"radius", px(b.radius)}};
+    });
+}
+
+std::optional<std::string> PerceptTraits<Ball>::fromJson(const Json& value, PerceptNames,
+                                                         const std::string& where,
+                                                         std::vector<Ball>& out)
+{
+    return readList(value, where, out, [](FieldReader& f) {
+        return Ball{f.number("x"), f.number("y"), f.number("radius")};
+    });
+}
+
+void PerceptTraits<Ball>::draw(const std::vector<Ball>& balls, Rgb colour, double width,
+                               DebugDrawing& out)
+{
+    for (const Ball& b : balls)
+        out.add({ShapeKind::Circle, {{b.x, b.y}}, colour, b.radius, false, width});
+}
+
+} // namespace fieldsight

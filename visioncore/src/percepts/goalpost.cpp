@@ -1,0 +1,55 @@
+// Goalpost percepts in JSON and as a drawing.
+#include "visioncore/percepts/goalpost.h"
+
+#include "percepts/percept_json.h"
+
+namespace fieldsight {
+
+using namespace percept_json;
+
+void PerceptTraits<Goalpost>::toJson(const std::vector<Goalpost>& posts, PerceptNames names,
+                                     OrderedJson& value)
+{
+    // Annotations (SPEC 5.2) hold only the box; the base is derived when they are read.
+    const bool with_base = names == PerceptNames::Results;
+    writeList(posts, value, [with_base](const Goalpost& g) {
+        OrderedJson j{{"left", g.left}, {"right", g.right}, {"top", g.top}, {"bottom", g.bottom}};
+        if (with_base) {
+            j["base_x"] = px(g.base_x);
+            j["base_y"] = px(g.base_y);
+        }
+        return j;
+    });
+}
+
+std::optional<std::string> PerceptTraits<Goalpost>::fromJson(const Json& value, PerceptNames,
+                                                             const std::string& where,
+                                                             std::vector<Goalpost>& out)
+{
+    return readList(value, where, out, [](FieldReader& f) {
+        Goalpost post;
+        post.left = f.pixel("left");
+        post.right = f.pixel("right");
+        post.top = f.pixel("top");
+        post.bottom = f.pixel("bottom");
+        post.base_x = f.has("base_x") ? f.number("base_x") : (post.left + post.right) / 2.0;
+        post.base_y = f.has("base_y") ? f.number("base_y") : double(post.bottom);
+        return post;
+    });
+}
+
+void PerceptTraits<Goalpost>::draw(const std::vector<Goalpost>& posts, Rgb colour, double width,
+                                   DebugDrawing& out)
+{
+    for (const Goalpost& g : posts) {
+        out.add({ShapeKind::Rect,
+                 {{double(g.left), double(g.top)}, {double(g.right), double(g.bottom)}},
+                 colour,
+                 width,
+                 false,
+                 width});
+        out.add({ShapeKind::Points, {{g.base_x, g.base_y}}, colour, 2 * width + 1, true, width});
+    }
+}
+
+} // namespace fieldsight

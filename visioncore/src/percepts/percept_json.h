@@ -1,0 +1,85 @@
+// What the percept types' JSON readers and writers share: rounding, and strict field reading
+// whose messages name the place ("frames[\"f.png\"].balls[0].x must be a number").
+#pragma once
+
+#include "visioncore/framework/debug_drawing.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fieldsight::percept_json {
+
+using Json = nlohmann::json;
+using OrderedJson = nlohmann::ordered_json;
+
+/// px to 0.001: JSON shows 207.5 rather than 207.50000000000003.
+inline double px(double v)
+{
+    return std::isfinite(v) ? std::round(v * 1000.0) / 1000.0 : v;
+}
+
+/// Reads the fields of one JSON object, remembering the first problem.
+class FieldReader
+{
+public:
+    FieldReader(const Json& object, const std::string& where, std::optional<std::string>& problem)
+        : m_object(object), m_where(where), m_problem(problem)
+    {
+        if (!object.is_object() && !m_problem)
+            m_problem = where + " must be an object";
+    }
+
+    double number(const char* key)
+    {
+        if (m_problem)
+            return 0;
+        const auto it = m_object.find(key);
+        if (it == m_object.end() || !it->is_number()) {
+            m_problem = m_where + "." + key + " must be a number";
+            return 0;
+        }
+        return it->get<double>();
+    }
+    /// A pixel index: any JSON number, rounded to the nearest integer.
+    int pixel(const char* key) { return int(std::lround(number(key))); }
+    bool has(const char* key) const { return m_object.is_object() && m_object.contains(key); }
+
+private:
+    const Json& m_object;
+    const std::string& m_where;
+    std::optional<std::string>& m_problem;
+};
+
+/// Reads every element of the array `value` with `each(element, where, out)` (which reports
+/// problems through a FieldReader).
+template <class P, class Each>
+std::optional<std::string> readList(const Json& value, const std::string& where,
+                                    std::vector<P>& out, Each each)
+{
+    if (!value.is_array())
+        return where + " must be an array";
+    std::optional<std::string> problem;
+    for (std::size_t i = 0; i < value.size() && !problem; ++i) {
+        const std::string item = where + "[" + std::to_string(i) + "]";
+        FieldReader f(value[i], item, problem);
+        P p = each(f);
+        if (!problem)
+            out.push_back(p);
+    }
+    return problem;
+}
+
+/// Writes every element of `items` as the object `each(item)`.
+template <class P, class Each>
+void writeList(const std::vector<P>& items, OrderedJson& value, Each each)
+{
+    value = OrderedJson::array();
+    for (const P& p : items)
+        value.push_back(each(p));
+}
+
+} // namespace fieldsight::percept_json
