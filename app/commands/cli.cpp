@@ -132,7 +132,7 @@ Result<ParamSet> paramsFrom(const QCommandLineParser& parser)
     }
     for (const QString& setting : parser.values("set"))
         if (Status s = params.parseSetting(setting.toStdString()); !s)
-            return s.error();
+            return Error{"--set " + s.error().message};
     return params;
 }
 
@@ -146,8 +146,11 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
     if (!input)
         return input.error();
     input.value().params = std::move(params).value();
-    if (Status s = input.value().checkSettings(); !s)
-        return s.error();
+    if (Status s = input.value().params.check(ctx.pipeline); !s)
+        return Error{(parser.isSet("params")
+                          ? "--params " + parser.value("params").toStdString() + " or --set: "
+                          : std::string("--set: ")) +
+                     s.error().message};
     return input;
 }
 

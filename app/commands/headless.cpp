@@ -14,7 +14,7 @@ std::string usageText(const Pipeline& pipeline)
            "  fieldsight bench STREAM... [--lut FILE] [--repeat N] [--threads N] [--json FILE]\n"
            "                          [--limit N]   (several streams: a table as the paper's "
            "Table 1)\n"
-           "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE]\n"
+           "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE] [--threads N]\n"
            "  (run, bench and eval also take --set STAGE.PARAM=VALUE, e.g. "
            "transitions.goal_colour=9,\n"
            "   and --params FILE with fieldsight-params/1)\n"

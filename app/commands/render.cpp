@@ -23,12 +23,8 @@ Status prepareRenderFolder(const std::string& dir)
 Status renderFrame(const RenderOptions& options, const FrameResult& result, const Frame& frame,
                    const DebugCanvas& canvas)
 {
-    const PerceptSet* truth = nullptr;
-    if (options.truth) {
-        const auto it = options.truth->frames.find(result.name);
-        if (it != options.truth->frames.end())
-            truth = &it->second.truth;
-    }
+    const auto it = options.truth.find(frameStem(result.name));
+    const PerceptSet* truth = it == options.truth.end() ? nullptr : it->second;
     const std::vector<DebugDrawing> drawings =
         frameDrawings(*options.pipeline, options.layers, canvas, result.percepts, truth);
     std::vector<const DebugDrawing*> layers;

@@ -6,6 +6,7 @@
 #include "visioncore/services/layers.h"
 #include "visioncore/services/stream_runner.h"
 
+#include <map>
 #include <string>
 
 namespace fieldsight::cli {
@@ -14,8 +15,9 @@ struct RenderOptions
 {
     std::string dir;
     LayerSet layers;
-    int scale = 2;                      ///< screen px per image px
-    const Annotations* truth = nullptr; ///< drawn on the "truth.*" layers when given
+    int scale = 2; ///< screen px per image px
+    /// The truth drawn on the "truth.*" layers, by frame stem (Annotations::truthByStem).
+    std::map<std::string, const PerceptSet*> truth;
     const Pipeline* pipeline = &Pipeline::standard();
 };
 

@@ -59,21 +59,23 @@ int runCommand(const QStringList& args, const Context& ctx)
         const std::string render_dir =
             (parser.isSet("render") ? parser.value("render") : parser.value("overlays"))
                 .toStdString();
+        if (render_dir.empty() && (parser.isSet("layers") || parser.isSet("scale")))
+            return badInput(ctx, "run: --layers and --scale need --render DIR");
 
         std::vector<std::string> skip;
         for (const QString& list : parser.values("skip"))
             for (const QString& id : list.split(',', Qt::SkipEmptyParts))
                 skip.push_back(id.trimmed().toStdString());
-        for (const std::string& id : skip)
-            if (!ctx.pipeline.find(id))
-                return badInput(ctx, "--skip: unknown stage '" + id + "' (the stages are " +
-                                         ctx.pipeline.idList() + ")");
+        // Checked before the stream is opened (opening can decode a frame).
+        StreamInput probe;
+        probe.pipeline = &ctx.pipeline;
+        probe.skip = skip;
+        if (Status s = probe.checkSettings(); !s)
+            return badInput(ctx, "--skip: " + s.error().message);
         auto input = openInput(parser, stream, ctx);
         if (!input)
             return badInput(ctx, input.error().message);
         input.value().skip = skip;
-        if (Status s = input.value().checkSettings(); !s)
-            return badInput(ctx, s.error().message);
 
         RunHooks hooks;
         RenderOptions render;
@@ -83,7 +85,7 @@ int runCommand(const QStringList& args, const Context& ctx)
                                                               : "truth,percepts",
                                        ctx.pipeline);
             if (!layers)
-                return badInput(ctx, layers.error().message);
+                return badInput(ctx, "--layers: " + layers.error().message);
             // The stream's annotations, if any, are the truth layers.
             const std::string truth_path = defaultTruthPath(stream);
             if (std::filesystem::is_regular_file(truth_path)) {
@@ -96,8 +98,12 @@ int runCommand(const QStringList& args, const Context& ctx)
                 printError(ctx.err, s.error().message);
                 return kExitFailure;
             }
-            render = {render_dir, std::move(layers).value(), int(*scale), truth ? &*truth : nullptr,
-                      &ctx.pipeline};
+            render.dir = render_dir;
+            render.layers = std::move(layers).value();
+            render.scale = int(*scale);
+            render.pipeline = &ctx.pipeline;
+            if (truth)
+                render.truth = truth->truthByStem();
             hooks.layers = render.layers;
             hooks.on_frame = [&render](const FrameResult& r, const Frame& f, const DebugCanvas& c) {
                 return renderFrame(render, r, f, c);

@@ -1,7 +1,8 @@
 // The fieldsight executable's headless commands as a user meets them: exit statuses, one-line
 // errors naming the file, and the JSON of run, bench and eval on a tiny stream.
-#include "visioncore/services/stream_runner.h"
+#include "support/synthetic_frames.h"
 #include "visioncore/colour_lut.h"
+#include "visioncore/services/stream_runner.h"
 
 #include <QtTest>
 
@@ -70,9 +71,17 @@ private:
     QTemporaryDir m_dir;
     QString m_stream; ///< kFrames solid-green PNGs and default.lut
 
-    Outcome fieldsight(const QStringList& args)
+    /// Runs the executable; `without_display` removes DISPLAY, WAYLAND_DISPLAY and
+    /// QT_QPA_PLATFORM from its environment.
+    Outcome fieldsight(const QStringList& args, bool without_display = false)
     {
         QProcess process;
+        if (without_display) {
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+                env.remove(name);
+            process.setProcessEnvironment(env);
+        }
         process.setWorkingDirectory(m_dir.path());
         process.start(QStringLiteral(FIELDSIGHT_EXE), args);
         Outcome o;
@@ -483,6 +492,49 @@ private slots:
         const Outcome missing = fieldsight({"eval", m_stream, "--truth", path("nope.json")});
         QCOMPARE(missing.status, 2);
         verifyOneLineError(missing, path("nope.json"));
+    }
+    void renderWritesOnePngPerFrameWithTheTruth()
+    {
+        // The process has no display and no platform plugin set: the painter needs neither.
+        const QString dir = path("render");
+        const Outcome o = fieldsight(
+            {"run", QString::fromStdString(fieldsight::test::sampleStreamsDir() + "/lab1"),
+             "--limit", "3", "--out", path("render.json"), "--render", dir, "--layers", "truth",
+             "--scale", "1"},
+            true);
+        QCOMPARE(o.status, 0);
+        const QStringList pngs = QDir(dir).entryList({"*.png"}, QDir::Files, QDir::Name);
+        QCOMPARE(pngs, (QStringList{"frame_000000.png", "frame_000001.png", "frame_000002.png"}));
+        // lab1's first frame has a true field boundary, drawn thin and dark.
+        const QImage image(dir + "/frame_000000.png");
+        QCOMPARE(image.size(), QSize(320, 240));
+        int truth_pixels = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                truth_pixels += image.pixel(x, y) == qRgb(40, 40, 40);
+        QVERIFY2(truth_pixels >= 320, qPrintable(QString::number(truth_pixels)));
+
+        // --layers without --render is a usage error, an unknown layer bad input.
+        QCOMPARE(fieldsight({"run", m_stream, "--layers", "truth"}).status, 2);
+        const Outcome bad = fieldsight({"run", m_stream, "--render", dir, "--layers", "nope"});
+        QCOMPARE(bad.status, 2);
+        verifyOneLineError(bad, "nope");
+    }
+
+    void paramsFileAndSetApplyTogether()
+    {
+        const QString params = path("params.json");
+        QFile file(params);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "fieldsight-params/1", "stages": {"ball": {"min_radius": 500}}})");
+        file.close();
+        const Outcome bad = fieldsight({"run", m_stream, "--params", params});
+        QCOMPARE(bad.status, 2);
+        verifyOneLineError(bad, params); // the message names the file
+        // --set wins over the file.
+        const Outcome good = fieldsight(
+            {"run", m_stream, "--params", params, "--set", "ball.min_radius=3", "--out", "-"});
+        QCOMPARE(good.status, 0);
     }
 };
 

@@ -63,7 +63,8 @@ Status ControlWrapper::setParam(std::string_view stage_id, std::string_view name
 
 Status ControlWrapper::applyParams(const ParamSet& params)
 {
-    // Check everything on the current values first, so a bad set changes nothing.
+    // A bad value puts back every value set before it, so a bad set changes nothing (the old
+    // values were valid, so putting them back cannot fail).
     const ParamSet before = this->params();
     for (const auto& [stage, values] : params.values)
         for (const auto& [name, value] : values)

@@ -161,7 +161,7 @@ FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std
         if (!(info.skippable && skip.count(info.id))) {
             const auto start = Clock::now();
             for (const PerceptKind* kind : info.percepts)
-                bb.percepts.entry(*kind).present = true;
+                bb.percepts.markPresent(bb.percepts.entry(*kind));
             const std::size_t present = bb.percepts.presentCount();
             try {
                 stage->run(bb);

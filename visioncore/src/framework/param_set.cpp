@@ -30,7 +30,7 @@ Status ParamSet::parseSetting(std::string_view text)
 {
     const auto dot = text.find('.');
     const auto eq = text.find('=');
-    const std::string where = "--set " + std::string(text) + ": ";
+    const std::string where = "'" + std::string(text) + "': ";
     if (dot == std::string_view::npos || eq == std::string_view::npos || dot > eq || dot == 0 ||
         eq == dot + 1)
         return Error{where + "expected STAGE.PARAM=VALUE"};

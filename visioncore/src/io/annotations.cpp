@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 namespace fieldsight {
 
 namespace {
@@ -74,6 +76,19 @@ std::string Annotations::toJson() const
     root["format"] = kFormat;
     root["frames"] = std::move(frames_json);
     return root.dump(1) + "\n";
+}
+
+std::string frameStem(const std::string& name)
+{
+    return std::filesystem::path(name).stem().string();
+}
+
+std::map<std::string, const PerceptSet*> Annotations::truthByStem() const
+{
+    std::map<std::string, const PerceptSet*> out;
+    for (const auto& [name, frame] : frames)
+        out.emplace(frameStem(name), &frame.truth);
+    return out;
 }
 
 Status Annotations::save(const std::string& path) const

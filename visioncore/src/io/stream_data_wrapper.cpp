@@ -16,10 +16,11 @@ Status StreamDataWrapper::seek(std::size_t index)
     if (info.kind != StreamKind::Camera && index >= info.frame_count)
         return Error{info.path + ": frame " + std::to_string(index) + " out of range (" +
                      std::to_string(info.frame_count) + " frames)"};
-    auto frame = m_reader->read(index);
-    if (!frame)
-        return frame.error();
-    m_frame = std::move(frame).value();
+    // Into the spare frame, so the current one survives an error; the two buffers then take
+    // turns, and a steady run allocates no frame memory.
+    if (Status s = m_reader->readInto(index, m_spare); !s)
+        return s;
+    std::swap(m_frame, m_spare);
     m_index = index;
     return {};
 }

@@ -12,6 +12,15 @@
 
 namespace fieldsight {
 
+Status StreamReader::readInto(std::size_t index, Frame& frame)
+{
+    auto read = this->read(index);
+    if (!read)
+        return read.error();
+    frame = std::move(read).value();
+    return {};
+}
+
 namespace io {
 
 std::string indexedFrameName(std::size_t index)

@@ -61,6 +61,14 @@ public:
 
     Result<Frame> read(std::size_t index) override
     {
+        Frame frame;
+        if (Status s = readInto(index, frame); !s)
+            return s.error();
+        return frame;
+    }
+
+    Status readInto(std::size_t index, Frame& frame) override
+    {
         if (index >= m_records.size())
             return Error{m_info.path + ": frame " + std::to_string(index) + " out of range (" +
                          std::to_string(m_records.size()) + " frames)"};
@@ -71,14 +79,15 @@ public:
             return Error{m_info.path + ": cannot read record " + std::to_string(index) +
                          " at byte offset " + std::to_string(record.pixel_offset) + ": " +
                          (errno ? std::strerror(errno) : "unexpected end of file")};
-        Frame frame;
+        // Pixels someone else still holds are never written over: they get a buffer of their own.
+        if (frame.ycbcr.u && frame.ycbcr.u->refcount > 1)
+            frame.ycbcr = cv::Mat();
         frame.ycbcr.create(m_info.height, m_info.width, CV_8UC3);
         strmPixelsToYCbCr(m_buffer.data(), frame.ycbcr.data, pixels, record.flipped);
         frame.name = indexedFrameName(index);
         frame.timestamp_ms = record.timestamp_ms;
-        if (index < m_horizons.size())
-            frame.horizon = m_horizons[index];
-        return frame;
+        frame.horizon = index < m_horizons.size() ? m_horizons[index] : std::nullopt;
+        return {};
     }
 
 private:

@@ -27,6 +27,7 @@ PerceptSet& PerceptSet::operator=(const PerceptSet& other)
     m_entries.reserve(other.m_entries.size());
     for (const auto& e : other.m_entries)
         m_entries.push_back(e->clone());
+    m_present_count = other.m_present_count;
     return *this;
 }
 
@@ -52,7 +53,7 @@ const PerceptEntry* PerceptSet::find(const PerceptKind& kind) const
 const PerceptEntry* PerceptSet::find(std::string_view key, PerceptNames names) const
 {
     for (const auto& e : m_entries)
-        if (e->present && nameOf(e->kind(), names) == key)
+        if (e->present() && nameOf(e->kind(), names) == key)
             return e.get();
     return nullptr;
 }
@@ -61,25 +62,18 @@ std::vector<const PerceptEntry*> PerceptSet::entries() const
 {
     std::vector<const PerceptEntry*> out;
     for (const auto& e : m_entries)
-        if (e->present)
+        if (e->present())
             out.push_back(e.get());
     return out;
-}
-
-std::size_t PerceptSet::presentCount() const
-{
-    std::size_t n = 0;
-    for (const auto& e : m_entries)
-        n += e->present;
-    return n;
 }
 
 void PerceptSet::clear()
 {
     for (const auto& e : m_entries) {
         e->clear();
-        e->present = false;
+        e->m_present = false;
     }
+    m_present_count = 0;
 }
 
 void PerceptSet::toJson(nlohmann::ordered_json& object, PerceptNames names,
@@ -89,10 +83,10 @@ void PerceptSet::toJson(nlohmann::ordered_json& object, PerceptNames names,
         e.toJson(names, object[std::string(nameOf(e.kind(), names))]);
     };
     for (const PerceptKind* kind : order)
-        if (const PerceptEntry* e = find(*kind); e && e->present)
+        if (const PerceptEntry* e = find(*kind); e && e->present())
             write(*e);
     for (const auto& e : m_entries)
-        if (e->present && std::find(order.begin(), order.end(), &e->kind()) == order.end())
+        if (e->present() && std::find(order.begin(), order.end(), &e->kind()) == order.end())
             write(*e);
 }
 
@@ -110,7 +104,7 @@ std::optional<std::string> PerceptSet::fromJson(const nlohmann::json& object,
         PerceptEntry& e = entry(*kind);
         if (auto problem = e.fromJson(*it, names, where + "." + key))
             return problem;
-        e.present = true;
+        markPresent(e);
     }
     return std::nullopt;
 }
@@ -121,12 +115,18 @@ std::vector<DebugDrawing> PerceptSet::drawings(bool truth) const
     const PerceptNames names = truth ? PerceptNames::Truth : PerceptNames::Results;
     const std::string_view prefix = truth ? kTruthLayerPrefix : kPerceptLayerPrefix;
     for (const auto& e : m_entries) {
-        if (!e->present)
+        if (!e->present())
             continue;
         DebugDrawing d;
         d.layer = std::string(prefix) + "." + std::string(nameOf(e->kind(), names));
-        e->draw(truth ? kTruthColour : e->kind().colour,
-                truth ? kTruthLineWidth : kPerceptLineWidth, d);
+        if (truth) {
+            e->draw(kTruthColour, kTruthLineWidth, d);
+        } else {
+            // A dark rim under each detection keeps it visible on its own colour (a ball outline
+            // on the ball).
+            e->draw(kPerceptRimColour, kPerceptLineWidth + 2, d);
+            e->draw(e->kind().colour, kPerceptLineWidth, d);
+        }
         out.push_back(std::move(d));
     }
     return out;

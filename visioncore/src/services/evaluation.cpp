@@ -177,11 +177,6 @@ std::string defaultTruthPath(const std::string& stream)
 
 namespace {
 
-std::string stem(const std::string& name)
-{
-    return std::filesystem::path(name).stem().string();
-}
-
 /// The stream index of every done frame of `truth`, by name, else by name without extension.
 Result<std::map<std::string, std::size_t>>
 doneFrameIndices(const StreamInput& input, const Annotations& truth, const std::string& truth_path)
@@ -191,7 +186,7 @@ doneFrameIndices(const StreamInput& input, const Annotations& truth, const std::
     for (std::size_t i = 0; i < input.info().frame_count; ++i) {
         const std::string name = input.reader->frameName(i);
         by_name.emplace(name, i);
-        by_stem.emplace(stem(name), i);
+        by_stem.emplace(frameStem(name), i);
     }
     std::map<std::string, std::size_t> indices;
     for (const auto& [name, annotation] : truth.frames) {
@@ -199,7 +194,7 @@ doneFrameIndices(const StreamInput& input, const Annotations& truth, const std::
             continue;
         if (auto it = by_name.find(name); it != by_name.end()) {
             indices.emplace(name, it->second);
-        } else if (auto st = by_stem.find(stem(name)); st != by_stem.end()) {
+        } else if (auto st = by_stem.find(frameStem(name)); st != by_stem.end()) {
             indices.emplace(name, st->second);
         } else {
             return Error{truth_path + ": frame '" + name + "' is marked done but " + input.stream +

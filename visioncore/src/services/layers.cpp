@@ -37,7 +37,7 @@ Result<LayerSet> selectLayers(const std::string& list, const Pipeline& pipeline)
             }
         }
         if (!known)
-            return Error{"--layers: unknown layer '" + name +
+            return Error{"unknown layer '" + name +
                          "' (use all, truth, percepts, a "
                          "stage id (" +
                          pipeline.idList() + ") or a layer id)"};

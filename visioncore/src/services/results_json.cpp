@@ -105,7 +105,8 @@ std::string resultsJson(const ResultsHeader& header, const std::vector<FrameResu
 Result<ResultsFile> readResults(const std::string& text, const std::string& source,
                                 const Pipeline& pipeline)
 {
-    const Json root = Json::parse(text, nullptr, false);
+    // Ordered, so stage times come back in the order they were written (pipeline order).
+    const OrderedJson root = OrderedJson::parse(text, nullptr, false);
     if (root.is_discarded())
         return Error{source + ": not valid JSON"};
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat)
@@ -121,7 +122,7 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
     };
     file.header = {str("stream"), str("lut"), num("width"), num("height"), {}};
     if (const auto it = root.find("skipped_stages"); it != root.end() && it->is_array())
-        for (const Json& id : *it)
+        for (const OrderedJson& id : *it)
             if (id.is_string())
                 file.header.skipped_stages.push_back(id.get<std::string>());
     const auto frames = root.find("frames");
@@ -129,7 +130,7 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
         return Error{source + ": \"frames\" must be an array"};
     const std::vector<const PerceptKind*> kinds = pipeline.perceptKinds();
     for (std::size_t i = 0; i < frames->size(); ++i) {
-        const Json& f = (*frames)[i];
+        const OrderedJson& f = (*frames)[i];
         const std::string where = "frames[" + std::to_string(i) + "]";
         if (!f.is_object() || !f.contains("index") || !f["index"].is_number_unsigned() ||
             !f.contains("name") || !f["name"].is_string())
@@ -146,10 +147,10 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
                 else
                     r.report.stages.push_back({key, value.get<double>(), true});
             }
-        if (auto problem = r.percepts.fromJson(f, kinds, PerceptNames::Results, where))
+        if (auto problem = r.percepts.fromJson(Json(f), kinds, PerceptNames::Results, where))
             return Error{source + ": " + *problem};
         if (const auto diags = f.find("diagnostics"); diags != f.end() && diags->is_array())
-            for (const Json& d : *diags)
+            for (const OrderedJson& d : *diags)
                 if (d.is_object() && d.contains("stage") && d.contains("message") &&
                     d["stage"].is_string() && d["message"].is_string())
                     r.diagnostics.push_back(

@@ -25,7 +25,7 @@ Result<StreamInput> openStreamInput(const std::string& stream, const std::string
     input.pipeline = &pipeline;
     input.lut_path = lut_path.empty() ? input.info().default_lut : lut_path;
     if (input.lut_path.empty())
-        return Error{stream + ": no LUT: pass --lut or put default.lut in the stream folder"};
+        return Error{stream + ": no LUT given, and no default.lut in the stream folder"};
     auto lut = ColourLut::load(input.lut_path);
     if (!lut)
         return lut.error();
@@ -38,14 +38,12 @@ Status StreamInput::checkSettings() const
     for (const std::string& id : skip) {
         const StageDescriptor* d = pipeline->find(id);
         if (!d)
-            return Error{"--skip: unknown stage '" + id + "' (the stages are " +
+            return Error{"unknown stage '" + id + "' to skip (the stages are " +
                          pipeline->idList() + ")"};
         if (!d->info.skippable)
-            return Error{"--skip: stage '" + id + "' cannot be skipped: later stages need it"};
+            return Error{"stage '" + id + "' cannot be skipped: later stages need it"};
     }
-    if (Status s = params.check(*pipeline); !s)
-        return Error{"--set: " + s.error().message};
-    return {};
+    return params.check(*pipeline);
 }
 
 FrameResult collectResult(std::size_t index, std::string name, FrameReport report,
@@ -78,6 +76,10 @@ public:
     explicit BorrowedReader(StreamReader& reader) : m_reader(reader) {}
     const StreamInfo& info() const override { return m_reader.info(); }
     Result<Frame> read(std::size_t index) override { return m_reader.read(index); }
+    Status readInto(std::size_t index, Frame& frame) override
+    {
+        return m_reader.readInto(index, frame);
+    }
     std::string frameName(std::size_t index) const override { return m_reader.frameName(index); }
 
 private:
@@ -208,6 +210,8 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
             }
         } catch (const std::exception& e) {
             problem.report(0, input.stream + ": " + e.what(), true);
+        } catch (...) {
+            problem.report(0, input.stream + ": unknown exception", true);
         }
     };
     runOnWorkers(threads, worker);
@@ -217,15 +221,13 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
             throw std::runtime_error(*problem.message());
         return Error{*problem.message()};
     }
+    // After a cancel, workers may have finished frames beyond one still undone: the run keeps
+    // the contiguous prefix, so a caller can carry on from frames.size().
     StreamRun run;
-    run.cancelled = cancelled() && std::find(done.begin(), done.end(), 0) != done.end();
-    if (run.cancelled) {
-        for (std::size_t i = 0; i < results.size(); ++i)
-            if (done[i])
-                run.frames.push_back(std::move(results[i]));
-    } else {
-        run.frames = std::move(results);
-    }
+    const std::size_t prefix = std::size_t(std::find(done.begin(), done.end(), 0) - done.begin());
+    run.cancelled = prefix < done.size();
+    results.resize(prefix);
+    run.frames = std::move(results);
     return run;
 }
 

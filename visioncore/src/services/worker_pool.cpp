@@ -2,6 +2,7 @@
 #include "visioncore/services/worker_pool.h"
 
 #include <algorithm>
+#include <exception>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -26,11 +27,20 @@ void runOnWorkers(int workers, const std::function<void(int)>& work)
             not_started.push_back(t);
         }
     }
-    work(0);
-    for (int t : not_started)
-        work(t);
+    // Threads are joined whatever `work` does here, so an escaping exception cannot end the
+    // program through a joinable std::thread's destructor.
+    std::exception_ptr escaped;
+    try {
+        work(0);
+        for (int t : not_started)
+            work(t);
+    } catch (...) {
+        escaped = std::current_exception();
+    }
     for (std::thread& thread : threads)
         thread.join();
+    if (escaped)
+        std::rethrow_exception(escaped);
 }
 
 } // namespace fieldsight

@@ -24,7 +24,7 @@ public:
 
 /// What a host supplies to the core: the current frame, the kinematic horizon, the LUT and a debug
 /// sink. File streams, the GUI and cameras each implement one; the core never knows which.
-/// The wrapper owns its data and keeps it unchanged while a frame is processed.
+/// The wrapper keeps what it serves unchanged while a frame is processed.
 class DataWrapper
 {
 public:

@@ -110,6 +110,11 @@ template <class T> constexpr double toDouble(T value)
 ///     Param<int> m_iterations{this, 100, {"iterations", "", 1, 10000, 1, "RANSAC samples."}};
 template <class T> class Param final : public ParamBase
 {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, int> ||
+                      std::is_same_v<T, std::uint32_t> || std::is_same_v<T, bool> ||
+                      std::is_same_v<T, Colour>,
+                  "a parameter is a double, int, std::uint32_t, bool or Colour");
+
 public:
     Param(Stage* owner, T default_value, const ParamSpec& spec)
         : ParamBase(owner, detail::paramKindOf<T>(), detail::toDouble(default_value), spec,

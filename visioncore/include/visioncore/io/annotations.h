@@ -16,6 +16,10 @@ struct FrameAnnotation
     PerceptSet truth;  ///< read and written with the percepts' truth keys ("field_boundary")
 };
 
+/// A frame's name without its extension: annotations name frames by file ("frame_000000.png")
+/// where a .strm of the same frames names them "frame_000000"; the two match by stem.
+std::string frameStem(const std::string& name);
+
 struct Annotations
 {
     std::map<std::string, FrameAnnotation> frames; ///< by frame name
@@ -26,6 +30,8 @@ struct Annotations
     static Result<Annotations> fromJson(const std::string& text, const std::string& source,
                                         const Pipeline& pipeline = Pipeline::standard());
     std::string toJson() const;
+    /// The true percepts of every frame by frameStem(), to look frames of any stream up in.
+    std::map<std::string, const PerceptSet*> truthByStem() const;
     Status save(const std::string& path) const; ///< atomic
 };
 

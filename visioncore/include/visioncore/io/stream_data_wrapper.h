@@ -36,6 +36,7 @@ private:
     std::unique_ptr<StreamReader> m_reader;
     std::shared_ptr<const ColourLut> m_lut;
     Frame m_frame;
+    Frame m_spare; ///< the frame before, reused by the next seek
     std::size_t m_index = 0;
     DebugSink* m_sink = nullptr;
 };

@@ -34,6 +34,10 @@ public:
     virtual const StreamInfo& info() const = 0;
     /// Reads frame `index` (< frame_count). Errors name the file and the problem.
     virtual Result<Frame> read(std::size_t index) = 0;
+    /// read() into `frame`, reusing its pixel buffer where the reader can (a .strm record is
+    /// decoded in place), so a steady run allocates nothing per frame. On error `frame` is
+    /// unspecified.
+    virtual Status readInto(std::size_t index, Frame& frame);
     /// The frame's display name without decoding it.
     virtual std::string frameName(std::size_t index) const = 0;
 };

@@ -13,7 +13,7 @@ public:
     /// Sets the hull (x ascending, at least one point), extending it to x = 0 and x = width-1 and
     /// interpolating every column. The original truncated the interpolation to int and crashed
     /// with fewer than two hull points; we round and accept one point (a flat horizon).
-    void set(std::vector<PointF> hull, int width, int height);
+    void set(const std::vector<PointF>& hull, int width, int height);
     /// The whole image is field: the horizon is the top row.
     void setTopRow(int width, int height);
 

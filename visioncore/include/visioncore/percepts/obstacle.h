@@ -18,7 +18,7 @@ template <> struct PerceptTraits<Obstacle>
     static constexpr std::string_view key = "obstacles";
     static constexpr std::string_view truth_key = key;
     static constexpr std::string_view title = "Obstacles";
-    static constexpr Rgb colour{0, 255, 255};
+    static constexpr Rgb colour{170, 60, 255};
     static void toJson(const std::vector<Obstacle>& obstacles, PerceptNames names,
                        nlohmann::ordered_json& value);
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,

@@ -37,7 +37,8 @@ enum class PerceptNames {
 ///     static void draw(const std::vector<P>&, Rgb colour, double width, DebugDrawing& out);
 ///
 /// A new kind of percept is its struct, this specialisation, and a stage that declares it in its
-/// StageInfo::percepts; results, annotations, evaluation's JSON and the layers follow.
+/// StageInfo::percepts; results and annotations JSON and the layers follow. (Scoring is per
+/// class, by the rules of SPEC §5.3, so a new kind is scored only once it has a rule there.)
 template <class P> struct PerceptTraits;
 
 class PerceptEntry;
@@ -59,8 +60,9 @@ template <class P> const PerceptKind& perceptKind();
 class PerceptEntry
 {
 public:
+    explicit PerceptEntry(const PerceptKind& kind) : m_kind(&kind) {}
     virtual ~PerceptEntry() = default;
-    virtual const PerceptKind& kind() const = 0;
+    const PerceptKind& kind() const { return *m_kind; }
     virtual std::size_t size() const = 0;
     virtual void clear() = 0;
     virtual std::unique_ptr<PerceptEntry> clone() const = 0;
@@ -69,14 +71,19 @@ public:
                                                 const std::string& where) = 0;
     virtual void draw(Rgb colour, double width, DebugDrawing& out) const = 0;
 
-    bool present = false;
+    bool present() const { return m_present; }
+
+private:
+    friend class PerceptSet; // keeps count of the present entries
+    const PerceptKind* m_kind;
+    bool m_present = false;
 };
 
 template <class P> class PerceptList final : public PerceptEntry
 {
 public:
     using Traits = PerceptTraits<P>;
-    const PerceptKind& kind() const override { return perceptKind<P>(); }
+    PerceptList() : PerceptEntry(perceptKind<P>()) {}
     std::size_t size() const override { return items.size(); }
     void clear() override { items.clear(); }
     std::unique_ptr<PerceptEntry> clone() const override
@@ -118,6 +125,7 @@ inline constexpr std::string_view kTruthLayerPrefix = "truth";
 inline constexpr Rgb kTruthColour{40, 40, 40};
 inline constexpr double kTruthLineWidth = 1;
 inline constexpr double kPerceptLineWidth = 2;
+inline constexpr Rgb kPerceptRimColour{0, 0, 0};
 
 class PerceptSet
 {
@@ -134,14 +142,14 @@ public:
     template <class P> std::vector<P>& output()
     {
         auto& list = static_cast<PerceptList<P>&>(entry(perceptKind<P>()));
-        list.present = true;
+        markPresent(list);
         return list.items;
     }
     /// The list of kind P, or nullptr when absent.
     template <class P> const std::vector<P>* find() const
     {
         const PerceptEntry* e = find(perceptKind<P>());
-        return e && e->present ? &static_cast<const PerceptList<P>*>(e)->items : nullptr;
+        return e && e->present() ? &static_cast<const PerceptList<P>*>(e)->items : nullptr;
     }
     /// The list of kind P; empty when absent.
     template <class P> const std::vector<P>& list() const
@@ -153,13 +161,19 @@ public:
 
     /// The entry of `kind`, created (absent) when missing.
     PerceptEntry& entry(const PerceptKind& kind);
+    /// Marks `e` (an entry of this set) present.
+    void markPresent(PerceptEntry& e)
+    {
+        m_present_count += !e.m_present;
+        e.m_present = true;
+    }
     const PerceptEntry* find(const PerceptKind& kind) const;
     /// The present entry whose key (or truth key) is `key`, or nullptr.
     const PerceptEntry* find(std::string_view key,
                              PerceptNames names = PerceptNames::Results) const;
     /// Present entries, in order.
     std::vector<const PerceptEntry*> entries() const;
-    std::size_t presentCount() const;
+    std::size_t presentCount() const { return m_present_count; }
     /// Every entry absent and empty (their memory is kept for the next frame).
     void clear();
 
@@ -179,6 +193,7 @@ public:
 
 private:
     std::vector<std::unique_ptr<PerceptEntry>> m_entries;
+    std::size_t m_present_count = 0;
 };
 
 /// The layer ids drawings() gives for `kinds` (detections, or truth).

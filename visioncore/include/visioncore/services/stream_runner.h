@@ -33,8 +33,7 @@ struct StreamInput
     std::vector<std::string> skip; ///< stage ids switched off on every core
 
     const StreamInfo& info() const { return reader->info(); }
-    /// The skip list and parameters are known to the pipeline and valid (messages start with
-    /// "--skip: " or "--set: ").
+    /// The skip list and parameters are known to the pipeline and valid.
     Status checkSettings() const;
 };
 
@@ -74,14 +73,14 @@ struct RunHooks
 struct StreamRun
 {
     std::vector<FrameResult> frames; ///< in the order of the indices asked for
-    bool cancelled = false;          ///< then `frames` holds only what was done, in order
+    bool cancelled = false; ///< then `frames` holds the frames done before the first one not done
 };
 
 /// Runs the pipeline over frames `indices` of `input` with `threads` workers (0: one per core).
 /// Every worker has its own StreamReader (the first borrows input.reader) and ControlWrapper.
 /// Bad input (a frame that cannot be read, a bad setting) is an Error; a failure of the pipeline
-/// itself or of on_frame throws std::runtime_error. Problems are reported for the earliest frame
-/// in `indices`, whatever the thread timing.
+/// itself or of on_frame throws std::runtime_error. The first problem stops every worker; when
+/// several are met before they stop, the one at the earliest position in `indices` is reported.
 Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& indices,
                             int threads, const RunHooks& hooks = {});
 

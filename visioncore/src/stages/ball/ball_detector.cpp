@@ -76,9 +76,11 @@ bool fitCircle(const std::vector<PointF>& pts, Circle& out)
 /// union-find rather than cv::partition: the same O(n^2) pairing, but no conversion of the points,
 /// and groups numbered by first member, so the order of equal-sized groups (which decides which
 /// cluster is tried first) is fixed by the scan order, not by cv::partition's labelling.
-std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double link)
+/// `parent` and `slot` are scratch.
+std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double link,
+                                         std::vector<std::size_t>& parent, std::vector<int>& slot)
 {
-    std::vector<std::size_t> parent(pts.size());
+    parent.resize(pts.size());
     std::iota(parent.begin(), parent.end(), 0);
     const auto find = [&](std::size_t i) {
         while (parent[i] != i)
@@ -93,7 +95,7 @@ std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double 
                 parent[find(i)] = find(j);
         }
     std::vector<std::vector<PointF>> groups;
-    std::vector<int> slot(pts.size(), -1);
+    slot.assign(pts.size(), -1);
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const std::size_t r = find(i);
         if (slot[r] < 0) {
@@ -138,7 +140,7 @@ const StageInfo& BallDetector::info() const
         {"transitions", "scan_lines", "green_horizon", "image", "lut"},
         {},
         {&perceptKind<Ball>()},
-        {{"ball.edge_points", "Ball edge points", debug_colour::kCyan}}};
+        {{"ball.edge_points", "Ball edge points", debug_colour::kSkyBlue}}};
     return info;
 }
 
@@ -154,8 +156,10 @@ void BallDetector::run(Blackboard& bb)
 
     // Edge points sit on pixel borders: half a pixel outside the run. Ends at the image border or
     // at the top of a vertical scan are not ball edges.
-    std::vector<PointF> edges;
-    std::vector<const ColourSegment*> chords;
+    std::vector<PointF>& edges = m_edges;
+    std::vector<const ColourSegment*>& chords = m_chords;
+    edges.clear();
+    chords.clear();
     for (const ColourSegment& s : hs) {
         const PointF c = s.centre();
         if (!gh.isBelow(int(c.x), int(c.y)))
@@ -173,7 +177,7 @@ void BallDetector::run(Blackboard& bb)
             edges.push_back({double(s.x0), s.y1 - 0.5});
     }
     if (auto* d = bb.debug.layer("ball.edge_points"))
-        d->add(pointsShape(edges, debug_colour::kCyan, 2));
+        d->add(pointsShape(edges, debug_colour::kSkyBlue, 2));
 
     const double spacing = bb.horizontalScanSpacing();
     RansacRng rng{m_seed.value()};
@@ -187,7 +191,7 @@ void BallDetector::run(Blackboard& bb)
 
     bool found = false;
     Circle ball;
-    for (auto& group : cluster(edges, m_cluster_distance)) {
+    for (auto& group : cluster(edges, m_cluster_distance, m_parent, m_slot)) {
         if (group.size() < 3)
             break;
         Circle c;

@@ -3,8 +3,10 @@
 #pragma once
 
 #include "visioncore/framework/stage.h"
+#include "visioncore/segments.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace fieldsight {
 
@@ -15,6 +17,12 @@ public:
     void run(Blackboard& bb) override;
 
 private:
+    // Per-frame scratch, kept so a frame allocates nothing once they have grown.
+    std::vector<PointF> m_edges;
+    std::vector<const ColourSegment*> m_chords;
+    std::vector<std::size_t> m_parent; ///< the clustering's union-find
+    std::vector<int> m_slot;
+
     Param<double> m_min_radius{
         this, 2.5, {"min_radius", "px", 0, 100, 0.5, "Balls with a smaller radius are ignored."}};
     Param<double> m_min_orange_fraction{

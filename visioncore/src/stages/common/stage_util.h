@@ -14,9 +14,9 @@ inline constexpr Rgb kRed{255, 0, 0};
 inline constexpr Rgb kBlue{0, 80, 255};
 inline constexpr Rgb kCyan{0, 255, 255};
 inline constexpr Rgb kGrey{128, 128, 128};
-inline constexpr Rgb kYellow{255, 255, 0};
-inline constexpr Rgb kBall{255, 160, 0};
 inline constexpr Rgb kWhite{255, 255, 255};
+inline constexpr Rgb kSkyBlue{40, 140, 255};
+inline constexpr Rgb kPurple{170, 60, 255};
 } // namespace debug_colour
 
 template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)

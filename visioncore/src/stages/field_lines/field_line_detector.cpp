@@ -34,11 +34,12 @@ double averageDistance(const Fitted& a, const Fitted& b)
 /// Splits inliers where consecutive points along the line are further apart than max_gap, so one
 /// model through two distant collinear pieces (or a chord through scattered points) does not
 /// become one long line; keeps the pieces with enough points.
-void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::vector<Fitted>& out)
+/// `sorted` is scratch.
+void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::vector<Fitted>& out,
+                 std::vector<std::pair<double, PointF>>& sorted)
 {
     // Sorted by position along the line, computed once per point rather than per comparison.
-    std::vector<std::pair<double, PointF>> sorted;
-    sorted.reserve(f.points.size());
+    sorted.clear();
     for (const PointF& p : f.points)
         sorted.push_back({f.line.along(p), p});
     std::sort(sorted.begin(), sorted.end(),
@@ -97,7 +98,7 @@ void FieldLineDetector::run(Blackboard& bb)
     std::vector<Fitted> lines;
     for (auto& r : ransacFindModels<ImageLine>(std::move(points), params, m_max_lines, rng)) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
-        splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines);
+        splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines, m_sorted);
     }
 
     // Merge colinear lines (the original computed this and then discarded the result).

@@ -3,8 +3,11 @@
 #pragma once
 
 #include "visioncore/framework/stage.h"
+#include "visioncore/geometry.h"
 
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace fieldsight {
 
@@ -15,6 +18,8 @@ public:
     void run(Blackboard& bb) override;
 
 private:
+    std::vector<std::pair<double, PointF>> m_sorted; ///< scratch of the gap split, kept
+
     Param<int> m_min_points{
         this, 12, {"min_points", "", 2, 1000, 1, "Line points needed for a field line."}};
     // With locality sampling 15 samples find what 40 independent ones did (B-Human log: 559 lines

@@ -89,9 +89,10 @@ void GoalpostDetector::run(Blackboard& bb)
     const auto& transitions = bb.horizontal_transitions[TransitionClass::Goal];
     if (transitions.empty())
         return;
-    std::vector<PointF> lefts, rights;
-    lefts.reserve(transitions.size());
-    rights.reserve(transitions.size());
+    std::vector<PointF>& lefts = m_lefts;
+    std::vector<PointF>& rights = m_rights;
+    lefts.clear();
+    rights.clear();
     const int w = bb.width();
     for (const ColourSegment& s : transitions) {
         // A run cut by the image border has no edge there.
@@ -124,8 +125,9 @@ void GoalpostDetector::run(Blackboard& bb)
         throw std::invalid_argument("matching_tolerance must be in [0, 1]");
     std::vector<bool> used(ends.size(), false);
     std::vector<Quad> posts;
+    std::vector<std::size_t> order;
     for (const Edge& s : starts) {
-        std::vector<std::size_t> order;
+        order.clear();
         for (std::size_t i = 0; i < ends.size(); ++i)
             if (!used[i])
                 order.push_back(i);

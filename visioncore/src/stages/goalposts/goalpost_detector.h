@@ -5,6 +5,7 @@
 #include "visioncore/framework/stage.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace fieldsight {
 
@@ -15,6 +16,10 @@ public:
     void run(Blackboard& bb) override;
 
 private:
+    // Per-frame scratch, kept so a frame allocates nothing once they have grown.
+    std::vector<PointF> m_lefts;
+    std::vector<PointF> m_rights;
+
     Param<int> m_min_points{
         this, 6, {"min_points", "", 2, 100, 1, "Edge points needed for a post edge."}};
     Param<int> m_iterations{

@@ -74,6 +74,9 @@ void GreenHorizonDetector::run(Blackboard& bb)
     const int max_gap = m_max_gap;
 
     auto& points = bb.gh_scan_points;
+    const cv::Mat& image = bb.image();
+    const ColourLut& lut = bb.lut();
+    const std::ptrdiff_t step = std::ptrdiff_t(image.step[0]);
     for (int x = 0; x < w; x += spacing) {
         const int y0 = std::clamp(int(bb.kinematic_horizon.yAt(x, w)), 0, h - 1);
         // A run starts on green and counts green pixels; it bridges gaps of up to max_gap pixels
@@ -83,8 +86,11 @@ void GreenHorizonDetector::run(Blackboard& bb)
         int green = 0;
         int gap = 0;
         int start = 0;
-        for (int y = y0; y < h; ++y) {
-            if (bb.classify(x, y) == Colour::Green) {
+        // Walked by pointer: the image and LUT cannot change under the loop, but the compiler
+        // cannot know that across the push_back below.
+        const std::uint8_t* p = image.ptr<std::uint8_t>(y0) + 3 * x;
+        for (int y = y0; y < h; ++y, p += step) {
+            if (lut.classify(p[0], p[1], p[2]) == Colour::Green) {
                 if (green == 0)
                     start = y;
                 gap = 0;
@@ -124,8 +130,8 @@ void GreenHorizonDetector::run(Blackboard& bb)
     const double sigma = std::sqrt(var / double(points.size()));
     const double threshold = mean - m_upper_threshold_mult * sigma;
 
-    std::vector<PointF> hull;
-    hull.reserve(points.size());
+    std::vector<PointF>& hull = m_hull;
+    hull.clear();
     for (const auto& p : points) {
         if (p.y < threshold) {
             bb.gh_thrown_points.push_back(p);
@@ -148,7 +154,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         hull.push_back(q);
     }
     dropEndDips(hull, points, min_green, 2.0 * spacing);
-    bb.green_horizon.set(std::move(hull), w, h);
+    bb.green_horizon.set(hull, w, h);
     bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 
     if (auto* d = bb.debug.layer("green_horizon.thrown_points"))

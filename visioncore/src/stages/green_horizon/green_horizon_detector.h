@@ -3,6 +3,9 @@
 #pragma once
 
 #include "visioncore/framework/stage.h"
+#include "visioncore/geometry.h"
+
+#include <vector>
 
 namespace fieldsight {
 
@@ -13,6 +16,8 @@ public:
     void run(Blackboard& bb) override;
 
 private:
+    std::vector<PointF> m_hull; ///< per-frame scratch, kept so a frame allocates nothing
+
     Param<int> m_scan_spacing{
         this,
         11,

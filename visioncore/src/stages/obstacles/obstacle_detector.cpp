@@ -29,19 +29,6 @@ unsigned fieldColours(const Blackboard& bb)
     return mask;
 }
 
-struct Run
-{
-    int x;
-    int top;
-    int bottom; ///< inclusive
-};
-
-struct Group
-{
-    int first_x, last_x, top, bottom, columns;
-    int last_top, last_bottom;
-};
-
 } // namespace
 
 const StageInfo& ObstacleDetector::info() const
@@ -55,7 +42,7 @@ const StageInfo& ObstacleDetector::info() const
         {"filtered_segments", "transitions", "scan_lines", "green_horizon", "goalposts"},
         {"obstacle_points"},
         {&perceptKind<Obstacle>()},
-        {{"obstacles.points", "Obstacle feet", debug_colour::kCyan}}};
+        {{"obstacles.points", "Obstacle feet", debug_colour::kPurple}}};
     return info;
 }
 
@@ -73,19 +60,22 @@ void ObstacleDetector::run(Blackboard& bb)
 
     // One run per scan line at most: the lowest long run of non-field colour, i.e. the nearest
     // object (its bottom is where it stands).
-    std::vector<Run> runs;
+    std::vector<Run>& runs = m_runs;
+    runs.clear();
     const int spacing = std::max(1, bb.verticalScanSpacing(1));
     // How many non-field pixels each vertical scan starts with: the field edge's own blend band
     // is about the same everywhere, so a column well deeper than the median is covered by
     // something standing at the edge of the field (a robot behind the goal line, whose foot is
     // barely below the green horizon and so too short for a run of its own).
-    std::vector<int> edge_depth(region.size(), 0);
+    std::vector<int>& edge_depth = m_edge_depth;
+    edge_depth.assign(region.size(), 0);
     for (std::size_t i = 0; i < region.size(); ++i) {
         const Scan& scan = region[i];
         for (std::size_t k = 0; k < scan.size() && !isFieldColour(scan[k].colour); ++k)
             edge_depth[i] += scan[k].length();
     }
-    std::vector<int> sorted_depth = edge_depth;
+    std::vector<int>& sorted_depth = m_sorted_depth;
+    sorted_depth.assign(edge_depth.begin(), edge_depth.end());
     std::nth_element(sorted_depth.begin(),
                      sorted_depth.begin() + std::ptrdiff_t(sorted_depth.size() / 2),
                      sorted_depth.end());
@@ -146,11 +136,12 @@ void ObstacleDetector::run(Blackboard& bb)
         }
     }
     if (auto* d = bb.debug.layer("obstacles.points"))
-        d->add(pointsShape(bb.obstacle_points, debug_colour::kCyan, 3));
+        d->add(pointsShape(bb.obstacle_points, debug_colour::kPurple, 3));
 
     // Group runs on neighbouring scan lines that overlap vertically.
     const int max_step = spacing * (1 + m_max_column_gap);
-    std::vector<Group> groups;
+    std::vector<Group>& groups = m_groups;
+    groups.clear();
     for (const Run& r : runs) {
         if (!groups.empty()) {
             Group& g = groups.back();

@@ -6,6 +6,8 @@
 
 #include "visioncore/framework/stage.h"
 
+#include <vector>
+
 namespace fieldsight {
 
 class ObstacleDetector : public Stage
@@ -15,6 +17,25 @@ public:
     void run(Blackboard& bb) override;
 
 private:
+    /// One scan line's obstacle run.
+    struct Run
+    {
+        int x;
+        int top;
+        int bottom; ///< inclusive
+    };
+    /// Runs on neighbouring scan lines taken for one obstacle.
+    struct Group
+    {
+        int first_x, last_x, top, bottom, columns;
+        int last_top, last_bottom;
+    };
+    // Per-frame scratch, kept so a frame allocates nothing once they have grown.
+    std::vector<Run> m_runs;
+    std::vector<int> m_edge_depth;
+    std::vector<int> m_sorted_depth;
+    std::vector<Group> m_groups;
+
     Param<int> m_min_run{this,
                          6,
                          {"min_run", "px", 1, 240, 1,

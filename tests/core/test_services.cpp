@@ -1,0 +1,160 @@
+// The core's services a GUI drives: running a stream with progress, cancel and a per-frame hook,
+// the worker pool, and results JSON written and read back.
+#include "support/synthetic_frames.h"
+#include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/obstacle.h"
+#include "visioncore/services/results_json.h"
+#include "visioncore/services/stream_runner.h"
+#include "visioncore/services/worker_pool.h"
+
+#include <QtTest>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <mutex>
+#include <set>
+
+using namespace fieldsight;
+
+namespace {
+
+StreamInput lab1()
+{
+    auto input = openStreamInput(test::sampleStreamsDir() + "/lab1", "");
+    if (!input)
+        qFatal("%s", input.error().message.c_str());
+    return std::move(input).value();
+}
+
+} // namespace
+
+class TestServices : public QObject
+{
+    Q_OBJECT
+private slots:
+    void everyWorkerRunsExactlyOnce()
+    {
+        std::mutex mutex;
+        std::multiset<int> ran;
+        runOnWorkers(4, [&](int t) {
+            std::lock_guard lock(mutex);
+            ran.insert(t);
+        });
+        QCOMPARE(ran, (std::multiset<int>{0, 1, 2, 3}));
+        QCOMPARE(workerCount(5, 1), 1); // never more workers than items
+        QVERIFY(workerCount(100000, 1000000) <=
+                int(std::max(1u, std::thread::hardware_concurrency())));
+        QVERIFY(workerCount(0, 10) >= 1);
+    }
+
+    void exceptionOnTheCallingWorkerIsRethrownAfterTheJoin()
+    {
+        std::atomic<int> others{0};
+        QVERIFY_THROWS_EXCEPTION(std::runtime_error, runOnWorkers(3, [&](int t) {
+                                     if (t == 0)
+                                         throw std::runtime_error("worker 0");
+                                     ++others;
+                                 }));
+        QCOMPARE(others.load(), 2);
+    }
+
+    void progressCountsEveryFrameAndResultsKeepTheirOrder()
+    {
+        StreamInput input = lab1();
+        const std::vector<std::size_t> indices{7, 3, 12, 0, 5};
+        std::vector<std::size_t> seen;
+        RunHooks hooks;
+        hooks.progress = [&](std::size_t done, std::size_t total) {
+            QCOMPARE(total, indices.size());
+            seen.push_back(done);
+        };
+        auto run = runStream(input, indices, 2, hooks);
+        QVERIFY(run.ok());
+        QVERIFY(!run.value().cancelled);
+        QCOMPARE(seen, (std::vector<std::size_t>{1, 2, 3, 4, 5}));
+        QCOMPARE(run.value().frames.size(), indices.size());
+        for (std::size_t i = 0; i < indices.size(); ++i)
+            QCOMPARE(run.value().frames[i].index, indices[i]);
+    }
+
+    void cancelKeepsAContiguousPrefix()
+    {
+        StreamInput input = lab1();
+        std::atomic<bool> cancel{false};
+        RunHooks hooks;
+        hooks.cancel = &cancel;
+        hooks.progress = [&](std::size_t done, std::size_t) {
+            if (done == 4)
+                cancel = true;
+        };
+        auto run = runStream(input, firstFrames(30), 2, hooks);
+        QVERIFY(run.ok());
+        QVERIFY(run.value().cancelled);
+        const auto& frames = run.value().frames;
+        QVERIFY(frames.size() < 30);
+        for (std::size_t i = 0; i < frames.size(); ++i)
+            QCOMPARE(frames[i].index, i);
+    }
+
+    void aFailingFrameHookStopsTheRunAsAFailure()
+    {
+        StreamInput input = lab1();
+        RunHooks hooks;
+        hooks.layers = {"ball.edge_points"};
+        std::atomic<int> calls{0};
+        hooks.on_frame = [&](const FrameResult& r, const Frame& f, const DebugCanvas& canvas) {
+            ++calls;
+            // The hook sees the frame's image and the layers it asked for.
+            if (f.ycbcr.cols != 320 || canvas.requested().count("ball.edge_points") != 1)
+                return Status(Error{"wrong frame or layers"});
+            return r.index == 2 ? Status(Error{"disk full"}) : Status();
+        };
+        QVERIFY_THROWS_EXCEPTION(std::runtime_error,
+                                 (void)runStream(input, firstFrames(6), 1, hooks));
+        QCOMPARE(calls.load(), 3);
+    }
+
+    void badSettingsAreRefusedBeforeAnyFrameRuns()
+    {
+        StreamInput input = lab1();
+        input.skip = {"scanlines"};
+        auto run = runStream(input, firstFrames(3), 1);
+        QVERIFY(!run.ok());
+        QVERIFY(QString::fromStdString(run.error().message).contains("cannot be skipped"));
+        input.skip = {};
+        input.params.set("ball", "min_radius", -1);
+        QVERIFY(!runStream(input, firstFrames(3), 1).ok());
+    }
+
+    void resultsJsonReadsBackToTheSameText()
+    {
+        StreamInput input = lab1();
+        input.skip = {"obstacles"};
+        auto run = runStream(input, firstFrames(5), 2);
+        QVERIFY(run.ok());
+        const std::vector<std::string> ids = Pipeline::standard().ids();
+        const std::string text = resultsJson(resultsHeader(input), run.value().frames, ids);
+        auto back = readResults(text, "results.json");
+        QVERIFY2(back.ok(), back.ok() ? "" : back.error().message.c_str());
+        const ResultsFile& file = back.value();
+        QCOMPARE(file.header.skipped_stages, std::vector<std::string>{"obstacles"});
+        QCOMPARE(file.frames.size(), std::size_t(5));
+        // Skipped lists stay absent, others present; timings stay in pipeline order.
+        QVERIFY(file.frames[0].percepts.find<Obstacle>() == nullptr);
+        QVERIFY(file.frames[0].percepts.find<Ball>() != nullptr);
+        QCOMPARE(file.frames[0].report.stages.front().stage, std::string("green_horizon"));
+        // Written again, every frame is the same (the summary is recomputed from rounded times).
+        const auto frames = [](const std::string& t) {
+            return nlohmann::json::parse(t)["frames"].dump();
+        };
+        QCOMPARE(frames(resultsJson(file.header, file.frames, ids)), frames(text));
+
+        QVERIFY(!readResults("{", "r.json").ok());
+        QVERIFY(!readResults(R"({"format": "fieldsight-results/1", "frames": [{"index": 0}]})",
+                             "r.json")
+                     .ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestServices)
+#include "test_services.moc"
