@@ -2,6 +2,7 @@
 // horizon are clustered and a circle is fitted to the largest cluster by RANSAC.
 #pragma once
 
+#include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
 #include "visioncore/segments.h"
 
@@ -47,8 +48,7 @@ private:
         {"min_edge_support", "", 0, 1, 0.05,
          "A partly hidden ball needs this share of the edge points its outline would give the "
          "scan lines."}};
-    Param<std::uint32_t> m_seed{
-        this, 1, {"seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."}};
+    Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
 } // namespace fieldsight

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "visioncore/framework/debug_drawing.h"
+#include "visioncore/framework/param.h"
 
 #include <vector>
 
@@ -18,6 +19,10 @@ inline constexpr Rgb kWhite{255, 255, 255};
 inline constexpr Rgb kSkyBlue{40, 140, 255};
 inline constexpr Rgb kPurple{170, 60, 255};
 } // namespace debug_colour
+
+/// The seed parameter of every stage that samples with RANSAC (default 1).
+inline constexpr ParamSpec kRansacSeed{
+    "seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."};
 
 template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)
 {

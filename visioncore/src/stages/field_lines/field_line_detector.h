@@ -2,6 +2,7 @@
 // green horizon, then colinear lines merged.
 #pragma once
 
+#include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
 #include "visioncore/geometry.h"
 
@@ -50,8 +51,7 @@ private:
                           {"locality", "", 0, 1000, 1,
                            "The second RANSAC point is drawn within this many points (in scan "
                            "order) of the first; 0 draws it anywhere."}};
-    Param<std::uint32_t> m_seed{
-        this, 1, {"seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."}};
+    Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
 } // namespace fieldsight

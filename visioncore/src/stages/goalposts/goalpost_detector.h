@@ -2,6 +2,7 @@
 // goal-coloured horizontal transitions, paired into post quads, merged and assigned left/right.
 #pragma once
 
+#include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
 
 #include <cstdint>
@@ -55,8 +56,7 @@ private:
         this,
         1.5,
         {"merge_widths", "", 0, 10, 0.1, "Posts closer than this many post widths are merged."}};
-    Param<std::uint32_t> m_seed{
-        this, 1, {"seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."}};
+    Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
 } // namespace fieldsight
