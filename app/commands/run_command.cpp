@@ -67,10 +67,7 @@ int runCommand(const QStringList& args, const Context& ctx)
             for (const QString& id : list.split(',', Qt::SkipEmptyParts))
                 skip.push_back(id.trimmed().toStdString());
         // Checked before the stream is opened (opening can decode a frame).
-        StreamInput probe;
-        probe.pipeline = &ctx.pipeline;
-        probe.skip = skip;
-        if (Status s = probe.checkSettings(); !s)
+        if (Status s = checkSkip(ctx.pipeline, skip); !s)
             return badInput(ctx, "--skip: " + s.error().message);
         auto input = openInput(parser, stream, ctx);
         if (!input)

@@ -63,17 +63,13 @@ Status ControlWrapper::setParam(std::string_view stage_id, std::string_view name
 
 Status ControlWrapper::applyParams(const ParamSet& params)
 {
-    // A bad value puts back every value set before it, so a bad set changes nothing (the old
-    // values were valid, so putting them back cannot fail).
-    const ParamSet before = this->params();
+    // Checked whole first, so a bad set changes nothing.
+    if (Status s = params.check(stages()); !s)
+        return s;
     for (const auto& [stage, values] : params.values)
         for (const auto& [name, value] : values)
-            if (Status s = setParam(stage, name, value); !s) {
-                for (const auto& [s_id, old_values] : before.values)
-                    for (const auto& [old_name, old_value] : old_values)
-                        (void)setParam(s_id, old_name, old_value);
+            if (Status s = setParam(stage, name, value); !s)
                 return s;
-            }
     return {};
 }
 

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 #include <cstdlib>
 
 namespace fieldsight {
@@ -43,19 +45,33 @@ Status ParamSet::parseSetting(std::string_view text)
     return {};
 }
 
-Status ParamSet::check(const Pipeline& pipeline) const
+Status ParamSet::check(const std::vector<StageDescriptor>& stages) const
 {
-    Controller scratch(pipeline); // fresh stages to try the values on
     for (const auto& [stage_id, params] : values) {
-        Stage* stage = scratch.stage(stage_id);
-        if (!stage)
-            return Error{"unknown stage '" + stage_id + "' (the stages are " + pipeline.idList() +
-                         ")"};
-        for (const auto& [name, value] : params)
-            if (Status s = stage->setParam(name, value); !s)
+        const auto stage =
+            std::find_if(stages.begin(), stages.end(),
+                         [&](const StageDescriptor& d) { return d.info.id == stage_id; });
+        if (stage == stages.end()) {
+            std::string list;
+            for (const StageDescriptor& d : stages)
+                list += (list.empty() ? "" : ", ") + d.info.id;
+            return Error{"unknown stage '" + stage_id + "' (the stages are " + list + ")"};
+        }
+        for (const auto& [name, value] : params) {
+            const auto param = std::find_if(stage->params.begin(), stage->params.end(),
+                                            [&](const ParamInfo& p) { return p.name == name; });
+            if (param == stage->params.end())
+                return Error{stage_id + ": no parameter named '" + name + "'"};
+            if (Status s = checkParamValue(*param, stage_id, value); !s)
                 return s;
+        }
     }
     return {};
+}
+
+Status ParamSet::check(const Pipeline& pipeline) const
+{
+    return check(pipeline.descriptors());
 }
 
 std::string ParamSet::toJson() const

@@ -72,22 +72,29 @@ std::string number(double v)
 }
 } // namespace
 
-Status ParamBase::set(std::string_view stage_id, double value)
+Status checkParamValue(const ParamInfo& param, std::string_view stage_id, double value)
 {
-    const std::string where = std::string(stage_id) + "." + m_info.name + ": ";
-    if (!std::isfinite(value) || value < m_info.min || value > m_info.max)
-        return Error{where + number(value) + " is outside [" + number(m_info.min) + ", " +
-                     number(m_info.max) + "]"};
-    if (m_info.kind != ParamKind::Real && value != std::floor(value))
+    const std::string where = std::string(stage_id) + "." + param.name + ": ";
+    if (!std::isfinite(value) || value < param.min || value > param.max)
+        return Error{where + number(value) + " is outside [" + number(param.min) + ", " +
+                     number(param.max) + "]"};
+    if (param.kind != ParamKind::Real && value != std::floor(value))
         return Error{where + number(value) + " is not a whole number (" +
-                     std::string(paramKindName(m_info.kind)) + ")"};
-    if (m_info.kind == ParamKind::Choice) {
+                     std::string(paramKindName(param.kind)) + ")"};
+    if (param.kind == ParamKind::Choice) {
         bool known = false;
-        for (const ParamChoice& c : m_info.choices)
+        for (const ParamChoice& c : param.choices)
             known = known || c.value == value;
         if (!known)
             return Error{where + number(value) + " is not one of its choices"};
     }
+    return {};
+}
+
+Status ParamBase::set(std::string_view stage_id, double value)
+{
+    if (Status s = checkParamValue(m_info, stage_id, value); !s)
+        return s;
     store(value);
     return {};
 }
@@ -104,7 +111,7 @@ std::vector<ParamInfo> Stage::params() const
 Status Stage::setParam(std::string_view name, double value)
 {
     for (ParamBase* p : m_params)
-        if (p->info().name == name)
+        if (p->name() == name)
             return p->set(info().id, value);
     return Error{info().id + ": no parameter named '" + std::string(name) + "'"};
 }

@@ -50,14 +50,6 @@ const PerceptEntry* PerceptSet::find(const PerceptKind& kind) const
     return nullptr;
 }
 
-const PerceptEntry* PerceptSet::find(std::string_view key, PerceptNames names) const
-{
-    for (const auto& e : m_entries)
-        if (e->present() && nameOf(e->kind(), names) == key)
-            return e.get();
-    return nullptr;
-}
-
 std::vector<const PerceptEntry*> PerceptSet::entries() const
 {
     std::vector<const PerceptEntry*> out;

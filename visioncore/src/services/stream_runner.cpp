@@ -33,16 +33,23 @@ Result<StreamInput> openStreamInput(const std::string& stream, const std::string
     return input;
 }
 
-Status StreamInput::checkSettings() const
+Status checkSkip(const Pipeline& pipeline, const std::vector<std::string>& skip)
 {
     for (const std::string& id : skip) {
-        const StageDescriptor* d = pipeline->find(id);
+        const StageDescriptor* d = pipeline.find(id);
         if (!d)
-            return Error{"unknown stage '" + id + "' to skip (the stages are " +
-                         pipeline->idList() + ")"};
+            return Error{"unknown stage '" + id + "' to skip (the stages are " + pipeline.idList() +
+                         ")"};
         if (!d->info.skippable)
             return Error{"stage '" + id + "' cannot be skipped: later stages need it"};
     }
+    return {};
+}
+
+Status StreamInput::checkSettings() const
+{
+    if (Status s = checkSkip(*pipeline, skip); !s)
+        return s;
     return params.check(*pipeline);
 }
 

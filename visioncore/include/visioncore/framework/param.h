@@ -46,6 +46,11 @@ struct ParamInfo
     std::vector<ParamChoice> choices; ///< Choice only
 };
 
+/// Whether `value` suits `param` (range, whole numbers for integers and choices, a known choice);
+/// the message names `stage_id`.`name`. ParamBase::set, ParamSet::check and
+/// ControlWrapper::applyParams all judge values by this.
+Status checkParamValue(const ParamInfo& param, std::string_view stage_id, double value);
+
 /// How a parameter is declared, apart from its default (which has the parameter's own type).
 struct ParamSpec
 {
@@ -66,6 +71,7 @@ public:
 
     /// The info with the current value.
     ParamInfo info() const;
+    const std::string& name() const { return m_info.name; }
     double get() const { return load(); }
     /// Checks `value` against the kind and range; the message names `stage_id`.`name`.
     Status set(std::string_view stage_id, double value);

@@ -7,10 +7,12 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fieldsight {
 
 class Pipeline;
+struct StageDescriptor;
 
 struct ParamSet
 {
@@ -24,8 +26,10 @@ struct ParamSet
 
     /// Parses "STAGE.PARAM=VALUE" (e.g. transitions.goal_colour=9) into this set.
     Status parseSetting(std::string_view setting);
-    /// Every value names a stage and parameter of `pipeline` and is valid for it (kind, range).
+    /// Every value names a stage and parameter of `pipeline` (or of `stages`) and is valid for
+    /// it (kind, range).
     Status check(const Pipeline& pipeline) const;
+    Status check(const std::vector<StageDescriptor>& stages) const;
 
     /// {"format": "fieldsight-params/1", "stages": {"ball": {"min_radius": 2.5}}}
     std::string toJson() const;

@@ -168,9 +168,6 @@ public:
         e.m_present = true;
     }
     const PerceptEntry* find(const PerceptKind& kind) const;
-    /// The present entry whose key (or truth key) is `key`, or nullptr.
-    const PerceptEntry* find(std::string_view key,
-                             PerceptNames names = PerceptNames::Results) const;
     /// Present entries, in order.
     std::vector<const PerceptEntry*> entries() const;
     std::size_t presentCount() const { return m_present_count; }

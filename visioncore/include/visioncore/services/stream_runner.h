@@ -37,6 +37,9 @@ struct StreamInput
     Status checkSettings() const;
 };
 
+/// Every id names a stage of `pipeline` that can be skipped.
+Status checkSkip(const Pipeline& pipeline, const std::vector<std::string>& skip);
+
 /// Opens `stream` and the LUT `lut_path`, or the stream's default LUT when `lut_path` is empty.
 /// Errors name the file and the problem.
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
