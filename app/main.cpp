@@ -10,10 +10,9 @@ int main(int argc, char* argv[])
 {
     using namespace fieldsight;
     const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
-    if (command.isEmpty() || command == "gui") {
-        std::cerr << "fieldsight: the GUI is not built yet; try 'fieldsight run STREAM'\n";
-        return cli::kExitBadInput;
-    }
+    const cli::Context ctx{Pipeline::standard(), std::cout, std::cerr};
+    if (command.isEmpty() || command == "gui")
+        return cli::guiCommand(argc, argv, ctx);
     if (command == "--version" || command == "-v") {
         std::cout << "fieldsight " << FIELDSIGHT_VERSION << '\n';
         return cli::kExitOk;
@@ -25,6 +24,5 @@ int main(int argc, char* argv[])
     // A command's parser sees the program name followed by the command's own arguments.
     QStringList args = QCoreApplication::arguments();
     args.removeAt(1);
-    const cli::Context ctx{Pipeline::standard(), std::cout, std::cerr};
     return cli::runHeadless(command, args, ctx);
 }

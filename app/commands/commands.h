@@ -12,6 +12,9 @@ int benchCommand(const QStringList& args, const Context& ctx);
 int evalCommand(const QStringList& args, const Context& ctx);
 int synthCommand(const QStringList& args, const Context& ctx);
 int lutCommand(const QStringList& args, const Context& ctx);
+/// The GUI: makes the QApplication from `argc` and `argv` (which hold the program name, then
+/// "gui" or nothing, then the GUI's arguments), opens the main window and runs it.
+int guiCommand(int& argc, char** argv, const Context& ctx);
 
 /// The overview `fieldsight help` prints, with the pipeline's stage ids.
 std::string usageText(const Pipeline& pipeline);

@@ -1,0 +1,50 @@
+// `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
+#include "commands/commands.h"
+#include "ui/main_window.h"
+
+#include <QApplication>
+
+namespace fieldsight::cli {
+
+int guiCommand(int& argc, char** argv, const Context& ctx)
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("Fieldsight"));
+    QApplication::setApplicationName(QStringLiteral("fieldsight"));
+    QApplication::setApplicationVersion(QStringLiteral(FIELDSIGHT_VERSION));
+    QApplication::setApplicationDisplayName(QStringLiteral("Fieldsight"));
+
+    QStringList args = QApplication::arguments();
+    if (args.size() > 1 && args[1] == QLatin1String("gui"))
+        args.removeAt(1);
+    QCommandLineParser parser;
+    parser.setApplicationDescription("Opens the GUI on STREAM (a folder of images, a .strm file, "
+                                     "a video file or camera:N), or on the last session's "
+                                     "stream, or on the bundled sample stream.");
+    parser.addPositionalArgument("STREAM", "The stream to open.", "[STREAM]");
+    parser.addOption(lutOption());
+    parser.addOption(setOption());
+    parser.addOption(paramsOption());
+    if (const std::optional<int> done = parseCommand(parser, "gui", args, 0, 1, ctx))
+        return *done;
+    auto params = paramsFrom(parser);
+    if (!params)
+        return badInput(ctx, params.error().message);
+    if (Status s = params.value().check(ctx.pipeline); !s)
+        return badInput(ctx, s.error().message);
+
+    ui::MainWindow window(ctx.pipeline);
+    (void)window.document().setParamChanges(params.value());
+    window.show();
+    const QString lut = parser.value(QStringLiteral("lut"));
+    const QStringList positional = parser.positionalArguments();
+    if (!positional.isEmpty())
+        window.openStream(positional.front(), lut);
+    else if (!lut.isEmpty())
+        window.openStream(ui::MainWindow::bundledSampleStream(), lut);
+    else
+        window.openLastSession();
+    return QApplication::exec();
+}
+
+} // namespace fieldsight::cli

@@ -1,0 +1,117 @@
+#include "ui/document/bookmarks.h"
+
+#include "visioncore/io/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fieldsight::ui {
+
+namespace {
+constexpr const char* kFormat = "fieldsight-bookmarks/1";
+}
+
+std::string Bookmarks::sidecarPath(const std::string& stream)
+{
+    if (stream.empty() || stream.rfind("camera:", 0) == 0)
+        return {};
+    std::error_code ec;
+    if (std::filesystem::is_directory(stream, ec))
+        return (std::filesystem::path(stream) / "bookmarks.json").string();
+    return stream + ".bookmarks.json";
+}
+
+Result<Bookmarks> Bookmarks::load(const std::string& path)
+{
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return Bookmarks{};
+    if (!std::filesystem::is_regular_file(path, ec))
+        return Error{path + ": not a regular file"};
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return Error{path + ": cannot open for reading"};
+    std::ostringstream text;
+    text << in.rdbuf();
+    return fromJson(text.str(), path);
+}
+
+Result<Bookmarks> Bookmarks::fromJson(const std::string& text, const std::string& source)
+{
+    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object())
+        return Error{source + ": not a JSON object"};
+    if (doc.value("format", std::string()) != kFormat)
+        return Error{source + ": format must be \"" + kFormat + "\""};
+    const auto list = doc.find("bookmarks");
+    if (list == doc.end() || !list->is_array())
+        return Error{source + ": bookmarks must be an array"};
+    Bookmarks marks;
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        const auto& b = (*list)[i];
+        const std::string where = source + ": bookmarks[" + std::to_string(i) + "]";
+        if (!b.is_object() || !b.contains("frame") || !b["frame"].is_number_unsigned())
+            return Error{where + ".frame must be a frame index (0 or more)"};
+        Bookmark mark;
+        mark.frame = b["frame"].get<std::size_t>();
+        if (b.contains("name") && b["name"].is_string())
+            mark.name = b["name"].get<std::string>();
+        if (b.contains("note")) {
+            if (!b["note"].is_string())
+                return Error{where + ".note must be a string"};
+            mark.note = b["note"].get<std::string>();
+        }
+        marks.set(std::move(mark));
+    }
+    return marks;
+}
+
+std::string Bookmarks::toJson() const
+{
+    nlohmann::ordered_json doc;
+    doc["format"] = kFormat;
+    doc["bookmarks"] = nlohmann::ordered_json::array();
+    for (const Bookmark& b : m_list)
+        doc["bookmarks"].push_back({{"frame", b.frame}, {"name", b.name}, {"note", b.note}});
+    return doc.dump(1) + "\n";
+}
+
+Status Bookmarks::save(const std::string& path) const
+{
+    const std::string text = toJson();
+    return writeFileAtomically(path, text.data(), text.size());
+}
+
+void Bookmarks::set(Bookmark mark)
+{
+    const auto it = std::lower_bound(m_list.begin(), m_list.end(), mark.frame,
+                                     [](const Bookmark& b, std::size_t f) { return b.frame < f; });
+    if (it != m_list.end() && it->frame == mark.frame)
+        *it = std::move(mark);
+    else
+        m_list.insert(it, std::move(mark));
+}
+
+bool Bookmarks::remove(std::size_t frame)
+{
+    const auto it = std::find_if(m_list.begin(), m_list.end(),
+                                 [&](const Bookmark& b) { return b.frame == frame; });
+    if (it == m_list.end())
+        return false;
+    m_list.erase(it);
+    return true;
+}
+
+const Bookmark* Bookmarks::find(std::size_t frame) const
+{
+    for (const Bookmark& b : m_list)
+        if (b.frame == frame)
+            return &b;
+    return nullptr;
+}
+
+} // namespace fieldsight::ui

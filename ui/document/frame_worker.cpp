@@ -1,0 +1,214 @@
+#include "ui/document/frame_worker.h"
+
+#include "ui/adapters/image_adapter.h"
+#include "visioncore/services/layers.h"
+
+#include <QMetaObject>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+
+namespace fieldsight::ui {
+
+namespace {
+
+LayerSet allLayerIds(const Pipeline& pipeline)
+{
+    LayerSet ids;
+    for (const LayerInfo& layer : allLayers(pipeline))
+        ids.insert(layer.id);
+    return ids;
+}
+
+LayerSet stageLayerIds(const Pipeline& pipeline)
+{
+    LayerSet ids;
+    for (const LayerInfo& layer : pipeline.layers())
+        ids.insert(layer.id);
+    return ids;
+}
+
+/// "Balls" -> "Ball": a label names one detection.
+QString singular(std::string_view title)
+{
+    QString t = QString::fromUtf8(title.data(), qsizetype(title.size()));
+    if (t.size() > 1 && t.endsWith('s'))
+        t.chop(1);
+    return t;
+}
+
+std::optional<double> number(const nlohmann::ordered_json& object, const char* key)
+{
+    const auto it = object.find(key);
+    if (it == object.end() || !it->is_number())
+        return std::nullopt;
+    return it->get<double>();
+}
+
+/// Where a percept is, from the SPEC §5.1 fields it has (a circle, a box, a segment or a point).
+std::optional<QRectF> boundsOf(const nlohmann::ordered_json& o)
+{
+    const auto x = number(o, "x"), y = number(o, "y"), r = number(o, "radius");
+    const auto left = number(o, "left"), right = number(o, "right"), top = number(o, "top"),
+               bottom = number(o, "bottom");
+    const auto x1 = number(o, "x1"), y1 = number(o, "y1"), x2 = number(o, "x2"),
+               y2 = number(o, "y2");
+    if (x && y && r)
+        return QRectF(*x - *r, *y - *r, 2 * *r, 2 * *r);
+    if (left && right && top && bottom)
+        return QRectF(QPointF(*left, *top), QPointF(*right, *bottom)).normalized();
+    if (x1 && y1 && x2 && y2)
+        return QRectF(QPointF(*x1, *y1), QPointF(*x2, *y2)).normalized().adjusted(-2, -2, 2, 2);
+    if (x && y)
+        return QRectF(*x - 2, *y - 2, 4, 4);
+    return std::nullopt;
+}
+
+QString fieldsText(const nlohmann::ordered_json& o)
+{
+    QStringList lines;
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString key = QString::fromStdString(it.key());
+        if (it->is_number_float())
+            lines << QStringLiteral("%1: %2").arg(key).arg(it->get<double>(), 0, 'f', 1);
+        else
+            lines << QStringLiteral("%1: %2").arg(key, QString::fromStdString(it->dump()));
+    }
+    return lines.join('\n');
+}
+
+} // namespace
+
+std::vector<PerceptItem> perceptItems(const PerceptSet& percepts)
+{
+    std::vector<PerceptItem> items;
+    for (const PerceptEntry* entry : percepts.entries()) {
+        nlohmann::ordered_json list;
+        entry->toJson(PerceptNames::Results, list);
+        if (!list.is_array())
+            continue;
+        const std::string layer =
+            std::string(kPerceptLayerPrefix) + "." + std::string(entry->kind().key);
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const auto& object = list[i];
+            if (!object.is_object())
+                continue; // a polyline point, not a detection of its own
+            const std::optional<QRectF> bounds = boundsOf(object);
+            if (!bounds)
+                continue;
+            const QString label = singular(entry->kind().title) + ' ' + QString::number(i + 1);
+            items.push_back({layer, *bounds, label, label + '\n' + fieldsText(object)});
+        }
+    }
+    return items;
+}
+
+void convertFrame(const cv::Mat& ycbcr, const ColourLut& lut, QImage& raw, QImage& classified,
+                  cv::Mat& classes)
+{
+    raw = ycbcrToZoomedQImage(ycbcr, 1);
+    if (raw.isNull())
+        return;
+    std::array<QRgb, 256> palette{};
+    for (int c = 0; c < kColourCount; ++c) {
+        const Rgb rgb = colourDisplayRgb(Colour(c));
+        palette[std::size_t(c)] = qRgb(rgb.r, rgb.g, rgb.b);
+    }
+    classes.create(ycbcr.rows, ycbcr.cols, CV_8UC1);
+    classified = QImage(ycbcr.cols, ycbcr.rows, QImage::Format_RGB32);
+    for (int y = 0; y < ycbcr.rows; ++y) {
+        std::uint8_t* ids = classes.ptr<std::uint8_t>(y);
+        lut.classifyRun(ycbcr.ptr<std::uint8_t>(y), 3, ycbcr.cols, ids);
+        auto* out = reinterpret_cast<QRgb*>(classified.scanLine(y));
+        for (int x = 0; x < ycbcr.cols; ++x)
+            out[x] = palette[ids[x]];
+    }
+}
+
+FrameWorker::FrameWorker(const Pipeline& pipeline)
+    : m_pipeline(pipeline), m_layers(allLayerIds(pipeline)), m_control(m_data, pipeline)
+{
+    m_data.setRequestedLayers(stageLayerIds(pipeline));
+}
+
+void FrameWorker::submit(FrameRequest request)
+{
+    std::lock_guard lock(m_mutex);
+    m_pending = std::move(request);
+    if (m_scheduled)
+        return; // the queued call takes the newest request
+    m_scheduled = true;
+    QMetaObject::invokeMethod(this, &FrameWorker::processPending, Qt::QueuedConnection);
+}
+
+void FrameWorker::processPending()
+{
+    FrameRequest request;
+    {
+        std::lock_guard lock(m_mutex);
+        m_scheduled = false;
+        if (!m_pending)
+            return;
+        request = std::move(*m_pending);
+        m_pending.reset();
+    }
+    emit frameDone(run(request));
+}
+
+std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)
+{
+    const auto start = std::chrono::steady_clock::now();
+    auto out = std::make_shared<FrameOutput>();
+    out->serial = request.serial;
+    out->index = request.index;
+    if (!request.source || !request.source->reader) {
+        out->error = QStringLiteral("no stream is open");
+        return out;
+    }
+    StreamReader& reader = *request.source->reader;
+    if (Status s = reader.readInto(request.index, m_data.frame()); !s) {
+        out->error = QString::fromStdString(s.error().message);
+        out->frame.name = reader.frameName(request.index);
+        return out;
+    }
+
+    if (request.params != m_applied_params) {
+        m_control.resetParams();
+        if (request.params) {
+            if (Status s = m_control.applyParams(*request.params); !s)
+                out->error = QString::fromStdString(s.error().message);
+        }
+        m_applied_params = request.params;
+    }
+    for (const StageDescriptor& stage : m_control.stages()) {
+        if (stage.info.skippable)
+            (void)m_control.setStageEnabled(stage.info.id, request.skip.count(stage.info.id) == 0);
+    }
+    m_data.setLut(request.lut);
+
+    Result<FrameReport> report = m_control.runFrame();
+    const Frame& frame = m_data.frame();
+    out->frame.name = frame.name;
+    out->frame.timestamp_ms = frame.timestamp_ms;
+    out->frame.horizon = frame.horizon;
+    out->frame.ycbcr = frame.ycbcr.clone();
+    if (!report) {
+        out->error = QString::fromStdString(frame.name + ": " + report.error().message);
+        return out;
+    }
+    out->result =
+        collectResult(request.index, frame.name, std::move(report).value(), m_control.blackboard());
+
+    const auto truth_it = request.source->truth.find(frameStem(frame.name));
+    const PerceptSet* truth = truth_it == request.source->truth.end() ? nullptr : truth_it->second;
+    out->drawings =
+        frameDrawings(m_pipeline, m_layers, m_data.canvas(), out->result.percepts, truth);
+    out->items = perceptItems(out->result.percepts);
+    convertFrame(out->frame.ycbcr, m_data.lut(), out->raw, out->classified, out->classes);
+    out->worker_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,107 @@
+// The worker that runs the core off the GUI thread: one ControlWrapper of its own, fed through a
+// GuiDataWrapper, and a mailbox that keeps only the newest request, so a frame superseded by a
+// newer step is dropped, not queued.
+#pragma once
+
+#include "ui/document/gui_data_wrapper.h"
+#include "visioncore/framework/control_wrapper.h"
+#include "visioncore/io/annotations.h"
+#include "visioncore/io/stream_reader.h"
+#include "visioncore/services/stream_runner.h"
+
+#include <QImage>
+#include <QObject>
+#include <QRectF>
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fieldsight::ui {
+
+/// An open stream as the worker reads it. Only the worker thread touches the reader.
+struct FrameSource
+{
+    std::unique_ptr<StreamReader> reader;
+    std::shared_ptr<const Annotations> annotations; ///< may be null
+    std::map<std::string, const PerceptSet*> truth; ///< by frame stem, into `annotations`
+};
+
+/// What one run uses; each version of the LUT or the settings is a new immutable object, so an
+/// edit in the GUI never changes what a running worker reads.
+struct FrameRequest
+{
+    std::uint64_t serial = 0;
+    std::size_t index = 0;
+    std::shared_ptr<FrameSource> source;
+    std::shared_ptr<const ColourLut> lut;
+    std::shared_ptr<const ParamSet> params; ///< values that differ from the defaults
+    std::set<std::string, std::less<>> skip;
+};
+
+/// A detection as the view shows it: where it is, for hovering, and its numbers.
+struct PerceptItem
+{
+    std::string layer; ///< the percept layer it is drawn on ("percepts.balls")
+    QRectF bounds;     ///< image px, pixel-centre coordinates
+    QString label;     ///< short, drawn beside it ("Ball 1")
+    QString details;   ///< its fields, one per line
+};
+
+/// Everything the GUI shows of one frame, made on the worker thread and then only read.
+struct FrameOutput
+{
+    std::uint64_t serial = 0;
+    std::size_t index = 0;
+    QString error;     ///< the frame could not be read or run; the rest is empty
+    Frame frame;       ///< its own copy of the pixels
+    QImage raw;        ///< RGB32, the frame as a person sees it
+    QImage classified; ///< RGB32, every pixel in its colour class's display colour (SPEC §1)
+    cv::Mat classes;   ///< CV_8U colour ids
+    FrameResult result;
+    std::vector<DebugDrawing> drawings; ///< every layer, in drawing order
+    std::vector<PerceptItem> items;
+    double worker_ms = 0; ///< read, run and convert
+};
+
+class FrameWorker : public QObject
+{
+    Q_OBJECT
+public:
+    /// Every layer of `pipeline` is drawn on every run, so a layer toggle needs no re-run.
+    explicit FrameWorker(const Pipeline& pipeline);
+
+    /// Thread-safe. Replaces any request not yet started.
+    void submit(FrameRequest request);
+
+signals:
+    void frameDone(std::shared_ptr<const FrameOutput> output);
+
+private:
+    void processPending();
+    std::shared_ptr<FrameOutput> run(const FrameRequest& request);
+
+    const Pipeline& m_pipeline;
+    std::set<std::string, std::less<>> m_layers;
+    GuiDataWrapper m_data;
+    ControlWrapper m_control;
+    std::shared_ptr<const ParamSet> m_applied_params;
+
+    std::mutex m_mutex;
+    std::optional<FrameRequest> m_pending;
+    bool m_scheduled = false;
+};
+
+/// The percept items of one frame's detections.
+std::vector<PerceptItem> perceptItems(const PerceptSet& percepts);
+
+/// The frame in display colours and in colour-class colours (Format_RGB32), and the class ids.
+void convertFrame(const cv::Mat& ycbcr, const ColourLut& lut, QImage& raw, QImage& classified,
+                  cv::Mat& classes);
+
+} // namespace fieldsight::ui

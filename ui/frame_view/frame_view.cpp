@@ -1,0 +1,320 @@
+#include "ui/frame_view/frame_view.h"
+
+#include "ui/adapters/overlay_painter.h"
+
+#include <QHelpEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QToolTip>
+#include <QWheelEvent>
+
+#include <array>
+#include <cmath>
+
+namespace fieldsight::ui {
+
+namespace {
+
+/// Zoom steps of the wheel and the zoom actions: whole multiples above 1 keep every image pixel
+/// the same size on screen.
+constexpr std::array<double, 14> kZoomSteps{0.25, 0.5, 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
+constexpr int kPanelGap = 8; ///< widget px between the two panels of side by side
+const QColor kBackground(45, 45, 48);
+
+} // namespace
+
+FrameView::FrameView(QWidget* parent) : QWidget(parent)
+{
+    setMouseTracking(true);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(160, 120);
+    setCursor(Qt::CrossCursor);
+}
+
+void FrameView::setOutput(std::shared_ptr<const FrameOutput> output)
+{
+    const QSize before = imageSize();
+    m_output = std::move(output);
+    if (imageSize() != before && m_fit)
+        applyFit();
+    update();
+}
+
+void FrameView::setVisibleLayers(LayerSet layers)
+{
+    m_visible = std::move(layers);
+    update();
+}
+
+void FrameView::setMode(ViewMode mode)
+{
+    m_mode = mode;
+    if (m_fit)
+        applyFit();
+    update();
+}
+
+void FrameView::setLabelsShown(bool shown)
+{
+    m_labels = shown;
+    update();
+}
+
+QSize FrameView::imageSize() const
+{
+    if (!m_output || m_output->raw.isNull())
+        return {};
+    return m_output->raw.size();
+}
+
+int FrameView::panelX(int panel) const
+{
+    return m_origin.x() + panel * (int(std::lround(imageSize().width() * m_zoom)) + kPanelGap);
+}
+
+void FrameView::setZoom(double zoom, QPointF anchor)
+{
+    zoom = std::clamp(zoom, kZoomSteps.front(), kZoomSteps.back());
+    const QPointF origin = anchor - (anchor - QPointF(m_origin)) * (zoom / m_zoom);
+    m_zoom = zoom;
+    m_origin = origin.toPoint();
+    m_fit = false;
+    emit zoomChanged(m_zoom);
+    update();
+}
+
+void FrameView::zoomIn()
+{
+    for (double step : kZoomSteps)
+        if (step > m_zoom * 1.0001)
+            return setZoom(step);
+}
+
+void FrameView::zoomOut()
+{
+    for (auto it = kZoomSteps.rbegin(); it != kZoomSteps.rend(); ++it)
+        if (*it < m_zoom * 0.9999)
+            return setZoom(*it);
+}
+
+void FrameView::fitToWindow()
+{
+    m_fit = true;
+    applyFit();
+    update();
+}
+
+void FrameView::applyFit()
+{
+    const QSize image = imageSize();
+    if (image.isEmpty() || width() <= 0 || height() <= 0)
+        return;
+    const double room_w = double(width() - (panelCount() - 1) * kPanelGap);
+    double zoom =
+        std::min(room_w / (image.width() * panelCount()), double(height()) / image.height());
+    // Whole zoom factors when there is room for them: every image pixel the same size.
+    if (zoom >= 1)
+        zoom = std::floor(zoom);
+    m_zoom = std::clamp(zoom, kZoomSteps.front(), kZoomSteps.back());
+    const int total_w =
+        int(std::lround(image.width() * m_zoom)) * panelCount() + (panelCount() - 1) * kPanelGap;
+    const int total_h = int(std::lround(image.height() * m_zoom));
+    m_origin = QPoint((width() - total_w) / 2, (height() - total_h) / 2);
+    emit zoomChanged(m_zoom);
+}
+
+void FrameView::setImageOrigin(QPoint origin)
+{
+    m_origin = origin;
+    m_fit = false;
+    update();
+}
+
+std::optional<QPointF> FrameView::imagePoint(QPointF pos) const
+{
+    const QSize image = imageSize();
+    if (image.isEmpty())
+        return std::nullopt;
+    for (int panel = 0; panel < panelCount(); ++panel) {
+        const double x = (pos.x() - panelX(panel)) / m_zoom;
+        const double y = (pos.y() - m_origin.y()) / m_zoom;
+        if (x >= 0 && y >= 0 && x < image.width() && y < image.height())
+            return QPointF(x - 0.5, y - 0.5);
+    }
+    return std::nullopt;
+}
+
+std::optional<QPoint> FrameView::pixelAt(QPointF pos) const
+{
+    const std::optional<QPointF> p = imagePoint(pos);
+    if (!p)
+        return std::nullopt;
+    return QPoint(int(std::floor(p->x() + 0.5)), int(std::floor(p->y() + 0.5)));
+}
+
+const PerceptItem* FrameView::itemAt(QPointF pos) const
+{
+    const std::optional<QPointF> p = imagePoint(pos);
+    if (!p || !m_output)
+        return nullptr;
+    const double margin = std::max(1.0, 3 / m_zoom); // a few screen px to aim with
+    const PerceptItem* best = nullptr;
+    for (const PerceptItem& item : m_output->items) {
+        if (!m_visible.count(item.layer))
+            continue;
+        const QRectF r = item.bounds.adjusted(-margin, -margin, margin, margin);
+        if (r.contains(*p) &&
+            (!best || r.width() * r.height() < best->bounds.width() * best->bounds.height()))
+            best = &item; // the smallest one under the cursor: a ball in front of a robot
+    }
+    return best;
+}
+
+void FrameView::paintEvent(QPaintEvent*)
+{
+    QPainter p(this);
+    p.fillRect(rect(), kBackground);
+    if (!m_output) {
+        p.setPen(Qt::lightGray);
+        p.drawText(rect(), Qt::AlignCenter,
+                   tr("No stream open: File > Open stream, or drop a "
+                      "folder, .strm or video file here"));
+        return;
+    }
+    const QSize image = imageSize();
+    if (!image.isEmpty()) {
+        std::vector<const DebugDrawing*> layers;
+        for (const DebugDrawing& d : m_output->drawings)
+            if (m_visible.count(d.layer))
+                layers.push_back(&d);
+        for (int panel = 0; panel < panelCount(); ++panel) {
+            p.save();
+            p.translate(panelX(panel), m_origin.y());
+            p.scale(m_zoom, m_zoom);
+            const bool classified = m_mode == ViewMode::Classified || panel == 1;
+            p.drawImage(QPointF(0, 0), classified ? m_output->classified : m_output->raw);
+            if (m_mode == ViewMode::Blend) {
+                p.setOpacity(0.5);
+                p.drawImage(QPointF(0, 0), m_output->classified);
+                p.setOpacity(1);
+            }
+            for (const DebugDrawing* d : layers)
+                paintDrawing(p, *d);
+            p.restore();
+        }
+        if (m_labels) {
+            p.setPen(Qt::white);
+            QFont font = p.font();
+            font.setPointSizeF(8);
+            p.setFont(font);
+            for (const PerceptItem& item : m_output->items) {
+                if (!m_visible.count(item.layer))
+                    continue;
+                const QPointF at(panelX(0) + (item.bounds.left() + 0.5) * m_zoom,
+                                 m_origin.y() + (item.bounds.top() + 0.5) * m_zoom - 4);
+                const QRectF box =
+                    p.fontMetrics().boundingRect(item.label).translated(at.toPoint());
+                p.fillRect(box.adjusted(-2, 0, 2, 0), QColor(0, 0, 0, 160));
+                p.drawText(at, item.label);
+            }
+        }
+    }
+    // A frame that failed, or a stage that threw: say so in the view, the tool goes on.
+    QStringList problems;
+    if (!m_output->error.isEmpty())
+        problems << m_output->error;
+    for (const Diagnostic& d : m_output->result.diagnostics)
+        problems << QString::fromStdString(d.stage + ": " + d.message);
+    if (!problems.isEmpty()) {
+        const QString text = problems.join('\n');
+        QRect box = p.fontMetrics().boundingRect(rect().adjusted(8, 8, -8, -8),
+                                                 Qt::AlignLeft | Qt::TextWordWrap, text);
+        box.adjust(-6, -4, 6, 4);
+        p.fillRect(box, QColor(150, 20, 20, 220));
+        p.setPen(Qt::white);
+        p.drawText(box.adjusted(6, 4, -6, -4), Qt::AlignLeft | Qt::TextWordWrap, text);
+    }
+    m_painted_serial = m_output->serial;
+    emit painted(m_painted_serial);
+}
+
+void FrameView::resizeEvent(QResizeEvent*)
+{
+    if (m_fit)
+        applyFit();
+}
+
+void FrameView::wheelEvent(QWheelEvent* event)
+{
+    const int steps = event->angleDelta().y() / 120;
+    if (steps == 0)
+        return;
+    const QPointF anchor = event->position();
+    for (int i = 0; i < std::abs(steps); ++i) {
+        double next = m_zoom;
+        if (steps > 0) {
+            for (double s : kZoomSteps)
+                if (s > m_zoom * 1.0001) {
+                    next = s;
+                    break;
+                }
+        } else {
+            for (auto it = kZoomSteps.rbegin(); it != kZoomSteps.rend(); ++it)
+                if (*it < m_zoom * 0.9999) {
+                    next = *it;
+                    break;
+                }
+        }
+        setZoom(next, anchor);
+    }
+    event->accept();
+}
+
+void FrameView::mousePressEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
+        m_drag_from = event->position().toPoint();
+        m_drag_origin = m_origin;
+        setCursor(Qt::ClosedHandCursor);
+    }
+}
+
+void FrameView::mouseMoveEvent(QMouseEvent* event)
+{
+    if (m_drag_from) {
+        m_origin = m_drag_origin + (event->position().toPoint() - *m_drag_from);
+        m_fit = false;
+        update();
+    }
+    if (const std::optional<QPoint> pixel = pixelAt(event->position()))
+        emit pixelHovered(*pixel);
+    else
+        emit hoverLeft();
+}
+
+void FrameView::mouseReleaseEvent(QMouseEvent*)
+{
+    m_drag_from.reset();
+    setCursor(Qt::CrossCursor);
+}
+
+void FrameView::leaveEvent(QEvent*)
+{
+    emit hoverLeft();
+}
+
+bool FrameView::event(QEvent* event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(event);
+        if (const PerceptItem* item = itemAt(help->pos()))
+            QToolTip::showText(help->globalPos(), item->details, this);
+        else
+            QToolTip::hideText();
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,97 @@
+// The frame view: one frame with its overlay layers, painted by the one overlay painter, with
+// wheel zoom around the cursor, drag to pan, crisp pixels at every zoom, and hover tooltips on
+// detections.
+#pragma once
+
+#include "ui/document/frame_worker.h"
+#include "visioncore/services/layers.h"
+
+#include <QPoint>
+#include <QPointF>
+#include <QWidget>
+
+#include <memory>
+
+namespace fieldsight::ui {
+
+enum class ViewMode {
+    Raw,        ///< the frame as a person sees it
+    Classified, ///< every pixel through the LUT, in its class's display colour
+    SideBySide, ///< raw on the left, classified on the right, both with the overlay
+    Blend,      ///< the classified frame over the raw one, half transparent
+};
+
+class FrameView : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit FrameView(QWidget* parent = nullptr);
+
+    void setOutput(std::shared_ptr<const FrameOutput> output);
+    const std::shared_ptr<const FrameOutput>& output() const { return m_output; }
+
+    void setVisibleLayers(LayerSet layers);
+    const LayerSet& visibleLayers() const { return m_visible; }
+    void setMode(ViewMode mode);
+    ViewMode mode() const { return m_mode; }
+    void setLabelsShown(bool shown);
+
+    double zoom() const { return m_zoom; }
+    /// Zooms to `zoom` keeping the image point under `anchor` (widget px) where it is.
+    void setZoom(double zoom, QPointF anchor);
+    void setZoom(double zoom) { setZoom(zoom, rect().center()); }
+    void zoomIn();
+    void zoomOut();
+    /// The whole frame (both panels side by side) fills the view; kept so on resizing.
+    void fitToWindow();
+    bool fitted() const { return m_fit; }
+    /// Where image pixel (0, 0)'s top-left corner is, in widget px (whole pixels).
+    QPoint imageOrigin() const { return m_origin; }
+    void setImageOrigin(QPoint origin);
+
+    /// The image pixel under widget point `pos`, if any.
+    std::optional<QPoint> pixelAt(QPointF pos) const;
+    /// The detection under widget point `pos`, if any.
+    const PerceptItem* itemAt(QPointF pos) const;
+    /// The serial of the output painted last.
+    std::uint64_t paintedSerial() const { return m_painted_serial; }
+
+signals:
+    void pixelHovered(QPoint pixel);
+    void hoverLeft();
+    void zoomChanged(double zoom);
+    void painted(std::uint64_t serial);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+    bool event(QEvent* event) override;
+
+private:
+    QSize imageSize() const;
+    int panelCount() const { return m_mode == ViewMode::SideBySide ? 2 : 1; }
+    /// Widget x of panel `panel`'s image origin.
+    int panelX(int panel) const;
+    /// Image coordinates (pixel-centre convention) of widget point `pos`, and its panel.
+    std::optional<QPointF> imagePoint(QPointF pos) const;
+    void applyFit();
+
+    std::shared_ptr<const FrameOutput> m_output;
+    LayerSet m_visible;
+    ViewMode m_mode = ViewMode::Raw;
+    bool m_labels = true;
+    double m_zoom = 1;
+    QPoint m_origin{0, 0};
+    bool m_fit = true;
+    QSize m_last_size;
+    std::optional<QPoint> m_drag_from;
+    QPoint m_drag_origin;
+    std::uint64_t m_painted_serial = 0;
+};
+
+} // namespace fieldsight::ui

@@ -1,0 +1,237 @@
+#include "ui/panels/pipeline_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace fieldsight::ui {
+
+namespace {
+
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+
+int decimalsFor(double step)
+{
+    if (step <= 0)
+        return 3;
+    return std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+}
+
+} // namespace
+
+PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
+    : QWidget(parent), m_doc(document)
+{
+    setObjectName(QStringLiteral("pipeline"));
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    auto* top = new QHBoxLayout;
+    auto* total = new QLabel(this);
+    total->setObjectName(QStringLiteral("total_time"));
+    top->addWidget(total, 1);
+    auto* reset_all = new QPushButton(tr("Reset all"), this);
+    reset_all->setToolTip(tr("Every parameter of every stage back to its default"));
+    connect(reset_all, &QPushButton::clicked, this, [this] {
+        if (Status s = m_doc.setParamChanges({}); !s)
+            emit problem(qs(s.error().message));
+    });
+    top->addWidget(reset_all);
+    outer->addLayout(top);
+    m_stages["total"].time = total;
+
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* inner = new QWidget(scroll);
+    auto* column = new QVBoxLayout(inner);
+    column->setContentsMargins(4, 4, 4, 4);
+
+    for (const StageDescriptor& stage : m_doc.pipeline().descriptors()) {
+        const std::string id = stage.info.id;
+        auto* box = new QGroupBox(qs(stage.info.name), inner);
+        box->setObjectName(qs(id));
+        box->setToolTip(qs(stage.info.description));
+        box->setCheckable(stage.info.skippable);
+        box->setChecked(m_doc.stageEnabled(id));
+        connect(box, &QGroupBox::toggled, this, [this, id](bool on) {
+            if (Status s = m_doc.setStageEnabled(id, on); !s)
+                emit problem(qs(s.error().message));
+        });
+        auto* form = new QFormLayout(box);
+        form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        auto* time = new QLabel(box);
+        time->setObjectName(qs(id + ".time"));
+        form->addRow(tr("Time"), time);
+        m_stages[id] = {box, time};
+
+        for (const ParamInfo& param : stage.params) {
+            const QString key = qs(id + "." + param.name);
+            ParamWidgets w{id, param, nullptr, {}, nullptr};
+            const QString unit = param.unit.empty() ? QString() : ' ' + qs(param.unit);
+            auto set = [this, id, name = param.name](double v) {
+                if (Status s = m_doc.setParam(id, name, v); !s)
+                    emit problem(qs(s.error().message));
+            };
+            switch (param.kind) {
+            case ParamKind::Real: {
+                auto* spin = new QDoubleSpinBox(box);
+                spin->setDecimals(decimalsFor(param.step));
+                spin->setRange(param.min, param.max);
+                spin->setSingleStep(param.step);
+                spin->setSuffix(unit);
+                spin->setKeyboardTracking(false);
+                connect(spin, &QDoubleSpinBox::valueChanged, this, set);
+                w.editor = spin;
+                w.show = [spin](double v) {
+                    QSignalBlocker block(spin);
+                    spin->setValue(v);
+                };
+                break;
+            }
+            case ParamKind::Integer: {
+                auto* spin = new QSpinBox(box);
+                spin->setRange(int(std::max(param.min, -2e9)), int(std::min(param.max, 2e9)));
+                spin->setSingleStep(std::max(1, int(param.step)));
+                spin->setSuffix(unit);
+                spin->setKeyboardTracking(false);
+                connect(spin, &QSpinBox::valueChanged, this, [set](int v) { set(v); });
+                w.editor = spin;
+                w.show = [spin](double v) {
+                    QSignalBlocker block(spin);
+                    spin->setValue(int(std::lround(v)));
+                };
+                break;
+            }
+            case ParamKind::Boolean: {
+                auto* check = new QCheckBox(box);
+                connect(check, &QCheckBox::toggled, this, [set](bool on) { set(on ? 1 : 0); });
+                w.editor = check;
+                w.show = [check](double v) {
+                    QSignalBlocker block(check);
+                    check->setChecked(v != 0);
+                };
+                break;
+            }
+            case ParamKind::Choice: {
+                auto* combo = new QComboBox(box);
+                for (const ParamChoice& c : param.choices)
+                    combo->addItem(qs(c.name), c.value);
+                connect(combo, &QComboBox::activated, this,
+                        [combo, set](int i) { set(combo->itemData(i).toInt()); });
+                w.editor = combo;
+                w.show = [combo](double v) {
+                    QSignalBlocker block(combo);
+                    combo->setCurrentIndex(combo->findData(int(std::lround(v))));
+                };
+                break;
+            }
+            }
+            w.editor->setObjectName(key);
+            QString tip = qs(param.description);
+            if (param.kind == ParamKind::Real || param.kind == ParamKind::Integer)
+                tip += tr("\nRange %1 to %2%3, default %4%3")
+                           .arg(param.min)
+                           .arg(param.max)
+                           .arg(unit)
+                           .arg(param.default_value);
+            w.editor->setToolTip(tip);
+            auto* reset = new QToolButton(box);
+            reset->setText(QStringLiteral("↺"));
+            reset->setToolTip(tr("Reset to the default (%1)").arg(param.default_value));
+            reset->setObjectName(key + ".reset");
+            connect(reset, &QToolButton::clicked, this,
+                    [this, id, name = param.name] { m_doc.resetParam(id, name); });
+            w.reset = reset;
+            auto* row = new QHBoxLayout;
+            row->addWidget(w.editor, 1);
+            row->addWidget(reset);
+            auto* label = new QLabel(qs(param.name), box);
+            label->setToolTip(tip);
+            form->addRow(label, row);
+            m_params[key] = std::move(w);
+        }
+        column->addWidget(box);
+    }
+    column->addStretch(1);
+    scroll->setWidget(inner);
+    outer->addWidget(scroll, 1);
+
+    connect(&m_doc, &StreamDocument::settingsChanged, this, &PipelinePanel::refreshValues);
+    connect(&m_doc, &StreamDocument::frameReady, this, &PipelinePanel::refreshTimes);
+    connect(&m_doc, &StreamDocument::streamChanged, this, &PipelinePanel::refreshTimes);
+    refreshValues();
+    refreshTimes();
+}
+
+QWidget* PipelinePanel::editor(const QString& param) const
+{
+    const auto it = m_params.find(param);
+    return it == m_params.end() ? nullptr : it->second.editor;
+}
+
+QGroupBox* PipelinePanel::stageBox(const QString& stage_id) const
+{
+    const auto it = m_stages.find(stage_id.toStdString());
+    return it == m_stages.end() ? nullptr : it->second.box;
+}
+
+void PipelinePanel::refreshValues()
+{
+    for (auto& [key, w] : m_params) {
+        const double v = m_doc.paramValue(w.stage, w.info.name);
+        w.show(v);
+        const bool changed = m_doc.paramChanged(w.stage, w.info.name);
+        w.reset->setEnabled(changed);
+        QFont f = w.editor->font();
+        f.setBold(changed); // a changed value stands out
+        w.editor->setFont(f);
+    }
+    for (auto& [id, s] : m_stages) {
+        if (s.box) {
+            QSignalBlocker block(s.box);
+            s.box->setChecked(m_doc.stageEnabled(id));
+        }
+    }
+}
+
+void PipelinePanel::refreshTimes()
+{
+    const auto& out = m_doc.current();
+    const auto& means = m_doc.stageMeans();
+    auto meanOf = [&](const std::string& id) {
+        const auto it = means.find(id);
+        return it == means.end() ? 0.0 : it->second.mean();
+    };
+    for (auto& [id, s] : m_stages) {
+        double now = -1;
+        if (out && out->error.isEmpty()) {
+            if (id == "total")
+                now = out->result.report.total_ms;
+            for (const StageTiming& t : out->result.report.stages)
+                if (t.stage == id)
+                    now = t.ran ? t.ms : -1;
+        }
+        const QString mean = QString::number(meanOf(id), 'f', 3);
+        const QString text = now < 0
+                                 ? tr("skipped (mean %1 ms)").arg(mean)
+                                 : tr("%1 ms (mean %2 ms)").arg(QString::number(now, 'f', 3), mean);
+        s.time->setText(id == "total" ? tr("All stages: ") + text : text);
+    }
+}
+
+} // namespace fieldsight::ui
