@@ -202,7 +202,7 @@ void MainWindow::buildDocks()
     tabifyDockWidget(layers, bookmarks);
     layers->raise();
     splitDockWidget(pipeline, detections, Qt::Vertical);
-    resizeDocks({layers, pipeline}, {250, 320}, Qt::Horizontal);
+    resizeDocks({layers, pipeline}, {270, 340}, Qt::Horizontal);
     resizeDocks({layers, inspector}, {480, 200}, Qt::Vertical);
 
     m_docks_menu = new QMenu(tr("Panels"), this);

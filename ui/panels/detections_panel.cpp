@@ -1,5 +1,7 @@
 #include "ui/panels/detections_panel.h"
 
+#include <nlohmann/json.hpp>
+
 namespace fieldsight::ui {
 
 namespace {
@@ -42,8 +44,11 @@ void DetectionsPanel::showOutput(const FrameOutput* out)
                 row->setData(0, kBoundsRole, item.bounds);
                 listed = true;
             }
-            if (!listed && entry->size() > 0)
-                new QTreeWidgetItem(top, {tr("%1 points").arg(entry->size())});
+            if (!listed && entry->size() > 0) {
+                nlohmann::ordered_json list; // a polyline: say how many points it has
+                entry->toJson(PerceptNames::Results, list);
+                new QTreeWidgetItem(top, {tr("%1 points").arg(qsizetype(list.size()))});
+            }
             top->setExpanded(true);
         }
         auto* diag = new QTreeWidgetItem(

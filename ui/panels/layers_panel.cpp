@@ -135,12 +135,14 @@ QTreeWidgetItem* LayersPanel::layerItem(const QString& id) const
 
 LayerSet LayersPanel::defaultLayers(const Pipeline& pipeline)
 {
-    // Everything but the layers coloured by class: every segment of every scan line would hide
-    // the image.
+    // What was found and what is true; the stages' own layers (every scan line, segment and
+    // point) are switched on by the user, stage by stage, when looking into one.
     LayerSet layers;
-    for (const LayerInfo& layer : allLayers(pipeline))
-        if (!layer.by_colour_class)
+    for (const LayerInfo& layer : allLayers(pipeline)) {
+        const std::string_view id = layer.id;
+        if (id.rfind(kPerceptLayerPrefix, 0) == 0 || id.rfind(kTruthLayerPrefix, 0) == 0)
             layers.insert(layer.id);
+    }
     return layers;
 }
 

@@ -18,8 +18,7 @@ public:
 
     LayerSet visibleLayers() const;
     void setVisibleLayers(const LayerSet& layers);
-    /// The layers shown when nothing was remembered: detections, truth, the green horizon's
-    /// hull and the transitions; not every scan line.
+    /// The layers shown when nothing was remembered: the detections and the ground truth.
     static LayerSet defaultLayers(const Pipeline& pipeline);
     /// The item of a layer, for tests and for finding a layer by id.
     QTreeWidgetItem* layerItem(const QString& id) const;

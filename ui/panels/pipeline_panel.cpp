@@ -57,6 +57,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     auto* inner = new QWidget(scroll);
     auto* column = new QVBoxLayout(inner);
     column->setContentsMargins(4, 4, 4, 4);
@@ -142,6 +143,9 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
             }
             }
             w.editor->setObjectName(key);
+            // Narrow editors: a spin box asks for the width of its largest value otherwise.
+            w.editor->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+            w.editor->setMinimumWidth(80);
             QString tip = qs(param.description);
             if (param.kind == ParamKind::Real || param.kind == ParamKind::Integer)
                 tip += tr("\nRange %1 to %2%3, default %4%3")

@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QInputDialog>
 #include <QLabel>
 #include <QSignalBlocker>
@@ -16,8 +17,10 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
     : QWidget(parent), m_doc(document)
 {
     setObjectName(QStringLiteral("navigator"));
-    auto* row = new QHBoxLayout(this);
-    row->setContentsMargins(4, 2, 4, 2);
+    auto* rows = new QVBoxLayout(this);
+    rows->setContentsMargins(4, 2, 4, 2);
+    rows->setSpacing(0);
+    auto* row = new QHBoxLayout;
     auto button = [&](QAction* a) {
         auto* b = new QToolButton(this);
         b->setDefaultAction(a);
@@ -71,13 +74,13 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
     m_slider->setFocusPolicy(Qt::NoFocus); // the arrow keys are the window's frame steps
     connect(m_slider, &QSlider::valueChanged, this,
             [this](int v) { goToFrame(std::size_t(std::max(0, v))); });
-    row->addWidget(m_slider, 1);
+    rows->addWidget(m_slider); // the whole width: one frame is as many pixels as can be
+    rows->addLayout(row);
 
     m_label = new QLabel(this);
     m_label->setObjectName(QStringLiteral("frame_label"));
-    m_label->setMinimumWidth(260);
+    m_label->setMinimumWidth(200);
     m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    row->addWidget(m_label);
 
     m_speed_box = new QComboBox(this);
     m_speed_box->setToolTip(tr("Play speed"));
@@ -91,6 +94,8 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
     auto* loop = new QToolButton(this);
     loop->setDefaultAction(m_loop);
     row->addWidget(loop);
+    row->addSpacing(8);
+    row->addWidget(m_label, 1);
 
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &StreamNavigator::tick);

@@ -1,0 +1,111 @@
+// Not a test: saves a screenshot of the main window in a given state, to look at the GUI as a
+// user would on a machine without a display (QT_QPA_PLATFORM=offscreen or xvfb-run).
+//   gui_screenshot OUT.png STREAM [--lut FILE] [--set S.P=V] [--frame N] [--size WxH]
+//                  [--layers all|default|ID,...] [--mode raw|classified|side|blend]
+//                  [--zoom Z] [--focus-detection] [--hover X,Y]
+#include "ui/main_window.h"
+#include "ui/panels/layers_panel.h"
+#include "ui/panels/inspector_panel.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <iostream>
+
+using namespace fieldsight;
+
+int main(int argc, char** argv)
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("FieldsightScreenshots");
+    QCommandLineParser p;
+    p.addPositionalArgument("out", "PNG to write");
+    p.addPositionalArgument("stream", "stream");
+    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover"})
+        p.addOption({o, o, "value"});
+    p.addOption({"focus-detection", "centre the first detection"});
+    p.process(app);
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() != 2) {
+        std::cerr << "usage: gui_screenshot OUT.png STREAM [options]\n";
+        return 2;
+    }
+    ui::MainWindow w;
+    if (p.isSet("set")) {
+        ParamSet params;
+        for (const QString& s : p.values("set"))
+            if (!params.parseSetting(s.toStdString())) {
+                std::cerr << "bad --set\n";
+                return 2;
+            }
+        (void)w.document().setParamChanges(params);
+    }
+    const QStringList size =
+        p.value("size").isEmpty() ? QStringList{"1280", "800"} : p.value("size").split('x');
+    w.resize(size[0].toInt(), size[1].toInt());
+    w.show();
+    QSignalSpy opened(&w, &ui::MainWindow::streamOpened);
+    w.openStream(pos[1], p.value("lut"));
+    if (!opened.wait(20000) || !opened.front().front().toBool()) {
+        std::cerr << "cannot open: " << w.lastMessage().toStdString() << "\n";
+        return 1;
+    }
+    auto waitFrame = [&] {
+        QSignalSpy ready(&w.document(), &ui::StreamDocument::frameReady);
+        while (w.document().waiting() && ready.wait(5000)) {
+        }
+        QApplication::processEvents();
+    };
+    waitFrame();
+    if (p.isSet("frame")) {
+        w.document().setCurrentIndex(p.value("frame").toULongLong());
+        waitFrame();
+    }
+    const QString layers = p.value("layers");
+    if (layers == "all") {
+        LayerSet all;
+        for (const LayerInfo& l : allLayers(w.document().pipeline()))
+            all.insert(l.id);
+        w.layersPanel().setVisibleLayers(all);
+    } else if (!layers.isEmpty() && layers != "default") {
+        auto chosen = selectLayers(layers.toStdString(), w.document().pipeline());
+        if (!chosen) {
+            std::cerr << chosen.error().message << "\n";
+            return 2;
+        }
+        w.layersPanel().setVisibleLayers(chosen.value());
+    } else {
+        w.layersPanel().setVisibleLayers(ui::LayersPanel::defaultLayers(w.document().pipeline()));
+    }
+    const QString mode = p.value("mode");
+    const ui::ViewMode m = mode == "classified" ? ui::ViewMode::Classified
+                           : mode == "side"     ? ui::ViewMode::SideBySide
+                           : mode == "blend"    ? ui::ViewMode::Blend
+                                                : ui::ViewMode::Raw;
+    w.view().setMode(m);
+    QApplication::processEvents();
+    if (p.isSet("zoom")) {
+        const double zoom = p.value("zoom").toDouble();
+        w.view().setZoom(zoom);
+        const auto& out = w.document().current();
+        if (p.isSet("focus-detection") && out && !out->items.empty()) {
+            const QPointF c = (out->items.front().bounds.center() + QPointF(0.5, 0.5)) * zoom;
+            w.view().setImageOrigin((QPointF(w.view().rect().center()) - c).toPoint());
+        }
+    }
+    if (p.isSet("hover")) {
+        const QStringList xy = p.value("hover").split(',');
+        w.inspector().inspect(w.document().current().get(), QPoint(xy[0].toInt(), xy[1].toInt()));
+    }
+    QApplication::processEvents();
+    QTest::qWait(50);
+    const QImage shot = w.grab().toImage();
+    if (!shot.save(pos[0])) {
+        std::cerr << "cannot write " << pos[0].toStdString() << "\n";
+        return 1;
+    }
+    std::cout << pos[0].toStdString() << " " << shot.width() << "x" << shot.height() << "\n";
+    return 0;
+}

@@ -1,0 +1,421 @@
+// The real main window, offscreen, driven as a user would: open a stream, step with the keys,
+// toggle layers, skip a stage, edit a parameter, restart with remembered settings, meet a corrupt
+// frame. The pipeline has an eighth, fake stage added by this test alone: the window shows its
+// layer, its parameter and its timing without any UI change.
+#include "commands/commands.h"
+#include "support/fake_stage.h"
+#include "support/synthetic_frames.h"
+#include "ui/adapters/image_adapter.h"
+#include "ui/adapters/overlay_painter.h"
+#include "ui/main_window.h"
+#include "ui/panels/detections_panel.h"
+#include "ui/panels/layers_panel.h"
+#include "ui/panels/pipeline_panel.h"
+#include "ui/stream_navigator/stream_navigator.h"
+#include "visioncore/percepts/ball.h"
+
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QGroupBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+#include <filesystem>
+#include <sstream>
+
+using namespace fieldsight;
+using namespace fieldsight::test;
+using fieldsight::ui::MainWindow;
+
+namespace {
+
+QString sampleStream()
+{
+    return QString::fromStdString(sampleStreamsDir() + "/lab1");
+}
+
+/// Waits until the document answered its newest request with frame `index`.
+bool waitForFrame(MainWindow& w, std::size_t index)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 10000) {
+        const auto& out = w.document().current();
+        if (!w.document().waiting() && out && out->index == index)
+            return true;
+        QTest::qWait(2);
+    }
+    return false;
+}
+
+bool openAndWait(MainWindow& w, const QString& stream)
+{
+    QSignalSpy opened(&w, &MainWindow::streamOpened);
+    w.openStream(stream);
+    if (!opened.wait(10000) || !opened.front().front().toBool())
+        return false;
+    return waitForFrame(w, 0);
+}
+
+/// The view's image region at zoom 1 with the image at the view's top-left corner.
+QImage viewImage(MainWindow& w)
+{
+    w.view().setZoom(1);
+    w.view().setImageOrigin({0, 0});
+    const auto& out = w.document().current();
+    return w.view()
+        .grab()
+        .toImage()
+        .copy(0, 0, out->raw.width(), out->raw.height())
+        .convertToFormat(QImage::Format_RGB32);
+}
+
+int countDifferent(const QImage& a, const QImage& b, QRect* where = nullptr)
+{
+    int n = 0;
+    QRect box;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            if (a.pixel(x, y) != b.pixel(x, y)) {
+                ++n;
+                box |= QRect(x, y, 1, 1);
+            }
+    if (where)
+        *where = box;
+    return n;
+}
+
+LayerSet allLayerIds(const Pipeline& pipeline)
+{
+    LayerSet ids;
+    for (const LayerInfo& l : allLayers(pipeline))
+        ids.insert(l.id);
+    return ids;
+}
+
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+
+    Pipeline m_pipeline = withFakeStage();
+    QTemporaryDir m_dir;
+
+    void copyStream(const QString& to, int frames)
+    {
+        QDir().mkpath(to);
+        QFile::copy(sampleStream() + "/default.lut", to + "/default.lut");
+        for (int i = 0; i < frames; ++i) {
+            const QString name = QStringLiteral("frame_%1.png").arg(i, 6, 10, QLatin1Char('0'));
+            QVERIFY(QFile::copy(sampleStream() + "/" + name, to + "/" + name));
+        }
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("FieldsightTest");
+        QCoreApplication::setApplicationName("test_main_window");
+        QSettings().clear();
+        QVERIFY(m_dir.isValid());
+        if (!QFileInfo(sampleStream()).isDir())
+            QSKIP("the bundled sample streams are missing");
+    }
+
+    void init() { QSettings().clear(); }
+
+    void theFakeStageAppearsWithoutUiChanges()
+    {
+        MainWindow w(m_pipeline);
+        QVERIFY(w.layersPanel().layerItem("fake.box"));
+        QVERIFY(w.layersPanel().layerItem("percepts.fake_marks"));
+        QVERIFY(w.pipelinePanel().stageBox("fake"));
+        QVERIFY(w.pipelinePanel().stageBox("fake")->isCheckable());
+        auto* level = qobject_cast<QDoubleSpinBox*>(w.pipelinePanel().editor("fake.level"));
+        QVERIFY(level);
+        QCOMPARE(level->value(), 1.5);
+        QCOMPARE(level->maximum(), 10.0);
+        QVERIFY(w.pipelinePanel().findChild<QLabel*>("fake.time"));
+    }
+
+    void opensStepsAndJumpsFrameAccurately()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, sampleStream()));
+        QCOMPARE(w.document().frameCount(), std::size_t(30));
+
+        auto reader = openStream(sampleStream().toStdString());
+        QVERIFY(reader.ok());
+        auto expectFrame = [&](std::size_t index) {
+            QVERIFY2(waitForFrame(w, index), qPrintable(QString::number(index)));
+            QCOMPARE(w.document().currentIndex(), index);
+            QCOMPARE(w.navigator().slider()->value(), int(index));
+            auto frame = reader.value()->read(index);
+            QVERIFY(frame.ok());
+            const cv::Mat& shown = w.view().output()->frame.ycbcr;
+            QCOMPARE(shown.size(), frame.value().ycbcr.size());
+            QVERIFY(std::equal(shown.datastart, shown.dataend, frame.value().ycbcr.datastart));
+            QCOMPARE(w.view().output()->frame.name, frame.value().name);
+        };
+        expectFrame(0);
+        QTest::keyClick(&w, Qt::Key_Right);
+        expectFrame(1);
+        QTest::keyClick(&w, Qt::Key_Right, Qt::ShiftModifier);
+        expectFrame(11);
+        QTest::keyClick(&w, Qt::Key_Left);
+        expectFrame(10);
+        QTest::keyClick(&w, Qt::Key_Right, Qt::ControlModifier);
+        expectFrame(29); // +100, clamped to the last frame
+        QTest::keyClick(&w, Qt::Key_Home);
+        expectFrame(0);
+        QTest::keyClick(&w, Qt::Key_End);
+        expectFrame(29);
+        QTest::keyClick(&w, Qt::Key_Left, Qt::ShiftModifier);
+        expectFrame(19);
+        w.navigator().slider()->setValue(7);
+        expectFrame(7);
+    }
+
+    void aSupersededFrameIsDroppedNotQueued()
+    {
+        MainWindow w(m_pipeline);
+        QVERIFY(openAndWait(w, sampleStream()));
+        QSignalSpy ready(&w.document(), &ui::StreamDocument::frameReady);
+        for (std::size_t i = 1; i < 30; ++i)
+            w.document().setCurrentIndex(i); // 29 steps without waiting
+        QVERIFY(waitForFrame(w, 29));
+        QVERIFY2(ready.count() < 29, qPrintable(QString::number(ready.count())));
+        QCOMPARE(w.view().output()->index, std::size_t(29));
+    }
+
+    void zoomOneSnapshotEqualsTheHeadlessRender()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, sampleStream()));
+        w.document().setCurrentIndex(4);
+        QVERIFY(waitForFrame(w, 4));
+        w.layersPanel().setVisibleLayers(allLayerIds(m_pipeline));
+        w.view().setLabelsShown(false); // text labels are the window's own, not the render's
+        const QImage shown = viewImage(w);
+
+        const QString dir = m_dir.filePath("render");
+        std::ostringstream out, err;
+        const cli::Context ctx{m_pipeline, out, err};
+        const int status =
+            cli::runHeadless("run",
+                             {"fieldsight", sampleStream(), "--out", m_dir.filePath("r.json"),
+                              "--render", dir, "--layers", "all", "--scale", "1", "--limit", "5"},
+                             ctx);
+        QVERIFY2(status == 0, err.str().c_str());
+        const QImage rendered =
+            QImage(dir + "/frame_000004.png").convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(rendered.size(), shown.size());
+        QCOMPARE(countDifferent(shown, rendered), 0);
+    }
+
+    void aLayerTogglesExactlyItsPixels()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, sampleStream()));
+        w.view().setLabelsShown(false);
+        const auto out = w.document().current();
+        const DebugDrawing* box = nullptr;
+        for (const DebugDrawing& d : out->drawings)
+            if (d.layer == "fake.box")
+                box = &d;
+        QVERIFY(box && !box->shapes.empty());
+
+        LayerSet layers = LayersPanel_default(w);
+        layers.erase("fake.box");
+        w.layersPanel().setVisibleLayers(layers);
+        const QImage without = viewImage(w);
+        w.layersPanel().layerItem("fake.box")->setCheckState(0, Qt::Checked); // as a click does
+        QVERIFY(w.view().visibleLayers().count("fake.box"));
+        const QImage with = viewImage(w);
+        QRect changed;
+        // The fake box fills pixels (10, 10) to (19, 19): exactly those change.
+        QCOMPARE(countDifferent(without, with, &changed), 100);
+        QCOMPARE(changed, QRect(QPoint(10, 10), QPoint(19, 19)));
+        const QRgb fill = with.pixel(15, 15);
+        QCOMPARE(QColor(fill), ui::toQColor(kFakeLayerColour));
+    }
+
+    static LayerSet LayersPanel_default(MainWindow& w)
+    {
+        return ui::LayersPanel::defaultLayers(w.document().pipeline());
+    }
+
+    void skippingAStageRemovesItsDetections()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, sampleStream()));
+        w.view().setLabelsShown(false);
+        w.layersPanel().setVisibleLayers({"percepts.fake_marks"});
+        QVERIFY(w.detectionsPanel().topLevelTexts().contains("Fake marks (1)"));
+        const QImage before = viewImage(w);
+        QCOMPARE(QColor(before.pixel(40, 30)), QColor(12, 200, 34));
+
+        w.pipelinePanel().stageBox("fake")->setChecked(false); // the stage's switch
+        QVERIFY(!w.document().stageEnabled("fake"));
+        QVERIFY(waitForFrame(w, 0));
+        for (const QString& row : w.detectionsPanel().topLevelTexts())
+            QVERIFY2(!row.startsWith("Fake marks"), qPrintable(row));
+        const QImage after = viewImage(w);
+        QRect changed;
+        QVERIFY(countDifferent(before, after, &changed) > 0);
+        QVERIFY(QRect(37, 27, 7, 7).contains(changed)); // only the mark's square went
+        QVERIFY(w.document().current()->result.percepts.list<FakeMark>().empty());
+
+        w.pipelinePanel().stageBox("fake")->setChecked(true);
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.document().current()->result.percepts.list<FakeMark>().size(), std::size_t(1));
+    }
+
+    void editingAParameterRerunsTheFrame()
+    {
+        MainWindow w(m_pipeline);
+        QVERIFY(openAndWait(w, sampleStream()));
+        auto* level = qobject_cast<QDoubleSpinBox*>(w.pipelinePanel().editor("fake.level"));
+        QVERIFY(level);
+        level->setValue(3.5);
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.document().current()->result.percepts.list<FakeMark>().at(0).value, 3.5);
+        QVERIFY(w.document().paramChanged("fake", "level"));
+
+        auto* reset = w.pipelinePanel().findChild<QToolButton*>("fake.level.reset");
+        QVERIFY(reset && reset->isEnabled());
+        reset->click();
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.document().current()->result.percepts.list<FakeMark>().at(0).value, 1.5);
+        QCOMPARE(level->value(), 1.5);
+        QVERIFY(!reset->isEnabled());
+    }
+
+    void aThrowingStageIsADiagnosticAndTheRestRuns()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, sampleStream()));
+        QVERIFY(w.document().setParam("fake", "fail", 1).ok());
+        QVERIFY(waitForFrame(w, 0));
+        const auto out = w.document().current();
+        QCOMPARE(out->result.diagnostics.size(), std::size_t(1));
+        QCOMPARE(out->result.diagnostics[0].stage, std::string("fake"));
+        QVERIFY(w.detectionsPanel().topLevelTexts().contains("Diagnostics (1)"));
+        // The stages before and after it still ran: their lists are there.
+        QVERIFY(
+            w.detectionsPanel().topLevelTexts().filter(QRegularExpression("^Balls \\(")).size() ==
+            1);
+        QVERIFY(out->result.percepts.find<Ball>());
+        QTest::keyClick(&w, Qt::Key_Right); // and the tool goes on
+        QVERIFY(waitForFrame(w, 1));
+    }
+
+    void aCorruptFrameIsAnErrorAndSteppingGoesOn()
+    {
+        const QString stream = m_dir.filePath("corrupt");
+        copyStream(stream, 3);
+        QFile bad(stream + "/frame_000001.png");
+        QVERIFY(bad.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        bad.write("\x89PNG\r\n\x1a\n this is not a picture");
+        bad.close();
+
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, stream));
+        QVERIFY(w.document().current()->error.isEmpty());
+        QTest::keyClick(&w, Qt::Key_Right);
+        QVERIFY(waitForFrame(w, 1));
+        QVERIFY2(w.document().current()->error.contains("frame_000001.png"),
+                 qPrintable(w.document().current()->error));
+        QVERIFY(w.detectionsPanel().topLevelTexts().value(0).startsWith("Frame not processed"));
+        (void)w.view().grab(); // paints the error, does not crash
+        QTest::keyClick(&w, Qt::Key_Right);
+        QVERIFY(waitForFrame(w, 2));
+        QVERIFY(w.document().current()->error.isEmpty());
+        QVERIFY(!w.document().current()->result.percepts.entries().empty());
+    }
+
+    void aBadStreamIsAMessageAndTheOldStreamStays()
+    {
+        MainWindow w(m_pipeline);
+        QVERIFY(openAndWait(w, sampleStream()));
+        QSignalSpy opened(&w, &MainWindow::streamOpened);
+        const QString missing = m_dir.filePath("no_such_stream");
+        w.openStream(missing);
+        QVERIFY(opened.wait(5000));
+        QCOMPARE(opened.front().front().toBool(), false);
+        QVERIFY2(w.lastMessage().contains(missing), qPrintable(w.lastMessage()));
+        QCOMPARE(w.document().streamSpec(), sampleStream());
+        w.document().setCurrentIndex(3);
+        QVERIFY(waitForFrame(w, 3));
+    }
+
+    void bookmarksLiveInASidecarBesideTheStream()
+    {
+        const QString stream = m_dir.filePath("marked");
+        copyStream(stream, 5);
+        {
+            MainWindow w(m_pipeline);
+            QVERIFY(openAndWait(w, stream));
+            QVERIFY(w.document().setBookmark(3, "ball lost").ok());
+            QVERIFY(QFileInfo::exists(stream + "/bookmarks.json"));
+        }
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, stream));
+        QCOMPARE(w.bookmarkList().count(), 1);
+        QVERIFY(w.bookmarkList().item(0)->text().contains("ball lost"));
+        emit w.bookmarkList().itemActivated(w.bookmarkList().item(0));
+        QVERIFY(waitForFrame(w, 3));
+        QTest::keyClick(&w, Qt::Key_Home);
+        QVERIFY(waitForFrame(w, 0));
+    }
+
+    void settingsSurviveARestart()
+    {
+        const LayerSet chosen{"fake.box", "percepts.balls"};
+        {
+            MainWindow w(m_pipeline);
+            w.show();
+            QVERIFY(openAndWait(w, sampleStream()));
+            w.layersPanel().setVisibleLayers(chosen);
+            w.view().setMode(ui::ViewMode::Classified);
+            w.navigator().setSpeed(10);
+            w.navigator().loopAction()->setChecked(true);
+            w.resize(1200, 760);
+            w.close(); // saves the settings
+        }
+        MainWindow w(m_pipeline);
+        QCOMPARE(w.view().visibleLayers(), chosen);
+        QCOMPARE(w.layersPanel().visibleLayers(), chosen);
+        QCOMPARE(w.view().mode(), ui::ViewMode::Classified);
+        QCOMPARE(w.navigator().speed(), 10);
+        QVERIFY(w.navigator().loopAction()->isChecked());
+        QCOMPARE(w.size(), QSize(1200, 760));
+        QSignalSpy opened(&w, &MainWindow::streamOpened);
+        w.openLastSession();
+        QVERIFY(opened.wait(5000));
+        QCOMPARE(QFileInfo(w.document().streamSpec()).canonicalFilePath(),
+                 QFileInfo(sampleStream()).canonicalFilePath());
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"
