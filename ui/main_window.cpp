@@ -142,8 +142,9 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
 
 MainWindow::~MainWindow()
 {
-    if (m_open_watcher)
-        m_open_watcher->waitForFinished();
+    // Opens still running (cancelled ones too) use the pipeline: let them end first.
+    for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>())
+        watcher->waitForFinished();
 }
 
 void MainWindow::buildDocks()

@@ -130,6 +130,9 @@ FrameWorker::FrameWorker(const Pipeline& pipeline)
     : m_pipeline(pipeline), m_layers(allLayerIds(pipeline)), m_control(m_data, pipeline)
 {
     m_data.setRequestedLayers(stageLayerIds(pipeline));
+    for (const StageDescriptor& stage : pipeline.descriptors())
+        if (stage.info.skippable)
+            m_skippable.push_back(stage.info.id);
 }
 
 void FrameWorker::submit(FrameRequest request)
@@ -153,7 +156,62 @@ void FrameWorker::processPending()
         request = std::move(*m_pending);
         m_pending.reset();
     }
-    emit frameDone(run(request));
+    std::shared_ptr<FrameOutput> out;
+    try {
+        out = run(request);
+    } catch (const std::exception& e) {
+        // A failure outside the stages (decoding, memory): this frame's error, the tool goes on.
+        out = std::make_shared<FrameOutput>();
+        out->serial = request.serial;
+        out->index = request.index;
+        out->error = QStringLiteral("frame %1: %2").arg(request.index).arg(e.what());
+        m_frame_valid = false;
+    }
+    emit frameDone(std::move(out));
+    try {
+        prefetch();
+    } catch (const std::exception&) {
+        m_prefetch_source.reset(); // the real read of that frame will report it
+    }
+}
+
+Status FrameWorker::load(const std::shared_ptr<FrameSource>& source, std::size_t index)
+{
+    const bool live = source->reader->info().kind == StreamKind::Camera;
+    if (!live && m_frame_valid && source == m_frame_source && index == m_frame_index)
+        return {}; // the same frame again: settings changed
+    m_frame_valid = false;
+    if (!live && source == m_prefetch_source && index == m_prefetch_index) {
+        std::swap(m_data.frame(), m_prefetch);
+        m_prefetch_source.reset();
+    } else if (Status s = source->reader->readInto(index, m_data.frame()); !s) {
+        return s;
+    }
+    m_frame_source = source;
+    m_frame_index = index;
+    m_frame_valid = true;
+    return {};
+}
+
+void FrameWorker::prefetch()
+{
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_pending)
+            return; // there is real work
+    }
+    if (!m_frame_valid || !m_frame_source)
+        return;
+    const StreamInfo& info = m_frame_source->reader->info();
+    const std::size_t next = m_frame_index + 1;
+    if (info.kind == StreamKind::Camera || next >= info.frame_count ||
+        (m_prefetch_source == m_frame_source && m_prefetch_index == next))
+        return;
+    m_prefetch_source.reset();
+    if (m_frame_source->reader->readInto(next, m_prefetch)) {
+        m_prefetch_source = m_frame_source;
+        m_prefetch_index = next;
+    }
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)
@@ -166,25 +224,24 @@ std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)
         out->error = QStringLiteral("no stream is open");
         return out;
     }
-    StreamReader& reader = *request.source->reader;
-    if (Status s = reader.readInto(request.index, m_data.frame()); !s) {
+    if (Status s = load(request.source, request.index); !s) {
         out->error = QString::fromStdString(s.error().message);
-        out->frame.name = reader.frameName(request.index);
+        out->frame.name = request.source->reader->frameName(request.index);
         return out;
     }
 
     if (request.params != m_applied_params) {
         m_control.resetParams();
         if (request.params) {
-            if (Status s = m_control.applyParams(*request.params); !s)
+            if (Status s = m_control.applyParams(*request.params); !s) {
                 out->error = QString::fromStdString(s.error().message);
+                return out; // and tried again on the next frame
+            }
         }
         m_applied_params = request.params;
     }
-    for (const StageDescriptor& stage : m_control.stages()) {
-        if (stage.info.skippable)
-            (void)m_control.setStageEnabled(stage.info.id, request.skip.count(stage.info.id) == 0);
-    }
+    for (const std::string& id : m_skippable)
+        (void)m_control.setStageEnabled(id, request.skip.count(id) == 0);
     m_data.setLut(request.lut);
 
     Result<FrameReport> report = m_control.runFrame();

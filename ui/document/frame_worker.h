@@ -85,12 +85,25 @@ signals:
 private:
     void processPending();
     std::shared_ptr<FrameOutput> run(const FrameRequest& request);
+    /// Makes frame `index` of `source` current in m_data: kept from the last run (a parameter
+    /// or LUT edit), taken from the prefetch, or read.
+    Status load(const std::shared_ptr<FrameSource>& source, std::size_t index);
+    /// While idle, reads the frame after the current one, so the next step finds it decoded.
+    void prefetch();
 
     const Pipeline& m_pipeline;
     std::set<std::string, std::less<>> m_layers;
     GuiDataWrapper m_data;
     ControlWrapper m_control;
     std::shared_ptr<const ParamSet> m_applied_params;
+    std::vector<std::string> m_skippable;
+
+    std::shared_ptr<FrameSource> m_frame_source; ///< what m_data's frame is, when valid
+    std::size_t m_frame_index = 0;
+    bool m_frame_valid = false;
+    Frame m_prefetch;
+    std::shared_ptr<FrameSource> m_prefetch_source;
+    std::size_t m_prefetch_index = 0;
 
     std::mutex m_mutex;
     std::optional<FrameRequest> m_pending;

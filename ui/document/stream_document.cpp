@@ -85,6 +85,7 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
     m_index = 0;
     m_current.reset();
     m_answered = m_serial;
+    m_first_serial = m_serial + 1; // what the worker still does for the stream before is dropped
     resetMeans();
     m_bookmarks = Bookmarks{};
     const std::string sidecar = local(bookmarksPath());
@@ -173,11 +174,10 @@ void StreamDocument::submit()
 void StreamDocument::onFrameDone(std::shared_ptr<const FrameOutput> output)
 {
     m_answered = std::max(m_answered, output->serial);
-    if (!m_stream)
+    if (!m_stream || output->serial < m_first_serial)
         return;
     m_current = std::move(output);
     if (m_current->error.isEmpty()) {
-        double total = 0;
         for (const StageTiming& t : m_current->result.report.stages) {
             if (!t.ran)
                 continue;
@@ -185,10 +185,8 @@ void StreamDocument::onFrameDone(std::shared_ptr<const FrameOutput> output)
             mean.sum_ms += t.ms;
             ++mean.frames;
         }
-        total = m_current->result.report.total_ms;
-        StageMean& all = m_means["total"];
-        all.sum_ms += total;
-        ++all.frames;
+        m_total_mean.sum_ms += m_current->result.report.total_ms;
+        ++m_total_mean.frames;
     }
     emit frameReady();
 }
@@ -196,6 +194,7 @@ void StreamDocument::onFrameDone(std::shared_ptr<const FrameOutput> output)
 void StreamDocument::resetMeans()
 {
     m_means.clear();
+    m_total_mean = {};
 }
 
 Status StreamDocument::setStageEnabled(std::string_view stage_id, bool enabled)

@@ -97,6 +97,8 @@ public:
         double mean() const { return frames ? sum_ms / double(frames) : 0; }
     };
     const std::map<std::string, StageMean, std::less<>>& stageMeans() const { return m_means; }
+    /// Mean of all stages together.
+    const StageMean& totalMean() const { return m_total_mean; }
     void resetMeans();
 
     const Bookmarks& bookmarks() const { return m_bookmarks; }
@@ -131,6 +133,8 @@ private:
 
     std::uint64_t m_serial = 0;
     std::uint64_t m_answered = 0;
+    std::uint64_t m_first_serial = 0; ///< the first request of the open stream
+    StageMean m_total_mean;
     std::shared_ptr<const FrameOutput> m_current;
     std::map<std::string, StageMean, std::less<>> m_means;
     Bookmarks m_bookmarks;

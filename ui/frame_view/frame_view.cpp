@@ -2,6 +2,7 @@
 
 #include "ui/adapters/overlay_painter.h"
 
+#include <QElapsedTimer>
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -76,9 +77,19 @@ int FrameView::panelX(int panel) const
 void FrameView::setZoom(double zoom, QPointF anchor)
 {
     zoom = std::clamp(zoom, kZoomSteps.front(), kZoomSteps.back());
-    const QPointF origin = anchor - (anchor - QPointF(m_origin)) * (zoom / m_zoom);
+    // Keep the image point under the anchor in place, in whichever panel it is (the gap
+    // between panels does not scale).
+    const QSize image = imageSize();
+    int panel = 0;
+    if (panelCount() == 2 && !image.isEmpty() && anchor.x() >= panelX(1))
+        panel = 1;
+    const double old_panel_x = panelX(panel);
+    const double u = (anchor.x() - old_panel_x) / m_zoom;
+    const double v = (anchor.y() - m_origin.y()) / m_zoom;
     m_zoom = zoom;
-    m_origin = origin.toPoint();
+    const int offset = panel * (int(std::lround(image.width() * m_zoom)) + kPanelGap);
+    m_origin = QPoint(int(std::lround(anchor.x() - u * m_zoom)) - offset,
+                      int(std::lround(anchor.y() - v * m_zoom)));
     m_fit = false;
     emit zoomChanged(m_zoom);
     update();
@@ -173,6 +184,8 @@ const PerceptItem* FrameView::itemAt(QPointF pos) const
 
 void FrameView::paintEvent(QPaintEvent*)
 {
+    QElapsedTimer clock;
+    clock.start();
     QPainter p(this);
     p.fillRect(rect(), kBackground);
     if (!m_output) {
@@ -236,6 +249,7 @@ void FrameView::paintEvent(QPaintEvent*)
         p.drawText(box.adjusted(6, 4, -6, -4), Qt::AlignLeft | Qt::TextWordWrap, text);
     }
     m_painted_serial = m_output->serial;
+    m_paint_ms = double(clock.nsecsElapsed()) / 1e6;
     emit painted(m_painted_serial);
 }
 
@@ -247,7 +261,11 @@ void FrameView::resizeEvent(QResizeEvent*)
 
 void FrameView::wheelEvent(QWheelEvent* event)
 {
-    const int steps = event->angleDelta().y() / 120;
+    // Touchpads and smooth wheels send small deltas: add them up to whole notches.
+    m_wheel_delta += event->angleDelta().y();
+    const int steps = m_wheel_delta / 120;
+    m_wheel_delta -= steps * 120;
+    event->accept();
     if (steps == 0)
         return;
     const QPointF anchor = event->position();

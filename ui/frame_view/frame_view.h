@@ -55,6 +55,8 @@ public:
     const PerceptItem* itemAt(QPointF pos) const;
     /// The serial of the output painted last.
     std::uint64_t paintedSerial() const { return m_painted_serial; }
+    /// How long the last paint took, ms.
+    double lastPaintMs() const { return m_paint_ms; }
 
 signals:
     void pixelHovered(QPoint pixel);
@@ -92,6 +94,8 @@ private:
     std::optional<QPoint> m_drag_from;
     QPoint m_drag_origin;
     std::uint64_t m_painted_serial = 0;
+    double m_paint_ms = 0;
+    int m_wheel_delta = 0; ///< eighths of a degree not yet turned into a zoom step
 };
 
 } // namespace fieldsight::ui

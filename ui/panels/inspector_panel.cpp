@@ -102,7 +102,8 @@ void InspectorPanel::clearPixel()
 
 void InspectorPanel::inspect(const FrameOutput* out, QPoint pixel)
 {
-    if (!out || out->frame.ycbcr.empty() || pixel.x() < 0 || pixel.y() < 0 ||
+    if (!out || out->frame.ycbcr.type() != CV_8UC3 || out->classes.empty() || out->raw.isNull() ||
+        out->classes.size() != out->frame.ycbcr.size() || pixel.x() < 0 || pixel.y() < 0 ||
         pixel.x() >= out->frame.ycbcr.cols || pixel.y() >= out->frame.ycbcr.rows) {
         clearPixel();
         return;

@@ -44,6 +44,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
     auto* total = new QLabel(this);
     total->setObjectName(QStringLiteral("total_time"));
     top->addWidget(total, 1);
+    m_total = total;
     auto* reset_all = new QPushButton(tr("Reset all"), this);
     reset_all->setToolTip(tr("Every parameter of every stage back to its default"));
     connect(reset_all, &QPushButton::clicked, this, [this] {
@@ -52,7 +53,6 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
     });
     top->addWidget(reset_all);
     outer->addLayout(top);
-    m_stages["total"].time = total;
 
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -88,10 +88,30 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
                 if (Status s = m_doc.setParam(id, name, v); !s)
                     emit problem(qs(s.error().message));
             };
+            // Whole numbers that fit an int get a QSpinBox; wider ones (a seed) and reals a
+            // QDoubleSpinBox, with no decimals for whole numbers.
+            const bool fits_int = param.kind == ParamKind::Integer && param.min >= -2147483647.0 &&
+                                  param.max <= 2147483647.0;
             switch (param.kind) {
+            case ParamKind::Integer:
+                if (fits_int) {
+                    auto* spin = new QSpinBox(box);
+                    spin->setRange(int(param.min), int(param.max));
+                    spin->setSingleStep(std::max(1, int(param.step)));
+                    spin->setSuffix(unit);
+                    spin->setKeyboardTracking(false);
+                    connect(spin, &QSpinBox::valueChanged, this, [set](int v) { set(v); });
+                    w.editor = spin;
+                    w.show = [spin](double v) {
+                        QSignalBlocker block(spin);
+                        spin->setValue(int(std::lround(v)));
+                    };
+                    break;
+                }
+                [[fallthrough]];
             case ParamKind::Real: {
                 auto* spin = new QDoubleSpinBox(box);
-                spin->setDecimals(decimalsFor(param.step));
+                spin->setDecimals(param.kind == ParamKind::Integer ? 0 : decimalsFor(param.step));
                 spin->setRange(param.min, param.max);
                 spin->setSingleStep(param.step);
                 spin->setSuffix(unit);
@@ -101,20 +121,6 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
                 w.show = [spin](double v) {
                     QSignalBlocker block(spin);
                     spin->setValue(v);
-                };
-                break;
-            }
-            case ParamKind::Integer: {
-                auto* spin = new QSpinBox(box);
-                spin->setRange(int(std::max(param.min, -2e9)), int(std::min(param.max, 2e9)));
-                spin->setSingleStep(std::max(1, int(param.step)));
-                spin->setSuffix(unit);
-                spin->setKeyboardTracking(false);
-                connect(spin, &QSpinBox::valueChanged, this, [set](int v) { set(v); });
-                w.editor = spin;
-                w.show = [spin](double v) {
-                    QSignalBlocker block(spin);
-                    spin->setValue(int(std::lround(v)));
                 };
                 break;
             }
@@ -206,36 +212,34 @@ void PipelinePanel::refreshValues()
         w.editor->setFont(f);
     }
     for (auto& [id, s] : m_stages) {
-        if (s.box) {
-            QSignalBlocker block(s.box);
-            s.box->setChecked(m_doc.stageEnabled(id));
-        }
+        QSignalBlocker block(s.box);
+        s.box->setChecked(m_doc.stageEnabled(id));
     }
 }
 
 void PipelinePanel::refreshTimes()
 {
     const auto& out = m_doc.current();
-    const auto& means = m_doc.stageMeans();
-    auto meanOf = [&](const std::string& id) {
-        const auto it = means.find(id);
-        return it == means.end() ? 0.0 : it->second.mean();
+    const bool ran = out && out->error.isEmpty();
+    auto text = [](double now, const StreamDocument::StageMean& mean) {
+        const QString m = mean.frames ? QString::number(mean.mean(), 'f', 3) : QStringLiteral("–");
+        return now < 0 ? tr("skipped (mean %1 ms)").arg(m)
+                       : tr("%1 ms (mean %2 ms)").arg(QString::number(now, 'f', 3), m);
     };
+    const auto& means = m_doc.stageMeans();
     for (auto& [id, s] : m_stages) {
         double now = -1;
-        if (out && out->error.isEmpty()) {
-            if (id == "total")
-                now = out->result.report.total_ms;
+        if (ran)
             for (const StageTiming& t : out->result.report.stages)
-                if (t.stage == id)
-                    now = t.ran ? t.ms : -1;
-        }
-        const QString mean = QString::number(meanOf(id), 'f', 3);
-        const QString text = now < 0
-                                 ? tr("skipped (mean %1 ms)").arg(mean)
-                                 : tr("%1 ms (mean %2 ms)").arg(QString::number(now, 'f', 3), mean);
-        s.time->setText(id == "total" ? tr("All stages: ") + text : text);
+                if (t.stage == id && t.ran)
+                    now = t.ms;
+        const auto mean = means.find(id);
+        s.time->setText(
+            text(now, mean == means.end() ? StreamDocument::StageMean{} : mean->second));
     }
+    m_total->setText(
+        tr("All stages: ") +
+        (ran ? text(out->result.report.total_ms, m_doc.totalMean()) : QStringLiteral("–")));
 }
 
 } // namespace fieldsight::ui

@@ -49,6 +49,7 @@ private:
         QWidget* reset = nullptr;
     };
     std::map<QString, ParamWidgets> m_params;
+    QLabel* m_total = nullptr;
 };
 
 } // namespace fieldsight::ui

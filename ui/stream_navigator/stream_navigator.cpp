@@ -101,7 +101,11 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
     connect(&m_timer, &QTimer::timeout, this, &StreamNavigator::tick);
     connect(&m_doc, &StreamDocument::streamChanged, this, &StreamNavigator::refresh);
     connect(&m_doc, &StreamDocument::currentIndexChanged, this, &StreamNavigator::refresh);
-    connect(&m_doc, &StreamDocument::frameReady, this, &StreamNavigator::showFrameInfo);
+    connect(&m_doc, &StreamDocument::frameReady, this, [this] {
+        showFrameInfo();
+        if (m_playing && m_fps == 0)
+            QTimer::singleShot(0, this, &StreamNavigator::tick); // after the frame is painted
+    });
     setSpeed(m_fps);
     refresh();
 }
@@ -154,10 +158,14 @@ void StreamNavigator::setPlaying(bool on)
     if (on && m_doc.frameCount() > 0 && !m_doc.live() &&
         m_doc.currentIndex() + 1 >= m_doc.frameCount())
         goToFrame(0); // play from the start again
+    m_playing = on;
     if (on) {
-        m_timer.start(m_fps > 0 ? 1000 / m_fps : 0);
+        if (m_fps > 0)
+            m_timer.start(1000 / m_fps);
         m_fps_clock.start();
         m_fps_frames = 0;
+        if (m_fps == 0)
+            tick();
     } else {
         m_timer.stop();
         m_measured_fps = 0;
@@ -172,12 +180,18 @@ void StreamNavigator::setSpeed(int fps)
 {
     m_fps = std::max(0, fps);
     m_speed_box->setCurrentIndex(std::max(0, m_speed_box->findData(m_fps)));
-    if (playing())
-        m_timer.start(m_fps > 0 ? 1000 / m_fps : 0);
+    if (playing() && m_fps > 0)
+        m_timer.start(1000 / m_fps);
+    else
+        m_timer.stop();
+    if (playing() && m_fps == 0)
+        tick();
 }
 
 void StreamNavigator::tick()
 {
+    if (!m_playing)
+        return;
     if (m_doc.waiting())
         return; // the frame before is not done: skip this tick rather than queue
     const std::size_t next = m_doc.currentIndex() + 1;

@@ -33,7 +33,7 @@ public:
     /// Asks for a frame number (1-based as shown) and goes there.
     void askGoTo();
 
-    bool playing() const { return m_timer.isActive(); }
+    bool playing() const { return m_playing; }
     void setPlaying(bool on);
     /// Frames per second while playing; 0 means as fast as frames are done.
     int speed() const { return m_fps; }
@@ -59,7 +59,8 @@ private:
     QSlider* m_slider = nullptr;
     QLabel* m_label = nullptr;
     QComboBox* m_speed_box = nullptr;
-    QTimer m_timer;
+    QTimer m_timer; ///< paces play at a set speed; "fastest" steps on every finished frame
+    bool m_playing = false;
     int m_fps = 30;
     QElapsedTimer m_fps_clock;
     int m_fps_frames = 0;

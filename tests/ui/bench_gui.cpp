@@ -1,0 +1,249 @@
+// The GUI's speed (issue 8's targets), measured offscreen on the real main window with every layer
+// on, and printed; nothing is asserted (timings depend on the machine). Label `bench`:
+//   ctest --test-dir build -L bench -R bench_gui --verbose     or     build/tests/bench_gui [DIR]
+// - step: key press (Right) to the painted frame, median and 95th percentile, at 320x240 and
+//   640x480 (generated with synth), from PNG folders and from .strm files;
+// - play: frames painted per second at 60 fps with every layer on;
+// - a parameter edit to the repainted frame;
+// - opening a 9,000-frame .strm and a folder of 9,000 PNGs, and resident memory while playing the
+//   .strm through.
+#include "commands/commands.h"
+#include "ui/main_window.h"
+#include "ui/panels/layers_panel.h"
+#include "ui/stream_navigator/stream_navigator.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+using namespace fieldsight;
+using fieldsight::ui::MainWindow;
+
+namespace {
+
+double rssMb()
+{
+    long pages = 0, resident = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2)
+            resident = 0;
+        std::fclose(f);
+    }
+    return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+double percentile(std::vector<double> v, double p)
+{
+    if (v.empty())
+        return 0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, std::size_t(p * double(v.size() - 1) + 0.5))];
+}
+
+bool synth(const QString& out, int width, int height, int frames, bool strm)
+{
+    std::ostringstream o, e;
+    const cli::Context ctx{Pipeline::standard(), o, e};
+    QStringList args{"fieldsight",
+                     "--scenario",
+                     "lab1",
+                     "--frames",
+                     QString::number(frames),
+                     "--seed",
+                     "3",
+                     "--width",
+                     QString::number(width),
+                     "--height",
+                     QString::number(height),
+                     "--out",
+                     out};
+    if (strm)
+        args << "--strm";
+    const int status = cli::runHeadless("synth", args, ctx);
+    if (status != 0)
+        std::cerr << e.str();
+    return status == 0;
+}
+
+/// Waits until the view painted the answer to the document's newest request.
+bool waitPainted(MainWindow& w, int timeout_ms = 5000)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < timeout_ms) {
+        if (!w.document().waiting() && w.view().paintedSerial() >= w.document().lastSerial())
+            return true;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+    }
+    return false;
+}
+
+bool open(MainWindow& w, const QString& stream)
+{
+    QSignalSpy opened(&w, &MainWindow::streamOpened);
+    w.openStream(stream);
+    return opened.wait(60000) && opened.front().front().toBool() && waitPainted(w);
+}
+
+void allLayers(MainWindow& w)
+{
+    LayerSet all;
+    for (const LayerInfo& l : fieldsight::allLayers(w.document().pipeline()))
+        all.insert(l.id);
+    w.layersPanel().setVisibleLayers(all);
+}
+
+void benchStepping(const QString& label, const QString& stream)
+{
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    (void)QTest::qWaitForWindowActive(&w);
+    if (!open(w, stream)) {
+        std::cout << label.toStdString() << ": cannot open\n";
+        return;
+    }
+    allLayers(w);
+    std::vector<double> step_ms, worker_ms, paint_ms;
+    const int frames = int(w.document().frameCount());
+    for (int i = 1; i < frames; ++i) {
+        QElapsedTimer t;
+        t.start();
+        QTest::keyClick(&w, Qt::Key_Right);
+        if (!waitPainted(w))
+            break;
+        step_ms.push_back(double(t.nsecsElapsed()) / 1e6);
+        worker_ms.push_back(w.document().current()->worker_ms);
+        paint_ms.push_back(w.view().lastPaintMs());
+    }
+    std::vector<double> edit_ms;
+    for (int i = 0; i < 20; ++i) {
+        QElapsedTimer t;
+        t.start();
+        const StageDescriptor& stage = w.document().pipeline().descriptors().front();
+        const ParamInfo& p = stage.params.front();
+        (void)w.document().setParam(stage.info.id, p.name,
+                                    i % 2 ? p.default_value : p.default_value + p.step);
+        if (!waitPainted(w))
+            break;
+        edit_ms.push_back(double(t.nsecsElapsed()) / 1e6);
+    }
+    std::printf("%-28s step median %6.2f ms  p95 %6.2f ms  (worker %5.2f ms, view paint %5.2f "
+                "ms, %zu steps)  param edit median %5.2f ms  max %5.2f ms\n",
+                qPrintable(label), percentile(step_ms, 0.5), percentile(step_ms, 0.95),
+                percentile(worker_ms, 0.5), percentile(paint_ms, 0.5), step_ms.size(),
+                percentile(edit_ms, 0.5), percentile(edit_ms, 1.0));
+
+    // Play at 60 fps for two seconds, looping.
+    w.document().setCurrentIndex(0);
+    (void)waitPainted(w);
+    w.navigator().setSpeed(60);
+    w.navigator().loopAction()->setChecked(true);
+    std::uint64_t painted = 0, last = w.view().paintedSerial();
+    QObject::connect(&w.view(), &ui::FrameView::painted, [&](std::uint64_t serial) {
+        if (serial != last)
+            ++painted;
+        last = serial;
+    });
+    QElapsedTimer t;
+    t.start();
+    w.navigator().setPlaying(true);
+    while (t.elapsed() < 2000)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    w.navigator().setPlaying(false);
+    std::printf("%-28s play at 60 fps: %.1f frames painted per second\n", qPrintable(label),
+                double(painted) * 1000.0 / double(t.elapsed()));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    QApplication app(argc, argv);
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("FieldsightBench");
+    QSettings().clear();
+    QTemporaryDir tmp;
+    const QString dir = argc > 1 ? QString::fromLocal8Bit(argv[1]) : tmp.path();
+    std::printf("bench_gui: offscreen, every layer on, window 1280x800\n");
+
+    for (const auto& [w, h] : {std::pair{320, 240}, std::pair{640, 480}}) {
+        const QString stream = QStringLiteral("%1/s%2x%3").arg(dir).arg(w).arg(h);
+        if (!QFileInfo::exists(stream + "/image.strm") && !synth(stream, w, h, 200, true))
+            return 1;
+        benchStepping(QStringLiteral("%1x%2 PNG folder").arg(w).arg(h), stream);
+        benchStepping(QStringLiteral("%1x%2 .strm").arg(w).arg(h), stream + "/image.strm");
+    }
+
+    // 9,000 frames: the 200-frame .strm 45 times over, and 9,000 links to its PNGs.
+    const QString small = dir + "/s320x240";
+    const QString big_strm = dir + "/big.strm";
+    const QString big_dir = dir + "/big_png";
+    if (!QFileInfo::exists(big_strm)) {
+        QFile in(small + "/image.strm");
+        QFile out(big_strm);
+        if (!in.open(QIODevice::ReadOnly) || !out.open(QIODevice::WriteOnly))
+            return 1;
+        const QByteArray bytes = in.readAll();
+        for (int i = 0; i < 45; ++i)
+            out.write(bytes);
+    }
+    if (!QFileInfo::exists(big_dir)) {
+        QDir().mkpath(big_dir);
+        QFile::copy(small + "/default.lut", big_dir + "/default.lut");
+        for (int i = 0; i < 9000; ++i) {
+            const QString src =
+                QStringLiteral("%1/frame_%2.png").arg(small).arg(i % 200, 6, 10, QLatin1Char('0'));
+            const QString dst =
+                QStringLiteral("%1/frame_%2.png").arg(big_dir).arg(i, 6, 10, QLatin1Char('0'));
+            std::error_code ec;
+            std::filesystem::create_hard_link(src.toStdString(), dst.toStdString(), ec);
+            if (ec)
+                QFile::copy(src, dst);
+        }
+    }
+    for (const QString& stream : {big_strm, big_dir}) {
+        QElapsedTimer t;
+        t.start();
+        auto opened = ui::StreamDocument::openSource(stream, {}, Pipeline::standard());
+        const double ms = double(t.nsecsElapsed()) / 1e6;
+        std::printf("open %-22s %zu frames in %.0f ms\n", qPrintable(QFileInfo(stream).fileName()),
+                    opened ? opened.value()->names.size() : 0, ms);
+    }
+
+    // Play the 9,000-frame .strm through as fast as it goes; watch resident memory.
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    if (!open(w, big_strm))
+        return 1;
+    allLayers(w);
+    const double rss_start = rssMb();
+    double rss_max = rss_start;
+    w.navigator().setSpeed(0);
+    QElapsedTimer t;
+    t.start();
+    w.navigator().setPlaying(true);
+    while (w.navigator().playing() && t.elapsed() < 120000) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        rss_max = std::max(rss_max, rssMb());
+    }
+    std::printf("play big.strm fastest: reached frame %zu in %.1f s (%.0f frames/s painted "
+                "or skipped); RSS %.0f MB at start, %.0f MB max (growth %.0f MB)\n",
+                w.document().currentIndex(), double(t.elapsed()) / 1000.0,
+                double(w.document().currentIndex()) * 1000.0 / double(t.elapsed()), rss_start,
+                rss_max, rss_max - rss_start);
+    return 0;
+}
