@@ -2,7 +2,7 @@
 // user would on a machine without a display (QT_QPA_PLATFORM=offscreen or xvfb-run).
 //   gui_screenshot OUT.png STREAM [--lut FILE] [--set S.P=V] [--frame N] [--size WxH]
 //                  [--layers all|default|ID,...] [--mode raw|classified|side|blend]
-//                  [--zoom Z] [--focus-detection] [--hover X,Y]
+//                  [--zoom Z] [--focus LABEL] [--hover X,Y]
 #include "ui/main_window.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/inspector_panel.h"
@@ -25,7 +25,7 @@ int main(int argc, char** argv)
     p.addPositionalArgument("stream", "stream");
     for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover"})
         p.addOption({o, o, "value"});
-    p.addOption({"focus-detection", "centre the first detection"});
+    p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2) {
@@ -90,9 +90,12 @@ int main(int argc, char** argv)
         const double zoom = p.value("zoom").toDouble();
         w.view().setZoom(zoom);
         const auto& out = w.document().current();
-        if (p.isSet("focus-detection") && out && !out->items.empty()) {
-            const QPointF c = (out->items.front().bounds.center() + QPointF(0.5, 0.5)) * zoom;
+        for (const ui::PerceptItem& item : out ? out->items : std::vector<ui::PerceptItem>{}) {
+            if (!p.isSet("focus") || !item.label.startsWith(p.value("focus")))
+                continue;
+            const QPointF c = (item.bounds.center() + QPointF(0.5, 0.5)) * zoom;
             w.view().setImageOrigin((QPointF(w.view().rect().center()) - c).toPoint());
+            break;
         }
     }
     if (p.isSet("hover")) {

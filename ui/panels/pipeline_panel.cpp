@@ -75,6 +75,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
         });
         auto* form = new QFormLayout(box);
         form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        form->setRowWrapPolicy(QFormLayout::WrapLongRows); // long names above their editor
         auto* time = new QLabel(box);
         time->setObjectName(qs(id + ".time"));
         form->addRow(tr("Time"), time);
@@ -151,7 +152,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
             w.editor->setObjectName(key);
             // Narrow editors: a spin box asks for the width of its largest value otherwise.
             w.editor->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-            w.editor->setMinimumWidth(80);
+            w.editor->setMinimumWidth(56);
             QString tip = qs(param.description);
             if (param.kind == ParamKind::Real || param.kind == ParamKind::Integer)
                 tip += tr("\nRange %1 to %2%3, default %4%3")

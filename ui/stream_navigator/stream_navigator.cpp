@@ -65,7 +65,7 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
         tr("Loop"), Qt::Key_L, [] {}, "loop");
     m_loop->setCheckable(true);
 
-    for (QAction* a : {first, back100, back10, prev, m_play, next, fwd10, fwd100, last})
+    for (QAction* a : {first, back10, prev, m_play, next, fwd10, last}) // ±100: keys and menu
         button(a);
 
     m_slider = new QSlider(Qt::Horizontal, this);
@@ -234,8 +234,8 @@ void StreamNavigator::showFrameInfo()
         return;
     }
     const std::size_t i = m_doc.currentIndex();
-    QString text = m_doc.live() ? tr("Frame %1 (live)").arg(i)
-                                : tr("Frame %1 / %2").arg(i).arg(qsizetype(m_doc.frameCount()) - 1);
+    QString text = m_doc.live() ? tr("%1 (live)").arg(i)
+                                : tr("%1 / %2").arg(i).arg(qsizetype(m_doc.frameCount()) - 1);
     const auto& out = m_doc.current();
     if (out && out->index == i) {
         text += QStringLiteral("  ·  ") + QString::fromStdString(out->frame.name);
