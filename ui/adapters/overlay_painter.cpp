@@ -132,8 +132,39 @@ void paintShape(QPainter& painter, const DebugShape& shape)
 void paintDrawing(QPainter& painter, const DebugDrawing& drawing)
 {
     painter.save();
-    for (const DebugShape& shape : drawing.shapes)
-        paintShape(painter, shape);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    const double centre = centreOffset(painter);
+    // Runs of lines of one colour and width (scan lines, segments: thousands a frame) set the
+    // pen once. Each line is still its own two-point polyline: drawLines() rasterises some end
+    // pixels differently, and every caller must see the same pixels.
+    QList<QLineF> run;
+    const auto flush = [&](const DebugShape& first) {
+        painter.setPen(cosmeticPen(toQColor(first.colour), std::max(1.0, first.width)));
+        painter.setBrush(Qt::NoBrush);
+        for (const QLineF& l : run) {
+            const QPointF ends[2] = {l.p1(), l.p2()};
+            painter.drawPolyline(ends, 2);
+        }
+        run.clear();
+    };
+    const DebugShape* run_first = nullptr;
+    for (const DebugShape& shape : drawing.shapes) {
+        const bool line = shape.kind == ShapeKind::Line && shape.points.size() >= 2;
+        if (run_first &&
+            (!line || shape.colour != run_first->colour || shape.width != run_first->width)) {
+            flush(*run_first);
+            run_first = nullptr;
+        }
+        if (line) {
+            if (!run_first)
+                run_first = &shape;
+            run.append(QLineF(at(shape.points[0], centre), at(shape.points[1], centre)));
+        } else {
+            paintShape(painter, shape);
+        }
+    }
+    if (run_first)
+        flush(*run_first);
     painter.restore();
 }
 
