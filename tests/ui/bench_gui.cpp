@@ -99,10 +99,7 @@ bool open(MainWindow& w, const QString& stream)
 
 void allLayers(MainWindow& w)
 {
-    LayerSet all;
-    for (const LayerInfo& l : fieldsight::allLayers(w.document().pipeline()))
-        all.insert(l.id);
-    w.layersPanel().setVisibleLayers(all);
+    w.layersPanel().setVisibleLayers(selectLayers("all", w.document().pipeline()).value());
 }
 
 void benchStepping(const QString& label, const QString& stream)

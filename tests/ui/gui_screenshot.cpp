@@ -64,12 +64,7 @@ int main(int argc, char** argv)
         waitFrame();
     }
     const QString layers = p.value("layers");
-    if (layers == "all") {
-        LayerSet all;
-        for (const LayerInfo& l : allLayers(w.document().pipeline()))
-            all.insert(l.id);
-        w.layersPanel().setVisibleLayers(all);
-    } else if (!layers.isEmpty() && layers != "default") {
+    if (!layers.isEmpty() && layers != "default") {
         auto chosen = selectLayers(layers.toStdString(), w.document().pipeline());
         if (!chosen) {
             std::cerr << chosen.error().message << "\n";

@@ -92,14 +92,6 @@ int countDifferent(const QImage& a, const QImage& b, QRect* where = nullptr)
     return n;
 }
 
-LayerSet allLayerIds(const Pipeline& pipeline)
-{
-    LayerSet ids;
-    for (const LayerInfo& l : allLayers(pipeline))
-        ids.insert(l.id);
-    return ids;
-}
-
 } // namespace
 
 class TestMainWindow : public QObject
@@ -206,7 +198,7 @@ private slots:
         QVERIFY(openAndWait(w, sampleStream()));
         w.document().setCurrentIndex(4);
         QVERIFY(waitForFrame(w, 4));
-        w.layersPanel().setVisibleLayers(allLayerIds(m_pipeline));
+        w.layersPanel().setVisibleLayers(selectLayers("all", m_pipeline).value());
         w.view().setLabelsShown(false); // text labels are the window's own, not the render's
         const QImage shown = viewImage(w);
 
@@ -238,7 +230,7 @@ private slots:
                 box = &d;
         QVERIFY(box && !box->shapes.empty());
 
-        LayerSet layers = LayersPanel_default(w);
+        LayerSet layers = ui::LayersPanel::defaultLayers(w.document().pipeline());
         layers.erase("fake.box");
         w.layersPanel().setVisibleLayers(layers);
         const QImage without = viewImage(w);
@@ -251,11 +243,6 @@ private slots:
         QCOMPARE(changed, QRect(QPoint(10, 10), QPoint(19, 19)));
         const QRgb fill = with.pixel(15, 15);
         QCOMPARE(QColor(fill), ui::toQColor(kFakeLayerColour));
-    }
-
-    static LayerSet LayersPanel_default(MainWindow& w)
-    {
-        return ui::LayersPanel::defaultLayers(w.document().pipeline());
     }
 
     void skippingAStageRemovesItsDetections()

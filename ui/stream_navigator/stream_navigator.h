@@ -46,8 +46,8 @@ signals:
     void playingChanged(bool playing);
 
 private:
-    QAction* addAction(const QString& text, const QKeySequence& key, std::function<void()> run,
-                       const QString& name);
+    QAction* makeAction(const QString& text, const QKeySequence& key, std::function<void()> run,
+                        const QString& name);
     void tick();
     void refresh();
     void showFrameInfo();
