@@ -125,6 +125,9 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
         m_status_zoom->setText(tr("zoom %1%").arg(zoom * 100, 0, 'f', 0));
     });
+    connect(m_view, &FrameView::painted, this, [this] {
+        QMetaObject::invokeMethod(this, &MainWindow::refreshPanels, Qt::QueuedConnection);
+    });
     connect(m_view, &FrameView::pixelHovered, this, [this](QPoint p) {
         m_hover = p;
         m_inspector->inspect(m_doc->current().get(), p);
@@ -496,13 +499,23 @@ void MainWindow::onFrameReady()
 {
     const auto& out = m_doc->current();
     m_view->setOutput(out);
-    m_detections->showOutput(out.get());
-    if (m_hover)
-        m_inspector->inspect(out.get(), *m_hover);
+    // The view first; the panels follow once it has painted (at once when it cannot paint).
+    if (!m_view->isVisible())
+        refreshPanels();
     if (out)
         m_status_time->setText(tr("core %1 ms · worker %2 ms")
                                    .arg(out->result.report.total_ms, 0, 'f', 3)
                                    .arg(out->worker_ms, 0, 'f', 2));
+}
+
+void MainWindow::refreshPanels()
+{
+    const auto& out = m_doc->current();
+    if (out && m_detections->shownSerial() == out->serial)
+        return; // a repaint of the same frame (hover, zoom)
+    m_detections->showOutput(out.get());
+    if (m_hover)
+        m_inspector->inspect(out.get(), *m_hover);
 }
 
 void MainWindow::updateTitle()

@@ -78,6 +78,8 @@ private:
     void restoreSettings();
     void onStreamChanged();
     void onFrameReady();
+    /// The detections and inspector panels show the current frame (after the view painted it).
+    void refreshPanels();
     void updateTitle();
     void rememberRecent(const QString& spec);
     void rebuildRecentMenu();

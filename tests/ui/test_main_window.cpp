@@ -12,6 +12,7 @@
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/stream_navigator/stream_navigator.h"
+#include "visioncore/io/lut_import.h"
 #include "visioncore/percepts/ball.h"
 
 #include <QDoubleSpinBox>
@@ -27,8 +28,11 @@
 #include <QToolButton>
 #include <QtTest>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <sstream>
+#include <thread>
 
 using namespace fieldsight;
 using namespace fieldsight::test;
@@ -41,14 +45,17 @@ QString sampleStream()
     return QString::fromStdString(sampleStreamsDir() + "/lab1");
 }
 
-/// Waits until the document answered its newest request with frame `index`.
+/// Waits until the document answered its newest request with frame `index`, and the view and the
+/// panels show it.
 bool waitForFrame(MainWindow& w, std::size_t index)
 {
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < 10000) {
         const auto& out = w.document().current();
-        if (!w.document().waiting() && out && out->index == index)
+        if (!w.document().waiting() && out && out->index == index &&
+            (!w.view().isVisible() || w.view().paintedSerial() == out->serial) &&
+            w.detectionsPanel().shownSerial() == out->serial)
             return true;
         QTest::qWait(2);
     }
@@ -90,6 +97,48 @@ int countDifferent(const QImage& a, const QImage& b, QRect* where = nullptr)
     if (where)
         *where = box;
     return n;
+}
+
+/// A live camera stand-in: the sample stream's frames one after another, every 5 ms, for ever,
+/// reported as a camera (no frame count, no seeking).
+class StandInCamera : public StreamReader
+{
+public:
+    StandInCamera(std::unique_ptr<StreamReader> frames, std::atomic<int>& alive)
+        : m_frames(std::move(frames)), m_alive(alive)
+    {
+        m_info = m_frames->info();
+        m_info.path = "camera:stand-in";
+        m_info.kind = StreamKind::Camera;
+        m_info.frame_count = 0;
+        ++m_alive;
+    }
+    ~StandInCamera() override { --m_alive; }
+    const StreamInfo& info() const override { return m_info; }
+    std::string frameName(std::size_t index) const override
+    {
+        return "live_" + std::to_string(index);
+    }
+    Result<Frame> read(std::size_t) override
+    {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        auto frame = m_frames->read(m_next % m_frames->info().frame_count);
+        if (frame)
+            frame.value().name = frameName(m_next);
+        ++m_next;
+        return frame;
+    }
+
+private:
+    std::unique_ptr<StreamReader> m_frames;
+    std::atomic<int>& m_alive;
+    StreamInfo m_info;
+    std::size_t m_next = 0;
+};
+
+std::size_t liveNumber(const ui::FrameOutput& out)
+{
+    return std::stoul(out.frame.name.substr(std::string("live_").size()));
 }
 
 } // namespace
@@ -336,6 +385,55 @@ private slots:
         QVERIFY(waitForFrame(w, 2));
         QVERIFY(w.document().current()->error.isEmpty());
         QVERIFY(!w.document().current()->result.percepts.entries().empty());
+    }
+
+    void aLiveCameraShowsItsNewestFramesThroughItsOwnDataWrapper()
+    {
+        std::atomic<int> alive = 0;
+        auto frames = openStream(sampleStream().toStdString());
+        QVERIFY(frames);
+        auto opened = std::make_shared<ui::OpenedStream>();
+        opened->spec = QStringLiteral("camera:stand-in");
+        opened->lut = std::make_shared<const ColourLut>(
+            importLut((sampleStream() + "/default.lut").toStdString()).value());
+        opened->source = std::make_shared<ui::FrameSource>();
+        auto camera = std::make_unique<StandInCamera>(std::move(frames).value(), alive);
+        opened->info = camera->info();
+        opened->source->camera =
+            std::make_unique<CameraDataWrapper>(std::move(camera), opened->lut);
+
+        MainWindow w(m_pipeline);
+        w.show();
+        w.document().adopt(std::move(opened));
+        QVERIFY(waitForFrame(w, 0));
+        QVERIFY2(w.document().current()->error.isEmpty(),
+                 qPrintable(w.document().current()->error));
+        QVERIFY(w.document().live());
+        auto* label = w.navigator().findChild<QLabel*>("frame_label");
+        QVERIFY(label);
+        QVERIFY2(label->text().contains("live"), qPrintable(label->text()));
+        QVERIFY(w.detectionsPanel().topLevelTexts().contains("Fake marks (1)"));
+
+        // Each step shows a newer camera frame: frames that came meanwhile are skipped.
+        std::size_t last = liveNumber(*w.document().current());
+        for (std::size_t i = 1; i <= 3; ++i) {
+            QTest::qWait(30); // about six camera frames
+            QTest::keyClick(&w, Qt::Key_Right);
+            QVERIFY(waitForFrame(w, i));
+            const std::size_t now = liveNumber(*w.document().current());
+            QVERIFY2(now > last + 1, qPrintable(QStringLiteral("%1 after %2").arg(now).arg(last)));
+            last = now;
+        }
+        // Play runs on the live frames.
+        w.navigator().setSpeed(0);
+        w.navigator().setPlaying(true);
+        QTRY_VERIFY(w.document().current() && w.document().current()->index >= 8);
+        w.navigator().setPlaying(false);
+        QVERIFY(w.document().current()->error.isEmpty());
+
+        // Another stream: the camera is closed (on the worker thread).
+        QVERIFY(openAndWait(w, sampleStream()));
+        QTRY_COMPARE(alive.load(), 0);
     }
 
     void aBadStreamIsAMessageAndTheOldStreamStays()

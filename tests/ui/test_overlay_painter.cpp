@@ -383,6 +383,50 @@ private slots:
         QVERIFY(hasColour(image, x, 10 * scale + middle(scale), kInk));
     }
 
+    void aOnePixelLineCoversItsPixel_data()
+    {
+        QTest::addColumn<int>("scale");
+        QTest::newRow("scale 1") << 1;
+        QTest::newRow("scale 4") << 4;
+    }
+
+    void aOnePixelLineCoversItsPixel()
+    {
+        // A colour segment one pixel long is a line from a pixel to itself: it must show.
+        QFETCH(int, scale);
+        const QImage image = renderShape(shapeOf(ShapeKind::Line, {{7, 9}, {7, 9}}, 1), scale);
+        const int mid = middle(scale);
+        const QString difference =
+            pixelDifference(pixelsOf(image, kInk), {{7 * scale + mid, 9 * scale + mid}});
+        QVERIFY2(difference.isEmpty(), qPrintable(difference));
+    }
+
+    void axisLinesCoverTheirEndPixelsAtAnyZoom_data()
+    {
+        QTest::addColumn<int>("scale");
+        QTest::newRow("scale 1") << 1;
+        QTest::newRow("scale 2") << 2;
+        QTest::newRow("scale 3") << 3;
+    }
+
+    void axisLinesCoverTheirEndPixelsAtAnyZoom()
+    {
+        // Given right to left and bottom to top: the direction must not matter.
+        QFETCH(int, scale);
+        DebugDrawing drawing;
+        drawing.add(shapeOf(ShapeKind::Line, {{30, 4}, {6, 4}}, 1));
+        drawing.add(shapeOf(ShapeKind::Line, {{12, 33}, {12, 8}}, 1));
+        const QImage image = renderOverlay(blackFrame(), {&drawing}, scale);
+        const int mid = middle(scale);
+        PixelSet want;
+        for (int x = 6 * scale + mid; x <= 30 * scale + mid; ++x)
+            want.insert({x, 4 * scale + mid});
+        for (int y = 8 * scale + mid; y <= 33 * scale + mid; ++y)
+            want.insert({12 * scale + mid, y});
+        const QString difference = pixelDifference(pixelsOf(image, kInk), want);
+        QVERIFY2(difference.isEmpty(), qPrintable(difference));
+    }
+
     void pointsCoverExactlyTheirBlocks_data()
     {
         QTest::addColumn<double>("size");

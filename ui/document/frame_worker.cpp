@@ -96,19 +96,19 @@ std::vector<PerceptItem> perceptItems(const PerceptSet& percepts)
     return items;
 }
 
-void convertFrame(const cv::Mat& ycbcr, const ColourLut& lut, QImage& raw, QImage& classified,
-                  cv::Mat& classes)
+QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes)
 {
-    raw = ycbcrToZoomedQImage(ycbcr, 1);
-    if (raw.isNull())
-        return;
+    if (ycbcr.empty() || ycbcr.type() != CV_8UC3)
+        return {};
     std::array<QRgb, 256> palette{};
     for (int c = 0; c < kColourCount; ++c) {
         const Rgb rgb = colourDisplayRgb(Colour(c));
         palette[std::size_t(c)] = qRgb(rgb.r, rgb.g, rgb.b);
     }
     classes.create(ycbcr.rows, ycbcr.cols, CV_8UC1);
-    classified = QImage(ycbcr.cols, ycbcr.rows, QImage::Format_RGB32);
+    QImage classified(ycbcr.cols, ycbcr.rows, QImage::Format_RGB32);
+    if (classified.isNull())
+        return classified;
     for (int y = 0; y < ycbcr.rows; ++y) {
         std::uint8_t* ids = classes.ptr<std::uint8_t>(y);
         lut.classifyRun(ycbcr.ptr<std::uint8_t>(y), 3, ycbcr.cols, ids);
@@ -116,6 +116,7 @@ void convertFrame(const cv::Mat& ycbcr, const ColourLut& lut, QImage& raw, QImag
         for (int x = 0; x < ycbcr.cols; ++x)
             out[x] = palette[ids[x]];
     }
+    return classified;
 }
 
 FrameWorker::FrameWorker(const Pipeline& pipeline)
@@ -168,17 +169,33 @@ void FrameWorker::processPending()
     }
 }
 
+void FrameWorker::release(std::shared_ptr<FrameSource> source)
+{
+    QMetaObject::invokeMethod(
+        this,
+        [this, source = std::move(source)]() mutable {
+            if (m_live_source == source) {
+                m_live_control.reset();
+                m_live_source.reset();
+            }
+            source.reset();
+        },
+        Qt::QueuedConnection);
+}
+
 Status FrameWorker::load(const std::shared_ptr<FrameSource>& source, std::size_t index)
 {
-    const bool live = source->reader->info().kind == StreamKind::Camera;
-    if (!live && m_frame_valid && source == m_frame_source && index == m_frame_index)
+    if (m_frame_valid && source == m_frame_source && index == m_frame_index)
         return {}; // the same frame again: settings changed
     m_frame_valid = false;
-    if (!live && source == m_prefetch_source && index == m_prefetch_index) {
+    if (source == m_prefetch_source && index == m_prefetch_index) {
         std::swap(m_data.frame(), m_prefetch);
+        std::swap(m_display, m_prefetch_display);
         m_prefetch_source.reset();
     } else if (Status s = source->reader->readInto(index, m_data.frame()); !s) {
         return s;
+    } else {
+        m_display = {};
     }
     m_frame_source = source;
     m_frame_index = index;
@@ -197,13 +214,30 @@ void FrameWorker::prefetch()
         return;
     const StreamInfo& info = m_frame_source->reader->info();
     const std::size_t next = m_frame_index + 1;
-    if (info.kind == StreamKind::Camera || next >= info.frame_count ||
+    if (next >= info.frame_count ||
         (m_prefetch_source == m_frame_source && m_prefetch_index == next))
         return;
     m_prefetch_source.reset();
     if (m_frame_source->reader->readInto(next, m_prefetch)) {
+        m_prefetch_display = {};
+        makeDisplay(m_prefetch, m_last_lut, m_prefetch_display);
         m_prefetch_source = m_frame_source;
         m_prefetch_index = next;
+    }
+}
+
+void FrameWorker::makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
+                              Display& display)
+{
+    // Fresh buffers every time: the old ones may still be shown by the GUI.
+    if (display.ycbcr.empty()) {
+        display.ycbcr = frame.ycbcr.clone();
+        display.raw = ycbcrToZoomedQImage(display.ycbcr, 1);
+    }
+    if (lut && display.lut != lut) {
+        display.lut = lut;
+        display.classes = cv::Mat();
+        display.classified = classifyFrame(display.ycbcr, *lut, display.classes);
     }
 }
 
@@ -213,49 +247,73 @@ std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)
     auto out = std::make_shared<FrameOutput>();
     out->serial = request.serial;
     out->index = request.index;
-    if (!request.source || !request.source->reader) {
+    out->wait_ms = std::chrono::duration<double, std::milli>(start - request.submitted).count();
+    if (!request.source || (!request.source->reader && !request.source->camera)) {
         out->error = QStringLiteral("no stream is open");
         return out;
     }
-    if (Status s = load(request.source, request.index); !s) {
+    ControlWrapper* control = &m_control;
+    std::shared_ptr<const ParamSet>* applied = &m_applied_params;
+    const Frame* frame = &m_data.frame();
+    if (CameraDataWrapper* camera = request.source->camera.get()) {
+        if (m_live_source != request.source) {
+            m_live_control.reset();
+            m_live_source = request.source;
+            m_live_control = std::make_unique<ControlWrapper>(*camera, m_pipeline);
+            m_live_params.reset(); // a new core has the defaults
+        }
+        camera->setLut(request.lut);
+        camera->setDebugSink(&m_data);
+        if (Status s = camera->latch(std::chrono::seconds(2)); !s) {
+            out->error = QString::fromStdString(s.error().message);
+            return out;
+        }
+        m_display = {}; // a new frame every run
+        control = m_live_control.get();
+        applied = &m_live_params;
+        frame = &camera->frame();
+    } else if (Status s = load(request.source, request.index); !s) {
         out->error = QString::fromStdString(s.error().message);
         out->frame.name = request.source->reader->frameName(request.index);
         return out;
     }
 
-    if (request.params != m_applied_params) {
-        m_control.resetParams();
+    if (request.params != *applied) {
+        control->resetParams();
         if (request.params) {
-            if (Status s = m_control.applyParams(*request.params); !s) {
+            if (Status s = control->applyParams(*request.params); !s) {
                 out->error = QString::fromStdString(s.error().message);
                 return out; // and tried again on the next frame
             }
         }
-        m_applied_params = request.params;
+        *applied = request.params;
     }
     for (const std::string& id : m_skippable)
-        (void)m_control.setStageEnabled(id, request.skip.count(id) == 0);
+        (void)control->setStageEnabled(id, request.skip.count(id) == 0);
     m_data.setLut(request.lut);
+    m_last_lut = request.lut;
 
-    Result<FrameReport> report = m_control.runFrame();
-    const Frame& frame = m_data.frame();
-    out->frame.name = frame.name;
-    out->frame.timestamp_ms = frame.timestamp_ms;
-    out->frame.horizon = frame.horizon;
-    out->frame.ycbcr = frame.ycbcr.clone();
+    Result<FrameReport> report = control->runFrame();
+    out->frame.name = frame->name;
+    out->frame.timestamp_ms = frame->timestamp_ms;
+    out->frame.horizon = frame->horizon;
+    makeDisplay(*frame, request.lut, m_display);
+    out->frame.ycbcr = m_display.ycbcr;
+    out->raw = m_display.raw;
+    out->classified = m_display.classified;
+    out->classes = m_display.classes;
     if (!report) {
-        out->error = QString::fromStdString(frame.name + ": " + report.error().message);
+        out->error = QString::fromStdString(frame->name + ": " + report.error().message);
         return out;
     }
     out->result =
-        collectResult(request.index, frame.name, std::move(report).value(), m_control.blackboard());
+        collectResult(request.index, frame->name, std::move(report).value(), control->blackboard());
 
-    const auto truth_it = request.source->truth.find(frameStem(frame.name));
+    const auto truth_it = request.source->truth.find(frameStem(frame->name));
     const PerceptSet* truth = truth_it == request.source->truth.end() ? nullptr : truth_it->second;
     out->drawings =
         frameDrawings(m_pipeline, m_layers, m_data.canvas(), out->result.percepts, truth);
     out->items = perceptItems(out->result.percepts);
-    convertFrame(out->frame.ycbcr, m_data.lut(), out->raw, out->classified, out->classes);
     out->worker_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;

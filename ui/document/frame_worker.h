@@ -6,6 +6,7 @@
 #include "ui/document/gui_data_wrapper.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/io/annotations.h"
+#include "visioncore/io/camera_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/stream_runner.h"
 
@@ -14,6 +15,7 @@
 #include <QRectF>
 #include <QString>
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -24,10 +26,12 @@
 
 namespace fieldsight::ui {
 
-/// An open stream as the worker reads it. Only the worker thread touches the reader.
+/// An open stream as the worker reads it: a file stream's reader, or a live camera's own
+/// DataWrapper (which captures on a thread of its own). Only the worker thread touches them.
 struct FrameSource
 {
-    std::unique_ptr<StreamReader> reader;
+    std::unique_ptr<StreamReader> reader;           ///< files: random access by index
+    std::unique_ptr<CameraDataWrapper> camera;      ///< live: the newest frame at each run
     std::shared_ptr<const Annotations> annotations; ///< may be null
     std::map<std::string, const PerceptSet*> truth; ///< by frame stem, into `annotations`
 };
@@ -42,6 +46,7 @@ struct FrameRequest
     std::shared_ptr<const ColourLut> lut;
     std::shared_ptr<const ParamSet> params; ///< values that differ from the defaults
     std::set<std::string, std::less<>> skip;
+    std::chrono::steady_clock::time_point submitted = std::chrono::steady_clock::now();
 };
 
 /// A detection as the view shows it: where it is, for hovering, and its numbers.
@@ -66,6 +71,7 @@ struct FrameOutput
     FrameResult result;
     std::vector<DebugDrawing> drawings; ///< every layer, in drawing order
     std::vector<PerceptItem> items;
+    double wait_ms = 0;   ///< from the request to the worker taking it up
     double worker_ms = 0; ///< read, run and convert
 };
 
@@ -79,6 +85,9 @@ public:
 
     /// Thread-safe. Replaces any request not yet started.
     void submit(FrameRequest request);
+    /// Thread-safe. Lets go of a source no longer shown, on the worker thread (closing a camera
+    /// waits for its capture thread; a reader may close files), after any run still using it.
+    void release(std::shared_ptr<FrameSource> source);
 
 signals:
     void frameDone(std::shared_ptr<const FrameOutput> output);
@@ -89,20 +98,42 @@ private:
     /// Makes frame `index` of `source` current in m_data: kept from the last run (a parameter
     /// or LUT edit), taken from the prefetch, or read.
     Status load(const std::shared_ptr<FrameSource>& source, std::size_t index);
-    /// While idle, reads the frame after the current one, so the next step finds it decoded.
+    /// While idle, reads the frame after the current one and converts it for display with the
+    /// last LUT, so the next step finds it ready.
     void prefetch();
+
+    /// A frame's pixels as the GUI shows them: made once per frame (and per LUT for the
+    /// classified view), shared read-only with every output of that frame, never written again.
+    struct Display
+    {
+        cv::Mat ycbcr; ///< its own copy
+        QImage raw;
+        std::shared_ptr<const ColourLut> lut; ///< what `classified` and `classes` were made with
+        QImage classified;
+        cv::Mat classes;
+    };
+    static void makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
+                            Display& display);
 
     const Pipeline& m_pipeline;
     std::set<std::string, std::less<>> m_layers;
     GuiDataWrapper m_data;
     ControlWrapper m_control;
-    std::shared_ptr<const ParamSet> m_applied_params;
+    std::shared_ptr<const ParamSet> m_applied_params; ///< in m_control (null: the defaults)
+
+    /// A live camera's own core: its ControlWrapper reads the camera's DataWrapper.
+    std::shared_ptr<FrameSource> m_live_source;
+    std::unique_ptr<ControlWrapper> m_live_control;
+    std::shared_ptr<const ParamSet> m_live_params;
     std::vector<std::string> m_skippable;
 
     std::shared_ptr<FrameSource> m_frame_source; ///< what m_data's frame is, when valid
     std::size_t m_frame_index = 0;
     bool m_frame_valid = false;
+    Display m_display; ///< of m_data's frame, when valid
     Frame m_prefetch;
+    Display m_prefetch_display;
+    std::shared_ptr<const ColourLut> m_last_lut;
     std::shared_ptr<FrameSource> m_prefetch_source;
     std::size_t m_prefetch_index = 0;
 
@@ -114,8 +145,7 @@ private:
 /// The percept items of one frame's detections.
 std::vector<PerceptItem> perceptItems(const PerceptSet& percepts);
 
-/// The frame in display colours and in colour-class colours (Format_RGB32), and the class ids.
-void convertFrame(const cv::Mat& ycbcr, const ColourLut& lut, QImage& raw, QImage& classified,
-                  cv::Mat& classes);
+/// The frame in colour-class colours (Format_RGB32, SPEC §1), and the class ids in `classes`.
+QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes);
 
 } // namespace fieldsight::ui

@@ -43,13 +43,12 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
     auto opened = std::make_shared<OpenedStream>();
     opened->spec = spec;
     opened->source = std::make_shared<FrameSource>();
-    opened->source->reader = std::move(reader).value();
-    StreamReader& r = *opened->source->reader;
-    opened->info = r.info();
+    std::unique_ptr<StreamReader> r = std::move(reader).value();
+    opened->info = r->info();
     if (opened->info.kind != StreamKind::Camera) {
         opened->names.reserve(opened->info.frame_count);
         for (std::size_t i = 0; i < opened->info.frame_count; ++i)
-            opened->names.push_back(r.frameName(i));
+            opened->names.push_back(r->frameName(i));
     }
 
     opened->lut_path = lut.isEmpty() ? QString::fromStdString(opened->info.default_lut) : lut;
@@ -63,6 +62,11 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
             return table.error();
         opened->lut = std::make_shared<const ColourLut>(std::move(table).value());
     }
+    // A live camera gets its own DataWrapper, capturing from here on; a file stream its reader.
+    if (opened->info.kind == StreamKind::Camera)
+        opened->source->camera = std::make_unique<CameraDataWrapper>(std::move(r), opened->lut);
+    else
+        opened->source->reader = std::move(r);
 
     const std::string truth_path = defaultTruthPath(local(spec));
     std::error_code ec;
@@ -81,6 +85,8 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
 
 void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
 {
+    if (m_stream)
+        m_worker->release(std::move(m_stream->source)); // closed on the worker thread
     m_stream = std::move(opened);
     m_index = 0;
     m_current.reset();

@@ -214,9 +214,10 @@ void StreamNavigator::refresh()
 {
     const bool open = m_doc.hasStream();
     const bool seekable = open && !m_doc.live();
+    // A live camera cannot seek; its next frame is the newest one the camera has.
     for (QAction* a : m_actions)
         if (a != m_play && a != m_loop)
-            a->setEnabled(seekable);
+            a->setEnabled(seekable || (open && a->objectName() == QLatin1String("next")));
     m_play->setEnabled(open);
     {
         QSignalBlocker block(m_slider);
