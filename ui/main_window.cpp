@@ -3,6 +3,7 @@
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/layers_panel.h"
+#include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/stream_navigator/stream_navigator.h"
 #include "visioncore/io/atomic_file.h"
@@ -80,6 +81,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     setObjectName(QStringLiteral("fieldsight_main_window"));
     setAcceptDrops(true);
     m_doc = new StreamDocument(pipeline, this);
+    m_lut_doc = new LutDocument(this);
 
     auto* central = new QWidget(this);
     auto* column = new QVBoxLayout(central);
@@ -103,6 +105,33 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     m_message_bar->hide();
     column->addWidget(m_message_bar);
 
+    // Unsaved LUT edits of a session that ended without saving them: offered, never forced.
+    m_recovery_bar = new QWidget(central);
+    m_recovery_bar->setObjectName(QStringLiteral("recovery_bar"));
+    m_recovery_bar->setAutoFillBackground(true);
+    QPalette recovery_palette = m_recovery_bar->palette();
+    recovery_palette.setColor(QPalette::Window, QColor(255, 244, 200));
+    recovery_palette.setColor(QPalette::WindowText, QColor(20, 20, 20));
+    m_recovery_bar->setPalette(recovery_palette);
+    auto* recovery_row = new QHBoxLayout(m_recovery_bar);
+    recovery_row->setContentsMargins(8, 4, 4, 4);
+    m_recovery_label = new QLabel(m_recovery_bar);
+    m_recovery_label->setWordWrap(true);
+    recovery_row->addWidget(m_recovery_label, 1);
+    auto* recover = new QPushButton(tr("Recover"), m_recovery_bar);
+    recover->setObjectName(QStringLiteral("recover_lut"));
+    connect(recover, &QPushButton::clicked, this, &MainWindow::recoverLut);
+    recovery_row->addWidget(recover);
+    auto* discard = new QPushButton(tr("Discard"), m_recovery_bar);
+    discard->setObjectName(QStringLiteral("discard_recovery"));
+    connect(discard, &QPushButton::clicked, this, [this] {
+        m_lut_doc->discardRecovery();
+        m_recovery_bar->hide();
+    });
+    recovery_row->addWidget(discard);
+    m_recovery_bar->hide();
+    column->addWidget(m_recovery_bar);
+
     m_view = new FrameView(central);
     m_view->setObjectName(QStringLiteral("frame_view"));
     column->addWidget(m_view, 1);
@@ -119,7 +148,19 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     buildMenus();
 
     connect(m_doc, &StreamDocument::streamChanged, this, &MainWindow::onStreamChanged);
-    connect(m_doc, &StreamDocument::lutChanged, this, &MainWindow::updateTitle);
+    connect(m_doc, &StreamDocument::lutChanged, this, &MainWindow::onLutLoaded);
+    connect(m_lut_doc, &LutDocument::changed, this,
+            [this] { m_doc->setEditedLut(m_lut_doc->version()); });
+    connect(m_lut_doc, &LutDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_lut_doc, &LutDocument::problem, this, [this](const QString& m) { showMessage(m); });
+    connect(m_view, &FrameView::toolPressed, m_lut_panel, &LutPanel::press);
+    connect(m_view, &FrameView::toolDragged, m_lut_panel, &LutPanel::drag);
+    connect(m_view, &FrameView::toolReleased, m_lut_panel, &LutPanel::release);
+    connect(m_view, &FrameView::pixelPicked, m_lut_panel, &LutPanel::pick);
+    connect(m_lut_panel, &LutPanel::toolChanged, this, [this](bool editing, int radius) {
+        m_view->setToolActive(editing);
+        m_view->setBrushRadius(radius);
+    });
     connect(m_doc, &StreamDocument::frameReady, this, &MainWindow::onFrameReady);
     connect(m_doc, &StreamDocument::bookmarksChanged, this, &MainWindow::refreshBookmarks);
     connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
@@ -141,6 +182,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
 
     restoreSettings();
     updateTitle();
+    offerRecovery();
 }
 
 MainWindow::~MainWindow()
@@ -203,14 +245,19 @@ void MainWindow::buildDocks()
     QDockWidget* detections =
         dock(m_detections, tr("Detections"), "detections_dock", Qt::RightDockWidgetArea);
 
+    m_lut_panel = new LutPanel(*m_lut_doc, *m_doc, this);
+    QDockWidget* lut = dock(m_lut_panel, tr("LUT editor"), "lut_dock", Qt::RightDockWidgetArea);
+
     tabifyDockWidget(layers, bookmarks);
     layers->raise();
+    tabifyDockWidget(pipeline, lut);
+    pipeline->raise();
     splitDockWidget(pipeline, detections, Qt::Vertical);
     resizeDocks({layers, pipeline}, {270, 340}, Qt::Horizontal);
     resizeDocks({layers, inspector}, {480, 200}, Qt::Vertical);
 
     m_docks_menu = new QMenu(tr("Panels"), this);
-    for (QDockWidget* d : {layers, bookmarks, inspector, pipeline, detections})
+    for (QDockWidget* d : {layers, bookmarks, inspector, pipeline, lut, detections})
         m_docks_menu->addAction(d->toggleViewAction());
 }
 
@@ -250,6 +297,9 @@ void MainWindow::buildMenus()
         if (!path.isEmpty())
             openLut(path);
     });
+    addItem(file, tr("Save LUT"), QKeySequence::Save, this, [this] { (void)saveLut(); });
+    addItem(file, tr("Save LUT as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this,
+            [this] { (void)saveLutAs(); });
     m_recent_menu = file->addMenu(tr("Recent streams"));
     file->addSeparator();
     addItem(file, tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, [this] {
@@ -265,6 +315,29 @@ void MainWindow::buildMenus()
             &MainWindow::copySnapshot);
     file->addSeparator();
     addItem(file, tr("Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_lut_doc->undoStack().createUndoAction(this, tr("Undo"));
+    undo->setShortcuts(QKeySequence::Undo);
+    QAction* redo = m_lut_doc->undoStack().createRedoAction(this, tr("Redo"));
+    redo->setShortcuts(QKeySequence::Redo); // Ctrl+Y and Ctrl+Shift+Z on Linux
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    QMenu* classes = edit->addMenu(tr("Colour class"));
+    classes->addActions(m_lut_panel->colourActions());
+    QMenu* tools = edit->addMenu(tr("LUT tool"));
+    const std::pair<QString, LutTool> tool_list[] = {{tr("Pan"), LutTool::Navigate},
+                                                     {tr("Click with tolerance"), LutTool::Click},
+                                                     {tr("Brush"), LutTool::Brush},
+                                                     {tr("Erase"), LutTool::Erase},
+                                                     {tr("Magic wand"), LutTool::Wand}};
+    const Qt::Key tool_keys[] = {Qt::Key_P, Qt::Key_C, Qt::Key_B, Qt::Key_E, Qt::Key_W};
+    for (std::size_t i = 0; i < std::size(tool_list); ++i) {
+        const LutTool t = tool_list[i].second;
+        addItem(tools, tool_list[i].first, QKeySequence(tool_keys[i]), this,
+                [this, t] { m_lut_panel->setTool(t); });
+    }
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     auto* modes = new QActionGroup(this);
@@ -413,6 +486,8 @@ void MainWindow::openLastSession()
 
 void MainWindow::openStream(const QString& spec, const QString& lut)
 {
+    if (!confirmLutChanges())
+        return;
     if (m_open_watcher) {
         showMessage(tr("Still opening %1; wait or cancel it first").arg(m_opening));
         return;
@@ -472,6 +547,8 @@ void MainWindow::openStream(const QString& spec, const QString& lut)
 
 bool MainWindow::openLut(const QString& path)
 {
+    if (!confirmLutChanges())
+        return false;
     if (Status s = m_doc->openLut(path); !s) {
         showMessage(qs(s.error().message));
         return false;
@@ -522,12 +599,111 @@ void MainWindow::updateTitle()
 {
     QString title = QStringLiteral("Fieldsight");
     if (m_doc->hasStream()) {
-        title = QStringLiteral("%1 — %2 — Fieldsight")
+        title = QStringLiteral("%1 — %2[*] — Fieldsight")
                     .arg(QFileInfo(m_doc->streamSpec()).fileName(),
-                         m_doc->lutPath().isEmpty() ? tr("no LUT")
+                         m_doc->lutPath().isEmpty() ? tr("unsaved LUT")
                                                     : QFileInfo(m_doc->lutPath()).fileName());
     }
     setWindowTitle(title);
+    setWindowModified(m_lut_doc->modified());
+}
+
+void MainWindow::onLutLoaded()
+{
+    // Edits are never dropped silently: a table loaded under unsaved edits (an open finishing
+    // after a recovery) gives way to the edited one.
+    if (m_lut_doc->modified()) {
+        m_doc->setEditedLut(m_lut_doc->version());
+        m_doc->setLutPath(m_lut_doc->path());
+    } else {
+        m_lut_doc->reset(m_doc->lut(), m_doc->lutPath());
+    }
+    m_lut_doc->setStream(m_doc->streamSpec());
+    updateTitle();
+}
+
+bool MainWindow::saveLut()
+{
+    if (m_lut_doc->path().isEmpty() || !m_lut_doc->path().endsWith(QLatin1String(".lut")))
+        return saveLutAs();
+    if (Status s = m_lut_doc->save(); !s) {
+        showMessage(
+            tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));
+        return false;
+    }
+    showMessage(tr("Saved %1").arg(m_lut_doc->path()), false);
+    return true;
+}
+
+bool MainWindow::saveLutAs(const QString& given)
+{
+    QString path = given;
+    if (path.isEmpty()) {
+        QString suggestion = m_lut_doc->path();
+        if (suggestion.isEmpty() || !suggestion.endsWith(QLatin1String(".lut")))
+            suggestion = QFileInfo(m_doc->streamSpec()).absolutePath() + "/venue.lut";
+        path = QFileDialog::getSaveFileName(this, tr("Save LUT as"), suggestion,
+                                            tr("Fieldsight LUT (*.lut)"));
+        if (path.isEmpty())
+            return false;
+    }
+    if (!path.endsWith(QLatin1String(".lut"), Qt::CaseInsensitive))
+        path += QStringLiteral(".lut");
+    if (Status s = m_lut_doc->saveAs(path); !s) {
+        showMessage(
+            tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));
+        return false;
+    }
+    m_doc->setLutPath(path);
+    updateTitle();
+    showMessage(tr("Saved %1").arg(path), false);
+    return true;
+}
+
+bool MainWindow::confirmLutChanges()
+{
+    if (!m_lut_doc->modified())
+        return true;
+    const auto answer = QMessageBox::question(
+        this, tr("Unsaved LUT edits"), tr("The LUT has edits that are not saved. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Save)
+        return saveLut();
+    m_lut_doc->reset(m_doc->lut(), m_doc->lutPath()); // discarded: what loads next replaces it
+    m_lut_doc->discardRecovery();
+    return true;
+}
+
+void MainWindow::offerRecovery()
+{
+    const std::optional<LutRecovery> r = m_lut_doc->findRecovery();
+    if (!r) {
+        m_recovery_bar->hide();
+        return;
+    }
+    m_recovery_label->setText(
+        tr("Unsaved LUT edits from %1 (%2) were recovered after the last session ended. "
+           "Recover them?")
+            .arg(r->saved_at, r->path.isEmpty() ? tr("a new table") : r->path));
+    m_recovery_bar->show();
+}
+
+bool MainWindow::recoverLut()
+{
+    const std::optional<LutRecovery> r = m_lut_doc->findRecovery();
+    m_recovery_bar->hide();
+    if (!r)
+        return false;
+    if (Status s = m_lut_doc->recover(*r); !s) {
+        showMessage(qs(s.error().message));
+        return false;
+    }
+    m_doc->setLutPath(m_lut_doc->path());
+    updateTitle();
+    showMessage(tr("Recovered the LUT edits; save them with Ctrl+S"), false);
+    return true;
 }
 
 void MainWindow::rememberRecent(const QString& spec)
@@ -671,6 +847,10 @@ void MainWindow::restoreSettings()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (!confirmLutChanges()) {
+        event->ignore();
+        return;
+    }
     m_navigator->setPlaying(false);
     saveSettings();
     event->accept();

@@ -4,6 +4,7 @@
 // and remembers its layout and choices (QSettings).
 #pragma once
 
+#include "ui/document/lut_document.h"
 #include "ui/document/stream_document.h"
 #include "ui/frame_view/frame_view.h"
 
@@ -20,6 +21,7 @@ namespace fieldsight::ui {
 class DetectionsPanel;
 class InspectorPanel;
 class LayersPanel;
+class LutPanel;
 class PipelinePanel;
 class StreamNavigator;
 
@@ -37,6 +39,8 @@ public:
     PipelinePanel& pipelinePanel() { return *m_pipeline; }
     DetectionsPanel& detectionsPanel() { return *m_detections; }
     InspectorPanel& inspector() { return *m_inspector; }
+    LutDocument& lutDocument() { return *m_lut_doc; }
+    LutPanel& lutPanel() { return *m_lut_panel; }
     QListWidget& bookmarkList() { return *m_bookmark_list; }
 
     /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
@@ -61,6 +65,14 @@ public:
 
     void saveSettings() const;
 
+    /// Saves the edited LUT to its file (Save As when it has no .lut file yet); false with a
+    /// message in the window when it could not (the edits stay).
+    bool saveLut();
+    /// Saves the edited LUT to `path` (asks for one when empty).
+    bool saveLutAs(const QString& path = {});
+    /// Loads the recovery file of a session that ended with unsaved LUT edits.
+    bool recoverLut();
+
 signals:
     void streamOpened(bool ok);
 
@@ -78,6 +90,10 @@ private:
     void restoreSettings();
     void onStreamChanged();
     void onFrameReady();
+    void onLutLoaded();
+    /// Asks what to do with unsaved LUT edits (save, discard, cancel); true to go on.
+    bool confirmLutChanges();
+    void offerRecovery();
     /// The detections and inspector panels show the current frame (after the view painted it).
     void refreshPanels();
     void updateTitle();
@@ -90,6 +106,10 @@ private:
     void openPath(const QString& path);
 
     StreamDocument* m_doc = nullptr;
+    LutDocument* m_lut_doc = nullptr;
+    LutPanel* m_lut_panel = nullptr;
+    QWidget* m_recovery_bar = nullptr;
+    QLabel* m_recovery_label = nullptr;
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;
     LayersPanel* m_layers = nullptr;

@@ -132,6 +132,20 @@ Status StreamDocument::openLut(const QString& path)
     return {};
 }
 
+void StreamDocument::setEditedLut(std::shared_ptr<const ColourLut> lut)
+{
+    if (!m_stream || !lut || lut == m_stream->lut)
+        return;
+    m_stream->lut = std::move(lut);
+    submit();
+}
+
+void StreamDocument::setLutPath(const QString& path)
+{
+    if (m_stream)
+        m_stream->lut_path = path;
+}
+
 const StreamInfo& StreamDocument::info() const
 {
     static const StreamInfo none;

@@ -50,6 +50,11 @@ public:
     Status open(const QString& spec, const QString& lut = {});
     /// Loads a LUT in any importable format and re-runs the current frame.
     Status openLut(const QString& path);
+    /// An edited version of the LUT (from the LUT editor): re-runs the current frame. lutChanged
+    /// is not emitted (that means another table was loaded).
+    void setEditedLut(std::shared_ptr<const ColourLut> lut);
+    /// The LUT was saved under another name.
+    void setLutPath(const QString& path);
 
     bool hasStream() const { return m_stream != nullptr; }
     QString streamSpec() const { return m_stream ? m_stream->spec : QString(); }

@@ -244,6 +244,16 @@ void FrameView::paintEvent(QPaintEvent*)
             }
         }
     }
+    // The brush under the cursor: a circle through the outer pixels' centres, in every panel.
+    if (m_tool && m_brush_radius >= 0 && m_cursor_pixel) {
+        p.setPen(QPen(Qt::white, 1, Qt::DashLine));
+        p.setBrush(Qt::NoBrush);
+        const double r = (m_brush_radius + 0.5) * m_zoom;
+        for (int panel = 0; panel < panelCount(); ++panel)
+            p.drawEllipse(QPointF(panelX(panel) + (m_cursor_pixel->x() + 0.5) * m_zoom,
+                                  m_origin.y() + (m_cursor_pixel->y() + 0.5) * m_zoom),
+                          r, r);
+    }
     // A frame that failed, or a stage that threw: say so in the view, the tool goes on.
     QStringList problems;
     if (!m_output->error.isEmpty())
@@ -284,9 +294,34 @@ void FrameView::wheelEvent(QWheelEvent* event)
         setZoom(nextZoomStep(m_zoom, steps), anchor);
 }
 
+void FrameView::setToolActive(bool active)
+{
+    m_tool = active;
+    m_tool_down = false;
+    update();
+}
+
+void FrameView::setBrushRadius(int radius)
+{
+    m_brush_radius = radius;
+    update();
+}
+
 void FrameView::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
+    if (m_tool && event->button() == Qt::LeftButton) {
+        if (const std::optional<QPoint> pixel = pixelAt(event->position())) {
+            m_tool_down = true;
+            emit toolPressed(*pixel);
+        }
+        return;
+    }
+    if (m_tool && event->button() == Qt::RightButton) {
+        if (const std::optional<QPoint> pixel = pixelAt(event->position()))
+            emit pixelPicked(*pixel);
+        return;
+    }
+    if ((!m_tool && event->button() == Qt::LeftButton) || event->button() == Qt::MiddleButton) {
         m_drag_from = event->position().toPoint();
         m_drag_origin = m_origin;
         setCursor(Qt::ClosedHandCursor);
@@ -300,20 +335,35 @@ void FrameView::mouseMoveEvent(QMouseEvent* event)
         m_fit = false;
         update();
     }
-    if (const std::optional<QPoint> pixel = pixelAt(event->position()))
+    const std::optional<QPoint> pixel = pixelAt(event->position());
+    if (m_tool && m_brush_radius >= 0 && pixel != m_cursor_pixel) {
+        m_cursor_pixel = pixel;
+        update();
+    }
+    if (pixel && m_tool_down)
+        emit toolDragged(*pixel);
+    if (pixel)
         emit pixelHovered(*pixel);
     else
         emit hoverLeft();
 }
 
-void FrameView::mouseReleaseEvent(QMouseEvent*)
+void FrameView::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_tool_down && event->button() == Qt::LeftButton) {
+        m_tool_down = false;
+        emit toolReleased();
+    }
     m_drag_from.reset();
     setCursor(Qt::CrossCursor);
 }
 
 void FrameView::leaveEvent(QEvent*)
 {
+    if (m_cursor_pixel) {
+        m_cursor_pixel.reset();
+        update();
+    }
     emit hoverLeft();
 }
 

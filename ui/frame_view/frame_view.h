@@ -53,6 +53,13 @@ public:
     std::optional<QPoint> pixelAt(QPointF pos) const;
     /// The detection under widget point `pos`, if any.
     const PerceptItem* itemAt(QPointF pos) const;
+    /// With a tool on (the LUT editor's), the left button applies it (toolPressed, toolDragged,
+    /// toolReleased) and the right button picks (pixelPicked); the middle button still pans.
+    void setToolActive(bool active);
+    bool toolActive() const { return m_tool; }
+    /// The brush outline drawn around the cursor while a tool is on (image px; < 0: none).
+    void setBrushRadius(int radius);
+
     /// The serial of the output painted last.
     std::uint64_t paintedSerial() const { return m_painted_serial; }
     /// How long the last paint took, ms.
@@ -63,6 +70,10 @@ signals:
     void hoverLeft();
     void zoomChanged(double zoom);
     void painted(std::uint64_t serial);
+    void toolPressed(QPoint pixel);
+    void toolDragged(QPoint pixel);
+    void toolReleased();
+    void pixelPicked(QPoint pixel);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -93,6 +104,10 @@ private:
     QSize m_last_size;
     std::optional<QPoint> m_drag_from;
     QPoint m_drag_origin;
+    bool m_tool = false;
+    bool m_tool_down = false;
+    int m_brush_radius = -1;
+    std::optional<QPoint> m_cursor_pixel; ///< for the brush outline
     std::uint64_t m_painted_serial = 0;
     double m_paint_ms = 0;
     int m_wheel_delta = 0; ///< eighths of a degree not yet turned into a zoom step

@@ -1,0 +1,123 @@
+// What a LUT edit touches (visioncore/services/lut_editing.h): the tolerance box, the brush, the
+// magic wand, and changes that undo exactly.
+#include "support/synthetic_frames.h"
+#include "visioncore/services/lut_editing.h"
+
+#include <QtTest>
+
+#include <algorithm>
+#include <set>
+
+using namespace fieldsight;
+
+namespace {
+
+std::uint32_t cellOf(int y, int cb, int cr)
+{
+    return std::uint32_t(ColourLut::index(std::uint8_t(y), std::uint8_t(cb), std::uint8_t(cr)));
+}
+
+} // namespace
+
+class TestLutEditing : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void aZeroToleranceBoxIsTheColoursOwnCell()
+    {
+        const auto cells = cellsInBox(100, 90, 200, {});
+        QCOMPARE(cells.size(), std::size_t(1));
+        QCOMPARE(cells[0], cellOf(100, 90, 200));
+    }
+
+    void theBoxCoversEveryLevelWithinTheTolerance()
+    {
+        // Y 97..103 is cells 48..51; Cb 88..92 is 44..46; Cr 200 alone is 100.
+        const auto cells = cellsInBox(100, 90, 200, {3, 2, 0});
+        QCOMPARE(cells.size(), std::size_t(4 * 3 * 1));
+        for (int y = 97; y <= 103; ++y)
+            for (int cb = 88; cb <= 92; ++cb)
+                QVERIFY(std::binary_search(cells.begin(), cells.end(), cellOf(y, cb, 200)));
+        QVERIFY(!std::binary_search(cells.begin(), cells.end(), cellOf(95, 90, 200)));
+        QVERIFY(std::is_sorted(cells.begin(), cells.end()));
+    }
+
+    void theBoxIsClampedAtTheEndsOfTheRange()
+    {
+        const auto cells = cellsInBox(1, 254, 128, {10, 10, 0});
+        // Y 0..11 -> cells 0..5; Cb 244..255 -> cells 122..127.
+        QCOMPARE(cells.size(), std::size_t(6 * 6));
+        QCOMPARE(cells.front(), cellOf(0, 244, 128));
+        QCOMPARE(cells.back(), cellOf(11, 255, 128));
+    }
+
+    void aBrushIsADiscClippedToTheImage()
+    {
+        QCOMPARE(brushPixels({5, 5}, 0, {10, 10}).size(), std::size_t(1));
+        QCOMPARE(brushPixels({5, 5}, 1, {10, 10}).size(), std::size_t(5));
+        QCOMPARE(brushPixels({5, 5}, 2, {10, 10}).size(), std::size_t(13));
+        QCOMPARE(brushPixels({0, 0}, 1, {10, 10}).size(), std::size_t(3)); // a corner
+        QVERIFY(brushPixels({-5, -5}, 1, {10, 10}).empty());
+    }
+
+    void theWandTakesOnlyTheConnectedSimilarPixels()
+    {
+        cv::Mat frame = test::filledFrame(40, 30, Colour::Green);
+        test::fillRect(frame, 2, 2, 9, 9, Colour::Orange);     // 8x8, the seed's
+        test::fillRect(frame, 20, 20, 24, 24, Colour::Orange); // apart: not taken
+        const auto pixels = wandPixels(frame, {5, 5}, {4, 4, 4});
+        QCOMPARE(pixels.size(), std::size_t(64));
+        for (const cv::Point& p : pixels)
+            QVERIFY(p.x >= 2 && p.x <= 9 && p.y >= 2 && p.y <= 9);
+        QVERIFY(wandPixels(frame, {50, 5}, {}).empty());
+        // A tolerance wide enough for both colours takes the whole frame.
+        QCOMPARE(wandPixels(frame, {5, 5}, {255, 255, 255}).size(), std::size_t(40 * 30));
+    }
+
+    void cellsOfPixelsAreTheirColoursCells()
+    {
+        cv::Mat frame = test::filledFrame(10, 10, Colour::Green);
+        test::fillRect(frame, 0, 0, 0, 0, Colour::Orange);
+        const auto cells = cellsOfPixels(frame, {{0, 0}, {5, 5}, {6, 6}, {99, 99}});
+        const test::ClassPixel o = test::pixelFor(Colour::Orange);
+        const test::ClassPixel g = test::pixelFor(Colour::Green);
+        const std::set<std::uint32_t> want{cellOf(o.y, o.cb, o.cr), cellOf(g.y, g.cb, g.cr)};
+        QCOMPARE(std::set<std::uint32_t>(cells.begin(), cells.end()), want);
+        QCOMPARE(cells.size(), want.size());
+    }
+
+    void changesLeaveOutCellsAlreadyRightAndCanSpareOtherClasses()
+    {
+        ColourLut lut;
+        lut.setCell(10, Colour::Orange);
+        lut.setCell(11, Colour::Green);
+        const auto all = changesTo(lut, {10, 11, 12}, Colour::Orange);
+        QCOMPARE(all.size(), std::size_t(2)); // 10 is orange already
+        const auto spare = changesTo(lut, {10, 11, 12}, Colour::Orange, true);
+        QCOMPARE(spare.size(), std::size_t(1));
+        QCOMPARE(spare[0].cell, std::uint32_t(12));
+    }
+
+    void changesUndoToTheExactBytes()
+    {
+        ColourLut lut = test::testLut();
+        const ColourLut before = lut;
+        auto first = changesTo(lut, cellsInBox(120, 100, 160, {20, 20, 20}), Colour::Blue);
+        applyChanges(lut, first);
+        auto second = changesTo(lut, cellsInBox(110, 110, 150, {20, 20, 20}), Colour::White);
+        applyChanges(lut, second);
+        QVERIFY(lut != before);
+        // One list (a merged stroke) with repeated cells, undone in reverse.
+        std::vector<CellChange> merged = first;
+        merged.insert(merged.end(), second.begin(), second.end());
+        applyChanges(lut, merged, false);
+        QVERIFY(lut == before);
+        applyChanges(lut, merged, true);
+        QCOMPARE(lut.cell(cellOf(110, 110, 150)), Colour::White);
+        QCOMPARE(cellsPerClass(lut)[std::size_t(Colour::White)] > 0, true);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestLutEditing)
+#include "test_lut_editing.moc"

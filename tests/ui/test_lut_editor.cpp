@@ -1,0 +1,262 @@
+// The LUT editor in the real main window, offscreen, with simulated mouse and keys: a click and a
+// brush stroke change exactly the expected cells, undo restores the bytes and redo re-applies,
+// the frame is reclassified, save then load gives the same bytes, and unsaved edits left by a
+// crashed session are offered and restored.
+#include "support/synthetic_frames.h"
+#include "ui/main_window.h"
+#include "ui/panels/lut_panel.h"
+
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <set>
+
+using namespace fieldsight;
+using fieldsight::ui::LutTool;
+using fieldsight::ui::MainWindow;
+
+namespace {
+
+QString sampleStream()
+{
+    return QString::fromStdString(test::sampleStreamsDir() + "/lab1");
+}
+
+bool waitForLut(MainWindow& w, const std::shared_ptr<const ColourLut>& lut)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 10000) {
+        const auto& out = w.document().current();
+        if (!w.document().waiting() && out && w.document().lut() == lut)
+            return true;
+        QTest::qWait(2);
+    }
+    return false;
+}
+
+bool openAndWait(MainWindow& w)
+{
+    QSignalSpy opened(&w, &MainWindow::streamOpened);
+    w.openStream(sampleStream());
+    if (!opened.wait(10000) || !opened.front().front().toBool())
+        return false;
+    return waitForLut(w, w.document().lut());
+}
+
+/// Widget position of image pixel `p` at zoom 1 with the image at the view's corner.
+QPoint at(QPoint p)
+{
+    return p;
+}
+
+void showPixelsOneToOne(MainWindow& w)
+{
+    w.view().setZoom(1);
+    w.view().setImageOrigin({0, 0});
+}
+
+/// The cells where two tables differ.
+std::set<std::uint32_t> differences(const ColourLut& a, const ColourLut& b)
+{
+    std::set<std::uint32_t> cells;
+    for (std::uint32_t i = 0; i < ColourLut::kCells; ++i)
+        if (a.data()[i] != b.data()[i])
+            cells.insert(i);
+    return cells;
+}
+
+cv::Vec3b colourAt(MainWindow& w, QPoint p)
+{
+    return w.document().current()->frame.ycbcr.at<cv::Vec3b>(p.y(), p.x());
+}
+
+} // namespace
+
+class TestLutEditor : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("FieldsightTest");
+        QCoreApplication::setApplicationName("test_lut_editor");
+        QVERIFY(m_dir.isValid());
+        if (!QFileInfo(sampleStream()).isDir())
+            QSKIP("the bundled sample streams are missing");
+    }
+
+    void init()
+    {
+        QSettings().clear();
+        ui::LutDocument probe;
+        probe.discardRecovery();
+    }
+
+    void aClickClassifiesExactlyTheToleranceBox()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        showPixelsOneToOne(w);
+        const ColourLut before = w.lutDocument().table();
+
+        QTest::keyClick(&w, Qt::Key_9); // blue
+        QCOMPARE(w.lutPanel().colour(), Colour::Blue);
+        w.lutPanel().setTool(LutTool::Click);
+        w.lutPanel().setTolerance({4, 2, 2});
+        const QPoint pixel(40, 200);
+        const cv::Vec3b c = colourAt(w, pixel);
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(pixel));
+
+        std::set<std::uint32_t> want;
+        for (const std::uint32_t cell : cellsInBox(c[0], c[1], c[2], {4, 2, 2}))
+            if (before.cell(cell) != Colour::Blue)
+                want.insert(cell);
+        QVERIFY(!want.empty());
+        QCOMPARE(differences(before, w.lutDocument().table()), want);
+        for (const std::uint32_t cell : want)
+            QCOMPARE(w.lutDocument().table().cell(cell), Colour::Blue);
+        QVERIFY(w.lutDocument().modified());
+        QVERIFY(w.isWindowModified());
+
+        // The frame is reclassified with the edited table.
+        QVERIFY(waitForLut(w, w.lutDocument().version()));
+        QCOMPARE(Colour(w.document().current()->classes.at<std::uint8_t>(pixel.y(), pixel.x())),
+                 Colour::Blue);
+
+        // Right-click picks the class under the cursor.
+        QTest::keyClick(&w, Qt::Key_1);
+        QTest::mouseClick(&w.view(), Qt::RightButton, {}, at(pixel));
+        QCOMPARE(w.lutPanel().colour(), Colour::Blue);
+    }
+
+    void aBrushStrokeIsOneUndoStepAndUndoRestoresTheBytes()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        showPixelsOneToOne(w);
+        const ColourLut before = w.lutDocument().table();
+        const int steps = w.lutDocument().undoStack().count();
+
+        QTest::keyClick(&w, Qt::Key_6); // orange
+        w.lutPanel().setTool(LutTool::Brush);
+        w.lutPanel().setBrushRadius(1);
+        w.lutPanel().setTolerance({0, 0, 0});
+        const cv::Mat frame = w.document().current()->frame.ycbcr.clone();
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at({100, 150}));
+        QTest::mouseMove(&w.view(), at({104, 150}));
+        QTest::mouseMove(&w.view(), at({104, 156}));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at({104, 156}));
+        QCOMPARE(w.lutDocument().undoStack().count(), steps + 1);
+
+        // The cells of every pixel the radius-1 brush went over, 100..104 along y 150, then
+        // y 150..156 along x 104.
+        std::vector<cv::Point> path;
+        for (int x = 100; x <= 104; ++x)
+            for (const cv::Point& p : brushPixels({x, 150}, 1, frame.size()))
+                path.push_back(p);
+        for (int y = 150; y <= 156; ++y)
+            for (const cv::Point& p : brushPixels({104, y}, 1, frame.size()))
+                path.push_back(p);
+        std::set<std::uint32_t> want;
+        for (const std::uint32_t cell : cellsOfPixels(frame, path))
+            if (before.cell(cell) != Colour::Orange)
+                want.insert(cell);
+        QVERIFY(!want.empty());
+        const ColourLut after = w.lutDocument().table();
+        QCOMPARE(differences(before, after), want);
+
+        QTest::keySequence(&w, QKeySequence::Undo);
+        QVERIFY(w.lutDocument().table() == before);
+        QVERIFY(!w.lutDocument().modified());
+        QTest::keySequence(&w, QKeySequence::Redo);
+        QCOMPARE(w.lutDocument().undoStack().index(), steps + 1);
+        QVERIFY(w.lutDocument().table() == after);
+
+        // Erase takes a painted colour back to unclassified.
+        w.lutPanel().setTool(LutTool::Erase);
+        w.lutPanel().setBrushRadius(0);
+        const cv::Vec3b c = frame.at<cv::Vec3b>(150, 102);
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({102, 150}));
+        QCOMPARE(w.lutDocument().table().classify(c[0], c[1], c[2]), Colour::Unclassified);
+    }
+
+    void saveThenLoadGivesTheSameBytes()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndWait(w));
+        showPixelsOneToOne(w);
+        w.lutPanel().setColour(Colour::Yellow);
+        w.lutPanel().setTool(LutTool::Wand);
+        w.lutPanel().setTolerance({6, 6, 6});
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({160, 40}));
+        QVERIFY(w.lutDocument().modified());
+
+        const QString path = m_dir.filePath("venue.lut");
+        QVERIFY(w.saveLutAs(path));
+        QVERIFY(!w.lutDocument().modified());
+        QVERIFY(!w.isWindowModified());
+        auto loaded = ColourLut::load(path.toStdString());
+        QVERIFY(loaded);
+        QVERIFY(loaded.value() == w.lutDocument().table());
+        QCOMPARE(w.document().lutPath(), path);
+
+        // Saving where it cannot be written keeps the edits and says so in the window.
+        w.lutPanel().setTool(LutTool::Click);
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({20, 220}));
+        QVERIFY(w.lutDocument().modified());
+        QVERIFY(!w.saveLutAs(m_dir.filePath("missing/folder/x.lut")));
+        QVERIFY(w.lutDocument().modified());
+        QVERIFY2(w.lastMessage().contains("not saved"), qPrintable(w.lastMessage()));
+    }
+
+    void unsavedEditsAreOfferedAfterACrash()
+    {
+        ColourLut edited;
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(openAndWait(w));
+            showPixelsOneToOne(w);
+            w.lutDocument().setAutosaveDelay(50);
+            w.lutPanel().setColour(Colour::Pink);
+            w.lutPanel().setTool(LutTool::Click);
+            w.lutPanel().setTolerance({10, 10, 10});
+            QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({60, 60}));
+            edited = w.lutDocument().table();
+            QTRY_VERIFY(w.lutDocument().findRecovery().has_value());
+            // The window goes away without closing (a crash): the recovery file stays.
+        }
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndWait(w));
+        auto* recover = w.findChild<QPushButton*>("recover_lut");
+        QVERIFY(recover);
+        QVERIFY(recover->isVisible());
+        QVERIFY(!(w.lutDocument().table() == edited));
+        QTest::mouseClick(recover, Qt::LeftButton);
+        QVERIFY(w.lutDocument().table() == edited);
+        QVERIFY(w.lutDocument().modified());
+        QVERIFY(waitForLut(w, w.lutDocument().version()));
+
+        // Once saved, nothing is offered any more.
+        QVERIFY(w.saveLutAs(m_dir.filePath("recovered.lut")));
+        QVERIFY(!w.lutDocument().findRecovery());
+    }
+};
+
+QTEST_MAIN(TestLutEditor)
+#include "test_lut_editor.moc"

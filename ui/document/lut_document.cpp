@@ -1,0 +1,199 @@
+#include "ui/document/lut_document.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QStandardPaths>
+#include <QUndoCommand>
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace fieldsight::ui {
+
+/// One edit: the cells it changed, with what they were, so undo restores the bytes exactly.
+class LutCellsCommand : public QUndoCommand
+{
+public:
+    LutCellsCommand(LutDocument& doc, const QString& text, std::vector<CellChange> changes,
+                    int stroke)
+        : QUndoCommand(text), m_doc(doc), m_changes(std::move(changes)), m_stroke(stroke)
+    {
+    }
+    void redo() override { m_doc.apply(m_changes, true); }
+    void undo() override { m_doc.apply(m_changes, false); }
+    int id() const override { return m_stroke > 0 ? 1 : -1; }
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        const auto* next = static_cast<const LutCellsCommand*>(other);
+        if (next->m_stroke != m_stroke)
+            return false;
+        // Applied in order and undone in reverse, repeated cells come back to their first value.
+        m_changes.insert(m_changes.end(), next->m_changes.begin(), next->m_changes.end());
+        return true;
+    }
+
+private:
+    LutDocument& m_doc;
+    std::vector<CellChange> m_changes;
+    int m_stroke;
+};
+
+LutDocument::LutDocument(QObject* parent) : QObject(parent)
+{
+    m_recovery_dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    m_autosave.setSingleShot(true);
+    m_autosave.setInterval(30000);
+    connect(&m_autosave, &QTimer::timeout, this, [this] {
+        if (!modified())
+            return;
+        if (Status s = writeRecovery(); !s)
+            emit problem(QString::fromStdString(s.error().message));
+    });
+    connect(&m_undo, &QUndoStack::cleanChanged, this, [this] {
+        if (!modified()) { // undone back to the saved table: nothing to recover
+            m_autosave.stop();
+            discardRecovery();
+        }
+        emit modifiedChanged(modified());
+    });
+}
+
+LutDocument::~LutDocument()
+{
+    QObject::disconnect(&m_undo, nullptr, this, nullptr);
+    blockSignals(true);
+}
+
+void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path)
+{
+    m_table = lut ? *lut : ColourLut();
+    m_version = std::move(lut);
+    m_path = path;
+    m_recovered = false;
+    m_undo.clear();
+    m_autosave.stop();
+    emit changed();
+    emit modifiedChanged(false);
+}
+
+std::shared_ptr<const ColourLut> LutDocument::version()
+{
+    if (!m_version)
+        m_version = std::make_shared<const ColourLut>(m_table);
+    return m_version;
+}
+
+bool LutDocument::edit(const QString& text, std::vector<CellChange> changes, int stroke)
+{
+    if (changes.empty())
+        return false;
+    m_undo.push(new LutCellsCommand(*this, text, std::move(changes), stroke));
+    return true;
+}
+
+void LutDocument::apply(const std::vector<CellChange>& changes, bool forwards)
+{
+    applyChanges(m_table, changes, forwards);
+    m_version.reset();
+    if (!m_autosave.isActive())
+        m_autosave.start(); // at most the delay after the first unsaved edit
+    emit changed();
+}
+
+Status LutDocument::save()
+{
+    if (m_path.isEmpty())
+        return Error{"the LUT has no file yet: use Save As"};
+    return saveAs(m_path);
+}
+
+Status LutDocument::saveAs(const QString& path)
+{
+    // Only .lut is written; the foreign formats are import-only.
+    if (!path.endsWith(QLatin1String(".lut"), Qt::CaseInsensitive))
+        return Error{path.toStdString() + ": LUTs are saved as .lut (SPEC §3)"};
+    if (Status s = m_table.save(path.toStdString()); !s)
+        return s; // the edits stay in memory, and modified
+    m_path = path;
+    m_recovered = false;
+    m_undo.setClean();
+    m_autosave.stop();
+    discardRecovery();
+    emit modifiedChanged(false);
+    return {};
+}
+
+QString LutDocument::recoveryBase() const
+{
+    return QDir(m_recovery_dir).filePath(QStringLiteral("lut-recovery"));
+}
+
+Status LutDocument::writeRecovery()
+{
+    if (!QDir().mkpath(m_recovery_dir))
+        return Error{m_recovery_dir.toStdString() + ": cannot create the recovery folder"};
+    const QString base = recoveryBase();
+    if (Status s = m_table.save((base + ".lut").toStdString()); !s)
+        return s;
+    nlohmann::ordered_json meta{
+        {"format", "fieldsight-lut-recovery/1"},
+        {"path", m_path.toStdString()},
+        {"stream", m_stream.toStdString()},
+        {"saved_at", QDateTime::currentDateTime().toString(Qt::ISODate).toStdString()}};
+    const std::string json = base.toStdString() + ".json";
+    const std::string tmp = json + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        out << meta.dump(2) << '\n';
+        if (!out.flush())
+            return Error{tmp + ": cannot write the recovery note"};
+    }
+    if (std::rename(tmp.c_str(), json.c_str()) != 0)
+        return Error{json + ": cannot write the recovery note"};
+    return {};
+}
+
+std::optional<LutRecovery> LutDocument::findRecovery() const
+{
+    const QString base = recoveryBase();
+    if (!QFileInfo::exists(base + ".lut") || !QFileInfo::exists(base + ".json"))
+        return std::nullopt;
+    QFile file(base + ".json");
+    if (!file.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    const auto meta = nlohmann::json::parse(file.readAll().toStdString(), nullptr, false);
+    if (!meta.is_object() || meta.value("format", "") != "fieldsight-lut-recovery/1")
+        return std::nullopt;
+    LutRecovery r;
+    r.lut_file = base + ".lut";
+    r.path = QString::fromStdString(meta.value("path", ""));
+    r.stream = QString::fromStdString(meta.value("stream", ""));
+    r.saved_at = QString::fromStdString(meta.value("saved_at", ""));
+    return r;
+}
+
+Status LutDocument::recover(const LutRecovery& recovery)
+{
+    auto table = ColourLut::load(recovery.lut_file.toStdString());
+    if (!table)
+        return table.error();
+    m_table = std::move(table).value();
+    m_version.reset();
+    m_path = recovery.path;
+    m_undo.clear();
+    m_recovered = true;
+    emit changed();
+    emit modifiedChanged(true);
+    return {};
+}
+
+void LutDocument::discardRecovery()
+{
+    QFile::remove(recoveryBase() + ".lut");
+    QFile::remove(recoveryBase() + ".json");
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,306 @@
+#include "ui/panels/lut_panel.h"
+
+#include "ui/adapters/image_adapter.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QButtonGroup>
+#include <QCheckBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QPixmap>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QUndoView>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace fieldsight::ui {
+
+namespace {
+
+QString className(Colour c)
+{
+    const std::string_view name = colourName(c);
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+
+QIcon swatch(Colour c)
+{
+    QPixmap pixmap(16, 16);
+    pixmap.fill(toQColor(colourDisplayRgb(c)));
+    QPainter p(&pixmap);
+    p.setPen(Qt::darkGray);
+    p.drawRect(0, 0, 15, 15);
+    return QIcon(pixmap);
+}
+
+} // namespace
+
+LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
+    : QWidget(parent), m_lut(lut), m_stream(stream)
+{
+    setObjectName(QStringLiteral("lut_panel"));
+    auto* column = new QVBoxLayout(this);
+
+    // The palette: a button per class; keys 0-9 choose the first ten.
+    auto* palette = new QGridLayout;
+    m_colours = new QActionGroup(this);
+    m_colours->setExclusive(true);
+    for (int c = 0; c < kColourCount; ++c) {
+        auto* action = new QAction(swatch(Colour(c)), className(Colour(c)), this);
+        action->setObjectName(QStringLiteral("colour.%1").arg(className(Colour(c))));
+        action->setCheckable(true);
+        action->setData(c);
+        if (c <= 9) {
+            action->setShortcut(QKeySequence(Qt::Key_0 + c));
+            action->setToolTip(QStringLiteral("%1 (%2)").arg(className(Colour(c))).arg(c));
+        }
+        m_colours->addAction(action);
+        auto* button = new QToolButton(this);
+        button->setDefaultAction(action);
+        button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+        button->setAutoRaise(true);
+        button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        palette->addWidget(button, c / 2, c % 2);
+    }
+    connect(m_colours, &QActionGroup::triggered, this,
+            [this](QAction* a) { m_colour = Colour(a->data().toInt()); });
+    column->addLayout(palette);
+
+    // The tools.
+    auto* tools = new QGridLayout;
+    m_tools = new QButtonGroup(this);
+    const std::pair<LutTool, QString> kinds[] = {{LutTool::Navigate, tr("Pan")},
+                                                 {LutTool::Click, tr("Click")},
+                                                 {LutTool::Brush, tr("Brush")},
+                                                 {LutTool::Erase, tr("Erase")},
+                                                 {LutTool::Wand, tr("Wand")}};
+    int at = 0;
+    for (const auto& [kind, name] : kinds) {
+        auto* button = new QPushButton(name, this);
+        button->setObjectName(QStringLiteral("tool.%1").arg(name.toLower()));
+        button->setCheckable(true);
+        m_tools->addButton(button, int(kind));
+        tools->addWidget(button, 0, at++);
+    }
+    m_tools->button(int(LutTool::Navigate))->setChecked(true);
+    m_tools->button(int(LutTool::Click))
+        ->setToolTip(
+            tr("Click a pixel: its colour, grown by the tolerance box, becomes the class"));
+    m_tools->button(int(LutTool::Brush))
+        ->setToolTip(tr("Paint over the image: every colour under the brush becomes the class"));
+    m_tools->button(int(LutTool::Erase))
+        ->setToolTip(tr("Paint over the image: every colour under the brush becomes unclassified"));
+    m_tools->button(int(LutTool::Wand))
+        ->setToolTip(tr("Click a pixel: the connected pixels of similar colour become the class"));
+    connect(m_tools, &QButtonGroup::idClicked, this, [this](int id) { setTool(LutTool(id)); });
+    column->addLayout(tools);
+
+    auto* form = new QFormLayout;
+    auto spin = [this](const QString& name, int max, int value) {
+        auto* box = new QSpinBox(this);
+        box->setObjectName(name);
+        box->setRange(0, max);
+        box->setValue(value);
+        return box;
+    };
+    m_tol_y = spin(QStringLiteral("tolerance.y"), 128, 8);
+    m_tol_cb = spin(QStringLiteral("tolerance.cb"), 128, 4);
+    m_tol_cr = spin(QStringLiteral("tolerance.cr"), 128, 4);
+    m_tol_all = new QSlider(Qt::Horizontal, this);
+    m_tol_all->setObjectName(QStringLiteral("tolerance.all"));
+    m_tol_all->setRange(0, 64);
+    m_tol_all->setToolTip(tr("All three channels at once"));
+    connect(m_tol_all, &QSlider::valueChanged, this, [this](int v) { setTolerance({v, v, v}); });
+    m_radius = spin(QStringLiteral("brush.radius"), 50, 2);
+    connect(m_radius, &QSpinBox::valueChanged, this, [this] {
+        const bool brush = m_tool == LutTool::Brush || m_tool == LutTool::Erase;
+        emit toolChanged(m_tool != LutTool::Navigate, brush ? brushRadius() : -1);
+    });
+    form->addRow(tr("Tolerance Y"), m_tol_y);
+    form->addRow(tr("Tolerance Cb"), m_tol_cb);
+    form->addRow(tr("Tolerance Cr"), m_tol_cr);
+    form->addRow(tr("All channels"), m_tol_all);
+    form->addRow(tr("Brush radius (px)"), m_radius);
+    m_keep_others = new QCheckBox(tr("Only unclassified cells"), this);
+    m_keep_others->setObjectName(QStringLiteral("keep_others"));
+    m_keep_others->setToolTip(tr("Leave cells that already belong to another class as they are"));
+    form->addRow(m_keep_others);
+    column->addLayout(form);
+
+    m_stats = new QLabel(this);
+    m_stats->setObjectName(QStringLiteral("lut_stats"));
+    m_stats->setWordWrap(true);
+    column->addWidget(m_stats);
+
+    auto* history = new QUndoView(&m_lut.undoStack(), this);
+    history->setObjectName(QStringLiteral("lut_history"));
+    history->setEmptyLabel(tr("<loaded table>"));
+    column->addWidget(history, 1);
+
+    setColour(Colour::Orange);
+    connect(&m_lut, &LutDocument::changed, this, &LutPanel::refreshStats);
+    refreshStats();
+}
+
+void LutPanel::setTool(LutTool tool)
+{
+    m_tool = tool;
+    if (QAbstractButton* b = m_tools->button(int(tool)))
+        b->setChecked(true);
+    const bool brush = tool == LutTool::Brush || tool == LutTool::Erase;
+    emit toolChanged(tool != LutTool::Navigate, brush ? brushRadius() : -1);
+}
+
+void LutPanel::setColour(Colour colour)
+{
+    m_colour = colour;
+    for (QAction* a : m_colours->actions())
+        if (a->data().toInt() == int(colour))
+            a->setChecked(true);
+}
+
+Tolerance LutPanel::tolerance() const
+{
+    return {m_tol_y->value(), m_tol_cb->value(), m_tol_cr->value()};
+}
+
+void LutPanel::setTolerance(const Tolerance& t)
+{
+    m_tol_y->setValue(t.y);
+    m_tol_cb->setValue(t.cb);
+    m_tol_cr->setValue(t.cr);
+}
+
+int LutPanel::brushRadius() const
+{
+    return m_radius->value();
+}
+
+void LutPanel::setBrushRadius(int radius)
+{
+    m_radius->setValue(radius);
+}
+
+QList<QAction*> LutPanel::colourActions() const
+{
+    return m_colours->actions();
+}
+
+const cv::Mat* LutPanel::frame() const
+{
+    const auto& out = m_stream.current();
+    if (!out || out->frame.ycbcr.empty())
+        return nullptr;
+    return &out->frame.ycbcr;
+}
+
+void LutPanel::press(QPoint pixel)
+{
+    const cv::Mat* image = frame();
+    if (!image)
+        return;
+    const cv::Point at(pixel.x(), pixel.y());
+    const Tolerance t = tolerance();
+    const bool keep = m_keep_others->isChecked();
+    switch (m_tool) {
+    case LutTool::Navigate:
+        return;
+    case LutTool::Click: {
+        const cv::Vec3b c = image->at<cv::Vec3b>(at);
+        m_lut.edit(tr("Click (%1, %2, %3) ± (%4, %5, %6) → %7")
+                       .arg(c[0])
+                       .arg(c[1])
+                       .arg(c[2])
+                       .arg(t.y)
+                       .arg(t.cb)
+                       .arg(t.cr)
+                       .arg(className(m_colour)),
+                   changesTo(m_lut.table(), cellsInBox(c[0], c[1], c[2], t), m_colour, keep));
+        return;
+    }
+    case LutTool::Wand: {
+        const std::vector<cv::Point> pixels = wandPixels(*image, at, t);
+        m_lut.edit(tr("Wand at (%1, %2): %3 px → %4")
+                       .arg(pixel.x())
+                       .arg(pixel.y())
+                       .arg(qsizetype(pixels.size()))
+                       .arg(className(m_colour)),
+                   changesTo(m_lut.table(), cellsOfPixels(*image, pixels), m_colour, keep));
+        return;
+    }
+    case LutTool::Brush:
+    case LutTool::Erase:
+        m_stroke = m_lut.newStroke();
+        m_last.reset();
+        paintAt(pixel);
+        return;
+    }
+}
+
+void LutPanel::drag(QPoint pixel)
+{
+    if (m_stroke && (m_tool == LutTool::Brush || m_tool == LutTool::Erase))
+        paintAt(pixel);
+}
+
+void LutPanel::release()
+{
+    m_stroke = 0;
+    m_last.reset();
+}
+
+void LutPanel::paintAt(QPoint pixel)
+{
+    const cv::Mat* image = frame();
+    if (!image)
+        return;
+    // Every pixel the brush passed over since the last event (a fast drag skips pixels).
+    const QPoint from = m_last.value_or(pixel);
+    const int steps = std::max({1, std::abs(pixel.x() - from.x()), std::abs(pixel.y() - from.y())});
+    std::vector<cv::Point> pixels;
+    for (int i = m_last ? 1 : 0; i <= steps; ++i) {
+        const cv::Point centre(
+            int(std::lround(from.x() + (pixel.x() - from.x()) * i / double(steps))),
+            int(std::lround(from.y() + (pixel.y() - from.y()) * i / double(steps))));
+        const auto disc = brushPixels(centre, brushRadius(), image->size());
+        pixels.insert(pixels.end(), disc.begin(), disc.end());
+    }
+    m_last = pixel;
+    const bool erase = m_tool == LutTool::Erase;
+    const Colour target = erase ? Colour::Unclassified : m_colour;
+    const Tolerance t = erase ? Tolerance{} : tolerance();
+    const bool keep = !erase && m_keep_others->isChecked();
+    m_lut.edit(erase ? tr("Erase stroke") : tr("Brush stroke → %1").arg(className(m_colour)),
+               changesTo(m_lut.table(), cellsOfPixels(*image, pixels, t), target, keep), m_stroke);
+}
+
+void LutPanel::pick(QPoint pixel)
+{
+    const auto& out = m_stream.current();
+    if (!out || out->classes.empty() || pixel.x() < 0 || pixel.y() < 0 ||
+        pixel.x() >= out->classes.cols || pixel.y() >= out->classes.rows)
+        return;
+    setColour(Colour(out->classes.at<std::uint8_t>(pixel.y(), pixel.x())));
+}
+
+void LutPanel::refreshStats()
+{
+    const std::vector<std::size_t> counts = cellsPerClass(m_lut.table());
+    QStringList lines;
+    for (int c = 1; c < kColourCount; ++c)
+        if (counts[std::size_t(c)] > 0)
+            lines << QStringLiteral("%1 %2").arg(className(Colour(c))).arg(counts[std::size_t(c)]);
+    m_stats->setText(
+        tr("Cells per class: %1")
+            .arg(lines.isEmpty() ? tr("none classified") : lines.join(QStringLiteral(", "))));
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,61 @@
+// What a LUT edit touches: the cells a click, a brush stroke or a magic wand selects. Pure
+// functions over a frame and a table, shared by the GUI's LUT editor and the command line; the
+// edit itself (and its undo) is the caller's.
+#pragma once
+
+#include "visioncore/colour_lut.h"
+
+#include <opencv2/core/mat.hpp>
+#include <opencv2/core/types.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace fieldsight {
+
+/// Half-widths of a box in Y, Cb and Cr, in 8-bit levels (0 = the one cell of the colour).
+struct Tolerance
+{
+    int y = 0;
+    int cb = 0;
+    int cr = 0;
+};
+
+/// One cell's change: what it was and what it becomes.
+struct CellChange
+{
+    std::uint32_t cell = 0;
+    Colour before = Colour::Unclassified;
+    Colour after = Colour::Unclassified;
+};
+
+/// The cells of every colour within `tolerance` of (y, cb, cr), each channel clamped to 0..255;
+/// ascending, without repeats.
+std::vector<std::uint32_t> cellsInBox(std::uint8_t y, std::uint8_t cb, std::uint8_t cr,
+                                      const Tolerance& tolerance);
+
+/// The pixels of a round brush of `radius` px (0: one pixel) centred on `centre`, inside a
+/// `size` image.
+std::vector<cv::Point> brushPixels(cv::Point centre, int radius, cv::Size size);
+
+/// The pixels connected (4-neighbours) to `seed` whose Y, Cb and Cr each differ from the seed's by
+/// at most `tolerance` (a magic wand). Empty when the seed is outside the image.
+std::vector<cv::Point> wandPixels(const cv::Mat& ycbcr, cv::Point seed, const Tolerance& tolerance);
+
+/// The cells of the colours of `pixels` in a CV_8UC3 Y, Cb, Cr frame, each grown by `tolerance`;
+/// ascending, without repeats. Pixels outside the frame are ignored.
+std::vector<std::uint32_t> cellsOfPixels(const cv::Mat& ycbcr, const std::vector<cv::Point>& pixels,
+                                         const Tolerance& tolerance = {});
+
+/// The changes that setting `cells` to `colour` makes in `lut` (cells already `colour` are left
+/// out). With `keep_others`, only unclassified cells change.
+std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::uint32_t>& cells,
+                                  Colour colour, bool keep_others = false);
+
+/// Applies `changes` forwards (after) or backwards (before).
+void applyChanges(ColourLut& lut, const std::vector<CellChange>& changes, bool forwards = true);
+
+/// How many cells of each class (index = colour id).
+std::vector<std::size_t> cellsPerClass(const ColourLut& lut);
+
+} // namespace fieldsight

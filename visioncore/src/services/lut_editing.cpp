@@ -1,0 +1,146 @@
+#include "visioncore/services/lut_editing.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace fieldsight {
+
+namespace {
+
+/// The 7-bit cell coordinates that the 8-bit levels v - t .. v + t fall in.
+std::pair<int, int> cellRange(int v, int t)
+{
+    t = std::max(0, t);
+    return {std::clamp(v - t, 0, 255) >> 1, std::clamp(v + t, 0, 255) >> 1};
+}
+
+void addBox(std::vector<std::uint32_t>& cells, const cv::Vec3b& c, const Tolerance& t)
+{
+    const auto [y0, y1] = cellRange(c[0], t.y);
+    const auto [b0, b1] = cellRange(c[1], t.cb);
+    const auto [r0, r1] = cellRange(c[2], t.cr);
+    for (int y = y0; y <= y1; ++y)
+        for (int b = b0; b <= b1; ++b)
+            for (int r = r0; r <= r1; ++r)
+                cells.push_back(std::uint32_t((y << 14) | (b << 7) | r));
+}
+
+void sortUnique(std::vector<std::uint32_t>& cells)
+{
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+}
+
+} // namespace
+
+std::vector<std::uint32_t> cellsInBox(std::uint8_t y, std::uint8_t cb, std::uint8_t cr,
+                                      const Tolerance& tolerance)
+{
+    std::vector<std::uint32_t> cells;
+    addBox(cells, cv::Vec3b(y, cb, cr), tolerance);
+    return cells; // the loops already give ascending, distinct cells
+}
+
+std::vector<cv::Point> brushPixels(cv::Point centre, int radius, cv::Size size)
+{
+    std::vector<cv::Point> pixels;
+    radius = std::max(0, radius);
+    const long long r2 = (long long)(radius)*radius;
+    for (int dy = -radius; dy <= radius; ++dy) {
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const cv::Point p(centre.x + dx, centre.y + dy);
+            if ((long long)(dx)*dx + (long long)(dy)*dy <= r2 && p.x >= 0 && p.y >= 0 &&
+                p.x < size.width && p.y < size.height)
+                pixels.push_back(p);
+        }
+    }
+    return pixels;
+}
+
+std::vector<cv::Point> wandPixels(const cv::Mat& ycbcr, cv::Point seed, const Tolerance& tolerance)
+{
+    std::vector<cv::Point> pixels;
+    if (ycbcr.empty() || ycbcr.type() != CV_8UC3 || seed.x < 0 || seed.y < 0 ||
+        seed.x >= ycbcr.cols || seed.y >= ycbcr.rows)
+        return pixels;
+    const cv::Vec3b s = ycbcr.at<cv::Vec3b>(seed);
+    auto similar = [&](const cv::Vec3b& c) {
+        return std::abs(int(c[0]) - s[0]) <= tolerance.y &&
+               std::abs(int(c[1]) - s[1]) <= tolerance.cb &&
+               std::abs(int(c[2]) - s[2]) <= tolerance.cr;
+    };
+    std::vector<std::uint8_t> seen(std::size_t(ycbcr.rows) * std::size_t(ycbcr.cols), 0);
+    std::vector<cv::Point> stack{seed};
+    seen[std::size_t(seed.y) * std::size_t(ycbcr.cols) + std::size_t(seed.x)] = 1;
+    while (!stack.empty()) {
+        const cv::Point p = stack.back();
+        stack.pop_back();
+        pixels.push_back(p);
+        for (const cv::Point d :
+             {cv::Point(1, 0), cv::Point(-1, 0), cv::Point(0, 1), cv::Point(0, -1)}) {
+            const cv::Point q = p + d;
+            if (q.x < 0 || q.y < 0 || q.x >= ycbcr.cols || q.y >= ycbcr.rows)
+                continue;
+            std::uint8_t& mark =
+                seen[std::size_t(q.y) * std::size_t(ycbcr.cols) + std::size_t(q.x)];
+            if (mark || !similar(ycbcr.at<cv::Vec3b>(q)))
+                continue;
+            mark = 1;
+            stack.push_back(q);
+        }
+    }
+    return pixels;
+}
+
+std::vector<std::uint32_t> cellsOfPixels(const cv::Mat& ycbcr, const std::vector<cv::Point>& pixels,
+                                         const Tolerance& tolerance)
+{
+    std::vector<std::uint32_t> cells;
+    if (ycbcr.empty() || ycbcr.type() != CV_8UC3)
+        return cells;
+    for (const cv::Point& p : pixels) {
+        if (p.x < 0 || p.y < 0 || p.x >= ycbcr.cols || p.y >= ycbcr.rows)
+            continue;
+        addBox(cells, ycbcr.at<cv::Vec3b>(p), tolerance);
+    }
+    sortUnique(cells);
+    return cells;
+}
+
+std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::uint32_t>& cells,
+                                  Colour colour, bool keep_others)
+{
+    std::vector<CellChange> changes;
+    for (const std::uint32_t cell : cells) {
+        if (cell >= ColourLut::kCells)
+            continue;
+        const Colour before = lut.cell(cell);
+        if (before == colour || (keep_others && before != Colour::Unclassified))
+            continue;
+        changes.push_back({cell, before, colour});
+    }
+    return changes;
+}
+
+void applyChanges(ColourLut& lut, const std::vector<CellChange>& changes, bool forwards)
+{
+    if (forwards) {
+        for (const CellChange& c : changes)
+            lut.setCell(c.cell, c.after);
+    } else {
+        for (auto it = changes.rbegin(); it != changes.rend(); ++it)
+            lut.setCell(it->cell, it->before);
+    }
+}
+
+std::vector<std::size_t> cellsPerClass(const ColourLut& lut)
+{
+    std::vector<std::size_t> counts(kColourCount, 0);
+    const std::uint8_t* cells = lut.data();
+    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
+        if (cells[i] < kColourCount)
+            ++counts[cells[i]];
+    return counts;
+}
+
+} // namespace fieldsight
