@@ -250,9 +250,9 @@ void MainWindow::buildDocks()
 
     tabifyDockWidget(layers, bookmarks);
     layers->raise();
-    tabifyDockWidget(pipeline, lut);
-    pipeline->raise();
     splitDockWidget(pipeline, detections, Qt::Vertical);
+    tabifyDockWidget(pipeline, lut); // after the split, or the detections join the tabs
+    pipeline->raise();
     resizeDocks({layers, pipeline}, {270, 340}, Qt::Horizontal);
     resizeDocks({layers, inspector}, {480, 200}, Qt::Vertical);
 

@@ -2,13 +2,14 @@
 // user would on a machine without a display (QT_QPA_PLATFORM=offscreen or xvfb-run).
 //   gui_screenshot OUT.png STREAM [--lut FILE] [--set S.P=V] [--frame N] [--size WxH]
 //                  [--layers all|default|ID,...] [--mode raw|classified|side|blend]
-//                  [--zoom Z] [--focus LABEL] [--hover X,Y]
+//                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]
 #include "ui/main_window.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/inspector_panel.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -23,7 +24,7 @@ int main(int argc, char** argv)
     QCommandLineParser p;
     p.addPositionalArgument("out", "PNG to write");
     p.addPositionalArgument("stream", "stream");
-    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover"})
+    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock"})
         p.addOption({o, o, "value"});
     p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
@@ -97,6 +98,9 @@ int main(int argc, char** argv)
         const QStringList xy = p.value("hover").split(',');
         w.inspector().inspect(w.document().current().get(), QPoint(xy[0].toInt(), xy[1].toInt()));
     }
+    if (p.isSet("dock")) // bring a tabbed dock to the front ("lut_dock", "bookmarks_dock")
+        if (auto* dock = w.findChild<QDockWidget*>(p.value("dock")))
+            dock->raise();
     QApplication::processEvents();
     QTest::qWait(50);
     const QImage shot = w.grab().toImage();
