@@ -1,5 +1,7 @@
 #include "ui/document/lut_document.h"
 
+#include "visioncore/io/atomic_file.h"
+
 #include <QDateTime>
 #include <QDir>
 #include <QFile>
@@ -8,8 +10,6 @@
 #include <QUndoCommand>
 
 #include <nlohmann/json.hpp>
-
-#include <fstream>
 
 namespace fieldsight::ui {
 
@@ -143,17 +143,7 @@ Status LutDocument::writeRecovery()
         {"path", m_path.toStdString()},
         {"stream", m_stream.toStdString()},
         {"saved_at", QDateTime::currentDateTime().toString(Qt::ISODate).toStdString()}};
-    const std::string json = base.toStdString() + ".json";
-    const std::string tmp = json + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << meta.dump(2) << '\n';
-        if (!out.flush())
-            return Error{tmp + ": cannot write the recovery note"};
-    }
-    if (std::rename(tmp.c_str(), json.c_str()) != 0)
-        return Error{json + ": cannot write the recovery note"};
-    return {};
+    return writeFileAtomically(base.toStdString() + ".json", meta.dump(2) + '\n');
 }
 
 std::optional<LutRecovery> LutDocument::findRecovery() const
@@ -161,10 +151,10 @@ std::optional<LutRecovery> LutDocument::findRecovery() const
     const QString base = recoveryBase();
     if (!QFileInfo::exists(base + ".lut") || !QFileInfo::exists(base + ".json"))
         return std::nullopt;
-    QFile file(base + ".json");
-    if (!file.open(QIODevice::ReadOnly))
+    const Result<std::string> text = readWholeFile((base + ".json").toStdString());
+    if (!text)
         return std::nullopt;
-    const auto meta = nlohmann::json::parse(file.readAll().toStdString(), nullptr, false);
+    const auto meta = nlohmann::json::parse(text.value(), nullptr, false);
     if (!meta.is_object() || meta.value("format", "") != "fieldsight-lut-recovery/1")
         return std::nullopt;
     LutRecovery r;

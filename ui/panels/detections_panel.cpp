@@ -7,6 +7,17 @@ namespace fieldsight::ui {
 namespace {
 constexpr int kBoundsRole = Qt::UserRole + 1;
 constexpr int kCollapsedRole = Qt::UserRole + 2; ///< the user closed this list: keep it closed
+
+/// One row as it should read; rows are updated in place, so what the user expanded, collapsed,
+/// selected or scrolled to stays while stepping.
+struct Row
+{
+    QString text;
+    QString tooltip;
+    QVariant bounds;
+    QColor foreground;
+    std::vector<Row> children;
+};
 } // namespace
 
 DetectionsPanel::DetectionsPanel(QWidget* parent) : QTreeWidget(parent)
@@ -26,17 +37,6 @@ DetectionsPanel::DetectionsPanel(QWidget* parent) : QTreeWidget(parent)
 }
 
 namespace {
-
-/// One row as it should read; rows are updated in place, so what the user expanded, collapsed,
-/// selected or scrolled to stays while stepping.
-struct Row
-{
-    QString text;
-    QString tooltip;
-    QVariant bounds;
-    QColor foreground;
-    std::vector<Row> children;
-};
 
 void apply(QTreeWidgetItem* item, const Row& row)
 {

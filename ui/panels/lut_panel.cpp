@@ -120,10 +120,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     m_tol_all->setToolTip(tr("All three channels at once"));
     connect(m_tol_all, &QSlider::valueChanged, this, [this](int v) { setTolerance({v, v, v}); });
     m_radius = spin(QStringLiteral("brush.radius"), 50, 2);
-    connect(m_radius, &QSpinBox::valueChanged, this, [this] {
-        const bool brush = m_tool == LutTool::Brush || m_tool == LutTool::Erase;
-        emit toolChanged(m_tool != LutTool::Navigate, brush ? brushRadius() : -1);
-    });
+    connect(m_radius, &QSpinBox::valueChanged, this, &LutPanel::announceTool);
     form->addRow(tr("Tolerance Y"), m_tol_y);
     form->addRow(tr("Tolerance Cb"), m_tol_cb);
     form->addRow(tr("Tolerance Cr"), m_tol_cr);
@@ -155,8 +152,13 @@ void LutPanel::setTool(LutTool tool)
     m_tool = tool;
     if (QAbstractButton* b = m_tools->button(int(tool)))
         b->setChecked(true);
-    const bool brush = tool == LutTool::Brush || tool == LutTool::Erase;
-    emit toolChanged(tool != LutTool::Navigate, brush ? brushRadius() : -1);
+    announceTool();
+}
+
+void LutPanel::announceTool()
+{
+    const bool brush = m_tool == LutTool::Brush || m_tool == LutTool::Erase;
+    emit toolChanged(m_tool != LutTool::Navigate, brush ? brushRadius() : -1);
 }
 
 void LutPanel::setColour(Colour colour)

@@ -50,6 +50,8 @@ signals:
     void problem(const QString& message);
 
 private:
+    /// Emits toolChanged for the current tool and brush radius.
+    void announceTool();
     void paintAt(QPoint pixel);
     void refreshStats();
     const cv::Mat* frame() const;
