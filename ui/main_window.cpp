@@ -5,6 +5,7 @@
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
+#include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
 #include "visioncore/io/atomic_file.h"
 #include "visioncore/io/lut_import.h"
@@ -138,9 +139,20 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     m_navigator = new StreamNavigator(*m_doc, central);
     column->addWidget(m_navigator);
     setCentralWidget(central);
+    m_effect = new EditEffectScan(m_doc->pipeline(), this);
+    m_effect_strip = new EffectStrip(*m_effect, *m_navigator->slider(), m_navigator);
+    m_navigator->addTimelineStrip(m_effect_strip);
+    connect(m_effect, &EditEffectScan::updated, this,
+            [this] { m_status_effect->setText(m_effect_strip->summary()); });
+    connect(m_effect_strip, &EffectStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
+    connect(m_navigator->slider(), &QSlider::valueChanged, m_effect_strip,
+            qOverload<>(&QWidget::update));
 
     m_status_zoom = new QLabel(this);
     m_status_time = new QLabel(this);
+    m_status_effect = new QLabel(this);
+    m_status_effect->setObjectName(QStringLiteral("effect_summary"));
+    statusBar()->addWidget(m_status_effect, 1);
     statusBar()->addPermanentWidget(m_status_time);
     statusBar()->addPermanentWidget(m_status_zoom);
 
@@ -149,8 +161,14 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
 
     connect(m_doc, &StreamDocument::streamChanged, this, &MainWindow::onStreamChanged);
     connect(m_doc, &StreamDocument::lutChanged, this, &MainWindow::onLutLoaded);
-    connect(m_lut_doc, &LutDocument::changed, this,
-            [this] { m_doc->setEditedLut(m_lut_doc->version()); });
+    connect(m_lut_doc, &LutDocument::changed, this, [this] {
+        m_doc->setEditedLut(m_lut_doc->version());
+        m_effect->edited(m_lut_doc->editBase(), m_lut_doc->version());
+    });
+    connect(m_doc, &StreamDocument::settingsChanged, this, [this] {
+        m_effect->setSettings(std::make_shared<ParamSet>(m_doc->paramChanges()),
+                              m_doc->skippedStages());
+    });
     connect(m_lut_doc, &LutDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_lut_doc, &LutDocument::problem, this, [this](const QString& m) { showMessage(m); });
     connect(m_view, &FrameView::toolPressed, m_lut_panel, &LutPanel::press);
@@ -566,6 +584,7 @@ void MainWindow::openPath(const QString& path)
 
 void MainWindow::onStreamChanged()
 {
+    m_effect->setStream({}, nullptr); // scanned again once its LUT is in (onLutLoaded)
     m_view->setOutput(nullptr);
     m_view->fitToWindow();
     m_detections->showOutput(nullptr);
@@ -619,6 +638,11 @@ void MainWindow::onLutLoaded()
         m_lut_doc->reset(m_doc->lut(), m_doc->lutPath());
     }
     m_lut_doc->setStream(m_doc->streamSpec());
+    if (m_effect->stream() != m_doc->streamSpec()) {
+        m_effect->setSettings(std::make_shared<ParamSet>(m_doc->paramChanges()),
+                              m_doc->skippedStages());
+        m_effect->setStream(m_doc->streamSpec(), m_lut_doc->version());
+    }
     updateTitle();
 }
 

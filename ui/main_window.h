@@ -19,6 +19,8 @@ class QProgressDialog;
 namespace fieldsight::ui {
 
 class DetectionsPanel;
+class EditEffectScan;
+class EffectStrip;
 class InspectorPanel;
 class LayersPanel;
 class LutPanel;
@@ -41,6 +43,8 @@ public:
     InspectorPanel& inspector() { return *m_inspector; }
     LutDocument& lutDocument() { return *m_lut_doc; }
     LutPanel& lutPanel() { return *m_lut_panel; }
+    EditEffectScan& effectScan() { return *m_effect; }
+    EffectStrip& effectStrip() { return *m_effect_strip; }
     QListWidget& bookmarkList() { return *m_bookmark_list; }
 
     /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
@@ -108,6 +112,8 @@ private:
     StreamDocument* m_doc = nullptr;
     LutDocument* m_lut_doc = nullptr;
     LutPanel* m_lut_panel = nullptr;
+    EditEffectScan* m_effect = nullptr;
+    EffectStrip* m_effect_strip = nullptr;
     QWidget* m_recovery_bar = nullptr;
     QLabel* m_recovery_label = nullptr;
     FrameView* m_view = nullptr;
@@ -121,6 +127,7 @@ private:
     QWidget* m_message_bar = nullptr;
     QLabel* m_status_zoom = nullptr;
     QLabel* m_status_time = nullptr;
+    QLabel* m_status_effect = nullptr;
     QMenu* m_recent_menu = nullptr;
     QMenu* m_docks_menu = nullptr;
     QList<QAction*> m_mode_actions;

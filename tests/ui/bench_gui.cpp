@@ -6,11 +6,16 @@
 //   640x480 (generated with synth), from PNG folders and from .strm files;
 // - play: frames painted per second at 60 fps with every layer on;
 // - a parameter edit to the repainted frame;
+// - a LUT edit (a click's tolerance box) to the repainted frame, and to the whole-stream effect
+//   strip fully updated, with the window's longest stall and frame steps meanwhile
+//   (`bench_gui DIR --edits-only` runs this part alone);
 // - opening a 9,000-frame .strm and a folder of 9,000 PNGs, and resident memory while playing the
 //   .strm through.
 #include "commands/commands.h"
 #include "ui/main_window.h"
+#include "ui/document/edit_effect_scan.h"
 #include "ui/panels/layers_panel.h"
+#include "visioncore/services/lut_editing.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
 #include <QApplication>
@@ -20,6 +25,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QTest>
 
 #include <algorithm>
@@ -101,6 +107,116 @@ bool open(MainWindow& w, const QString& stream)
 void allLayers(MainWindow& w)
 {
     w.layersPanel().setVisibleLayers(selectLayers("all", w.document().pipeline()).value());
+}
+
+/// A click's edit at `p` of the current frame: its tolerance box becomes `colour`.
+bool clickEdit(MainWindow& w, QPoint p, Colour colour)
+{
+    const cv::Mat& px = w.document().current()->frame.ycbcr;
+    const cv::Vec3b c = px.at<cv::Vec3b>(p.y() % px.rows, p.x() % px.cols);
+    const auto cells = cellsInBox(c[0], c[1], c[2], {6, 4, 4});
+    return w.lutDocument().edit("bench", changesTo(w.lutDocument().table(), cells, colour));
+}
+
+/// Waits for the whole-stream scan in a sleeping event loop (as the window's own); returns the
+/// loop's longest gap between 5 ms timer ticks (ms) meanwhile, and the times of frame steps (step
+/// to painted) taken every 100 ms while it ran.
+double waitForScan(MainWindow& w, std::vector<double>* steps)
+{
+    ui::EditEffectScan& scan = w.effectScan();
+    QEventLoop loop;
+    QTimer tick;
+    tick.setInterval(5);
+    QElapsedTimer clock, gap, since_step, step;
+    clock.start();
+    gap.start();
+    since_step.start();
+    bool stepping = false;
+    double longest = 0;
+    QObject::connect(&w.view(), &ui::FrameView::painted, &loop, [&] {
+        if (stepping && !w.document().waiting() &&
+            w.view().paintedSerial() >= w.document().lastSerial()) {
+            steps->push_back(double(step.nsecsElapsed()) / 1e6);
+            stepping = false;
+        }
+    });
+    QObject::connect(&tick, &QTimer::timeout, &loop, [&] {
+        longest = std::max(longest, double(gap.nsecsElapsed()) / 1e6);
+        gap.restart();
+        if (!scan.running() || clock.elapsed() > 60000)
+            loop.quit();
+        if (steps && !stepping && since_step.elapsed() > 100) {
+            stepping = true;
+            step.start();
+            since_step.restart();
+            w.navigator().step(1);
+        }
+    });
+    tick.start();
+    loop.exec();
+    return longest;
+}
+
+void benchEdits(const QString& label, const QString& stream, int scans)
+{
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    QElapsedTimer opened;
+    opened.start();
+    if (!open(w, stream)) {
+        std::cout << label.toStdString() << ": cannot open\n";
+        return;
+    }
+    allLayers(w);
+    waitForScan(w, nullptr);
+    std::printf("%-20s first whole-stream scan (%zu frames) done %.2f s after the open\n",
+                qPrintable(label), w.effectScan().effects().size(),
+                double(opened.elapsed()) / 1000.0);
+
+    // Edit to repaint: 40 click edits at different pixels, alternately pink and unclassified.
+    std::vector<double> repaint;
+    for (int i = 0; i < 40; ++i) {
+        QElapsedTimer t;
+        t.start();
+        if (!clickEdit(w, QPoint(37 * i + 5, 23 * i + 100),
+                       i % 2 ? Colour::Unclassified : Colour::Pink))
+            continue;
+        if (waitPainted(w))
+            repaint.push_back(double(t.nsecsElapsed()) / 1e6);
+        QTest::qWait(20);
+    }
+    std::printf("%-20s edit to repainted frame: median %5.2f ms  p95 %5.2f ms  max %5.2f ms "
+                "(%zu edits)\n",
+                qPrintable(label), percentile(repaint, 0.5), percentile(repaint, 0.95),
+                percentile(repaint, 1.0), repaint.size());
+    waitForScan(w, nullptr);
+
+    // The worst case, an edit of the field colour that changes pixels in every frame; then an
+    // edit of the ball's colour, which only frames with a ball show.
+    for (int i = 0; i < scans; ++i) {
+        QPoint at(150 + 10 * i, 200);
+        Colour colour = Colour::Yellow;
+        QString what = QStringLiteral("field colour");
+        const auto& balls = w.document().current()->result.percepts.list<Ball>();
+        if (i % 2 == 1 && !balls.empty()) {
+            at = QPoint(int(balls.front().x), int(balls.front().y));
+            colour = Colour::Pink;
+            what = QStringLiteral("ball colour");
+        }
+        clickEdit(w, at, colour);
+        std::vector<double> steps;
+        const double stall = waitForScan(w, &steps);
+        std::size_t changed = 0;
+        for (const auto& e : w.effectScan().effects())
+            changed += e.changed_pixels > 0;
+        std::printf("%-20s %s edit to whole-stream strip updated: %.2f s (%zu frames, %zu "
+                    "changed); longest event-loop stall %.1f ms; steps meanwhile median %.1f ms "
+                    "max %.1f ms\n",
+                    qPrintable(label), qPrintable(what), w.effectScan().lastScanMs() / 1000.0,
+                    w.effectScan().framesDone(), changed, stall, percentile(steps, 0.5),
+                    percentile(steps, 1.0));
+    }
 }
 
 void benchStepping(const QString& label, const QString& stream)
@@ -193,12 +309,15 @@ int main(int argc, char** argv)
     QTemporaryDir tmp;
     const QString dir = argc > 1 ? QString::fromLocal8Bit(argv[1]) : tmp.path();
     const bool steps_only = argc > 2 && QByteArray(argv[2]) == "--steps-only";
+    const bool edits_only = argc > 2 && QByteArray(argv[2]) == "--edits-only";
     std::printf("bench_gui: offscreen, every layer on, window 1280x800\n");
 
     for (const auto& [w, h] : {std::pair{320, 240}, std::pair{640, 480}}) {
         const QString stream = QStringLiteral("%1/s%2x%3").arg(dir).arg(w).arg(h);
         if (!QFileInfo::exists(stream + "/image.strm") && !synth(stream, w, h, 200, true))
             return 1;
+        if (edits_only)
+            continue;
         benchStepping(QStringLiteral("%1x%2 PNG folder").arg(w).arg(h), stream);
         benchStepping(QStringLiteral("%1x%2 .strm").arg(w).arg(h), stream + "/image.strm");
     }
@@ -234,6 +353,8 @@ int main(int argc, char** argv)
         }
     }
     for (const QString& stream : {big_strm, big_dir}) {
+        if (edits_only)
+            break;
         QElapsedTimer t;
         t.start();
         auto opened = ui::StreamDocument::openSource(stream, {}, Pipeline::standard());
@@ -241,6 +362,12 @@ int main(int argc, char** argv)
         std::printf("open %-22s %zu frames in %.0f ms\n", qPrintable(QFileInfo(stream).fileName()),
                     opened ? opened.value()->names.size() : 0, ms);
     }
+
+    benchEdits(QStringLiteral("320x240 .strm"), dir + "/s320x240/image.strm", 2);
+    benchEdits(QStringLiteral("640x480 .strm"), dir + "/s640x480/image.strm", 1);
+    benchEdits(QStringLiteral("9,000-frame .strm"), big_strm, 4);
+    if (edits_only)
+        return 0;
 
     // Play the 9,000-frame .strm through as fast as it goes; watch resident memory.
     MainWindow w;

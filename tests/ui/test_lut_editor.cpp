@@ -5,6 +5,8 @@
 #include "support/synthetic_frames.h"
 #include "ui/main_window.h"
 #include "ui/panels/lut_panel.h"
+#include "ui/stream_navigator/effect_strip.h"
+#include "visioncore/services/stream_runner.h"
 
 #include <QPushButton>
 #include <QSettings>
@@ -68,6 +70,20 @@ std::set<std::uint32_t> differences(const ColourLut& a, const ColourLut& b)
         if (a.data()[i] != b.data()[i])
             cells.insert(i);
     return cells;
+}
+
+/// Waits until the whole-stream scan has covered every frame.
+bool waitForScan(ui::EditEffectScan& scan)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 20000) {
+        if (!scan.running() && !scan.effects().empty() &&
+            scan.framesDone() == scan.effects().size())
+            return true;
+        QTest::qWait(5);
+    }
+    return false;
 }
 
 cv::Vec3b colourAt(MainWindow& w, QPoint p)
@@ -255,6 +271,86 @@ private slots:
         // Once saved, nothing is offered any more.
         QVERIFY(w.saveLutAs(m_dir.filePath("recovered.lut")));
         QVERIFY(!w.lutDocument().findRecovery());
+    }
+
+    void theEffectStripCountsWhatAnEditChangedOnEveryFrame()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        ui::EditEffectScan& scan = w.effectScan();
+        QVERIFY(waitForScan(scan)); // the first scan records every frame's detections
+        QVERIFY(!scan.showsEdit());
+        QCOMPARE(scan.effects().size(), w.document().frameCount());
+
+        // A known edit: a field pixel's box becomes pink.
+        showPixelsOneToOne(w);
+        const ColourLut before = w.lutDocument().table();
+        w.lutPanel().setColour(Colour::Pink);
+        w.lutPanel().setTool(LutTool::Click);
+        w.lutPanel().setTolerance({10, 6, 6});
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(160, 220)));
+        QVERIFY(waitForScan(scan));
+        QVERIFY(scan.showsEdit());
+        const ColourLut after = w.lutDocument().table();
+        QCOMPARE(scan.changedCells(), differences(before, after).size());
+
+        // Every frame's count, recomputed here pixel by pixel.
+        auto reader = openStream(sampleStream().toStdString());
+        QVERIFY(reader);
+        std::size_t frames_changed = 0;
+        for (std::size_t i = 0; i < scan.effects().size(); ++i) {
+            auto frame = reader.value()->read(i);
+            QVERIFY(frame);
+            const cv::Mat& px = frame.value().ycbcr;
+            std::uint32_t changed = 0;
+            std::uint32_t unclassified = 0;
+            for (int y = 0; y < px.rows; ++y)
+                for (int x = 0; x < px.cols; ++x) {
+                    const cv::Vec3b c = px.at<cv::Vec3b>(y, x);
+                    changed +=
+                        before.classify(c[0], c[1], c[2]) != after.classify(c[0], c[1], c[2]);
+                    unclassified += after.classify(c[0], c[1], c[2]) == Colour::Unclassified;
+                }
+            const ui::FrameEffect& e = scan.effects()[i];
+            QVERIFY(e.done);
+            QCOMPARE(e.changed_pixels, changed);
+            QCOMPARE(e.unclassified, unclassified);
+            frames_changed += changed > 0;
+        }
+        QVERIFY(frames_changed > 0);
+        QVERIFY(w.effectStrip().summary().contains(QString::number(frames_changed)));
+
+        // Erasing every orange cell makes every ball the previous table found vanish.
+        auto input = openStreamInput(sampleStream().toStdString(), "");
+        QVERIFY(input);
+        input.value().lut = std::make_shared<const ColourLut>(after);
+        auto run = runStream(input.value(), firstFrames(scan.effects().size()), 1);
+        QVERIFY(run);
+        std::vector<std::uint32_t> orange;
+        for (std::uint32_t i = 0; i < ColourLut::kCells; ++i)
+            if (after.cell(i) == Colour::Orange)
+                orange.push_back(i);
+        QVERIFY(!orange.empty());
+        w.lutDocument().edit("erase orange", changesTo(after, orange, Colour::Unclassified));
+        QVERIFY(waitForScan(scan));
+        int balls = 0;
+        for (const FrameResult& r : run.value().frames) {
+            const int n = int(r.percepts.list<Ball>().size());
+            QCOMPARE(scan.effects()[r.index].delta.balls_vanished, n);
+            QCOMPARE(scan.effects()[r.index].delta.balls_appeared, 0);
+            balls += n;
+        }
+        QVERIFY(balls > 0);
+
+        // A click on the strip goes to that frame.
+        ui::EffectStrip& strip = w.effectStrip();
+        const int x = strip.width() * 3 / 4;
+        const long long target = strip.frameAt(x);
+        QVERIFY(target > 0);
+        QTest::mouseClick(&strip, Qt::LeftButton, {}, QPoint(x, strip.height() / 2));
+        QCOMPARE((long long)w.document().currentIndex(), target);
     }
 };
 

@@ -75,6 +75,8 @@ void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& pat
     m_recovered = false;
     m_undo.clear();
     m_autosave.stop();
+    m_edit_base.reset();
+    m_top_stroke = 0;
     emit changed();
     emit modifiedChanged(false);
 }
@@ -90,12 +92,24 @@ bool LutDocument::edit(const QString& text, std::vector<CellChange> changes, int
 {
     if (changes.empty())
         return false;
+    // A stroke's later pieces merge into its command: the edit's base stays the stroke's start.
+    const bool merging = stroke > 0 && stroke == m_top_stroke && m_undo.index() == m_top_index;
+    if (!merging)
+        m_edit_base = version();
+    m_in_edit = true;
     m_undo.push(new LutCellsCommand(*this, text, std::move(changes), stroke));
+    m_in_edit = false;
+    m_top_stroke = stroke;
+    m_top_index = m_undo.index();
     return true;
 }
 
 void LutDocument::apply(const std::vector<CellChange>& changes, bool forwards)
 {
+    if (!m_in_edit) { // an undo or redo from the stack
+        m_edit_base = version();
+        m_top_stroke = 0;
+    }
     applyChanges(m_table, changes, forwards);
     m_version.reset();
     if (!m_autosave.isActive())
@@ -175,6 +189,8 @@ Status LutDocument::recover(const LutRecovery& recovery)
     m_path = recovery.path;
     m_undo.clear();
     m_recovered = true;
+    m_edit_base.reset();
+    m_top_stroke = 0;
     emit changed();
     emit modifiedChanged(true);
     return {};

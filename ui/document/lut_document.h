@@ -49,6 +49,9 @@ public:
     bool edit(const QString& text, std::vector<CellChange> changes, int stroke = 0);
     /// A fresh stroke id for edit().
     int newStroke() { return ++m_last_stroke; }
+    /// The table before the last edit, undo or redo (a whole brush stroke counts as one edit);
+    /// null after a reset. What the whole-stream effect compares the current table with.
+    std::shared_ptr<const ColourLut> editBase() const { return m_edit_base; }
 
     /// Saves to path() (atomically); an Error names the file and keeps the edits in memory.
     Status save();
@@ -90,6 +93,10 @@ private:
     QString m_recovery_dir;
     bool m_recovered = false;
     int m_last_stroke = 0;
+    std::shared_ptr<const ColourLut> m_edit_base;
+    bool m_in_edit = false; ///< inside edit(): the push's redo is the edit itself
+    int m_top_stroke = 0;   ///< the stroke of the command on top, while it may still merge
+    int m_top_index = -1;
 };
 
 } // namespace fieldsight::ui

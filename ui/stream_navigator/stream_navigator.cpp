@@ -122,6 +122,12 @@ QAction* StreamNavigator::makeAction(const QString& text, const QKeySequence& ke
     return a;
 }
 
+void StreamNavigator::addTimelineStrip(QWidget* strip)
+{
+    auto* rows = static_cast<QVBoxLayout*>(layout());
+    rows->insertWidget(rows->indexOf(m_slider), strip);
+}
+
 void StreamNavigator::step(long long delta)
 {
     if (!m_doc.hasStream())

@@ -39,6 +39,8 @@ public:
     int speed() const { return m_fps; }
     void setSpeed(int fps);
     QSlider* slider() const { return m_slider; }
+    /// Puts `strip` just above the slider, the same width, so its frames line up with it.
+    void addTimelineStrip(QWidget* strip);
     /// Frames shown per second over the last second of play (0 when not playing).
     double measuredFps() const { return m_measured_fps; }
 

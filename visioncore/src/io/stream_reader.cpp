@@ -20,6 +20,11 @@ Status StreamReader::readInto(std::size_t index, Frame& frame)
     return {};
 }
 
+Result<std::unique_ptr<StreamReader>> StreamReader::reopen() const
+{
+    return openStream(info().path);
+}
+
 namespace io {
 
 std::string indexedFrameName(std::size_t index)

@@ -90,6 +90,15 @@ public:
         return {};
     }
 
+    Result<std::unique_ptr<StreamReader>> reopen() const override
+    {
+        // pread keeps no file position, so a duplicate descriptor serves another thread.
+        const int fd = ::dup(m_fd);
+        if (fd < 0)
+            return Error{m_info.path + ": cannot open again: " + std::strerror(errno)};
+        return std::unique_ptr<StreamReader>(new StrmReader(m_info, fd, m_records, m_horizons));
+    }
+
 private:
     StreamInfo m_info;
     int m_fd;

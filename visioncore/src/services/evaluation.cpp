@@ -147,6 +147,21 @@ void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, 
     }
 }
 
+DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
+                                 int height)
+{
+    EvaluationScores scores;
+    scoreFrame(after, before, width, height, scores);
+    DetectionDelta delta;
+    delta.balls_appeared = scores.balls.fp;
+    delta.balls_vanished = scores.balls.fn;
+    delta.goalposts_appeared = scores.goalposts.fp;
+    delta.goalposts_vanished = scores.goalposts.fn;
+    delta.obstacles_appeared = scores.obstacles.fp;
+    delta.obstacles_vanished = scores.obstacles.fn;
+    return delta;
+}
+
 EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
                           const Annotations& truth, int width, int height)
 {

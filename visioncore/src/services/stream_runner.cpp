@@ -157,13 +157,21 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
     FirstProblem problem;
     const auto cancelled = [&] { return hooks.cancel && hooks.cancel->load(); };
 
+    const auto markDone = [&](std::size_t pos) {
+        done[pos] = 1;
+        if (hooks.progress) {
+            std::lock_guard lock(progress_mutex);
+            hooks.progress(++done_count, indices.size());
+        }
+    };
+
     auto worker = [&](int t) {
         try {
             std::unique_ptr<StreamReader> reader;
             if (t == 0) {
                 reader = std::make_unique<BorrowedReader>(*input.reader);
             } else {
-                auto opened = openStream(input.stream);
+                auto opened = input.reader->reopen();
                 if (!opened) {
                     problem.report(0, opened.error().message, false);
                     return;
@@ -191,6 +199,12 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                         problem.report(pos, s.error().message, false);
                         return;
                     }
+                    if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame())) {
+                        results[pos].index = indices[pos];
+                        results[pos].name = data.frame().name;
+                        markDone(pos);
+                        continue;
+                    }
                     auto report = control.runFrame();
                     if (!report) {
                         problem.report(pos,
@@ -208,11 +222,7 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                             return;
                         }
                     }
-                    done[pos] = 1;
-                    if (hooks.progress) {
-                        std::lock_guard lock(progress_mutex);
-                        hooks.progress(++done_count, indices.size());
-                    }
+                    markDone(pos);
                 }
             }
         } catch (const std::exception& e) {

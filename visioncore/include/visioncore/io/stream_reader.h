@@ -40,6 +40,9 @@ public:
     virtual Status readInto(std::size_t index, Frame& frame);
     /// The frame's display name without decoding it.
     virtual std::string frameName(std::size_t index) const = 0;
+    /// Another reader of the same stream, for another thread. The default opens the stream
+    /// again; readers with an index share it instead of building it twice.
+    virtual Result<std::unique_ptr<StreamReader>> reopen() const;
 };
 
 /// Opens a folder, a .strm file, a video file or "camera:N". Bad input (missing, empty folder,

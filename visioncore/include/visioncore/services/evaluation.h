@@ -105,6 +105,26 @@ struct EvaluationScores
 void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, int height,
                 EvaluationScores& scores);
 
+/// What changed between two runs of one frame (before and after a LUT edit), by the same
+/// matching rules, the run before playing the truth: a detection of `after` that nothing in
+/// `before` matches appeared; one of `before` that nothing in `after` matches vanished.
+struct DetectionDelta
+{
+    int balls_appeared = 0;
+    int balls_vanished = 0;
+    int goalposts_appeared = 0;
+    int goalposts_vanished = 0;
+    int obstacles_appeared = 0;
+    int obstacles_vanished = 0;
+
+    int appeared() const { return balls_appeared + goalposts_appeared + obstacles_appeared; }
+    int vanished() const { return balls_vanished + goalposts_vanished + obstacles_vanished; }
+    friend bool operator==(const DetectionDelta&, const DetectionDelta&) = default;
+};
+
+DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
+                                 int height);
+
 /// Scores every done frame of `truth` against `detected` (by frame name). Frames that are not done
 /// are ignored; a done frame missing from `detected` is scored as if nothing was detected.
 EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,

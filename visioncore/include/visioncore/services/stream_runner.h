@@ -67,6 +67,9 @@ struct RunHooks
     /// Called for every frame once it is done, with its image and the requested drawings; an
     /// error stops the run (a failure, as for an output that cannot be written).
     std::function<Status(const FrameResult&, const Frame&, const DebugCanvas&)> on_frame;
+    /// Called with each frame once it is read, before the pipeline: false leaves the frame out
+    /// (its FrameResult keeps only its index and name, and on_frame is not called for it).
+    std::function<bool(std::size_t index, const Frame&)> prefilter;
     /// Called (one call at a time) after every frame with the count done so far and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
     /// When it becomes true the workers stop after their current frame.
