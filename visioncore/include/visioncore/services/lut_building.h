@@ -74,9 +74,11 @@ struct AnnotationSampleRules
     bool objects_out = true;
 };
 
-/// The samples of every done frame of `annotations`, in `frame_size` images: the field below
-/// the boundary green (without obstacles), field lines white, goalposts `goal_colour`, balls
-/// orange, painted in that order so the objects win over the field.
+/// The samples of every done frame of `annotations`, in `frame_size` images, painted in this
+/// order (later wins): above the boundary unclassified (with `background`), the field below it
+/// green, the rows around a post's top left out (the unannotated crossbar is goal-coloured),
+/// obstacles, field lines white, goalposts `goal_colour`, balls orange. Frames without a
+/// boundary give no background or green.
 std::vector<LutSample> samplesFromAnnotations(const Annotations& annotations, cv::Size frame_size,
                                               const AnnotationSampleRules& rules = {});
 
@@ -140,7 +142,7 @@ struct LutVoteRun
 {
     LutVotes votes;
     std::size_t frames = 0; ///< frames read
-    bool cancelled = false; ///< then `votes` holds the frames read before
+    bool cancelled = false; ///< frames were left unread; `votes` holds those read before
 };
 
 /// Reads every frame of `reader` that a sample names (by frameStem(), in stream order) and adds
