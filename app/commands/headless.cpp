@@ -21,6 +21,8 @@ std::string usageText(const Pipeline& pipeline)
            "  fieldsight synth --out DIR [--scenario NAME] [--frames N] [--seed S] [--strm] "
            "[--no-png]\n"
            "  fieldsight lut convert IN OUT\n"
+           "  fieldsight lut build STREAM --out FILE [--samples FILE] [--smoothing N] [--soft]\n"
+           "                          [--goal-colour NAME] [--truth FILE] [--save-samples FILE]\n"
            "  fieldsight help\n"
            "\n"
            "STREAM is a folder of images, a .strm file, a video file or camera:N.\n"

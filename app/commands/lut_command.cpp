@@ -1,27 +1,34 @@
-// `fieldsight lut convert`: another team's colour table as a Fieldsight .lut.
+// `fieldsight lut`: `convert` turns another team's colour table into a Fieldsight .lut; `build`
+// votes one from samples of a stream (a fieldsight-lut-samples/1 file, or its annotations).
 #include "commands/commands.h"
 
 #include "visioncore/colour_lut.h"
 #include "visioncore/io/lut_import.h"
+#include "visioncore/services/evaluation.h"
+#include "visioncore/services/lut_building.h"
+#include "visioncore/services/lut_editing.h"
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
 
 namespace fieldsight::cli {
+namespace {
 
-int lutCommand(const QStringList& args, const Context& ctx)
+constexpr const char* kLutUsage = "try 'lut convert IN OUT' or 'lut build STREAM --out FILE'";
+
+int convertCommand(const QStringList& args, const Context& ctx)
 {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         "Converts another team's colour table (.c64, .nnmc.bz2, .raw, .lut) to a Fieldsight "
         ".lut.");
-    parser.addPositionalArgument("convert", "The only lut command.");
+    parser.addPositionalArgument("convert", "The command.");
     parser.addPositionalArgument("IN", "The table to import.");
     parser.addPositionalArgument("OUT", "The .lut file to write.");
-    if (auto done = parseCommand(parser, "lut", args, 3, 3, ctx))
+    if (auto done = parseCommand(parser, "lut convert", args, 3, 3, ctx))
         return *done;
     const QStringList positional = parser.positionalArguments();
-    if (positional[0] != "convert")
-        return badInput(ctx, "lut: unknown lut command '" + positional[0] +
-                                 "'; try 'lut convert "
-                                 "IN OUT'");
     const std::string in = positional[1].toStdString();
     const std::string out = positional[2].toStdString();
     auto lut = fieldsight::importLut(in);
@@ -38,6 +45,155 @@ int lutCommand(const QStringList& args, const Context& ctx)
     ctx.out << in << " -> " << out << " (" << classified << " of " << fieldsight::ColourLut::kCells
             << " cells classified)\n";
     return kExitOk;
+}
+
+/// "green 1234, white 56, ..." for the classes that have cells.
+std::string cellsSummary(const ColourLut& lut)
+{
+    const std::vector<std::size_t> counts = cellsPerClass(lut);
+    std::string text;
+    for (int c = 1; c < kColourCount; ++c) {
+        if (counts[std::size_t(c)] == 0)
+            continue;
+        text += (text.empty() ? "" : ", ") + std::string(colourName(Colour(c))) + " " +
+                std::to_string(counts[std::size_t(c)]);
+    }
+    return text.empty() ? "none" : text;
+}
+
+int buildCommand(const QStringList& args, const Context& ctx)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "Builds a colour LUT from samples of a stream: every pixel of a sample votes for its "
+        "class in its YCbCr cell, votes spread into neighbouring cells (--smoothing), and each "
+        "cell takes the class with the most weight. The samples are a fieldsight-lut-samples/1 "
+        "file, or without --samples the stream's annotations (SPEC 5.2, done frames): the field "
+        "below the boundary green, field lines white, goalposts the goal colour, balls orange; "
+        "above the boundary and obstacles unclassified. Prints one line: samples, frames, "
+        "pixels and cells per class.");
+    parser.addPositionalArgument("build", "The command.");
+    parser.addPositionalArgument("STREAM", "Image folder or .strm file the samples are from.");
+    parser.addOption({"out", "The .lut file to write (required).", "FILE"});
+    parser.addOption(
+        {"samples", "A fieldsight-lut-samples/1 file (default: the annotations).", "FILE"});
+    parser.addOption(
+        {"truth", "Annotations (default: annotations.json in the stream folder).", "FILE"});
+    parser.addOption({"save-samples",
+                      "Also write the samples used as fieldsight-lut-samples/1 (e.g. "
+                      "lut_samples.json beside the stream, to rebuild after the light changes).",
+                      "FILE"});
+    parser.addOption({"smoothing",
+                      "Cells each vote spreads into, in Y, Cb and Cr (default: the samples "
+                      "file's, else 1; 0 to 8).",
+                      "N"});
+    parser.addOption({"soft", "Soft classes pink_orange and yellow_orange where orange and "
+                              "pink or yellow samples meet."});
+    parser.addOption({"goal-colour", "Class of the annotated goalposts (default yellow).", "NAME"});
+    if (auto done = parseCommand(parser, "lut build", args, 2, 2, ctx))
+        return *done;
+
+    try {
+        const auto started = std::chrono::steady_clock::now();
+        const std::string stream = parser.positionalArguments()[1].toStdString();
+        if (!parser.isSet("out"))
+            return badInput(ctx, "lut build: --out FILE is required");
+        const std::string out = parser.value("out").toStdString();
+        QString error;
+        const auto smoothing = intOption(parser, "smoothing", -1, 0, error);
+        if (!smoothing || *smoothing > 8)
+            return badInput(ctx, "lut build: " + (error.isEmpty()
+                                                      ? "--smoothing: expected 0 to 8, got '" +
+                                                            parser.value("smoothing") + "'"
+                                                      : error));
+        AnnotationSampleRules rules;
+        if (parser.isSet("goal-colour")) {
+            const auto colour = colourFromName(parser.value("goal-colour").toStdString());
+            if (!colour || *colour == Colour::Unclassified)
+                return badInput(ctx, "lut build: --goal-colour: unknown colour class '" +
+                                         parser.value("goal-colour") + "'");
+            rules.goal_colour = *colour;
+        }
+
+        auto reader = openStream(stream);
+        if (!reader)
+            return badInput(ctx, reader.error().message);
+        const StreamInfo& info = reader.value()->info();
+
+        LutSamples samples;
+        if (parser.isSet("samples")) {
+            auto loaded = loadLutSamples(parser.value("samples").toStdString());
+            if (!loaded)
+                return badInput(ctx, loaded.error().message);
+            samples = std::move(loaded).value();
+        } else {
+            const std::string truth_path = parser.isSet("truth")
+                                               ? parser.value("truth").toStdString()
+                                               : defaultTruthPath(stream);
+            auto truth = Annotations::load(truth_path, ctx.pipeline);
+            if (!truth)
+                return badInput(ctx, truth.error().message);
+            samples.samples =
+                samplesFromAnnotations(truth.value(), {info.width, info.height}, rules);
+            if (samples.samples.empty())
+                return badInput(ctx, truth_path + ": no done frame to take samples from");
+        }
+        LutBuildOptions options;
+        options.smoothing = *smoothing >= 0 ? int(*smoothing) : samples.smoothing;
+        options.soft = parser.isSet("soft");
+        samples.smoothing = options.smoothing;
+
+        auto run = collectLutVotes(*reader.value(), samples.samples);
+        if (!run)
+            return badInput(ctx, run.error().message);
+        const ColourLut lut = run.value().votes.build(options);
+        if (Status s = lut.save(out); !s) {
+            printError(ctx.err, s.error().message);
+            return kExitFailure;
+        }
+        if (parser.isSet("save-samples")) {
+            if (Status s = saveLutSamples(parser.value("save-samples").toStdString(), samples);
+                !s) {
+                printError(ctx.err, s.error().message);
+                return kExitFailure;
+            }
+        }
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        char time[32];
+        std::snprintf(time, sizeof time, "%.2f s", seconds);
+        ctx.out << "lut build: " << samples.samples.size() << " samples over " << run.value().frames
+                << " frames, " << run.value().votes.pixels() << " pixels, smoothing "
+                << options.smoothing << " -> " << out << " (cells: " << cellsSummary(lut) << "; "
+                << time << ")\n";
+        return kExitOk;
+    } catch (const std::exception& e) {
+        printError(ctx.err, e.what());
+        return kExitFailure;
+    }
+}
+
+} // namespace
+
+int lutCommand(const QStringList& args, const Context& ctx)
+{
+    const QString command = args.value(1);
+    if (command == "convert")
+        return convertCommand(args, ctx);
+    if (command == "build")
+        return buildCommand(args, ctx);
+    if (command == "--help" || command == "-h" || command == "help") {
+        ctx.out << "usage: fieldsight lut convert IN OUT\n"
+                   "       fieldsight lut build STREAM --out FILE [--samples FILE] [--truth FILE]\n"
+                   "                 [--save-samples FILE] [--smoothing N] [--soft] "
+                   "[--goal-colour NAME]\n"
+                   "'fieldsight lut convert --help' and 'fieldsight lut build --help' describe "
+                   "them.\n";
+        return kExitOk;
+    }
+    if (command.isEmpty())
+        return badInput(ctx, std::string("lut: missing command; ") + kLutUsage);
+    return badInput(ctx, "lut: unknown lut command '" + command + "'; " + kLutUsage);
 }
 
 } // namespace fieldsight::cli

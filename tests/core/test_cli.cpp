@@ -15,6 +15,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include <set>
 #include <vector>
 
 namespace {
@@ -493,6 +494,92 @@ private slots:
         QCOMPARE(missing.status, 2);
         verifyOneLineError(missing, path("nope.json"));
     }
+    void lutBuildWritesATableFromSamples()
+    {
+        // The stream's frames are solid green (40, 150 + 10 i, 40): samples of frames 0 and 2.
+        const QString samples = path("samples.json");
+        QFile file(samples);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "fieldsight-lut-samples/1", "smoothing": 0, "samples": [
+            {"frame": "frame_000000.png", "colour": "green", "polygon": [[0,0],[9,0],[9,9],[0,9]]},
+            {"frame": "frame_000002", "colour": "white", "polygon": [[0,0],[19,0],[19,9],[0,9]]}]})");
+        file.close();
+        const QString out = path("built.lut");
+        const QString kept = path("kept_samples.json");
+        const Outcome o = fieldsight(
+            {"lut", "build", m_stream, "--samples", samples, "--out", out, "--save-samples", kept});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.out.contains("2 samples over 2 frames, 300 pixels"), o.out.constData());
+        QVERIFY2(o.out.contains("white 1, green 1"), o.out.constData());
+        auto lut = fieldsight::ColourLut::load(out.toStdString());
+        QVERIFY(lut.ok());
+        std::size_t classified = 0;
+        for (std::size_t i = 0; i < fieldsight::ColourLut::kCells; ++i)
+            classified += lut.value().cell(i) != fieldsight::Colour::Unclassified;
+        QCOMPARE(classified, std::size_t(2));
+        const QJsonObject saved = readObject(kept);
+        QCOMPARE(saved.value("format").toString(), QString("fieldsight-lut-samples/1"));
+        QCOMPARE(saved.value("samples").toArray().size(), 2);
+
+        // `lut convert` still works beside it.
+        const Outcome convert = fieldsight({"lut", "convert", out, path("converted.lut")});
+        QCOMPARE(convert.status, 0);
+    }
+
+    void lutBuildNamesABadSamplesFile()
+    {
+        const QString samples = path("bad_samples.json");
+        QFile file(samples);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"format": "fieldsight-lut-samples/1", "samples": [
+            {"frame": "frame_000000.png", "colour": "mauve", "polygon": [[0,0],[9,0],[0,9]]}]})");
+        file.close();
+        const QString out = path("never.lut");
+        Outcome o = fieldsight({"lut", "build", m_stream, "--samples", samples, "--out", out});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, samples);
+        verifyOneLineError(o, "mauve");
+        QVERIFY(!QFileInfo::exists(out));
+
+        // A sample of a frame the stream lacks, no --out, and no annotations: bad input too.
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(R"({"format": "fieldsight-lut-samples/1", "samples": [
+            {"frame": "frame_000042.png", "colour": "green", "polygon": [[0,0],[9,0],[0,9]]}]})");
+        file.close();
+        o = fieldsight({"lut", "build", m_stream, "--samples", samples, "--out", out});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "frame_000042.png");
+        o = fieldsight({"lut", "build", m_stream, "--samples", samples});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "--out");
+        o = fieldsight({"lut", "build", m_stream, "--out", out});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "annotations.json");
+        o = fieldsight({"lut", "frobnicate"});
+        QCOMPARE(o.status, 2);
+        verifyOneLineError(o, "frobnicate");
+    }
+
+    void lutBuildFromAnnotationsWithoutSamples()
+    {
+        const QString out = path("lab2.lut");
+        const Outcome o = fieldsight(
+            {"lut", "build", QString::fromStdString(fieldsight::test::sampleStreamsDir() + "/lab2"),
+             "--out", out});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.out.contains("over 30 frames"), o.out.constData());
+        auto lut = fieldsight::ColourLut::load(out.toStdString());
+        QVERIFY(lut.ok());
+        // lab2's field, lines, posts (yellow) and ball all got cells.
+        std::set<fieldsight::Colour> classes;
+        for (std::size_t i = 0; i < fieldsight::ColourLut::kCells; ++i)
+            classes.insert(lut.value().cell(i));
+        QCOMPARE(classes, (std::set<fieldsight::Colour>{
+                              fieldsight::Colour::Unclassified, fieldsight::Colour::White,
+                              fieldsight::Colour::Green, fieldsight::Colour::Orange,
+                              fieldsight::Colour::Yellow}));
+    }
+
     void renderWritesOnePngPerFrameWithTheTruth()
     {
         // The process has no display and no platform plugin set: the painter needs neither.
