@@ -5,6 +5,8 @@
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
+#include "ui/adapters/image_adapter.h"
+#include "ui/panels/uv_plane_panel.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
 #include "visioncore/io/atomic_file.h"
@@ -190,11 +192,24 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     connect(m_view, &FrameView::pixelHovered, this, [this](QPoint p) {
         m_hover = p;
         m_inspector->inspect(m_doc->current().get(), p);
+        refreshPreview();
     });
     connect(m_view, &FrameView::hoverLeft, this, [this] {
         m_hover.reset();
         m_inspector->clearPixel();
+        refreshPreview();
     });
+    // Linked both ways: what the image tool would change shows in the image and in the UV
+    // plane; cells selected in the UV plane light up their pixels in the image.
+    connect(m_lut_panel, &LutPanel::previewChanged, this,
+            [this](const cv::Mat& pixels, const std::vector<std::uint32_t>& cells) {
+                m_view->setHighlight(QStringLiteral("preview"),
+                                     maskToQImage(pixels, QColor(255, 0, 255, 150)));
+                m_uv->canvas().setOutlinedCells(cells);
+            });
+    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshUvSelection);
+    connect(m_lut_doc, &LutDocument::changed, this, &MainWindow::refreshPreview);
+    connect(m_lut_panel, &LutPanel::toolChanged, this, &MainWindow::refreshPreview);
     connect(m_pipeline, &PipelinePanel::problem, this,
             [this](const QString& m) { showMessage(m); });
 
@@ -265,17 +280,21 @@ void MainWindow::buildDocks()
 
     m_lut_panel = new LutPanel(*m_lut_doc, *m_doc, this);
     QDockWidget* lut = dock(m_lut_panel, tr("LUT editor"), "lut_dock", Qt::RightDockWidgetArea);
+    m_uv = new UvPlanePanel(*m_lut_doc, *m_doc, *m_lut_panel, this);
+    QDockWidget* uv = dock(m_uv, tr("UV plane"), "uv_dock", Qt::RightDockWidgetArea);
 
     tabifyDockWidget(layers, bookmarks);
     layers->raise();
     splitDockWidget(pipeline, detections, Qt::Vertical);
     tabifyDockWidget(pipeline, lut); // after the split, or the detections join the tabs
+    tabifyDockWidget(detections, uv);
     pipeline->raise();
+    detections->raise();
     resizeDocks({layers, pipeline}, {270, 340}, Qt::Horizontal);
     resizeDocks({layers, inspector}, {480, 200}, Qt::Vertical);
 
     m_docks_menu = new QMenu(tr("Panels"), this);
-    for (QDockWidget* d : {layers, bookmarks, inspector, pipeline, lut, detections})
+    for (QDockWidget* d : {layers, bookmarks, inspector, pipeline, lut, detections, uv})
         m_docks_menu->addAction(d->toggleViewAction());
 }
 
@@ -595,6 +614,9 @@ void MainWindow::onFrameReady()
 {
     const auto& out = m_doc->current();
     m_view->setOutput(out);
+    refreshUvSelection();
+    if (m_hover && m_view->toolActive())
+        refreshPreview();
     // The view first; the panels follow once it has painted (at once when it cannot paint).
     if (!m_view->isVisible())
         refreshPanels();
@@ -602,6 +624,24 @@ void MainWindow::onFrameReady()
         m_status_time->setText(tr("core %1 ms · worker %2 ms")
                                    .arg(out->result.report.total_ms, 0, 'f', 3)
                                    .arg(out->worker_ms, 0, 'f', 2));
+}
+
+void MainWindow::refreshPreview()
+{
+    m_lut_panel->preview(m_view->toolActive() ? m_hover : std::nullopt);
+}
+
+void MainWindow::refreshUvSelection()
+{
+    const auto& selection = m_uv->canvas().selection();
+    const auto& out = m_doc->current();
+    if (!selection || !out || out->frame.ycbcr.empty()) {
+        m_view->setHighlight(QStringLiteral("uv_selection"), {});
+        return;
+    }
+    m_view->setHighlight(
+        QStringLiteral("uv_selection"),
+        maskToQImage(pixelsIn(out->frame.ycbcr, *selection), QColor(0, 230, 255, 170)));
 }
 
 void MainWindow::refreshPanels()

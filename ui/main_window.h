@@ -21,6 +21,7 @@ namespace fieldsight::ui {
 class DetectionsPanel;
 class EditEffectScan;
 class EffectStrip;
+class UvPlanePanel;
 class InspectorPanel;
 class LayersPanel;
 class LutPanel;
@@ -44,6 +45,7 @@ public:
     LutDocument& lutDocument() { return *m_lut_doc; }
     LutPanel& lutPanel() { return *m_lut_panel; }
     EditEffectScan& effectScan() { return *m_effect; }
+    UvPlanePanel& uvPanel() { return *m_uv; }
     EffectStrip& effectStrip() { return *m_effect_strip; }
     QListWidget& bookmarkList() { return *m_bookmark_list; }
 
@@ -100,6 +102,10 @@ private:
     void offerRecovery();
     /// The detections and inspector panels show the current frame (after the view painted it).
     void refreshPanels();
+    /// The LUT tool's preview at the hovered pixel (or none).
+    void refreshPreview();
+    /// The pixels of the UV plane's selected cells, highlighted in the image.
+    void refreshUvSelection();
     void updateTitle();
     void rememberRecent(const QString& spec);
     void rebuildRecentMenu();
@@ -113,6 +119,7 @@ private:
     LutDocument* m_lut_doc = nullptr;
     LutPanel* m_lut_panel = nullptr;
     EditEffectScan* m_effect = nullptr;
+    UvPlanePanel* m_uv = nullptr;
     EffectStrip* m_effect_strip = nullptr;
     QWidget* m_recovery_bar = nullptr;
     QLabel* m_recovery_label = nullptr;

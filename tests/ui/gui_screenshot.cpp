@@ -2,10 +2,17 @@
 // user would on a machine without a display (QT_QPA_PLATFORM=offscreen or xvfb-run).
 //   gui_screenshot OUT.png STREAM [--lut FILE] [--set S.P=V] [--frame N] [--size WxH]
 //                  [--layers all|default|ID,...] [--mode raw|classified|side|blend]
-//                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]
+//                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]...
+//                  [--colour NAME] [--tool click|brush|erase|wand] [--click X,Y]...
+//                  [--preview X,Y] [--uv-select CB0,CR0,CB1,CR1] [--y-range LO,HI]
+// --click edits the LUT with the tool at image pixel X,Y; --preview hovers the tool there (both at
+// zoom 1 unless --zoom); the whole-stream scan is waited for before the shot.
 #include "ui/main_window.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/inspector_panel.h"
+#include "ui/panels/lut_panel.h"
+#include "ui/panels/uv_plane_panel.h"
+#include "ui/document/edit_effect_scan.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -24,7 +31,8 @@ int main(int argc, char** argv)
     QCommandLineParser p;
     p.addPositionalArgument("out", "PNG to write");
     p.addPositionalArgument("stream", "stream");
-    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock"})
+    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock",
+                          "colour", "tool", "click", "preview", "uv-select", "y-range"})
         p.addOption({o, o, "value"});
     p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
@@ -98,9 +106,50 @@ int main(int argc, char** argv)
         const QStringList xy = p.value("hover").split(',');
         w.inspector().inspect(w.document().current().get(), QPoint(xy[0].toInt(), xy[1].toInt()));
     }
-    if (p.isSet("dock")) // bring a tabbed dock to the front ("lut_dock", "bookmarks_dock")
-        if (auto* dock = w.findChild<QDockWidget*>(p.value("dock")))
+    for (const QString& name : p.values("dock")) // bring tabbed docks to the front ("lut_dock")
+        if (auto* dock = w.findChild<QDockWidget*>(name))
             dock->raise();
+    QApplication::processEvents();
+    if (p.isSet("colour"))
+        if (auto c = colourFromName(p.value("colour").toStdString()))
+            w.lutPanel().setColour(*c);
+    const QString tool = p.value("tool");
+    if (!tool.isEmpty())
+        w.lutPanel().setTool(tool == "brush"   ? ui::LutTool::Brush
+                             : tool == "erase" ? ui::LutTool::Erase
+                             : tool == "wand"  ? ui::LutTool::Wand
+                                               : ui::LutTool::Click);
+    const auto viewPoint = [&](const QString& xy) {
+        const QStringList v = xy.split(',');
+        const double z = w.view().zoom();
+        return QPoint(int(w.view().imageOrigin().x() + (v[0].toInt() + 0.5) * z),
+                      int(w.view().imageOrigin().y() + (v[1].toInt() + 0.5) * z));
+    };
+    if (!p.isSet("zoom") && (p.isSet("click") || p.isSet("preview"))) {
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+    }
+    if (p.isSet("y-range")) {
+        const QStringList v = p.value("y-range").split(',');
+        w.uvPanel().setYLevels(v[0].toInt(), v[1].toInt());
+    }
+    for (const QString& xy : p.values("click")) {
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, viewPoint(xy));
+        waitFrame();
+    }
+    if (p.isSet("uv-select")) {
+        const QStringList v = p.value("uv-select").split(',');
+        ui::UvCanvas& canvas = w.uvPanel().canvas();
+        QTest::mousePress(&canvas, Qt::RightButton, {},
+                          canvas.cellCentre(v[0].toInt(), v[1].toInt()).toPoint());
+        QTest::mouseMove(&canvas, canvas.cellCentre(v[2].toInt(), v[3].toInt()).toPoint());
+        QTest::mouseRelease(&canvas, Qt::RightButton, {},
+                            canvas.cellCentre(v[2].toInt(), v[3].toInt()).toPoint());
+    }
+    if (p.isSet("preview"))
+        QTest::mouseMove(&w.view(), viewPoint(p.value("preview")));
+    for (int i = 0; i < 2000 && w.effectScan().running(); ++i)
+        QTest::qWait(10);
     QApplication::processEvents();
     QTest::qWait(50);
     const QImage shot = w.grab().toImage();

@@ -5,9 +5,11 @@
 #include "support/synthetic_frames.h"
 #include "ui/main_window.h"
 #include "ui/panels/lut_panel.h"
+#include "ui/panels/uv_plane_panel.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "visioncore/services/stream_runner.h"
 
+#include <QDockWidget>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -351,6 +353,116 @@ private slots:
         QVERIFY(target > 0);
         QTest::mouseClick(&strip, Qt::LeftButton, {}, QPoint(x, strip.height() / 2));
         QCOMPARE((long long)w.document().currentIndex(), target);
+    }
+
+    void paintingInTheUvPlaneChangesTheCellsUnderTheBrush()
+    {
+        MainWindow w;
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        auto* dock = w.findChild<QDockWidget*>("uv_dock");
+        QVERIFY(dock);
+        dock->show();
+        dock->raise();
+        ui::UvPlanePanel& uv = w.uvPanel();
+        uv.setYLevels(100, 131); // Y cells 50..65
+        ui::UvCanvas& canvas = uv.canvas();
+        QCOMPARE(canvas.yLow(), 50);
+        QCOMPARE(canvas.yHigh(), 65);
+        QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 200);
+
+        const ColourLut before = w.lutDocument().table();
+        w.lutPanel().setColour(Colour::Orange);
+        w.lutPanel().setTool(LutTool::Brush);
+        w.lutPanel().setBrushRadius(2);
+        const int undo_steps = w.lutDocument().undoStack().count();
+        QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.cellCentre(40, 90).toPoint());
+        QTest::mouseMove(&canvas, canvas.cellCentre(42, 90).toPoint());
+        QTest::mouseMove(&canvas, canvas.cellCentre(44, 90).toPoint());
+        QTest::mouseRelease(&canvas, Qt::LeftButton, {}, canvas.cellCentre(44, 90).toPoint());
+        QCOMPARE(w.lutDocument().undoStack().count(), undo_steps + 1); // one stroke, one step
+
+        // Every cell within 2 cells of the path (40..44, 90), at Y cells 50..65, not already
+        // orange.
+        std::set<std::uint32_t> expected;
+        for (int y = 50; y <= 65; ++y)
+            for (int cb = 0; cb < 128; ++cb)
+                for (int cr = 0; cr < 128; ++cr) {
+                    bool under = false;
+                    for (int k = 40; k <= 44; ++k)
+                        under |= (cb - k) * (cb - k) + (cr - 90) * (cr - 90) <= 4;
+                    const auto cell = std::uint32_t((y << 14) | (cb << 7) | cr);
+                    if (under && before.cell(cell) != Colour::Orange)
+                        expected.insert(cell);
+                }
+        QVERIFY(!expected.empty());
+        QCOMPARE(differences(before, w.lutDocument().table()), expected);
+        for (std::uint32_t cell : expected)
+            QCOMPARE(w.lutDocument().table().cell(cell), Colour::Orange);
+        w.lutDocument().undoStack().undo();
+        QVERIFY(w.lutDocument().table() == before);
+    }
+
+    void aUvSelectionLightsUpItsPixelsAndTheImageToolItsCells()
+    {
+        MainWindow w;
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        auto* dock = w.findChild<QDockWidget*>("uv_dock");
+        dock->show();
+        dock->raise();
+        ui::UvCanvas& canvas = w.uvPanel().canvas();
+        QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 200);
+        w.uvPanel().setYLevels(0, 255);
+
+        // UV -> image: right-drag over the cells of a field pixel's colour.
+        showPixelsOneToOne(w);
+        const cv::Vec3b field = colourAt(w, QPoint(160, 220));
+        const int cb = field[1] >> 1, cr = field[2] >> 1;
+        QTest::mousePress(&canvas, Qt::RightButton, {},
+                          canvas.cellCentre(cb - 1, cr - 1).toPoint());
+        QTest::mouseMove(&canvas, canvas.cellCentre(cb + 1, cr + 1).toPoint());
+        QTest::mouseRelease(&canvas, Qt::RightButton, {},
+                            canvas.cellCentre(cb + 1, cr + 1).toPoint());
+        QVERIFY(canvas.selection().has_value());
+        const QImage lit = w.view().highlight("uv_selection");
+        QVERIFY(!lit.isNull());
+        const cv::Mat& px = w.document().current()->frame.ycbcr;
+        int expected = 0, shown = 0;
+        for (int y = 0; y < px.rows; ++y)
+            for (int x = 0; x < px.cols; ++x) {
+                const cv::Vec3b c = px.at<cv::Vec3b>(y, x);
+                const bool in = std::abs((c[1] >> 1) - cb) <= 1 && std::abs((c[2] >> 1) - cr) <= 1;
+                expected += in;
+                shown += qAlpha(lit.pixel(x, y)) > 0;
+                if (in != (qAlpha(lit.pixel(x, y)) > 0))
+                    QFAIL(qPrintable(QString("pixel %1,%2 wrongly lit").arg(x).arg(y)));
+            }
+        QVERIFY(expected > 100);
+        QCOMPARE(shown, expected);
+
+        // Image -> UV: hovering with the click tool outlines the cells a click would change,
+        // highlights the pixels, and counts the cells taken from another class.
+        w.lutPanel().setColour(Colour::Pink);
+        w.lutPanel().setTool(LutTool::Click);
+        w.lutPanel().setTolerance({6, 3, 3});
+        QTest::mouseMove(&w.view(), at(QPoint(160, 220)));
+        QTRY_VERIFY(!w.lutPanel().previewChanges().empty());
+        const auto cells = cellsInBox(field[0], field[1], field[2], {6, 3, 3});
+        std::size_t green = 0;
+        for (std::uint32_t c : cells)
+            green += w.lutDocument().table().cell(c) == Colour::Green;
+        QCOMPARE(w.lutPanel().previewChanges().size(), cells.size());
+        QVERIFY(green > 0); // a field pixel's box is mostly green already
+        QVERIFY2(w.lutPanel().previewText().contains(QString::number(green) + " green"),
+                 qPrintable(w.lutPanel().previewText()));
+        QVERIFY(qAlpha(w.view().highlight("preview").pixel(160, 220)) > 0);
+        const ColourLut unchanged = w.lutDocument().table();
+        QVERIFY(unchanged == w.lutDocument().table()); // a preview edits nothing
     }
 };
 

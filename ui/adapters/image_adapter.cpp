@@ -57,3 +57,22 @@ QColor toQColor(Rgb colour)
 }
 
 } // namespace fieldsight::ui
+
+namespace fieldsight::ui {
+
+QImage maskToQImage(const cv::Mat& mask, QColor colour)
+{
+    if (mask.empty() || mask.type() != CV_8U)
+        return {};
+    QImage image(mask.cols, mask.rows, QImage::Format_ARGB32_Premultiplied);
+    const QRgb on = qPremultiply(colour.rgba());
+    for (int y = 0; y < mask.rows; ++y) {
+        const std::uint8_t* m = mask.ptr<std::uint8_t>(y);
+        auto* out = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < mask.cols; ++x)
+            out[x] = m[x] ? on : 0;
+    }
+    return image;
+}
+
+} // namespace fieldsight::ui

@@ -25,5 +25,8 @@ QImage ycbcrToZoomedQImage(const cv::Mat& ycbcr, int scale);
 QImage bgrToQImage(const cv::Mat& bgr);
 
 QColor toQColor(Rgb colour);
+/// A highlight: `colour` where the CV_8U `mask` is nonzero, transparent elsewhere (null when the
+/// mask is empty).
+QImage maskToQImage(const cv::Mat& mask, QColor colour);
 
 } // namespace fieldsight::ui

@@ -193,6 +193,24 @@ const PerceptItem* FrameView::itemAt(QPointF pos) const
     return best;
 }
 
+void FrameView::setHighlight(const QString& id, const QImage& image)
+{
+    if (image.isNull()) {
+        if (m_highlights.erase(id))
+            update();
+        return;
+    }
+    m_highlights[id] = image;
+    update();
+}
+
+const QImage& FrameView::highlight(const QString& id) const
+{
+    static const QImage none;
+    const auto it = m_highlights.find(id);
+    return it == m_highlights.end() ? none : it->second;
+}
+
 void FrameView::paintEvent(QPaintEvent*)
 {
     QElapsedTimer clock;
@@ -223,6 +241,8 @@ void FrameView::paintEvent(QPaintEvent*)
                 p.drawImage(QPointF(0, 0), m_output->classified);
                 p.setOpacity(1);
             }
+            for (const auto& [id, highlight] : m_highlights)
+                p.drawImage(QPointF(0, 0), highlight);
             for (const DebugDrawing* d : layers)
                 paintDrawing(p, *d);
             p.restore();

@@ -10,6 +10,7 @@
 #include <QPointF>
 #include <QWidget>
 
+#include <map>
 #include <memory>
 
 namespace fieldsight::ui {
@@ -60,6 +61,11 @@ public:
     /// The brush outline drawn around the cursor while a tool is on (image px; < 0: none).
     void setBrushRadius(int radius);
 
+    /// A highlight over the frame, under the overlay: an image of the frame's size, transparent
+    /// where nothing is highlighted (a null image removes it). Kept across frames until changed.
+    void setHighlight(const QString& id, const QImage& image);
+    const QImage& highlight(const QString& id) const;
+
     /// The serial of the output painted last.
     std::uint64_t paintedSerial() const { return m_painted_serial; }
     /// How long the last paint took, ms.
@@ -108,6 +114,7 @@ private:
     bool m_tool_down = false;
     int m_brush_radius = -1;
     std::optional<QPoint> m_cursor_pixel; ///< for the brush outline
+    std::map<QString, QImage> m_highlights;
     std::uint64_t m_painted_serial = 0;
     double m_paint_ms = 0;
     int m_wheel_delta = 0; ///< eighths of a degree not yet turned into a zoom step

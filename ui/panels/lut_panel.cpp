@@ -1,6 +1,7 @@
 #include "ui/panels/lut_panel.h"
 
 #include "ui/adapters/image_adapter.h"
+#include "visioncore/services/lut_compare.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -19,6 +20,9 @@
 #include <QUndoView>
 #include <QVBoxLayout>
 
+#include <opencv2/core.hpp>
+
+#include <array>
 #include <cmath>
 
 namespace fieldsight::ui {
@@ -130,7 +134,22 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     m_keep_others->setObjectName(QStringLiteral("keep_others"));
     m_keep_others->setToolTip(tr("Leave cells that already belong to another class as they are"));
     form->addRow(m_keep_others);
+    m_preview_on = new QCheckBox(tr("Preview under the cursor"), this);
+    m_preview_on->setObjectName(QStringLiteral("preview_on"));
+    m_preview_on->setChecked(true);
+    m_preview_on->setToolTip(tr("Before you click: the pixels whose class would change are "
+                                "highlighted, and the cells taken from another class counted"));
+    connect(m_preview_on, &QCheckBox::toggled, this, [this](bool on) {
+        if (!on)
+            preview(std::nullopt);
+    });
+    form->addRow(m_preview_on);
     column->addLayout(form);
+
+    m_preview_label = new QLabel(this);
+    m_preview_label->setObjectName(QStringLiteral("lut_preview"));
+    m_preview_label->setWordWrap(true);
+    column->addWidget(m_preview_label);
 
     m_stats = new QLabel(this);
     m_stats->setObjectName(QStringLiteral("lut_stats"));
@@ -191,6 +210,11 @@ void LutPanel::setBrushRadius(int radius)
     m_radius->setValue(radius);
 }
 
+bool LutPanel::keepOthers() const
+{
+    return m_keep_others->isChecked();
+}
+
 QList<QAction*> LutPanel::colourActions() const
 {
     return m_colours->actions();
@@ -204,46 +228,73 @@ const cv::Mat* LutPanel::frame() const
     return &out->frame.ycbcr;
 }
 
-void LutPanel::press(QPoint pixel)
+std::optional<PlannedEdit> LutPanel::planAt(QPoint pixel) const
 {
     const cv::Mat* image = frame();
-    if (!image)
-        return;
+    if (!image || pixel.x() < 0 || pixel.y() < 0 || pixel.x() >= image->cols ||
+        pixel.y() >= image->rows)
+        return std::nullopt;
     const cv::Point at(pixel.x(), pixel.y());
     const Tolerance t = tolerance();
     const bool keep = m_keep_others->isChecked();
     switch (m_tool) {
     case LutTool::Navigate:
-        return;
+        return std::nullopt;
     case LutTool::Click: {
         const cv::Vec3b c = image->at<cv::Vec3b>(at);
-        m_lut.edit(tr("Click (%1, %2, %3) ± (%4, %5, %6) → %7")
-                       .arg(c[0])
-                       .arg(c[1])
-                       .arg(c[2])
-                       .arg(t.y)
-                       .arg(t.cb)
-                       .arg(t.cr)
-                       .arg(className(m_colour)),
-                   changesTo(m_lut.table(), cellsInBox(c[0], c[1], c[2], t), m_colour, keep));
-        return;
+        return PlannedEdit{
+            tr("Click (%1, %2, %3) ± (%4, %5, %6) → %7")
+                .arg(c[0])
+                .arg(c[1])
+                .arg(c[2])
+                .arg(t.y)
+                .arg(t.cb)
+                .arg(t.cr)
+                .arg(className(m_colour)),
+            changesTo(m_lut.table(), cellsInBox(c[0], c[1], c[2], t), m_colour, keep)};
     }
     case LutTool::Wand: {
         const std::vector<cv::Point> pixels = wandPixels(*image, at, t);
-        m_lut.edit(tr("Wand at (%1, %2): %3 px → %4")
-                       .arg(pixel.x())
-                       .arg(pixel.y())
-                       .arg(qsizetype(pixels.size()))
-                       .arg(className(m_colour)),
-                   changesTo(m_lut.table(), cellsOfPixels(*image, pixels), m_colour, keep));
-        return;
+        return PlannedEdit{tr("Wand at (%1, %2): %3 px → %4")
+                               .arg(pixel.x())
+                               .arg(pixel.y())
+                               .arg(qsizetype(pixels.size()))
+                               .arg(className(m_colour)),
+                           changesTo(m_lut.table(), cellsOfPixels(*image, pixels), m_colour, keep)};
     }
     case LutTool::Brush:
     case LutTool::Erase:
+        return brushEdit(brushPixels(at, brushRadius(), image->size()));
+    }
+    return std::nullopt;
+}
+
+PlannedEdit LutPanel::brushEdit(const std::vector<cv::Point>& pixels) const
+{
+    const bool erase = m_tool == LutTool::Erase;
+    const Colour target = erase ? Colour::Unclassified : m_colour;
+    const Tolerance t = erase ? Tolerance{} : tolerance();
+    const bool keep = !erase && m_keep_others->isChecked();
+    return PlannedEdit{erase ? tr("Erase stroke")
+                             : tr("Brush stroke → %1").arg(className(m_colour)),
+                       changesTo(m_lut.table(), cellsOfPixels(*frame(), pixels, t), target, keep)};
+}
+
+void LutPanel::press(QPoint pixel)
+{
+    if (m_tool == LutTool::Brush || m_tool == LutTool::Erase) {
         m_stroke = m_lut.newStroke();
         m_last.reset();
+        m_last_edit_cells.clear();
         paintAt(pixel);
         return;
+    }
+    if (auto plan = planAt(pixel)) {
+        m_last_edit_cells.clear();
+        for (const CellChange& c : plan->changes)
+            m_last_edit_cells.push_back(c.cell);
+        m_lut.edit(plan->text, std::move(plan->changes));
+        preview(pixel); // what another click here would do now
     }
 }
 
@@ -276,12 +327,62 @@ void LutPanel::paintAt(QPoint pixel)
         pixels.insert(pixels.end(), disc.begin(), disc.end());
     }
     m_last = pixel;
-    const bool erase = m_tool == LutTool::Erase;
-    const Colour target = erase ? Colour::Unclassified : m_colour;
-    const Tolerance t = erase ? Tolerance{} : tolerance();
-    const bool keep = !erase && m_keep_others->isChecked();
-    m_lut.edit(erase ? tr("Erase stroke") : tr("Brush stroke → %1").arg(className(m_colour)),
-               changesTo(m_lut.table(), cellsOfPixels(*image, pixels, t), target, keep), m_stroke);
+    PlannedEdit plan = brushEdit(pixels);
+    for (const CellChange& c : plan.changes)
+        m_last_edit_cells.push_back(c.cell);
+    m_lut.edit(plan.text, std::move(plan.changes), m_stroke);
+}
+
+void LutPanel::preview(std::optional<QPoint> pixel)
+{
+    if (m_stroke) { // mid-stroke: what the stroke has changed so far
+        m_preview.clear();
+        cv::Mat pixels;
+        if (const cv::Mat* image = frame(); image && !m_last_edit_cells.empty())
+            pixels = pixelsIn(*image, CellMask::of(m_last_edit_cells));
+        m_preview_label->setText(
+            tr("Stroke: %1 cells changed").arg(qsizetype(m_last_edit_cells.size())));
+        emit previewChanged(pixels, m_last_edit_cells);
+        return;
+    }
+    std::optional<PlannedEdit> plan;
+    if (pixel && m_preview_on->isChecked())
+        plan = planAt(*pixel);
+    m_preview = plan ? std::move(plan->changes) : std::vector<CellChange>{};
+    cv::Mat pixels;
+    std::vector<std::uint32_t> cells;
+    if (!m_preview.empty()) {
+        pixels = pixelsIn(*frame(), CellMask::of(m_preview));
+        cells.reserve(m_preview.size());
+        for (const CellChange& c : m_preview)
+            cells.push_back(c.cell);
+    }
+    // Overlap: cells the edit would take from another class, by class.
+    std::array<std::size_t, kColourCount> taken{};
+    for (const CellChange& c : m_preview)
+        if (c.before != Colour::Unclassified)
+            ++taken[std::size_t(c.before)];
+    QString text;
+    if (!m_preview.empty()) {
+        QStringList overlap;
+        for (int c = 1; c < kColourCount; ++c)
+            if (taken[std::size_t(c)] > 0)
+                overlap
+                    << QStringLiteral("%1 %2").arg(taken[std::size_t(c)]).arg(className(Colour(c)));
+        text = tr("Here: %1 cells would change, %2 px of this frame")
+                   .arg(qsizetype(m_preview.size()))
+                   .arg(cv::countNonZero(pixels));
+        text += overlap.isEmpty()
+                    ? tr("; none taken from another class")
+                    : tr("; taken from another class: %1").arg(overlap.join(QStringLiteral(", ")));
+    }
+    m_preview_label->setText(text);
+    emit previewChanged(pixels, cells);
+}
+
+QString LutPanel::previewText() const
+{
+    return m_preview_label->text();
 }
 
 void LutPanel::pick(QPoint pixel)

@@ -21,6 +21,13 @@ namespace fieldsight::ui {
 
 enum class LutTool { Navigate, Click, Brush, Erase, Wand };
 
+/// What a tool would do: the changes and the undo step's name.
+struct PlannedEdit
+{
+    QString text;
+    std::vector<CellChange> changes;
+};
+
 class LutPanel : public QWidget
 {
     Q_OBJECT
@@ -35,6 +42,8 @@ public:
     void setTolerance(const Tolerance& tolerance);
     int brushRadius() const;
     void setBrushRadius(int radius);
+    /// Edits leave cells of other classes alone.
+    bool keepOthers() const;
     /// The palette's actions (one per class, keys 0-9), for the window's menu.
     QList<QAction*> colourActions() const;
 
@@ -43,13 +52,30 @@ public:
     void drag(QPoint pixel);
     void release();
     void pick(QPoint pixel);
+    /// Shows what the tool would do at `pixel` (the cursor): the pixels of the frame whose class
+    /// would change, and how many of the cells now belong to another class. An empty point
+    /// clears it.
+    void preview(std::optional<QPoint> pixel);
+    /// What the current tool would do at `pixel` of the current frame (a brush: one dab).
+    std::optional<PlannedEdit> planAt(QPoint pixel) const;
+    /// The preview's summary line (empty when none).
+    QString previewText() const;
+    /// The cells the preview would change.
+    const std::vector<CellChange>& previewChanges() const { return m_preview; }
+    /// Cells the last edit changed (a whole stroke), for the UV view.
+    const std::vector<std::uint32_t>& lastEditCells() const { return m_last_edit_cells; }
 
 signals:
     /// The tool changed: whether the view's left button edits, and the brush outline.
     void toolChanged(bool editing, int brush_radius);
     void problem(const QString& message);
+    /// The preview changed: a CV_8U mask of the frame's pixels whose class would change (empty
+    /// when none), and the cells.
+    void previewChanged(const cv::Mat& pixels, const std::vector<std::uint32_t>& cells);
 
 private:
+    /// The changes of brushing (or erasing) `pixels` with the current settings.
+    PlannedEdit brushEdit(const std::vector<cv::Point>& pixels) const;
     /// Emits toolChanged for the current tool and brush radius.
     void announceTool();
     void paintAt(QPoint pixel);
@@ -69,6 +95,10 @@ private:
     QSpinBox* m_radius = nullptr;
     QCheckBox* m_keep_others = nullptr;
     QLabel* m_stats = nullptr;
+    QLabel* m_preview_label = nullptr;
+    QCheckBox* m_preview_on = nullptr;
+    std::vector<CellChange> m_preview;
+    std::vector<std::uint32_t> m_last_edit_cells;
     int m_stroke = 0;
     std::optional<QPoint> m_last;
 };

@@ -33,6 +33,38 @@ void sortUnique(std::vector<std::uint32_t>& cells)
 
 } // namespace
 
+std::vector<std::uint32_t> cellsInUvDisc(int cb, int cr, int radius, int y_lo, int y_hi)
+{
+    std::vector<std::uint32_t> cells;
+    radius = std::max(0, radius);
+    y_lo = std::clamp(y_lo, 0, 127);
+    y_hi = std::clamp(y_hi, 0, 127);
+    for (int y = y_lo; y <= y_hi; ++y)
+        for (int b = std::max(0, cb - radius); b <= std::min(127, cb + radius); ++b)
+            for (int r = std::max(0, cr - radius); r <= std::min(127, cr + radius); ++r)
+                if ((b - cb) * (b - cb) + (r - cr) * (r - cr) <= radius * radius)
+                    cells.push_back(std::uint32_t((y << 14) | (b << 7) | r));
+    return cells;
+}
+
+std::vector<std::uint32_t> cellsInUvRect(int cb0, int cr0, int cb1, int cr1, int y_lo, int y_hi)
+{
+    std::vector<std::uint32_t> cells;
+    cb0 = std::clamp(cb0, 0, 127);
+    cb1 = std::clamp(cb1, 0, 127);
+    cr0 = std::clamp(cr0, 0, 127);
+    cr1 = std::clamp(cr1, 0, 127);
+    const int b0 = std::min(cb0, cb1), b1 = std::max(cb0, cb1);
+    const int r0 = std::min(cr0, cr1), r1 = std::max(cr0, cr1);
+    y_lo = std::clamp(y_lo, 0, 127);
+    y_hi = std::clamp(y_hi, 0, 127);
+    for (int y = y_lo; y <= y_hi; ++y)
+        for (int b = b0; b <= b1; ++b)
+            for (int r = r0; r <= r1; ++r)
+                cells.push_back(std::uint32_t((y << 14) | (b << 7) | r));
+    return cells;
+}
+
 std::vector<std::uint32_t> cellsInBox(std::uint8_t y, std::uint8_t cb, std::uint8_t cr,
                                       const Tolerance& tolerance)
 {

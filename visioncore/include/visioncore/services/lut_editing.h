@@ -34,6 +34,14 @@ struct CellChange
 std::vector<std::uint32_t> cellsInBox(std::uint8_t y, std::uint8_t cb, std::uint8_t cr,
                                       const Tolerance& tolerance);
 
+/// The cells of a round brush in the UV (Cb, Cr) plane: every cell within `radius` cells of cell
+/// (cb, cr) (7-bit cell coordinates), at every Y cell from `y_lo` to `y_hi`; ascending.
+std::vector<std::uint32_t> cellsInUvDisc(int cb, int cr, int radius, int y_lo, int y_hi);
+
+/// The cells of a rectangle of the UV plane (cell coordinates, inclusive, any corner order) at
+/// every Y cell from `y_lo` to `y_hi`; ascending.
+std::vector<std::uint32_t> cellsInUvRect(int cb0, int cr0, int cb1, int cr1, int y_lo, int y_hi);
+
 /// The pixels of a round brush of `radius` px (0: one pixel) centred on `centre`, inside a
 /// `size` image.
 std::vector<cv::Point> brushPixels(cv::Point centre, int radius, cv::Size size);

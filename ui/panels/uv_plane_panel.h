@@ -1,0 +1,97 @@
+// The LUT in the UV (Cb, Cr) plane at a chosen Y range: each cell in its class's colour, the
+// current frame's pixels as a scatter, painting of cells with the LUT editor's colour and brush
+// (erase unclassifies), and linked both ways with the image: cells the image tool would change
+// are outlined here, and a rectangle selected here (right-drag, or left-drag with the Pan tool)
+// highlights its pixels in the image.
+#pragma once
+
+#include "ui/document/lut_document.h"
+#include "ui/document/stream_document.h"
+#include "visioncore/services/lut_compare.h"
+
+#include <QImage>
+#include <QWidget>
+
+#include <optional>
+
+class QLabel;
+class QSpinBox;
+
+namespace fieldsight::ui {
+
+class LutPanel;
+
+/// The plane itself: 128 x 128 cells, Cb to the right, Cr upwards.
+class UvCanvas : public QWidget
+{
+    Q_OBJECT
+public:
+    UvCanvas(LutDocument& lut, StreamDocument& stream, LutPanel& panel, QWidget* parent = nullptr);
+
+    /// Y range in 7-bit cells, inclusive.
+    void setYRange(int lo, int hi);
+    int yLow() const { return m_y_lo; }
+    int yHigh() const { return m_y_hi; }
+    /// Widget position of the centre of cell (cb, cr), and the cell under a widget position.
+    QPointF cellCentre(int cb, int cr) const;
+    std::optional<QPoint> cellAt(QPointF pos) const;
+    /// Cells outlined (what the image tool would change, or changed last).
+    void setOutlinedCells(const std::vector<std::uint32_t>& cells);
+    /// The selected cells (a UV rectangle over the Y range), if any.
+    const std::optional<CellMask>& selection() const { return m_selection; }
+    void clearSelection();
+    /// Rebuilds the class image (after a LUT change) and the scatter (after a new frame).
+    void refreshPlane();
+    void refreshScatter();
+
+signals:
+    void selectionChanged();
+    void hovered(const QString& text);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+
+private:
+    QRectF planeRect() const;
+    bool selecting(Qt::MouseButtons buttons) const;
+    void dab(QPoint cell);
+
+    LutDocument& m_lut;
+    StreamDocument& m_stream;
+    LutPanel& m_panel;
+    int m_y_lo = 0;
+    int m_y_hi = 127;
+    QImage m_plane;    ///< 128 x 128, the classes
+    QImage m_scatter;  ///< 128 x 128, the frame's pixels
+    QImage m_outlined; ///< 128 x 128, cells the image tool would change
+    std::optional<CellMask> m_selection;
+    std::optional<QPoint> m_select_from; ///< cell where the selection drag began
+    std::optional<QPoint> m_select_to;
+    int m_stroke = 0;
+    std::optional<QPoint> m_last_dab;
+    std::optional<QPoint> m_cursor;
+};
+
+/// The dock's contents: the Y range and the canvas.
+class UvPlanePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    UvPlanePanel(LutDocument& lut, StreamDocument& stream, LutPanel& panel,
+                 QWidget* parent = nullptr);
+    UvCanvas& canvas() { return *m_canvas; }
+    /// Y range in 8-bit levels (shown), inclusive.
+    void setYLevels(int lo, int hi);
+
+private:
+    UvCanvas* m_canvas = nullptr;
+    QSpinBox* m_y_lo = nullptr;
+    QSpinBox* m_y_hi = nullptr;
+    QLabel* m_info = nullptr;
+};
+
+} // namespace fieldsight::ui
