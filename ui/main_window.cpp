@@ -17,6 +17,7 @@
 #include <QApplication>
 #include <QBuffer>
 #include <QClipboard>
+#include <QScrollArea>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
@@ -279,7 +280,12 @@ void MainWindow::buildDocks()
         dock(m_detections, tr("Detections"), "detections_dock", Qt::RightDockWidgetArea);
 
     m_lut_panel = new LutPanel(*m_lut_doc, *m_doc, this);
-    QDockWidget* lut = dock(m_lut_panel, tr("LUT editor"), "lut_dock", Qt::RightDockWidgetArea);
+    // Scrolled, so the editor's many controls fit a small laptop screen.
+    auto* lut_scroll = new QScrollArea(this);
+    lut_scroll->setWidget(m_lut_panel);
+    lut_scroll->setWidgetResizable(true);
+    lut_scroll->setFrameShape(QFrame::NoFrame);
+    QDockWidget* lut = dock(lut_scroll, tr("LUT editor"), "lut_dock", Qt::RightDockWidgetArea);
     m_uv = new UvPlanePanel(*m_lut_doc, *m_doc, *m_lut_panel, this);
     QDockWidget* uv = dock(m_uv, tr("UV plane"), "uv_dock", Qt::RightDockWidgetArea);
 

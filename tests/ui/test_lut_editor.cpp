@@ -371,7 +371,7 @@ private slots:
         ui::UvCanvas& canvas = uv.canvas();
         QCOMPARE(canvas.yLow(), 50);
         QCOMPARE(canvas.yHigh(), 65);
-        QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 200);
+        QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 120);
 
         const ColourLut before = w.lutDocument().table();
         w.lutPanel().setColour(Colour::Orange);
@@ -416,7 +416,7 @@ private slots:
         dock->show();
         dock->raise();
         ui::UvCanvas& canvas = w.uvPanel().canvas();
-        QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 200);
+        QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 120);
         w.uvPanel().setYLevels(0, 255);
 
         // UV -> image: right-drag over the cells of a field pixel's colour.

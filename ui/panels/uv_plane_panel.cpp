@@ -26,7 +26,7 @@ UvCanvas::UvCanvas(LutDocument& lut, StreamDocument& stream, LutPanel& panel, QW
     : QWidget(parent), m_lut(lut), m_stream(stream), m_panel(panel)
 {
     setObjectName(QStringLiteral("uv_canvas"));
-    setMinimumSize(200, 200);
+    setMinimumSize(120, 120);
     setMouseTracking(true);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     connect(&lut, &LutDocument::changed, this, &UvCanvas::refreshPlane);
@@ -305,9 +305,10 @@ UvPlanePanel::UvPlanePanel(LutDocument& lut, StreamDocument& stream, LutPanel& p
     m_info = new QLabel(this);
     m_info->setObjectName(QStringLiteral("uv.info"));
     m_info->setWordWrap(true);
-    m_info->setText(tr("Left: paint with the LUT tool's colour and brush (Erase: unclassify; "
-                       "Pan: select). Right-drag: select cells, their pixels light up in the "
-                       "image."));
+    m_info->setText(tr("Paint with the LUT tool; right-drag selects"));
+    m_canvas->setToolTip(tr("Left: paint cells with the LUT editor's colour and brush (Erase "
+                            "unclassifies; with Pan, left-drag selects). Right-drag: select "
+                            "cells; their pixels light up in the image."));
     column->addWidget(m_info);
     const auto apply = [this] { m_canvas->setYRange(m_y_lo->value() >> 1, m_y_hi->value() >> 1); };
     connect(m_y_lo, &QSpinBox::valueChanged, this, apply);
