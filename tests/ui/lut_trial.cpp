@@ -1,0 +1,169 @@
+// Not a test: the LUT editor tried as a new user would, on real frames. It builds a colour table
+// for the Dutch Nao Team's straight-walk pictures (reference_data/dnt_uva_2013_fieldpictures,
+// yellow goals) in the real main window, from an empty LUT, with scripted clicks and wand fills
+// (each one edit, as a user's mouse would make it), and leaves what is needed to score it:
+//   lut_trial OUT_DIR
+//   fieldsight eval OUT_DIR/stream --lut OUT_DIR/dnt.lut
+// OUT_DIR/stream links the pictures and holds annotations.json made from the hand-labelled post
+// feet (G labels): each foot becomes a post 7 px wide from the image top to the foot, so eval's
+// rule accepts a detected base within max(4, 7) px across and 6 px (or 10 % of the height) of
+// the foot. Every picture is "done" (a picture without G labels has no post foot to find).
+// Screenshots of the editor go to OUT_DIR/*.png.
+#include "ui/document/edit_effect_scan.h"
+#include "ui/main_window.h"
+#include "ui/panels/lut_panel.h"
+#include "ui/panels/uv_plane_panel.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QRegularExpression>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+
+using namespace fieldsight;
+using fieldsight::ui::LutTool;
+
+namespace {
+
+struct Step
+{
+    int frame; ///< 1-based, as the file names
+    LutTool tool;
+    Colour colour;
+    Tolerance tolerance;
+    QPoint at;
+};
+
+/// G labels of annotations_original.txt as SPEC §5.2 annotations.
+bool writeAnnotations(const QString& labels, const QString& out)
+{
+    QFile in(labels);
+    if (!in.open(QIODevice::ReadOnly))
+        return false;
+    nlohmann::ordered_json frames = nlohmann::ordered_json::object();
+    const QRegularExpression line(QStringLiteral("^'(\\d{6}) .*\\[(.*)\\]'"));
+    const QRegularExpression foot(QStringLiteral("G<(\\d+),(\\d+)>"));
+    for (const QString& text : QString::fromUtf8(in.readAll()).split('\n')) {
+        const auto m = line.match(text.trimmed());
+        if (!m.hasMatch())
+            continue;
+        nlohmann::ordered_json posts = nlohmann::ordered_json::array();
+        for (auto it = foot.globalMatch(m.captured(2)); it.hasNext();) {
+            const auto g = it.next();
+            const int x = g.captured(1).toInt(), y = g.captured(2).toInt();
+            posts.push_back({{"left", x - 3}, {"right", x + 3}, {"top", 0}, {"bottom", y}});
+        }
+        frames[(m.captured(1) + ".png").toStdString()] = {{"done", true}, {"goalposts", posts}};
+    }
+    QFile o(out);
+    if (!o.open(QIODevice::WriteOnly))
+        return false;
+    const std::string json =
+        nlohmann::ordered_json{{"format", "fieldsight-annotations/1"}, {"frames", frames}}.dump(1);
+    return o.write(json.data(), qint64(json.size())) == qint64(json.size());
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName("FieldsightTrial");
+    if (argc != 2) {
+        std::cerr << "usage: lut_trial OUT_DIR\n";
+        return 2;
+    }
+    const QString source = QStringLiteral(
+        FIELDSIGHT_SHARED_DIR "/reference_data/dnt_uva_2013_fieldpictures/straightwalk");
+    if (!QFileInfo(source).isDir()) {
+        std::cerr << "no reference data at " << source.toStdString() << "\n";
+        return 2;
+    }
+    const QString out = QString::fromLocal8Bit(argv[1]);
+    const QString stream = out + "/stream";
+    QDir(stream).removeRecursively();
+    QDir().mkpath(stream);
+    for (const QString& f : QDir(source).entryList({"*.png"}))
+        QFile::link(source + "/" + f, stream + "/" + f);
+    if (!writeAnnotations(source + "/annotations_original.txt", stream + "/annotations.json")) {
+        std::cerr << "cannot write the annotations\n";
+        return 1;
+    }
+
+    ui::MainWindow w;
+    w.resize(1500, 950);
+    w.show();
+    QSignalSpy opened(&w, &ui::MainWindow::streamOpened);
+    w.openStream(stream); // no default.lut: an empty table
+    if (!opened.wait(20000) || !opened.front().front().toBool())
+        return 1;
+    const auto waitFrame = [&] {
+        for (int i = 0; i < 500 && w.document().waiting(); ++i)
+            QTest::qWait(10);
+        QApplication::processEvents();
+    };
+    waitFrame();
+    for (auto* dock : {"lut_dock", "uv_dock"})
+        if (auto* d = w.findChild<QDockWidget*>(dock))
+            d->raise();
+
+    // What a user does: on a far, a middle and a near picture, a wand fill of the carpet, clicks
+    // on the lines and on the posts (at the labelled feet, a little above them).
+    const std::vector<Step> steps = {
+        {8, LutTool::Wand, Colour::Green, {14, 6, 6}, {60, 200}},
+        {8, LutTool::Click, Colour::White, {16, 5, 5}, {157, 142}},
+        {8, LutTool::Click, Colour::Yellow, {20, 8, 8}, {113, 60}},
+        {8, LutTool::Click, Colour::Yellow, {20, 8, 8}, {205, 60}},
+        {20, LutTool::Wand, Colour::Green, {14, 6, 6}, {160, 200}},
+        {20, LutTool::Click, Colour::Yellow, {20, 8, 8}, {60, 60}},
+        {20, LutTool::Click, Colour::Yellow, {20, 8, 8}, {268, 60}},
+        {20, LutTool::Click, Colour::White, {16, 5, 5}, {160, 145}},
+        {2, LutTool::Wand, Colour::Green, {14, 6, 6}, {160, 200}},
+        {2, LutTool::Click, Colour::Yellow, {20, 8, 8}, {138, 60}},
+    };
+    int edits = 0;
+    for (const Step& s : steps) {
+        w.document().setCurrentIndex(std::size_t(s.frame - 1));
+        waitFrame();
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        w.lutPanel().setTool(s.tool);
+        w.lutPanel().setColour(s.colour);
+        w.lutPanel().setTolerance(s.tolerance);
+        const int before = w.lutDocument().undoStack().count();
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, s.at);
+        waitFrame();
+        edits += w.lutDocument().undoStack().count() - before;
+    }
+    for (int i = 0; i < 2000 && w.effectScan().running(); ++i)
+        QTest::qWait(10);
+    std::cout << edits << " edits\n";
+    if (Status s = w.lutDocument().saveAs(out + "/dnt.lut"); !s) {
+        std::cerr << s.error().message << "\n";
+        return 1;
+    }
+
+    // The editor as the user sees it at the end, on a middle picture, zoomed.
+    w.document().setCurrentIndex(12);
+    waitFrame();
+    w.view().setMode(ui::ViewMode::SideBySide);
+    w.view().fitToWindow();
+    QTest::qWait(100);
+    w.grab().save(out + "/editor_side.png");
+    w.view().setMode(ui::ViewMode::Raw);
+    w.view().setZoom(2);
+    w.view().setImageOrigin({0, 0});
+    w.lutPanel().setTool(LutTool::Click);
+    w.lutPanel().setColour(Colour::Yellow);
+    QTest::mouseMove(&w.view(), QPoint(2 * 226 + 1, 2 * 70 + 1));
+    QTest::qWait(100);
+    w.grab().save(out + "/editor_preview.png");
+    std::cout << "saved " << (out + "/dnt.lut").toStdString() << "\n";
+    return 0;
+}
