@@ -207,6 +207,13 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
                 m_view->setHighlight(QStringLiteral("preview"),
                                      maskToQImage(pixels, QColor(255, 0, 255, 150)));
                 m_uv->canvas().setOutlinedCells(cells);
+                // Also in the status bar: the editor's own line may be scrolled out of sight.
+                if (const QString text = m_lut_panel->previewText(); !text.isEmpty())
+                    statusBar()->showMessage(text);
+                else if (!m_preview_shown.isEmpty() &&
+                         statusBar()->currentMessage() == m_preview_shown)
+                    statusBar()->clearMessage();
+                m_preview_shown = m_lut_panel->previewText();
             });
     connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshUvSelection);
     connect(m_lut_doc, &LutDocument::changed, this, &MainWindow::refreshPreview);

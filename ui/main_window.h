@@ -140,6 +140,7 @@ private:
     QList<QAction*> m_mode_actions;
     QAction* m_labels_action = nullptr;
     QString m_last_message;
+    QString m_preview_shown; ///< the LUT preview line in the status bar, if any
     QStringList m_recent;
     std::optional<QPoint> m_hover;
 

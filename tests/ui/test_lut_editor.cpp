@@ -373,6 +373,13 @@ private slots:
         QCOMPARE(canvas.yHigh(), 65);
         QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 120);
 
+        // Zoomed in around the stroke: cells keep their place under the cursor.
+        const QPointF anchor = canvas.cellCentre(42, 90);
+        canvas.zoomBy(3, anchor);
+        QCOMPARE(canvas.zoom(), 3.0);
+        QVERIFY((canvas.cellCentre(42, 90) - anchor).manhattanLength() < 1.0);
+        QCOMPARE(*canvas.cellAt(canvas.cellCentre(40, 90)), QPoint(40, 90));
+
         const ColourLut before = w.lutDocument().table();
         w.lutPanel().setColour(Colour::Orange);
         w.lutPanel().setTool(LutTool::Brush);

@@ -9,6 +9,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QSpinBox>
+#include <QWheelEvent>
 #include <QVBoxLayout>
 
 #include <array>
@@ -50,8 +51,33 @@ void UvCanvas::setYRange(int lo, int hi)
 
 QRectF UvCanvas::planeRect() const
 {
-    const double side = std::min(width(), height()) - 2;
-    return {(width() - side) / 2.0, (height() - side) / 2.0, side, side};
+    const double side = (std::min(width(), height()) - 2) * m_zoom;
+    return {(width() - side) / 2.0 + m_pan.x(), (height() - side) / 2.0 + m_pan.y(), side, side};
+}
+
+void UvCanvas::zoomBy(double factor, QPointF anchor)
+{
+    const QRectF before = planeRect();
+    const QPointF t((anchor.x() - before.left()) / before.width(),
+                    (anchor.y() - before.top()) / before.height());
+    m_zoom = std::clamp(m_zoom * factor, 1.0, 8.0);
+    if (m_zoom == 1.0) {
+        m_pan = {};
+    } else {
+        m_pan = {};
+        const QRectF after = planeRect();
+        m_pan = anchor -
+                QPointF(after.left() + t.x() * after.width(), after.top() + t.y() * after.height());
+    }
+    update();
+}
+
+void UvCanvas::wheelEvent(QWheelEvent* event)
+{
+    const int delta = event->angleDelta().y();
+    if (delta != 0)
+        zoomBy(delta > 0 ? 1.25 : 0.8, event->position());
+    event->accept();
 }
 
 QPointF UvCanvas::cellCentre(int cb, int cr) const
@@ -64,7 +90,7 @@ QPointF UvCanvas::cellCentre(int cb, int cr) const
 std::optional<QPoint> UvCanvas::cellAt(QPointF pos) const
 {
     const QRectF r = planeRect();
-    if (!r.contains(pos))
+    if (!r.contains(pos) || !rect().contains(pos.toPoint()))
         return std::nullopt;
     const double c = r.width() / kSide;
     const int cb = std::clamp(int((pos.x() - r.left()) / c), 0, kSide - 1);
@@ -269,8 +295,11 @@ void UvCanvas::paintEvent(QPaintEvent*)
     p.drawLine(QPointF(r.center().x(), r.top()), QPointF(r.center().x(), r.bottom()));
     p.drawLine(QPointF(r.left(), r.center().y()), QPointF(r.right(), r.center().y()));
     p.setPen(QColor(200, 200, 200));
-    p.drawText(r.adjusted(4, 2, -4, -2), Qt::AlignRight | Qt::AlignBottom, tr("Cb →"));
-    p.drawText(r.adjusted(4, 2, -4, -2), Qt::AlignLeft | Qt::AlignTop, tr("↑ Cr"));
+    const QRectF labels = r.intersected(QRectF(rect())).adjusted(4, 2, -4, -2);
+    p.drawText(labels, Qt::AlignRight | Qt::AlignBottom, tr("Cb →"));
+    p.drawText(labels, Qt::AlignLeft | Qt::AlignTop, tr("↑ Cr"));
+    if (m_zoom > 1)
+        p.drawText(labels, Qt::AlignRight | Qt::AlignTop, tr("×%1").arg(m_zoom, 0, 'f', 1));
     const bool painting = m_panel.tool() != LutTool::Navigate;
     if (painting && m_cursor && r.contains(*m_cursor)) {
         p.setPen(QPen(Qt::white, 1, Qt::DashLine));

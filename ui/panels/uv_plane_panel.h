@@ -54,8 +54,16 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void leaveEvent(QEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override; ///< zooms around the cursor
+
+public:
+    double zoom() const { return m_zoom; }
+    /// Zooms by `factor` (1 to 8 times) keeping the plane point under `anchor` where it is.
+    void zoomBy(double factor, QPointF anchor);
 
 private:
+    /// Where the whole 128 x 128 plane lies at the current zoom (extends past the widget when
+    /// zoomed in).
     QRectF planeRect() const;
     bool selecting(Qt::MouseButtons buttons) const;
     void dab(QPoint cell);
@@ -63,6 +71,8 @@ private:
     LutDocument& m_lut;
     StreamDocument& m_stream;
     LutPanel& m_panel;
+    double m_zoom = 1;
+    QPointF m_pan{0, 0}; ///< widget px the plane is moved by
     int m_y_lo = 0;
     int m_y_hi = 127;
     QImage m_plane;    ///< 128 x 128, the classes
