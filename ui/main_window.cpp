@@ -6,11 +6,12 @@
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/adapters/image_adapter.h"
+#include "ui/panels/lut_compare_dialog.h"
 #include "ui/panels/uv_plane_panel.h"
+#include "visioncore/io/lut_import.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
 #include "visioncore/io/atomic_file.h"
-#include "visioncore/io/lut_import.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -347,6 +348,12 @@ void MainWindow::buildMenus()
         if (!path.isEmpty())
             openLut(path);
     });
+    file->addAction(tr("Compare with LUT…"), this, [this, lut_filter] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Compare with LUT"), QFileInfo(m_doc->lutPath()).absolutePath(), lut_filter);
+        if (!path.isEmpty())
+            compareLut(path);
+    });
     addItem(file, tr("Save LUT"), QKeySequence::Save, this, [this] { (void)saveLut(); });
     addItem(file, tr("Save LUT as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this,
             [this] { (void)saveLutAs(); });
@@ -593,6 +600,30 @@ void MainWindow::openStream(const QString& spec, const QString& lut)
             o.error = qs(opened.error().message);
         return o;
     }));
+}
+
+LutCompareDialog* MainWindow::compareLut(const QString& path)
+{
+    auto other = importLut(path.toStdString());
+    if (!other) {
+        showMessage(QString::fromStdString(other.error().message));
+        return nullptr;
+    }
+    auto* dialog = new LutCompareDialog(*m_lut_doc, std::move(other).value(), path, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &LutCompareDialog::cellsChosen, this,
+            [this](const std::vector<std::uint32_t>& cells) {
+                m_uv->canvas().setOutlinedCells(cells);
+                const auto& out = m_doc->current();
+                m_view->setHighlight(
+                    QStringLiteral("compare"),
+                    cells.empty() || !out
+                        ? QImage()
+                        : maskToQImage(pixelsIn(out->frame.ycbcr, CellMask::of(cells)),
+                                       QColor(255, 140, 0, 170)));
+            });
+    dialog->show();
+    return dialog;
 }
 
 bool MainWindow::openLut(const QString& path)

@@ -22,6 +22,7 @@ class DetectionsPanel;
 class EditEffectScan;
 class EffectStrip;
 class UvPlanePanel;
+class LutCompareDialog;
 class InspectorPanel;
 class LayersPanel;
 class LutPanel;
@@ -45,6 +46,9 @@ public:
     LutDocument& lutDocument() { return *m_lut_doc; }
     LutPanel& lutPanel() { return *m_lut_panel; }
     EditEffectScan& effectScan() { return *m_effect; }
+    /// Opens the compare-and-merge dialog for the table at `path` (any importable format); null,
+    /// with a message in the window, when it cannot be read.
+    LutCompareDialog* compareLut(const QString& path);
     UvPlanePanel& uvPanel() { return *m_uv; }
     EffectStrip& effectStrip() { return *m_effect_strip; }
     QListWidget& bookmarkList() { return *m_bookmark_list; }

@@ -5,12 +5,14 @@
 #include "support/synthetic_frames.h"
 #include "ui/main_window.h"
 #include "ui/panels/lut_panel.h"
+#include "ui/panels/lut_compare_dialog.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <QDockWidget>
 #include <QPushButton>
+#include <QTableWidget>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -470,6 +472,79 @@ private slots:
         QVERIFY(qAlpha(w.view().highlight("preview").pixel(160, 220)) > 0);
         const ColourLut unchanged = w.lutDocument().table();
         QVERIFY(unchanged == w.lutDocument().table()); // a preview edits nothing
+    }
+
+    void comparingTwoKnownTablesListsTheRightCellsAndMergesByClass()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        const ColourLut here = w.lutDocument().table();
+        // The other table: 5 orange cells become pink, 3 unclassified cells become yellow, and
+        // 2 green cells become unclassified.
+        ColourLut other = here;
+        std::vector<std::uint32_t> orange, empty, green;
+        for (std::uint32_t i = 0; i < ColourLut::kCells; ++i) {
+            if (here.cell(i) == Colour::Orange && orange.size() < 5)
+                orange.push_back(i);
+            else if (here.cell(i) == Colour::Unclassified && empty.size() < 3)
+                empty.push_back(i);
+            else if (here.cell(i) == Colour::Green && green.size() < 2)
+                green.push_back(i);
+        }
+        QCOMPARE(orange.size() + empty.size() + green.size(), std::size_t(10));
+        for (std::uint32_t c : orange)
+            other.setCell(c, Colour::Pink);
+        for (std::uint32_t c : empty)
+            other.setCell(c, Colour::Yellow);
+        for (std::uint32_t c : green)
+            other.setCell(c, Colour::Unclassified);
+        const QString path = m_dir.filePath("other.lut");
+        QVERIFY(other.save(path.toStdString()));
+
+        ui::LutCompareDialog* dialog = w.compareLut(path);
+        QVERIFY(dialog);
+        using Pair = std::pair<Colour, Colour>;
+        const std::map<Pair, std::size_t> expected = {{{Colour::Unclassified, Colour::Yellow}, 3},
+                                                      {{Colour::Green, Colour::Unclassified}, 2},
+                                                      {{Colour::Orange, Colour::Pink}, 5}};
+        QCOMPARE(dialog->pairs(), expected);
+        auto* table = dialog->findChild<QTableWidget*>("compare_table");
+        QCOMPARE(table->rowCount(), 3);
+
+        // Choosing a row outlines exactly its cells in the UV plane.
+        QSignalSpy chosen(dialog, &ui::LutCompareDialog::cellsChosen);
+        for (int row = 0; row < 3; ++row)
+            if (table->item(row, 1)->text() == "pink")
+                table->selectRow(row);
+        QCOMPARE(chosen.count(), 1);
+        const auto cells = chosen.front().front().value<std::vector<std::uint32_t>>();
+        QCOMPARE(std::set<std::uint32_t>(cells.begin(), cells.end()),
+                 std::set<std::uint32_t>(orange.begin(), orange.end()));
+
+        // Merging pink only: the 5 cells, all taken from orange (conflicts), as one undo step.
+        dialog->setMergeClasses({Colour::Pink});
+        QVERIFY(dialog->mergePreview().contains("5 cells; 5 of them"));
+        dialog->setMergeKeepsOthers(true);
+        QVERIFY(dialog->mergePreview().contains("nothing"));
+        dialog->setMergeKeepsOthers(false);
+        QVERIFY(dialog->merge());
+        for (std::uint32_t c : orange)
+            QCOMPARE(w.lutDocument().table().cell(c), Colour::Pink);
+        QCOMPARE(differences(here, w.lutDocument().table()),
+                 std::set<std::uint32_t>(orange.begin(), orange.end()));
+        QCOMPARE(dialog->pairs().size(), std::size_t(2)); // the pink row is gone
+        w.lutDocument().undoStack().undo();
+        QVERIFY(w.lutDocument().table() == here);
+
+        // A table that cannot be read is a message in the window, no dialog.
+        QFile bad(m_dir.filePath("bad.lut"));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("short");
+        bad.close();
+        QVERIFY(!w.compareLut(bad.fileName()));
+        QVERIFY(w.lastMessage().contains("bad.lut"));
     }
 };
 
