@@ -117,6 +117,32 @@ private slots:
         QCOMPARE(lut.cell(cellOf(110, 110, 150)), Colour::White);
         QCOMPARE(cellsPerClass(lut)[std::size_t(Colour::White)] > 0, true);
     }
+
+    void aShiftIsEstimatedFromKnownPixelsAndMovesTheTable()
+    {
+        // Green cells around (100, 90, 120); the venue's field reads 12 brighter, Cb -6, Cr +8.
+        ColourLut lut;
+        for (std::uint32_t c : cellsInBox(100, 90, 120, {10, 6, 6}))
+            lut.setCell(c, Colour::Green);
+        std::vector<cv::Vec3b> field;
+        for (int i = -5; i <= 5; ++i)
+            field.emplace_back(std::uint8_t(112 + i), std::uint8_t(84 - i / 2),
+                               std::uint8_t(128 + i / 3));
+        const ColourShift shift = estimateShift(lut, Colour::Green, field);
+        QVERIFY(std::abs(shift.y - 12) <= 2 && std::abs(shift.cb + 6) <= 2 &&
+                std::abs(shift.cr - 8) <= 2);
+        QCOMPARE(estimateShift(lut, Colour::Orange, field), ColourShift{}); // no orange cells
+
+        ColourLut moved = lut;
+        applyChanges(moved, shiftChanges(lut, {12, -6, 8}));
+        QCOMPARE(moved.classify(112, 84, 128), Colour::Green);
+        QCOMPARE(moved.classify(100 - 10, 90, 120), Colour::Unclassified); // left behind
+        QCOMPARE(cellsPerClass(moved)[std::size_t(Colour::Green)],
+                 cellsPerClass(lut)[std::size_t(Colour::Green)]);
+        // Undone exactly.
+        applyChanges(moved, shiftChanges(lut, {12, -6, 8}), false);
+        QVERIFY(moved == lut);
+    }
 };
 
 QTEST_APPLESS_MAIN(TestLutEditing)

@@ -546,6 +546,50 @@ private slots:
         QVERIFY(!w.compareLut(bad.fileName()));
         QVERIFY(w.lastMessage().contains("bad.lut"));
     }
+
+    void retargetingMovesTheGreenOntoAFieldUnderNewLight()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w));
+        const ColourLut lab = w.lutDocument().table();
+        std::size_t samples = 0;
+        const ColourShift none = w.lutPanel().estimateRetarget(&samples);
+        QCOMPARE(samples, std::size_t(320 * (240 - 160)));
+        // The lab's own frame: the table fits it, the estimate is small.
+        QVERIFY(std::abs(none.y) <= 12 && std::abs(none.cb) <= 6 && std::abs(none.cr) <= 6);
+
+        // The same table moved away by a known shift is brought back close to where it was.
+        const ColourShift away{-20, 8, -8};
+        QVERIFY(w.lutPanel().retarget(away));
+        const ColourShift back = w.lutPanel().estimateRetarget();
+        QVERIFY2(std::abs(back.y - (none.y + 20)) <= 2 && std::abs(back.cb - (none.cb - 8)) <= 2 &&
+                     std::abs(back.cr - (none.cr + 8)) <= 2,
+                 qPrintable(QString("%1 %2 %3").arg(back.y).arg(back.cb).arg(back.cr)));
+        const int steps = w.lutDocument().undoStack().count();
+        QVERIFY(w.lutPanel().retarget(back));
+        QCOMPARE(w.lutDocument().undoStack().count(), steps + 1);
+        // Green is where the field is again: most of the bottom third classifies green.
+        QVERIFY(waitForLut(w, w.document().lut()));
+        const cv::Mat& classes = w.document().current()->classes;
+        int green = 0;
+        for (int y = 160; y < 240; ++y)
+            for (int x = 0; x < 320; ++x)
+                green += classes.at<std::uint8_t>(y, x) == std::uint8_t(Colour::Green);
+        int green_lab = 0;
+        const cv::Mat& px = w.document().current()->frame.ycbcr;
+        for (int y = 160; y < 240; ++y)
+            for (int x = 0; x < 320; ++x) {
+                const cv::Vec3b c = px.at<cv::Vec3b>(y, x);
+                green_lab += lab.classify(c[0], c[1], c[2]) == Colour::Green;
+            }
+        QVERIFY2(green > green_lab * 8 / 10,
+                 qPrintable(QString("%1 of %2").arg(green).arg(green_lab)));
+        w.lutDocument().undoStack().undo();
+        w.lutDocument().undoStack().undo();
+        QVERIFY(w.lutDocument().table() == lab);
+    }
 };
 
 QTEST_MAIN(TestLutEditor)

@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPixmap>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -145,6 +146,13 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     });
     form->addRow(m_preview_on);
     column->addLayout(form);
+
+    auto* retarget_button = new QPushButton(tr("Retarget to this frame's field…"), this);
+    retarget_button->setObjectName(QStringLiteral("retarget"));
+    retarget_button->setToolTip(tr("At a new venue: move the whole table by the shift between "
+                                   "its green and the field at the bottom of this frame"));
+    connect(retarget_button, &QPushButton::clicked, this, &LutPanel::askRetarget);
+    column->addWidget(retarget_button);
 
     m_preview_label = new QLabel(this);
     m_preview_label->setObjectName(QStringLiteral("lut_preview"));
@@ -378,6 +386,49 @@ void LutPanel::preview(std::optional<QPoint> pixel)
     }
     m_preview_label->setText(text);
     emit previewChanged(pixels, cells);
+}
+
+ColourShift LutPanel::estimateRetarget(std::size_t* samples) const
+{
+    std::vector<cv::Vec3b> field;
+    if (const cv::Mat* image = frame())
+        for (int y = image->rows * 2 / 3; y < image->rows; ++y)
+            for (int x = 0; x < image->cols; ++x)
+                field.push_back(image->at<cv::Vec3b>(y, x));
+    if (samples)
+        *samples = field.size();
+    return estimateShift(m_lut.table(), Colour::Green, field);
+}
+
+bool LutPanel::retarget(const ColourShift& shift)
+{
+    return m_lut.edit(tr("Retarget by Y %1, Cb %2, Cr %3").arg(shift.y).arg(shift.cb).arg(shift.cr),
+                      shiftChanges(m_lut.table(), shift));
+}
+
+void LutPanel::askRetarget()
+{
+    std::size_t samples = 0;
+    const ColourShift shift = estimateRetarget(&samples);
+    const std::size_t cells = shiftChanges(m_lut.table(), shift).size();
+    if (cells == 0) {
+        QMessageBox::information(this, tr("Retarget LUT"),
+                                 tr("The table's green already matches this frame's field (or "
+                                    "the table has no green): nothing to move."));
+        return;
+    }
+    const auto answer = QMessageBox::question(
+        this, tr("Retarget LUT"),
+        tr("This frame's field (its bottom third, %1 pixels) against the table's green says the "
+           "light moved by Y %2, Cb %3, Cr %4 levels.\n\nMoving the whole table by that "
+           "changes %5 cells (one undo step). Apply?")
+            .arg(qulonglong(samples))
+            .arg(shift.y)
+            .arg(shift.cb)
+            .arg(shift.cr)
+            .arg(qulonglong(cells)));
+    if (answer == QMessageBox::Yes)
+        retarget(shift);
 }
 
 QString LutPanel::previewText() const

@@ -62,6 +62,13 @@ public:
     QString previewText() const;
     /// The cells the preview would change.
     const std::vector<CellChange>& previewChanges() const { return m_preview; }
+    /// Retargeting to a venue: the shift that moves the table's green onto the current frame's
+    /// field, taken as the bottom third of the frame (`samples`: how many pixels that was).
+    ColourShift estimateRetarget(std::size_t* samples = nullptr) const;
+    /// Moves the whole table by `shift` as one undoable edit; false when nothing changes.
+    bool retarget(const ColourShift& shift);
+    /// Asks (showing the estimate and the cells it moves) and retargets.
+    void askRetarget();
     /// Cells the last edit changed (a whole stroke), for the UV view.
     const std::vector<std::uint32_t>& lastEditCells() const { return m_last_edit_cells; }
 

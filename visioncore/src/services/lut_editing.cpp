@@ -1,6 +1,8 @@
 #include "visioncore/services/lut_editing.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 
 namespace fieldsight {
@@ -173,6 +175,60 @@ std::vector<std::size_t> cellsPerClass(const ColourLut& lut)
         if (cells[i] < kColourCount)
             ++counts[cells[i]];
     return counts;
+}
+
+} // namespace fieldsight
+
+namespace fieldsight {
+
+namespace {
+
+int median(std::vector<int>& v)
+{
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+} // namespace
+
+ColourShift estimateShift(const ColourLut& lut, Colour colour,
+                          const std::vector<cv::Vec3b>& samples)
+{
+    std::array<std::vector<int>, 3> cells, pixels;
+    for (std::uint32_t i = 0; i < ColourLut::kCells; ++i)
+        if (lut.cell(i) == colour) {
+            cells[0].push_back(int((i >> 14) & 127) * 2 + 1); // the cell's centre level
+            cells[1].push_back(int((i >> 7) & 127) * 2 + 1);
+            cells[2].push_back(int(i & 127) * 2 + 1);
+        }
+    if (cells[0].empty() || samples.empty())
+        return {};
+    for (const cv::Vec3b& p : samples)
+        for (int c = 0; c < 3; ++c)
+            pixels[std::size_t(c)].push_back(p[c]);
+    return {median(pixels[0]) - median(cells[0]), median(pixels[1]) - median(cells[1]),
+            median(pixels[2]) - median(cells[2])};
+}
+
+std::vector<CellChange> shiftChanges(const ColourLut& lut, const ColourShift& shift)
+{
+    // Whole cells: an odd shift rounds to the nearer cell.
+    const auto cellsOf = [](int levels) { return int(std::lround(levels / 2.0)); };
+    const int dy = cellsOf(shift.y), db = cellsOf(shift.cb), dr = cellsOf(shift.cr);
+    std::vector<CellChange> changes;
+    for (int y = 0; y < 128; ++y)
+        for (int b = 0; b < 128; ++b)
+            for (int r = 0; r < 128; ++r) {
+                const int sy = y - dy, sb = b - db, sr = r - dr;
+                const bool inside =
+                    sy >= 0 && sy < 128 && sb >= 0 && sb < 128 && sr >= 0 && sr < 128;
+                const Colour from = inside ? lut.cell(std::size_t((sy << 14) | (sb << 7) | sr))
+                                           : Colour::Unclassified;
+                const auto cell = std::uint32_t((y << 14) | (b << 7) | r);
+                if (lut.cell(cell) != from)
+                    changes.push_back({cell, lut.cell(cell), from});
+            }
+    return changes;
 }
 
 } // namespace fieldsight

@@ -63,6 +63,25 @@ std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::u
 /// Applies `changes` forwards (after) or backwards (before).
 void applyChanges(ColourLut& lut, const std::vector<CellChange>& changes, bool forwards = true);
 
+/// A global shift of every channel, in 8-bit levels (a venue's lighting against the lab's).
+struct ColourShift
+{
+    int y = 0;
+    int cb = 0;
+    int cr = 0;
+    friend bool operator==(const ColourShift&, const ColourShift&) = default;
+};
+
+/// The shift that moves the table's `colour` onto `samples` (Y, Cb, Cr pixels known to be that
+/// colour, such as a frame's field): the samples' per-channel median less the median of the
+/// class's cells (at their centres). Zero when either is empty.
+ColourShift estimateShift(const ColourLut& lut, Colour colour,
+                          const std::vector<cv::Vec3b>& samples);
+
+/// The changes that move the whole table by `shift`: each cell takes the class of the cell
+/// `shift` levels back (unclassified where that falls outside the range).
+std::vector<CellChange> shiftChanges(const ColourLut& lut, const ColourShift& shift);
+
 /// How many cells of each class (index = colour id).
 std::vector<std::size_t> cellsPerClass(const ColourLut& lut);
 
