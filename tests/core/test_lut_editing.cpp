@@ -6,6 +6,7 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 using namespace fieldsight;
@@ -142,6 +143,30 @@ private slots:
         // Undone exactly.
         applyChanges(moved, shiftChanges(lut, {12, -6, 8}), false);
         QVERIFY(moved == lut);
+    }
+
+    void softClassesAppearWhereTwoClassesMeet()
+    {
+        ColourLut lut;
+        lut.setCell(1, Colour::Pink);
+        lut.setCell(2, Colour::Yellow);
+        lut.setCell(3, Colour::Green);
+        lut.setCell(4, Colour::PinkOrange);
+        const auto changes = changesTo(lut, {0, 1, 2, 3, 4}, Colour::Orange, false, true);
+        std::map<std::uint32_t, Colour> after;
+        for (const CellChange& c : changes)
+            after[c.cell] = c.after;
+        const std::map<std::uint32_t, Colour> expected = {{0, Colour::Orange},
+                                                          {1, Colour::PinkOrange},
+                                                          {2, Colour::YellowOrange},
+                                                          {3, Colour::Orange}};
+        QCOMPARE(after, expected); // cell 4 is already soft with orange: unchanged
+        QCOMPARE(softMeet(Colour::Orange, Colour::Pink), Colour::PinkOrange);
+        QCOMPARE(softMeet(Colour::YellowOrange, Colour::Yellow), Colour::YellowOrange);
+        QCOMPARE(softMeet(Colour::YellowOrange, Colour::Pink), Colour::Pink);
+        // Without the option, the painted class wins.
+        for (const CellChange& c : changesTo(lut, {1, 2}, Colour::Orange))
+            QCOMPARE(c.after, Colour::Orange);
     }
 };
 

@@ -135,6 +135,11 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     m_keep_others->setObjectName(QStringLiteral("keep_others"));
     m_keep_others->setToolTip(tr("Leave cells that already belong to another class as they are"));
     form->addRow(m_keep_others);
+    m_soft = new QCheckBox(tr("Soft classes where two meet"), this);
+    m_soft->setObjectName(QStringLiteral("soft_classes"));
+    m_soft->setToolTip(tr("Cells where pink or yellow meets orange become pink_orange or "
+                          "yellow_orange instead of changing sides"));
+    form->addRow(m_soft);
     m_preview_on = new QCheckBox(tr("Preview under the cursor"), this);
     m_preview_on->setObjectName(QStringLiteral("preview_on"));
     m_preview_on->setChecked(true);
@@ -223,6 +228,16 @@ bool LutPanel::keepOthers() const
     return m_keep_others->isChecked();
 }
 
+bool LutPanel::softClasses() const
+{
+    return m_soft->isChecked();
+}
+
+void LutPanel::setSoftClasses(bool on)
+{
+    m_soft->setChecked(on);
+}
+
 QList<QAction*> LutPanel::colourActions() const
 {
     return m_colours->actions();
@@ -250,25 +265,26 @@ std::optional<PlannedEdit> LutPanel::planAt(QPoint pixel) const
         return std::nullopt;
     case LutTool::Click: {
         const cv::Vec3b c = image->at<cv::Vec3b>(at);
-        return PlannedEdit{
-            tr("Click (%1, %2, %3) ± (%4, %5, %6) → %7")
-                .arg(c[0])
-                .arg(c[1])
-                .arg(c[2])
-                .arg(t.y)
-                .arg(t.cb)
-                .arg(t.cr)
-                .arg(className(m_colour)),
-            changesTo(m_lut.table(), cellsInBox(c[0], c[1], c[2], t), m_colour, keep)};
+        return PlannedEdit{tr("Click (%1, %2, %3) ± (%4, %5, %6) → %7")
+                               .arg(c[0])
+                               .arg(c[1])
+                               .arg(c[2])
+                               .arg(t.y)
+                               .arg(t.cb)
+                               .arg(t.cr)
+                               .arg(className(m_colour)),
+                           changesTo(m_lut.table(), cellsInBox(c[0], c[1], c[2], t), m_colour, keep,
+                                     softClasses())};
     }
     case LutTool::Wand: {
         const std::vector<cv::Point> pixels = wandPixels(*image, at, t);
-        return PlannedEdit{tr("Wand at (%1, %2): %3 px → %4")
-                               .arg(pixel.x())
-                               .arg(pixel.y())
-                               .arg(qsizetype(pixels.size()))
-                               .arg(className(m_colour)),
-                           changesTo(m_lut.table(), cellsOfPixels(*image, pixels), m_colour, keep)};
+        return PlannedEdit{
+            tr("Wand at (%1, %2): %3 px → %4")
+                .arg(pixel.x())
+                .arg(pixel.y())
+                .arg(qsizetype(pixels.size()))
+                .arg(className(m_colour)),
+            changesTo(m_lut.table(), cellsOfPixels(*image, pixels), m_colour, keep, softClasses())};
     }
     case LutTool::Brush:
     case LutTool::Erase:
@@ -285,7 +301,8 @@ PlannedEdit LutPanel::brushEdit(const std::vector<cv::Point>& pixels) const
     const bool keep = !erase && m_keep_others->isChecked();
     return PlannedEdit{erase ? tr("Erase stroke")
                              : tr("Brush stroke → %1").arg(className(m_colour)),
-                       changesTo(m_lut.table(), cellsOfPixels(*frame(), pixels, t), target, keep)};
+                       changesTo(m_lut.table(), cellsOfPixels(*frame(), pixels, t), target, keep,
+                                 !erase && softClasses())};
 }
 
 void LutPanel::press(QPoint pixel)

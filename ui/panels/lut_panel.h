@@ -44,6 +44,9 @@ public:
     void setBrushRadius(int radius);
     /// Edits leave cells of other classes alone.
     bool keepOthers() const;
+    /// Where pink or yellow meets orange, edits make the soft class (pink_orange, yellow_orange).
+    bool softClasses() const;
+    void setSoftClasses(bool on);
     /// The palette's actions (one per class, keys 0-9), for the window's menu.
     QList<QAction*> colourActions() const;
 
@@ -101,6 +104,7 @@ private:
     QSlider* m_tol_all = nullptr;
     QSpinBox* m_radius = nullptr;
     QCheckBox* m_keep_others = nullptr;
+    QCheckBox* m_soft = nullptr;
     QLabel* m_stats = nullptr;
     QLabel* m_preview_label = nullptr;
     QCheckBox* m_preview_on = nullptr;

@@ -210,7 +210,9 @@ void UvCanvas::dab(QPoint cell)
                                                   qsizetype(colourName(colour).size())))
                            .arg(m_y_lo)
                            .arg(m_y_hi),
-               changesTo(m_lut.table(), cells, colour, !erase && m_panel.keepOthers()), m_stroke);
+               changesTo(m_lut.table(), cells, colour, !erase && m_panel.keepOthers(),
+                         !erase && m_panel.softClasses()),
+               m_stroke);
 }
 
 void UvCanvas::mousePressEvent(QMouseEvent* event)

@@ -141,17 +141,34 @@ std::vector<std::uint32_t> cellsOfPixels(const cv::Mat& ycbcr, const std::vector
     return cells;
 }
 
+Colour softMeet(Colour existing, Colour wanted)
+{
+    const auto meet = [&](Colour a, Colour b) {
+        return (existing == a && wanted == b) || (existing == b && wanted == a);
+    };
+    if (meet(Colour::Pink, Colour::Orange))
+        return Colour::PinkOrange;
+    if (meet(Colour::Orange, Colour::Yellow))
+        return Colour::YellowOrange;
+    if (existing == Colour::PinkOrange && (wanted == Colour::Pink || wanted == Colour::Orange))
+        return existing;
+    if (existing == Colour::YellowOrange && (wanted == Colour::Orange || wanted == Colour::Yellow))
+        return existing;
+    return wanted;
+}
+
 std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::uint32_t>& cells,
-                                  Colour colour, bool keep_others)
+                                  Colour colour, bool keep_others, bool soft)
 {
     std::vector<CellChange> changes;
     for (const std::uint32_t cell : cells) {
         if (cell >= ColourLut::kCells)
             continue;
         const Colour before = lut.cell(cell);
-        if (before == colour || (keep_others && before != Colour::Unclassified))
+        const Colour after = soft ? softMeet(before, colour) : colour;
+        if (before == after || (keep_others && before != Colour::Unclassified))
             continue;
-        changes.push_back({cell, before, colour});
+        changes.push_back({cell, before, after});
     }
     return changes;
 }

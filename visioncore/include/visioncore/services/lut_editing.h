@@ -55,10 +55,16 @@ std::vector<cv::Point> wandPixels(const cv::Mat& ycbcr, cv::Point seed, const To
 std::vector<std::uint32_t> cellsOfPixels(const cv::Mat& ycbcr, const std::vector<cv::Point>& pixels,
                                          const Tolerance& tolerance = {});
 
+/// The class a cell of class `existing` takes when `wanted` is painted on it with soft classes:
+/// where pink and orange meet, pink_orange; where orange and yellow meet, yellow_orange (a soft
+/// cell painted with either of its two classes stays soft); otherwise `wanted`.
+Colour softMeet(Colour existing, Colour wanted);
+
 /// The changes that setting `cells` to `colour` makes in `lut` (cells already `colour` are left
-/// out). With `keep_others`, only unclassified cells change.
+/// out). With `keep_others`, only unclassified cells change; with `soft`, cells where two
+/// classes meet become their soft class (softMeet).
 std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::uint32_t>& cells,
-                                  Colour colour, bool keep_others = false);
+                                  Colour colour, bool keep_others = false, bool soft = false);
 
 /// Applies `changes` forwards (after) or backwards (before).
 void applyChanges(ColourLut& lut, const std::vector<CellChange>& changes, bool forwards = true);
