@@ -218,6 +218,10 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
             });
     connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshUvSelection);
     connect(m_lut_doc, &LutDocument::changed, this, &MainWindow::refreshPreview);
+    connect(m_lut_panel, &LutPanel::cellsToOutline, this,
+            [this](const std::vector<std::uint32_t>& cells) {
+                m_uv->canvas().setOutlinedCells(cells);
+            });
     connect(m_lut_panel, &LutPanel::toolChanged, this, &MainWindow::refreshPreview);
     connect(m_pipeline, &PipelinePanel::problem, this,
             [this](const QString& m) { showMessage(m); });
@@ -384,12 +388,11 @@ void MainWindow::buildMenus()
     QMenu* classes = edit->addMenu(tr("Colour class"));
     classes->addActions(m_lut_panel->colourActions());
     QMenu* tools = edit->addMenu(tr("LUT tool"));
-    const std::pair<QString, LutTool> tool_list[] = {{tr("Pan"), LutTool::Navigate},
-                                                     {tr("Click with tolerance"), LutTool::Click},
-                                                     {tr("Brush"), LutTool::Brush},
-                                                     {tr("Erase"), LutTool::Erase},
-                                                     {tr("Magic wand"), LutTool::Wand}};
-    const Qt::Key tool_keys[] = {Qt::Key_P, Qt::Key_C, Qt::Key_B, Qt::Key_E, Qt::Key_W};
+    const std::pair<QString, LutTool> tool_list[] = {
+        {tr("Pan"), LutTool::Navigate},    {tr("Click with tolerance"), LutTool::Click},
+        {tr("Brush"), LutTool::Brush},     {tr("Erase"), LutTool::Erase},
+        {tr("Magic wand"), LutTool::Wand}, {tr("Sample region"), LutTool::Sample}};
+    const Qt::Key tool_keys[] = {Qt::Key_P, Qt::Key_C, Qt::Key_B, Qt::Key_E, Qt::Key_W, Qt::Key_S};
     for (std::size_t i = 0; i < std::size(tool_list); ++i) {
         const LutTool t = tool_list[i].second;
         addItem(tools, tool_list[i].first, QKeySequence(tool_keys[i]), this,

@@ -10,6 +10,8 @@
 #include "ui/stream_navigator/effect_strip.h"
 #include "visioncore/services/stream_runner.h"
 
+#include <QCheckBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QPushButton>
 #include <QTableWidget>
@@ -589,6 +591,74 @@ private slots:
         w.lutDocument().undoStack().undo();
         w.lutDocument().undoStack().undo();
         QVERIFY(w.lutDocument().table() == lab);
+    }
+
+    void sampleRegionsAreKeptBesideTheStreamAndBuildTheTable()
+    {
+        // A copy of a bundled stream: the samples file is written beside it.
+        const QString copy = m_dir.filePath("lab2_copy");
+        QDir().mkpath(copy);
+        const QString source = QString::fromStdString(test::sampleStreamsDir() + "/lab2");
+        for (const QString& f : QDir(source).entryList(QDir::Files))
+            QVERIFY(QFile::copy(source + "/" + f, copy + "/" + f));
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QSignalSpy opened(&w, &MainWindow::streamOpened);
+        w.openStream(copy);
+        QVERIFY(opened.wait(10000));
+        QVERIFY(waitForLut(w, w.document().lut()));
+        showPixelsOneToOne(w);
+        ui::LutSampler& sampler = w.lutPanel().sampler();
+        QCOMPARE(sampler.path(), copy + "/lut_samples.json");
+
+        // A drag with the Sample tool marks a rectangle of the class.
+        QTest::keyClick(&w, Qt::Key_S);
+        QCOMPARE(w.lutPanel().tool(), LutTool::Sample);
+        w.lutPanel().setColour(Colour::Green);
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(QPoint(100, 200)));
+        QTest::mouseMove(&w.view(), at(QPoint(120, 215)));
+        QTest::mouseMove(&w.view(), at(QPoint(140, 230)));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(QPoint(140, 230)));
+        QCOMPARE(sampler.samples().samples.size(), std::size_t(1));
+        const LutSample& sample = sampler.samples().samples.front();
+        QCOMPARE(sample.colour, Colour::Green);
+        QCOMPARE(sample.frame, w.document().current()->frame.name);
+        const std::vector<cv::Point> corners = {{100, 200}, {140, 200}, {140, 230}, {100, 230}};
+        QCOMPARE(sample.polygon, corners);
+        auto saved = loadLutSamples(sampler.path().toStdString());
+        QVERIFY(saved);
+        QCOMPARE(saved.value().samples.size(), std::size_t(1));
+        sampler.undoStack().undo();
+        QCOMPARE(loadLutSamples(sampler.path().toStdString()).value().samples.size(),
+                 std::size_t(0));
+        sampler.undoStack().redo();
+        QCOMPARE(loadLutSamples(sampler.path().toStdString()).value().samples.size(),
+                 std::size_t(1));
+
+        // Built with the annotations, in the background, as one undoable edit.
+        auto expected = ui::LutSampler::buildTable(copy.toStdString(), sampler.samples(), true,
+                                                   nullptr, nullptr, nullptr);
+        QVERIFY(expected);
+        const ColourLut before = w.lutDocument().table();
+        const int steps = w.lutDocument().undoStack().count();
+        w.findChild<QCheckBox*>("samples.annotations")->setChecked(true);
+        QSignalSpy built(&sampler, &ui::LutSampler::built);
+        w.lutPanel().buildFromSamples();
+        QVERIFY(built.wait(20000));
+        QVERIFY2(built.front().front().toBool(), qPrintable(built.front().back().toString()));
+        QVERIFY(w.lutDocument().table() == expected.value().table);
+        QCOMPARE(w.lutDocument().undoStack().count(), steps + 1);
+        QCOMPARE(sampler.ambiguous().size(), expected.value().ambiguous.size());
+        w.lutDocument().undoStack().undo();
+        QVERIFY(w.lutDocument().table() == before);
+
+        // A window opened later finds the samples again.
+        MainWindow again;
+        QSignalSpy reopened(&again, &MainWindow::streamOpened);
+        again.openStream(copy);
+        QVERIFY(reopened.wait(10000));
+        QCOMPARE(again.lutPanel().sampler().samples().samples.size(), std::size_t(1));
     }
 };
 

@@ -13,7 +13,11 @@
 #include <QPainter>
 #include <QPixmap>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QPushButton>
+#include <QTimer>
+#include <QFileInfo>
+#include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
@@ -22,6 +26,9 @@
 #include <QVBoxLayout>
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <set>
 
 #include <array>
 #include <cmath>
@@ -82,11 +89,10 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     // The tools.
     auto* tools = new QGridLayout;
     m_tools = new QButtonGroup(this);
-    const std::pair<LutTool, QString> kinds[] = {{LutTool::Navigate, tr("Pan")},
-                                                 {LutTool::Click, tr("Click")},
-                                                 {LutTool::Brush, tr("Brush")},
-                                                 {LutTool::Erase, tr("Erase")},
-                                                 {LutTool::Wand, tr("Wand")}};
+    const std::pair<LutTool, QString> kinds[] = {
+        {LutTool::Navigate, tr("Pan")}, {LutTool::Click, tr("Click")},
+        {LutTool::Brush, tr("Brush")},  {LutTool::Erase, tr("Erase")},
+        {LutTool::Wand, tr("Wand")},    {LutTool::Sample, tr("Sample")}};
     int at = 0;
     for (const auto& [kind, name] : kinds) {
         auto* button = new QPushButton(name, this);
@@ -105,6 +111,9 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
         ->setToolTip(tr("Paint over the image: every colour under the brush becomes unclassified"));
     m_tools->button(int(LutTool::Wand))
         ->setToolTip(tr("Click a pixel: the connected pixels of similar colour become the class"));
+    m_tools->button(int(LutTool::Sample))
+        ->setToolTip(tr("Drag a rectangle: a sample region of the class, kept beside the stream "
+                        "to build the LUT from (and again after the light changes)"));
     connect(m_tools, &QButtonGroup::idClicked, this, [this](int id) { setTool(LutTool(id)); });
     column->addLayout(tools);
 
@@ -151,6 +160,66 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     });
     form->addRow(m_preview_on);
     column->addLayout(form);
+
+    // Samples: regions to build the table from, kept beside the stream.
+    m_sampler = new LutSampler(m_lut, this);
+    connect(m_sampler, &LutSampler::problem, this, &LutPanel::problem);
+    connect(&m_stream, &StreamDocument::streamChanged, this, [this] {
+        if (Status s = m_sampler->setStream(m_stream.streamSpec()); !s)
+            emit problem(QString::fromStdString(s.error().message));
+    });
+    m_samples_info = new QLabel(this);
+    m_samples_info->setObjectName(QStringLiteral("samples_info"));
+    m_samples_info->setWordWrap(true);
+    column->addWidget(m_samples_info);
+    auto* samples_row = new QHBoxLayout;
+    auto* build = new QPushButton(tr("Build from samples"), this);
+    build->setObjectName(QStringLiteral("samples.build"));
+    connect(build, &QPushButton::clicked, this, &LutPanel::buildFromSamples);
+    samples_row->addWidget(build);
+    auto* undo_sample = new QPushButton(tr("Undo sample"), this);
+    undo_sample->setObjectName(QStringLiteral("samples.undo"));
+    connect(undo_sample, &QPushButton::clicked, &m_sampler->undoStack(), &QUndoStack::undo);
+    connect(&m_sampler->undoStack(), &QUndoStack::canUndoChanged, undo_sample,
+            &QWidget::setEnabled);
+    undo_sample->setEnabled(false);
+    samples_row->addWidget(undo_sample);
+    auto* ambiguous = new QPushButton(tr("Ambiguous cells"), this);
+    ambiguous->setObjectName(QStringLiteral("samples.ambiguous"));
+    ambiguous->setToolTip(tr("Outline in the UV plane the cells the last build found claimed by "
+                             "two classes' samples"));
+    connect(ambiguous, &QPushButton::clicked, this, [this] {
+        std::vector<std::uint32_t> cells;
+        for (const AmbiguousCell& c : m_sampler->ambiguous())
+            cells.push_back(c.cell);
+        emit cellsToOutline(cells);
+    });
+    samples_row->addWidget(ambiguous);
+    column->addLayout(samples_row);
+    m_samples_annotations = new QCheckBox(tr("and the stream's annotations"), this);
+    m_samples_annotations->setObjectName(QStringLiteral("samples.annotations"));
+    m_samples_annotations->setToolTip(tr("Balls orange, posts the goal colour, the field green, "
+                                         "lines white, above the field and robots unclassified"));
+    column->addWidget(m_samples_annotations);
+    const auto describe = [this] {
+        std::set<std::string> frames;
+        for (const LutSample& s : m_sampler->samples().samples)
+            frames.insert(s.frame);
+        m_samples_info->setText(
+            tr("Samples: %1 on %2 frames%3")
+                .arg(qulonglong(m_sampler->samples().samples.size()))
+                .arg(qulonglong(frames.size()))
+                .arg(m_sampler->path().isEmpty()
+                         ? QString()
+                         : tr(" (%1)").arg(QFileInfo(m_sampler->path()).fileName())));
+    };
+    connect(m_sampler, &LutSampler::samplesChanged, this, describe);
+    describe();
+    connect(m_sampler, &LutSampler::built, this, [this](bool ok, const QString& summary) {
+        m_samples_info->setText(summary);
+        if (!ok)
+            emit problem(summary);
+    });
 
     auto* retarget_button = new QPushButton(tr("Retarget to this frame's field…"), this);
     retarget_button->setObjectName(QStringLiteral("retarget"));
@@ -262,6 +331,7 @@ std::optional<PlannedEdit> LutPanel::planAt(QPoint pixel) const
     const bool keep = m_keep_others->isChecked();
     switch (m_tool) {
     case LutTool::Navigate:
+    case LutTool::Sample:
         return std::nullopt;
     case LutTool::Click: {
         const cv::Vec3b c = image->at<cv::Vec3b>(at);
@@ -305,8 +375,34 @@ PlannedEdit LutPanel::brushEdit(const std::vector<cv::Point>& pixels) const
                                  !erase && softClasses())};
 }
 
+void LutPanel::buildFromSamples()
+{
+    if (m_sampler->building())
+        return;
+    m_sampler->build(m_samples_annotations->isChecked());
+    auto* progress =
+        new QProgressDialog(tr("Building the LUT from samples…"), tr("Cancel"), 0, 0, this);
+    progress->setObjectName(QStringLiteral("samples.progress"));
+    progress->setAttribute(Qt::WA_DeleteOnClose);
+    progress->setMinimumDuration(300);
+    connect(progress, &QProgressDialog::canceled, m_sampler, &LutSampler::cancel);
+    auto* poll = new QTimer(progress);
+    connect(poll, &QTimer::timeout, progress, [this, progress] {
+        const auto [done, total] = m_sampler->progress();
+        progress->setMaximum(int(total));
+        progress->setValue(int(done));
+        if (!m_sampler->building())
+            progress->close();
+    });
+    poll->start(100);
+}
+
 void LutPanel::press(QPoint pixel)
 {
+    if (m_tool == LutTool::Sample) {
+        m_sample_from = m_sample_to = pixel;
+        return;
+    }
     if (m_tool == LutTool::Brush || m_tool == LutTool::Erase) {
         m_stroke = m_lut.newStroke();
         m_last.reset();
@@ -325,12 +421,33 @@ void LutPanel::press(QPoint pixel)
 
 void LutPanel::drag(QPoint pixel)
 {
+    if (m_tool == LutTool::Sample && m_sample_from) {
+        m_sample_to = pixel;
+        if (const cv::Mat* image = frame()) { // the rectangle so far, in the image
+            cv::Mat mask(image->rows, image->cols, CV_8U, cv::Scalar(0));
+            const QRect r = QRect(*m_sample_from, *m_sample_to).normalized();
+            cv::rectangle(mask, cv::Rect(r.left(), r.top(), r.width(), r.height()), cv::Scalar(255),
+                          cv::FILLED);
+            emit previewChanged(mask, {});
+        }
+        return;
+    }
     if (m_stroke && (m_tool == LutTool::Brush || m_tool == LutTool::Erase))
         paintAt(pixel);
 }
 
 void LutPanel::release()
 {
+    if (m_tool == LutTool::Sample && m_sample_from && m_sample_to) {
+        const QRect r = QRect(*m_sample_from, *m_sample_to).normalized();
+        const auto& out = m_stream.current();
+        if (out && r.width() >= 2 && r.height() >= 2)
+            m_sampler->addRect(QString::fromStdString(out->frame.name), m_colour, r);
+        m_sample_from.reset();
+        m_sample_to.reset();
+        emit previewChanged({}, {});
+        return;
+    }
     m_stroke = 0;
     m_last.reset();
 }

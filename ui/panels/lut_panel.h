@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ui/document/lut_document.h"
+#include "ui/document/lut_sampler.h"
 #include "ui/document/stream_document.h"
 
 #include <QWidget>
@@ -19,7 +20,7 @@ class QSpinBox;
 
 namespace fieldsight::ui {
 
-enum class LutTool { Navigate, Click, Brush, Erase, Wand };
+enum class LutTool { Navigate, Click, Brush, Erase, Wand, Sample };
 
 /// What a tool would do: the changes and the undo step's name.
 struct PlannedEdit
@@ -72,6 +73,9 @@ public:
     bool retarget(const ColourShift& shift);
     /// Asks (showing the estimate and the cells it moves) and retargets.
     void askRetarget();
+    LutSampler& sampler() { return *m_sampler; }
+    /// Builds from the samples in the background, with a progress dialog.
+    void buildFromSamples();
     /// Cells the last edit changed (a whole stroke), for the UV view.
     const std::vector<std::uint32_t>& lastEditCells() const { return m_last_edit_cells; }
 
@@ -82,6 +86,8 @@ signals:
     /// The preview changed: a CV_8U mask of the frame's pixels whose class would change (empty
     /// when none), and the cells.
     void previewChanged(const cv::Mat& pixels, const std::vector<std::uint32_t>& cells);
+    /// Cells to outline in the UV plane (the last build's ambiguous cells).
+    void cellsToOutline(const std::vector<std::uint32_t>& cells);
 
 private:
     /// The changes of brushing (or erasing) `pixels` with the current settings.
@@ -110,6 +116,11 @@ private:
     QCheckBox* m_preview_on = nullptr;
     std::vector<CellChange> m_preview;
     std::vector<std::uint32_t> m_last_edit_cells;
+    LutSampler* m_sampler = nullptr;
+    QLabel* m_samples_info = nullptr;
+    QCheckBox* m_samples_annotations = nullptr;
+    std::optional<QPoint> m_sample_from;
+    std::optional<QPoint> m_sample_to;
     int m_stroke = 0;
     std::optional<QPoint> m_last;
 };

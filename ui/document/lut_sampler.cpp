@@ -1,0 +1,172 @@
+#include "ui/document/lut_sampler.h"
+
+#include "visioncore/io/annotations.h"
+#include "visioncore/services/evaluation.h"
+#include "visioncore/services/lut_compare.h"
+
+#include <QFileInfo>
+#include <QUndoCommand>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace fieldsight::ui {
+
+/// A change of the sample list: the list before and after (samples are few and small).
+class SamplesCommand : public QUndoCommand
+{
+public:
+    SamplesCommand(LutSampler& sampler, const QString& text, std::vector<LutSample> before,
+                   std::vector<LutSample> after)
+        : QUndoCommand(text), m_sampler(sampler), m_before(std::move(before)),
+          m_after(std::move(after))
+    {
+    }
+    void redo() override { m_sampler.store(m_after); }
+    void undo() override { m_sampler.store(m_before); }
+
+private:
+    LutSampler& m_sampler;
+    std::vector<LutSample> m_before;
+    std::vector<LutSample> m_after;
+};
+
+LutSampler::LutSampler(LutDocument& lut, QObject* parent) : QObject(parent), m_lut(lut)
+{
+    connect(&m_watcher, &QFutureWatcher<Result<Built>>::finished, this, [this] {
+        auto result = m_watcher.result();
+        if (!result) {
+            emit built(false, QString::fromStdString(result.error().message));
+            return;
+        }
+        Built& b = result.value();
+        if (b.cancelled) {
+            emit built(false, tr("Build cancelled; the LUT is unchanged"));
+            return;
+        }
+        m_ambiguous = std::move(b.ambiguous);
+        const LutDiff diff = diffLuts(m_lut.table(), b.table);
+        m_lut.edit(tr("Build from %1 samples").arg(qulonglong(b.samples)), diff.cells);
+        emit built(true, tr("Built from %1 samples on %2 frames (%3 pixels): %4 cells changed, "
+                            "%5 claimed by two classes")
+                             .arg(qulonglong(b.samples))
+                             .arg(qulonglong(b.frames))
+                             .arg(qulonglong(b.pixels))
+                             .arg(qulonglong(diff.cells.size()))
+                             .arg(qulonglong(m_ambiguous.size())));
+    });
+}
+
+LutSampler::~LutSampler()
+{
+    m_cancel = true;
+    m_watcher.waitForFinished();
+    QObject::disconnect(&m_undo, nullptr, this, nullptr);
+}
+
+Status LutSampler::setStream(const QString& spec)
+{
+    m_stream = spec;
+    m_undo.clear();
+    m_samples = {};
+    m_ambiguous.clear();
+    m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
+                 ? QString()
+                 : QString::fromStdString(defaultLutSamplesPath(spec.toStdString()));
+    Status status;
+    if (!m_path.isEmpty() && QFileInfo::exists(m_path)) {
+        auto loaded = loadLutSamples(m_path.toStdString());
+        if (loaded)
+            m_samples = std::move(loaded).value();
+        else
+            status = loaded.error();
+    }
+    emit samplesChanged();
+    return status;
+}
+
+void LutSampler::store(std::vector<LutSample> samples)
+{
+    m_samples.samples = std::move(samples);
+    if (!m_path.isEmpty())
+        if (Status s = saveLutSamples(m_path.toStdString(), m_samples); !s)
+            emit problem(QString::fromStdString(s.error().message) +
+                         tr(" (the samples stay in memory)"));
+    emit samplesChanged();
+}
+
+void LutSampler::addRect(const QString& frame, Colour colour, const QRect& rect)
+{
+    const QRect r = rect.normalized();
+    LutSample sample;
+    sample.frame = frame.toStdString();
+    sample.colour = colour;
+    sample.polygon = {
+        {r.left(), r.top()}, {r.right(), r.top()}, {r.right(), r.bottom()}, {r.left(), r.bottom()}};
+    std::vector<LutSample> after = m_samples.samples;
+    after.push_back(std::move(sample));
+    const std::string_view name = colourName(colour);
+    m_undo.push(new SamplesCommand(
+        *this,
+        tr("Sample %1 on %2").arg(QString::fromUtf8(name.data(), qsizetype(name.size())), frame),
+        m_samples.samples, std::move(after)));
+}
+
+void LutSampler::setSamples(std::vector<LutSample> samples, const QString& text)
+{
+    m_undo.push(new SamplesCommand(*this, text, m_samples.samples, std::move(samples)));
+}
+
+Result<LutSampler::Built> LutSampler::buildTable(const std::string& stream,
+                                                 const LutSamples& samples, bool with_annotations,
+                                                 std::atomic<bool>* cancel,
+                                                 std::atomic<std::size_t>* done,
+                                                 std::atomic<std::size_t>* total)
+{
+    auto reader = openStream(stream);
+    if (!reader)
+        return reader.error();
+    std::vector<LutSample> all;
+    if (with_annotations) {
+        const std::string truth = defaultTruthPath(stream);
+        auto annotations = Annotations::load(truth);
+        if (!annotations)
+            return annotations.error();
+        const StreamInfo& info = reader.value()->info();
+        all = samplesFromAnnotations(annotations.value(), cv::Size(info.width, info.height));
+    }
+    all.insert(all.end(), samples.samples.begin(), samples.samples.end());
+    if (all.empty())
+        return Error{stream + ": no samples to build from (mark regions with the Sample tool)"};
+    auto run = collectLutVotes(*reader.value(), all, [&](std::size_t d, std::size_t t) {
+        if (done)
+            *done = d;
+        if (total)
+            *total = t;
+        return !(cancel && *cancel);
+    });
+    if (!run)
+        return run.error();
+    Built built;
+    built.cancelled = run.value().cancelled;
+    LutBuildOptions options;
+    options.smoothing = samples.smoothing;
+    built.table = run.value().votes.build(options);
+    built.ambiguous = run.value().votes.ambiguousCells(options);
+    built.samples = all.size();
+    built.frames = run.value().frames;
+    built.pixels = run.value().votes.pixels();
+    return built;
+}
+
+void LutSampler::build(bool with_annotations)
+{
+    if (building() || m_stream.isEmpty())
+        return;
+    m_cancel = false;
+    m_done = 0;
+    m_total = 0;
+    m_watcher.setFuture(QtConcurrent::run(&LutSampler::buildTable, m_stream.toStdString(),
+                                          m_samples, with_annotations, &m_cancel, &m_done,
+                                          &m_total));
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,85 @@
+// Sample regions for building a LUT: rectangles of frames marked with a colour class, kept beside
+// the stream (lut_samples.json, saved at every change) so the table can be built again after the
+// light changes; each added or removed sample is an undoable command of its own stack. Building
+// reads every sampled frame (and, as an option, the stream's annotations as samples) in the
+// background, with progress and cancel, and the new table becomes one undoable LUT edit.
+#pragma once
+
+#include "ui/document/lut_document.h"
+#include "visioncore/services/lut_building.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QRect>
+#include <QUndoStack>
+
+#include <atomic>
+
+namespace fieldsight::ui {
+
+class LutSampler : public QObject
+{
+    Q_OBJECT
+public:
+    explicit LutSampler(LutDocument& lut, QObject* parent = nullptr);
+    ~LutSampler() override;
+
+    /// The stream the samples belong to: its samples file is read if there is one (a bad file
+    /// is an Error naming it; the samples are then empty and the file is left alone).
+    Status setStream(const QString& spec);
+    QString path() const { return m_path; }
+    const LutSamples& samples() const { return m_samples; }
+    QUndoStack& undoStack() { return m_undo; }
+    /// Adds a rectangle of frame `frame` whose pixels show `colour` (undoable; saved at once).
+    void addRect(const QString& frame, Colour colour, const QRect& rect);
+    /// Replaces every sample (undoable; saved at once).
+    void setSamples(std::vector<LutSample> samples, const QString& text);
+
+    /// Builds from the samples (and the stream's annotations as samples) on a worker thread; the
+    /// table then replaces the LUT as one undoable edit.
+    void build(bool with_annotations);
+    bool building() const { return m_watcher.isRunning(); }
+    void cancel() { m_cancel = true; }
+    /// Frames read so far and frames to read, while building.
+    std::pair<std::size_t, std::size_t> progress() const { return {m_done, m_total}; }
+    /// The cells two classes' samples both claim, from the last build.
+    const std::vector<AmbiguousCell>& ambiguous() const { return m_ambiguous; }
+
+    struct Built
+    {
+        ColourLut table;
+        std::vector<AmbiguousCell> ambiguous;
+        std::size_t samples = 0;
+        std::size_t frames = 0;
+        std::size_t pixels = 0;
+        bool cancelled = false;
+    };
+    /// The build itself (any thread): reads the stream, votes, smooths.
+    static Result<Built> buildTable(const std::string& stream, const LutSamples& samples,
+                                    bool with_annotations, std::atomic<bool>* cancel,
+                                    std::atomic<std::size_t>* done,
+                                    std::atomic<std::size_t>* total);
+
+signals:
+    void samplesChanged();
+    /// A build finished (`summary` says what it did), or failed (`summary` says why).
+    void built(bool ok, const QString& summary);
+    void problem(const QString& message);
+
+private:
+    friend class SamplesCommand;
+    void store(std::vector<LutSample> samples);
+
+    LutDocument& m_lut;
+    QString m_stream;
+    QString m_path;
+    LutSamples m_samples;
+    QUndoStack m_undo;
+    QFutureWatcher<Result<Built>> m_watcher;
+    std::atomic<bool> m_cancel{false};
+    std::atomic<std::size_t> m_done{0};
+    std::atomic<std::size_t> m_total{0};
+    std::vector<AmbiguousCell> m_ambiguous;
+};
+
+} // namespace fieldsight::ui
