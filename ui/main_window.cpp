@@ -6,6 +6,7 @@
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/adapters/image_adapter.h"
+#include "ui/document/frame_recorder.h"
 #include "ui/panels/lut_compare_dialog.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "visioncore/io/lut_import.h"
@@ -144,6 +145,9 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     column->addWidget(m_navigator);
     setCentralWidget(central);
     m_effect = new EditEffectScan(m_doc->pipeline(), this);
+    m_recorder = new FrameRecorder(*m_doc, this);
+    connect(m_recorder, &FrameRecorder::problem, this,
+            [this](const QString& m) { showMessage(m); });
     m_effect_strip = new EffectStrip(*m_effect, *m_navigator->slider(), m_navigator);
     m_navigator->addTimelineStrip(m_effect_strip);
     connect(m_effect, &EditEffectScan::updated, this,
@@ -341,6 +345,34 @@ void MainWindow::buildMenus()
         if (ok)
             openStream(QStringLiteral("camera:%1").arg(n));
     });
+    QAction* record = file->addAction(tr("Record camera to folder…"));
+    record->setObjectName(QStringLiteral("record_camera"));
+    record->setCheckable(true);
+    record->setToolTip(tr("Write every camera frame shown (play to record continuously) into a "
+                          "stream folder, with the LUT in use"));
+    connect(record, &QAction::triggered, this, [this, record](bool on) {
+        if (!on) {
+            if (Status s = m_recorder->stop(); !s)
+                showMessage(QString::fromStdString(s.error().message));
+            else
+                showMessage(tr("Recorded %1 frames to %2")
+                                .arg(qulonglong(m_recorder->frames()))
+                                .arg(m_recorder->path()),
+                            false);
+            return;
+        }
+        const QString folder =
+            QFileDialog::getExistingDirectory(this, tr("Record camera frames into"));
+        Status s = folder.isEmpty() ? Status(Error{"no folder chosen"})
+                                    : m_recorder->start(folder, m_lut_doc->table());
+        if (!s && !folder.isEmpty())
+            showMessage(QString::fromStdString(s.error().message));
+        record->setChecked(m_recorder->recording());
+    });
+    connect(m_recorder, &FrameRecorder::stateChanged, record, &QAction::setChecked);
+    connect(m_doc, &StreamDocument::streamChanged, record,
+            [this, record] { record->setEnabled(m_doc->live()); });
+    record->setEnabled(false);
     QString lut_filter = tr("Colour tables (");
     for (std::string_view suffix : importableLutSuffixes())
         lut_filter += QStringLiteral("*%1 ").arg(

@@ -22,6 +22,7 @@ class DetectionsPanel;
 class EditEffectScan;
 class EffectStrip;
 class UvPlanePanel;
+class FrameRecorder;
 class LutCompareDialog;
 class InspectorPanel;
 class LayersPanel;
@@ -46,6 +47,7 @@ public:
     LutDocument& lutDocument() { return *m_lut_doc; }
     LutPanel& lutPanel() { return *m_lut_panel; }
     EditEffectScan& effectScan() { return *m_effect; }
+    FrameRecorder& recorder() { return *m_recorder; }
     /// Opens the compare-and-merge dialog for the table at `path` (any importable format); null,
     /// with a message in the window, when it cannot be read.
     LutCompareDialog* compareLut(const QString& path);
@@ -124,6 +126,7 @@ private:
     LutPanel* m_lut_panel = nullptr;
     EditEffectScan* m_effect = nullptr;
     UvPlanePanel* m_uv = nullptr;
+    FrameRecorder* m_recorder = nullptr;
     EffectStrip* m_effect_strip = nullptr;
     QWidget* m_recovery_bar = nullptr;
     QLabel* m_recovery_label = nullptr;

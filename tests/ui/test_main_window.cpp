@@ -7,6 +7,7 @@
 #include "support/synthetic_frames.h"
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/overlay_painter.h"
+#include "ui/document/frame_recorder.h"
 #include "ui/main_window.h"
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/layers_panel.h"
@@ -14,6 +15,8 @@
 #include "ui/stream_navigator/stream_navigator.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/percepts/ball.h"
+
+#include <opencv2/core.hpp>
 
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -430,6 +433,34 @@ private slots:
         QTRY_VERIFY(w.document().current() && w.document().current()->index >= 8);
         w.navigator().setPlaying(false);
         QVERIFY(w.document().current()->error.isEmpty());
+
+        // Recording: every frame shown goes into a stream folder, with the LUT in use.
+        const QString folder = m_dir.filePath("recorded");
+        QTRY_VERIFY(!w.document().waiting()); // play's last frame is in
+        QVERIFY(w.recorder().start(folder, *w.document().lut()));
+        QVERIFY(!w.recorder().start(folder, *w.document().lut())); // already recording
+        std::vector<cv::Mat> shown;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const std::uint64_t serial = w.document().lastSerial();
+            QTest::qWait(20);
+            QTest::keyClick(&w, Qt::Key_Right);
+            QTRY_VERIFY(w.document().current()->serial > serial && !w.document().waiting());
+            shown.push_back(w.document().current()->frame.ycbcr.clone());
+        }
+        QVERIFY(w.recorder().stop());
+        QCOMPARE(w.recorder().frames(), std::size_t(3));
+        auto recorded = openStream((folder + "/recording.strm").toStdString());
+        QVERIFY2(recorded, recorded ? "" : recorded.error().message.c_str());
+        QCOMPARE(recorded.value()->info().frame_count, std::size_t(3));
+        for (std::size_t i = 0; i < 3; ++i) {
+            auto frame = recorded.value()->read(i);
+            QVERIFY(frame);
+            QCOMPARE(cv::norm(frame.value().ycbcr, shown[i], cv::NORM_INF), 0.0);
+        }
+        QVERIFY(importLut((folder + "/default.lut").toStdString()).value() == *w.document().lut());
+        // A folder that already holds a recording is not written over.
+        const auto again = w.recorder().start(folder, *w.document().lut());
+        QVERIFY(!again && QString::fromStdString(again.error().message).contains("recording.strm"));
 
         // Another stream: the camera is closed (on the worker thread).
         QVERIFY(openAndWait(w, sampleStream()));
