@@ -78,6 +78,21 @@ std::set<std::uint32_t> differences(const ColourLut& a, const ColourLut& b)
     return cells;
 }
 
+/// A large window on the sample stream with the UV plane's dock in front.
+bool openWithUvPlane(MainWindow& w)
+{
+    w.resize(1400, 900);
+    w.show();
+    if (!QTest::qWaitForWindowActive(&w) || !openAndWait(w))
+        return false;
+    auto* dock = w.findChild<QDockWidget*>("uv_dock");
+    if (!dock)
+        return false;
+    dock->show();
+    dock->raise();
+    return true;
+}
+
 /// Waits until the whole-stream scan has covered every frame.
 bool waitForScan(ui::EditEffectScan& scan)
 {
@@ -362,14 +377,7 @@ private slots:
     void paintingInTheUvPlaneChangesTheCellsUnderTheBrush()
     {
         MainWindow w;
-        w.resize(1400, 900);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
-        auto* dock = w.findChild<QDockWidget*>("uv_dock");
-        QVERIFY(dock);
-        dock->show();
-        dock->raise();
+        QVERIFY(openWithUvPlane(w));
         ui::UvPlanePanel& uv = w.uvPanel();
         uv.setYLevels(100, 131); // Y cells 50..65
         ui::UvCanvas& canvas = uv.canvas();
@@ -419,13 +427,7 @@ private slots:
     void aUvSelectionLightsUpItsPixelsAndTheImageToolItsCells()
     {
         MainWindow w;
-        w.resize(1400, 900);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
-        auto* dock = w.findChild<QDockWidget*>("uv_dock");
-        dock->show();
-        dock->raise();
+        QVERIFY(openWithUvPlane(w));
         ui::UvCanvas& canvas = w.uvPanel().canvas();
         QTRY_VERIFY(canvas.isVisible() && canvas.width() >= 120);
         w.uvPanel().setYLevels(0, 255);

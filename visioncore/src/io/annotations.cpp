@@ -1,6 +1,8 @@
 // Ground-truth annotation files (SPEC §5.2): strict reading, atomic writing.
 #include "visioncore/io/annotations.h"
 
+#include "io/json_format.h"
+
 #include "visioncore/io/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -18,17 +20,10 @@ using OrderedJson = nlohmann::ordered_json;
 Result<Annotations> Annotations::fromJson(const std::string& text, const std::string& source,
                                           const Pipeline& pipeline)
 {
-    const Json root = Json::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{source + ": not valid JSON"};
-    if (!root.is_object())
-        return Error{source + ": expected a JSON object at the top level"};
-    const auto format = root.find("format");
-    if (format == root.end() || !format->is_string())
-        return Error{source + ": missing \"format\": \"" + kFormat + "\""};
-    if (format->get<std::string>() != kFormat)
-        return Error{source + ": unsupported format \"" + format->get<std::string>() +
-                     "\" (expected \"" + kFormat + "\")"};
+    auto parsed = io::parseFormattedJson(text, source, kFormat);
+    if (!parsed)
+        return parsed.error();
+    const Json& root = parsed.value();
 
     Annotations annotations;
     const auto frames = root.find("frames");

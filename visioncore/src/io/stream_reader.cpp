@@ -20,6 +20,15 @@ Status StreamReader::readInto(std::size_t index, Frame& frame)
     return {};
 }
 
+std::string besideStream(const std::string& stream, const std::string& name)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path path(stream);
+    const fs::path folder = fs::is_directory(path, ec) ? path : path.parent_path();
+    return (folder / name).string();
+}
+
 Result<std::unique_ptr<StreamReader>> StreamReader::reopen() const
 {
     return openStream(info().path);

@@ -183,11 +183,7 @@ EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
 
 std::string defaultTruthPath(const std::string& stream)
 {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path path(stream);
-    const fs::path folder = fs::is_directory(path, ec) ? path : path.parent_path();
-    return (folder / "annotations.json").string();
+    return besideStream(stream, "annotations.json");
 }
 
 namespace {

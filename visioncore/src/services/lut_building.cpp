@@ -2,6 +2,8 @@
 // their smoothing.
 #include "visioncore/services/lut_building.h"
 
+#include "io/json_format.h"
+
 #include "visioncore/io/atomic_file.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
@@ -207,26 +209,15 @@ bool isPair(const Ranking& r, Colour a, Colour b)
 
 std::string defaultLutSamplesPath(const std::string& stream)
 {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    const fs::path path(stream);
-    const fs::path folder = fs::is_directory(path, ec) ? path : path.parent_path();
-    return (folder / "lut_samples.json").string();
+    return besideStream(stream, "lut_samples.json");
 }
 
 Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string& source)
 {
-    const Json root = Json::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{source + ": not valid JSON"};
-    if (!root.is_object())
-        return Error{source + ": expected a JSON object at the top level"};
-    const auto format = root.find("format");
-    if (format == root.end() || !format->is_string())
-        return Error{source + ": missing \"format\": \"" + kLutSamplesFormat + "\""};
-    if (format->get<std::string>() != kLutSamplesFormat)
-        return Error{source + ": unsupported format \"" + format->get<std::string>() +
-                     "\" (expected \"" + kLutSamplesFormat + "\")"};
+    auto parsed = io::parseFormattedJson(text, source, kLutSamplesFormat);
+    if (!parsed)
+        return parsed.error();
+    const Json& root = parsed.value();
 
     LutSamples out;
     if (const auto smoothing = root.find("smoothing"); smoothing != root.end()) {

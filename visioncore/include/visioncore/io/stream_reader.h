@@ -45,6 +45,10 @@ public:
     virtual Result<std::unique_ptr<StreamReader>> reopen() const;
 };
 
+/// A file kept beside a stream: `name` in the stream's folder, or in the folder holding the
+/// stream's file (annotations.json, lut_samples.json, ...).
+std::string besideStream(const std::string& stream, const std::string& name);
+
 /// Opens a folder, a .strm file, a video file or "camera:N". Bad input (missing, empty folder,
 /// truncated .strm, bad manifest) gives an Error naming the file and the problem.
 Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec);
