@@ -100,33 +100,50 @@ std::optional<QPoint> UvCanvas::cellAt(QPointF pos) const
 
 void UvCanvas::refreshPlane()
 {
+    m_plane_dirty = true; // rebuilt when next painted: nothing to do while the dock is hidden
+    update();
+}
+
+void UvCanvas::rebuildPlane()
+{
+    m_plane_dirty = false;
     // Each UV cell shows the class most of its Y cells in the range have (unclassified only
-    // when all are).
-    m_plane = QImage(kSide, kSide, QImage::Format_RGB32);
+    // when all are). The table is read in memory order, one Y slice after another.
+    std::vector<std::array<std::uint16_t, kColourCount>> count(std::size_t(kSide * kSide));
+    const std::uint8_t* cells = m_lut.table().data();
+    for (int y = m_y_lo; y <= m_y_hi; ++y) {
+        const std::uint8_t* slice = cells + (std::size_t(y) << 14);
+        for (std::size_t i = 0; i < std::size_t(kSide * kSide); ++i)
+            ++count[i][slice[i] % kColourCount];
+    }
     std::array<QRgb, kColourCount> colours{};
     for (int c = 0; c < kColourCount; ++c)
         colours[std::size_t(c)] = toQColor(colourDisplayRgb(Colour(c))).rgb();
     colours[0] = qRgb(24, 24, 24);
-    const std::uint8_t* cells = m_lut.table().data();
+    m_plane = QImage(kSide, kSide, QImage::Format_RGB32);
     for (int cr = 0; cr < kSide; ++cr) {
         auto* row = reinterpret_cast<QRgb*>(m_plane.scanLine(kSide - 1 - cr));
         for (int cb = 0; cb < kSide; ++cb) {
-            std::array<int, kColourCount> count{};
-            for (int y = m_y_lo; y <= m_y_hi; ++y)
-                ++count[cells[(y << 14) | (cb << 7) | cr] % kColourCount];
+            const auto& n = count[std::size_t((cb << 7) | cr)];
             int best = 0;
             for (int c = 1; c < kColourCount; ++c)
-                if (count[std::size_t(c)] > 0 &&
-                    (best == 0 || count[std::size_t(c)] > count[std::size_t(best)]))
+                if (n[std::size_t(c)] > 0 &&
+                    (best == 0 || n[std::size_t(c)] > n[std::size_t(best)]))
                     best = c;
             row[cb] = colours[std::size_t(best)];
         }
     }
-    update();
 }
 
 void UvCanvas::refreshScatter()
 {
+    m_scatter_dirty = true;
+    update();
+}
+
+void UvCanvas::rebuildScatter()
+{
+    m_scatter_dirty = false;
     m_scatter = QImage();
     const auto& out = m_stream.current();
     if (out && !out->frame.ycbcr.empty()) {
@@ -153,7 +170,6 @@ void UvCanvas::refreshScatter()
                 }
         }
     }
-    update();
 }
 
 void UvCanvas::setOutlinedCells(const std::vector<std::uint32_t>& cells)
@@ -275,6 +291,10 @@ void UvCanvas::leaveEvent(QEvent*)
 
 void UvCanvas::paintEvent(QPaintEvent*)
 {
+    if (m_plane_dirty)
+        rebuildPlane();
+    if (m_scatter_dirty)
+        rebuildScatter();
     QPainter p(this);
     p.fillRect(rect(), QColor(40, 40, 40));
     const QRectF r = planeRect();

@@ -40,7 +40,8 @@ public:
     /// The selected cells (a UV rectangle over the Y range), if any.
     const std::optional<CellMask>& selection() const { return m_selection; }
     void clearSelection();
-    /// Rebuilds the class image (after a LUT change) and the scatter (after a new frame).
+    /// The class image (after a LUT change) and the scatter (after a new frame) are out of date:
+    /// they are rebuilt when next painted, so a hidden dock costs nothing.
     void refreshPlane();
     void refreshScatter();
 
@@ -67,6 +68,8 @@ private:
     QRectF planeRect() const;
     bool selecting(Qt::MouseButtons buttons) const;
     void dab(QPoint cell);
+    void rebuildPlane();
+    void rebuildScatter();
 
     LutDocument& m_lut;
     StreamDocument& m_stream;
@@ -75,6 +78,8 @@ private:
     QPointF m_pan{0, 0}; ///< widget px the plane is moved by
     int m_y_lo = 0;
     int m_y_hi = 127;
+    bool m_plane_dirty = true;
+    bool m_scatter_dirty = true;
     QImage m_plane;    ///< 128 x 128, the classes
     QImage m_scatter;  ///< 128 x 128, the frame's pixels
     QImage m_outlined; ///< 128 x 128, cells the image tool would change
