@@ -9,6 +9,9 @@
 #include <fstream>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
 
 using namespace fieldsight;
 
@@ -46,6 +49,8 @@ std::size_t filesIn(const std::string& folder)
 class TestColourLut : public QObject
 {
     Q_OBJECT
+
+    QTemporaryDir m_dir;
 
 private slots:
     void newLutIsAllUnclassified()
@@ -201,6 +206,78 @@ private slots:
         auto back = readWholeFile(path);
         QVERIFY(back.ok());
         QCOMPARE(back.value(), text);
+    }
+
+    void onlyRegularFilesAreReadAndWithinTheirLimit()
+    {
+        QElapsedTimer clock;
+        clock.start();
+        const auto zero = readWholeFile("/dev/zero");
+        QVERIFY(!zero);
+        QVERIFY2(zero.error().message.find("/dev/zero") != std::string::npos &&
+                     zero.error().message.find("character device") != std::string::npos,
+                 zero.error().message.c_str());
+        QVERIFY(!ColourLut::load("/dev/zero"));
+        const std::string fifo = (m_dir.path() + "/pipe").toStdString();
+        QCOMPARE(::mkfifo(fifo.c_str(), 0600), 0);
+        const auto piped = readWholeFile(fifo); // must not wait for a writer
+        QVERIFY(!piped && piped.error().message.find("a FIFO") != std::string::npos);
+        const std::string big = (m_dir.path() + "/big").toStdString();
+        QVERIFY(writeFileAtomically(big, std::string(2000, 'x')).ok());
+        const auto capped = readWholeFile(big, 1000);
+        QVERIFY(!capped && capped.error().message.find("too large") != std::string::npos);
+        QVERIFY(readWholeFile(big, 2000));
+        QVERIFY(clock.elapsed() < 2000);
+    }
+
+    void savesWriteStraightToADeviceAndReportItsErrors()
+    {
+        // Device nodes of our own (null and full), so a regression cannot harm the machine's.
+        const std::string null_dev = (m_dir.path() + "/null").toStdString();
+        const std::string full_dev = (m_dir.path() + "/full").toStdString();
+        if (::mknod(null_dev.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0 ||
+            ::mknod(full_dev.c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0)
+            QSKIP("cannot make device nodes here (not root)");
+        struct stat st
+        {
+        };
+        QVERIFY(writeFileAtomically(null_dev, std::string("data")).ok());
+        QCOMPARE(::stat(null_dev.c_str(), &st), 0);
+        QVERIFY(S_ISCHR(st.st_mode)); // written to, not replaced by a regular file
+        const Status full = writeFileAtomically(full_dev, std::string(4096, 'x'));
+        QVERIFY(!full);
+        QVERIFY2(full.error().message.find(full_dev) != std::string::npos &&
+                     full.error().message.find("No space left") != std::string::npos,
+                 full.error().message.c_str());
+        QCOMPARE(::stat(full_dev.c_str(), &st), 0);
+        QVERIFY(S_ISCHR(st.st_mode));
+    }
+
+    void savesKeepALinkAndNeverWaitForAFifo()
+    {
+        struct stat st
+        {
+        };
+        // A link stays a link; its target gets the new bytes.
+        const std::string target = (m_dir.path() + "/target.lut").toStdString();
+        const std::string link = (m_dir.path() + "/link.lut").toStdString();
+        QVERIFY(writeFileAtomically(target, std::string("old")).ok());
+        QCOMPARE(::symlink(target.c_str(), link.c_str()), 0);
+        QVERIFY(writeFileAtomically(link, std::string("new")).ok());
+        QCOMPARE(::lstat(link.c_str(), &st), 0);
+        QVERIFY(S_ISLNK(st.st_mode));
+        QCOMPARE(readWholeFile(target).value(), std::string("new"));
+
+        // A FIFO nobody reads is an error at once, not a wait, and stays a FIFO.
+        const std::string fifo = (m_dir.path() + "/out_pipe").toStdString();
+        QCOMPARE(::mkfifo(fifo.c_str(), 0600), 0);
+        QElapsedTimer clock;
+        clock.start();
+        QVERIFY(!writeFileAtomically(fifo, std::string("x")));
+        QVERIFY(clock.elapsed() < 2000);
+        QCOMPARE(::lstat(fifo.c_str(), &st), 0);
+        QVERIFY(S_ISFIFO(st.st_mode));
+        QCOMPARE(QDir(m_dir.path()).entryList({"*.tmp-*"}).size(), 0); // no stray temporaries
     }
 };
 

@@ -4,7 +4,10 @@
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -51,16 +54,72 @@ bool writeAll(int fd, const char* data, std::size_t size)
 
 } // namespace
 
-Status writeFileAtomically(const std::string& path, const void* data, std::size_t size)
+std::string fileKindName(unsigned mode)
 {
-    if (path.empty())
+    if (S_ISDIR(mode))
+        return "a folder";
+    if (S_ISFIFO(mode))
+        return "a FIFO";
+    if (S_ISCHR(mode))
+        return "a character device";
+    if (S_ISBLK(mode))
+        return "a block device";
+    if (S_ISSOCK(mode))
+        return "a socket";
+    if (S_ISLNK(mode))
+        return "a symbolic link";
+    return "not a regular file";
+}
+
+namespace {
+
+/// Writes to something that is not a regular file (a device such as /dev/null or /dev/full, a
+/// FIFO with a reader) as it is: there is nothing to replace atomically.
+Status writeStraight(const std::string& path, const void* data, std::size_t size)
+{
+    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return errnoError("write", path,
+                          errno == ENXIO ? EPIPE : errno); // a FIFO nobody reads
+    const int flags = ::fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    if (!writeAll(fd, static_cast<const char*>(data), size)) {
+        const int error = errno;
+        ::close(fd);
+        return errnoError("write", path, error);
+    }
+    if (::close(fd) != 0)
+        return errnoError("write", path, errno);
+    return {};
+}
+
+} // namespace
+
+Status writeFileAtomically(const std::string& requested, const void* data, std::size_t size)
+{
+    if (requested.empty())
         return Error{"cannot write an empty file name"};
+    // A symbolic link stays a link: its target is what gets replaced.
+    std::string path = requested;
+    struct stat link
+    {
+    };
+    if (::lstat(requested.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+        char* resolved = ::realpath(requested.c_str(), nullptr);
+        if (resolved) {
+            path = resolved;
+            std::free(resolved);
+        }
+    }
     struct stat target
     {
     };
     const bool target_exists = ::stat(path.c_str(), &target) == 0;
     if (target_exists && S_ISDIR(target.st_mode))
-        return errnoError("write", path, EISDIR);
+        return errnoError("write", requested, EISDIR);
+    if (target_exists && !S_ISREG(target.st_mode))
+        return writeStraight(requested, data, size);
 
     const std::string temp = temporaryNameFor(path);
     // 0666 lets the umask decide, as for any newly created file.
@@ -99,18 +158,29 @@ Status writeFileAtomically(const std::string& path, const void* data, std::size_
     return {};
 }
 
-Result<std::string> readWholeFile(const std::string& path)
+Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes)
 {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // Non-blocking, so opening a FIFO cannot wait for a writer; refused below anyway.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0)
         return errnoError("read", path, errno);
     struct stat st
     {
     };
-    if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
-        const int error = S_ISDIR(st.st_mode) ? EISDIR : errno;
+    if (::fstat(fd, &st) != 0) {
+        const int error = errno;
         ::close(fd);
         return errnoError("read", path, error);
+    }
+    if (!S_ISREG(st.st_mode)) {
+        ::close(fd);
+        return Error{"cannot read " + path + ": " + fileKindName(st.st_mode) +
+                     ", not a regular file"};
+    }
+    if (std::uint64_t(st.st_size) > max_bytes) {
+        ::close(fd);
+        return Error{"cannot read " + path + ": too large (" + std::to_string(st.st_size) +
+                     " bytes; at most " + std::to_string(max_bytes) + ")"};
     }
     std::string text;
     if (st.st_size > 0)
@@ -128,6 +198,11 @@ Result<std::string> readWholeFile(const std::string& path)
         if (n == 0)
             break;
         text.append(chunk, std::size_t(n));
+        if (text.size() > max_bytes) { // it grew while being read
+            ::close(fd);
+            return Error{"cannot read " + path + ": too large (more than " +
+                         std::to_string(max_bytes) + " bytes)"};
+        }
     }
     ::close(fd);
     return text;

@@ -11,14 +11,25 @@
 namespace fieldsight {
 
 /// Writes `size` bytes to a temporary file in the same folder, flushes it, then renames it over
-/// `path`. On failure `path` is untouched and the error names the file and the problem.
+/// `path`. On failure `path` is untouched and the error names the file and the problem. Only a
+/// regular file (or none) is replaced: a symbolic link's target is replaced and the link kept,
+/// and anything else (a device, a FIFO) is written straight, never replaced by a file; a FIFO
+/// without a reader is an error, not a wait.
 Status writeFileAtomically(const std::string& path, const void* data, std::size_t size);
 inline Status writeFileAtomically(const std::string& path, std::string_view text)
 {
     return writeFileAtomically(path, text.data(), text.size());
 }
 
-/// Reads a whole file; the error names the file and the problem.
-Result<std::string> readWholeFile(const std::string& path);
+/// The largest file readWholeFile() reads unless told otherwise.
+inline constexpr std::size_t kMaxReadBytes = std::size_t(256) << 20;
+
+/// Reads a whole regular file of at most `max_bytes`; the error names the file and the problem
+/// (a folder, a FIFO or a device is refused before reading, so /dev/zero or a pipe cannot grow
+/// memory without bound or block).
+Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes = kMaxReadBytes);
+
+/// What kind of thing `mode` (a stat st_mode) is, for messages: "a folder", "a FIFO", ...
+std::string fileKindName(unsigned mode);
 
 } // namespace fieldsight
