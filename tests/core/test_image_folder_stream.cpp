@@ -7,6 +7,7 @@
 
 #include <QtTest>
 
+#include <cstring>
 #include <fstream>
 
 using namespace fieldsight;
@@ -247,6 +248,43 @@ private slots:
         QVERIFY(!camera.ok());
         QCOMPARE(camera.error().message,
                  std::string("camera:x: expected camera:N with N a camera number (0, 1, ...)"));
+    }
+
+    void aHeaderClaimingAHugeImageIsRefusedBeforeDecoding()
+    {
+        // Small files whose headers claim 30000 x 30000 (PNG), 65535 x 65535 (PNG), 60000 x 9
+        // (JPEG) and 9 x 70000 (BMP): each refused by name, quickly, without the allocation.
+        const auto be32 = [](std::uint32_t v) {
+            return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+        };
+        const auto png = [&](std::uint32_t w, std::uint32_t h) {
+            return std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR" + be32(w) + be32(h) +
+                   std::string("\x08\x02\x00\x00\x00", 5) + be32(0) + std::string(64, '\0');
+        };
+        const std::string jpeg = std::string("\xFF\xD8\xFF\xE0\x00\x04\x00\x00", 8) +
+                                 std::string("\xFF\xC0\x00\x11\x08\x00\x09\xEA\x60", 9) +
+                                 std::string(64, '\0');
+        std::string bmp = "BM" + std::string(24, '\0');
+        const std::int32_t bw = 9, bh = 70000;
+        std::memcpy(bmp.data() + 18, &bw, 4);
+        std::memcpy(bmp.data() + 22, &bh, 4);
+        const std::vector<std::pair<std::string, std::string>> cases = {
+            {"a.png", png(30000, 30000)},
+            {"b.png", png(65535, 65535)},
+            {"c.jpg", jpeg},
+            {"d.bmp", bmp}};
+        QElapsedTimer clock;
+        clock.start();
+        for (const auto& [name, bytes] : cases) {
+            QTemporaryDir dir;
+            writeText(dir, name.c_str(), bytes);
+            const std::string error = openError(dir);
+            QVERIFY2(error.find(dir.filePath(QString::fromStdString(name)).toStdString()) !=
+                             std::string::npos &&
+                         error.find("header claims") != std::string::npos,
+                     error.c_str());
+        }
+        QVERIFY(clock.elapsed() < 2000);
     }
 };
 

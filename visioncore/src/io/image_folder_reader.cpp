@@ -8,10 +8,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <system_error>
 
 #include "visioncore/io/atomic_file.h"
@@ -181,6 +184,52 @@ Result<Manifest> parseManifest(const std::string& path)
     return manifest;
 }
 
+std::uint32_t bigEndian(const unsigned char* p, int bytes)
+{
+    std::uint32_t v = 0;
+    for (int i = 0; i < bytes; ++i)
+        v = (v << 8) | p[i];
+    return v;
+}
+
+/// The size an image file's header claims (PNG, JPEG, BMP), read before decoding so a small file
+/// claiming a huge image is refused instead of allocated; nullopt when the header says nothing
+/// this recognises (the decoder then decides).
+std::optional<std::pair<long long, long long>> headerSize(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> head(65536);
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    head.resize(std::size_t(in.gcount()));
+    const unsigned char* h = head.data();
+    const std::size_t n = head.size();
+    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+    if (n >= 24 && std::equal(png, png + 8, h) && std::memcmp(h + 12, "IHDR", 4) == 0)
+        return std::pair{(long long)bigEndian(h + 16, 4), (long long)bigEndian(h + 20, 4)};
+    if (n >= 26 && h[0] == 'B' && h[1] == 'M') {
+        std::int32_t w = 0, ht = 0;
+        std::memcpy(&w, h + 18, 4); // little-endian on every machine this builds for
+        std::memcpy(&ht, h + 22, 4);
+        return std::pair{std::llabs(w), std::llabs(ht)};
+    }
+    if (n >= 4 && h[0] == 0xFF && h[1] == 0xD8) { // JPEG: walk the segments to a frame header
+        std::size_t at = 2;
+        while (at + 9 < n && h[at] == 0xFF) {
+            const unsigned marker = h[at + 1];
+            const std::size_t length = bigEndian(h + at + 2, 2);
+            const bool sof = (marker >= 0xC0 && marker <= 0xCF) && marker != 0xC4 &&
+                             marker != 0xC8 && marker != 0xCC;
+            if (sof)
+                return std::pair{(long long)bigEndian(h + at + 7, 2),
+                                 (long long)bigEndian(h + at + 5, 2)};
+            if (length < 2)
+                break;
+            at += 2 + length;
+        }
+    }
+    return std::nullopt;
+}
+
 /// Why `path` could not be decoded: the OS error if it cannot even be opened.
 std::string unreadableReason(const std::string& path)
 {
@@ -227,7 +276,17 @@ public:
     Result<Frame> decode(std::size_t index) const
     {
         const std::string path = (m_folder / m_files[index]).string();
-        cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+        if (const auto claimed = headerSize(path);
+            claimed && !isSaneFrameSize(claimed->first, claimed->second))
+            return Error{path + ": the image header claims " + std::to_string(claimed->first) +
+                         "x" + std::to_string(claimed->second) + " pixels (at most " +
+                         std::to_string(kMaxFrameSide) + " a side); not decoded"};
+        cv::Mat bgr;
+        try {
+            bgr = cv::imread(path, cv::IMREAD_COLOR);
+        } catch (const cv::Exception& e) {
+            return Error{"cannot read " + path + ": the decoder failed (" + e.err + ")"};
+        }
         if (bgr.empty())
             return Error{"cannot read " + path + ": " + unreadableReason(path)};
         if (!isSaneFrameSize(bgr.cols, bgr.rows))

@@ -4,6 +4,7 @@
 #include "io/stream_readers.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cctype>
 #include <charconv>
 #include <filesystem>
@@ -68,6 +69,14 @@ std::string lowercase(std::string s)
 
 Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec)
 {
+    // OpenCV's own ceiling on decoded pixels (1 Gpx by default) down to what a frame may be
+    // (8192 x 8192), for images whose header this reader cannot read first; a user's setting
+    // wins. Read by OpenCV at its first decode.
+    static const bool capped = [] {
+        ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(8192LL * 8192LL).c_str(), 0);
+        return true;
+    }();
+    (void)capped;
     namespace fs = std::filesystem;
     if (spec.empty())
         return Error{"no stream given"};
