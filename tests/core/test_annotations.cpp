@@ -128,6 +128,19 @@ private slots:
             {R"({"f.png": {"field_lines": [5]}})",
              "frames[\"f.png\"].field_lines[0] must be an object"},
             {R"({"f.png": 3})", "frames[\"f.png\"] must be an object"},
+            // Values out of range are refused where they are read (issue 10): none overflows
+            // later in matching or drawing.
+            {R"({"f.png": {"balls": [{"x": 2147483647, "y": 1, "radius": 3}]}})",
+             "frames[\"f.png\"].balls[0].x must be within ±1000000 px (is 2147483647)"},
+            {R"({"f.png": {"balls": [{"x": 1, "y": 1, "radius": -4}]}})",
+             "frames[\"f.png\"].balls[0].radius must not be negative"},
+            {R"({"f.png": {"balls": [{"x": 1, "y": 1, "radius": 1e300}]}})",
+             "frames[\"f.png\"].balls[0].radius must be within ±1000000 px (is 1e+300)"},
+            {R"({"f.png": {"goalposts": [{"left": -2147483648, "right": 2, "top": 0,
+               "bottom": 9}]}})",
+             "frames[\"f.png\"].goalposts[0].left must be within ±1000000 px (is -2147483648)"},
+            {R"({"f.png": {"field_boundary": [[0, 1], [1e12, 2]]}})",
+             "frames[\"f.png\"].field_boundary[1] must be within ±1000000 px"},
         };
         for (const auto& [frames, problem] : cases) {
             const std::string text =

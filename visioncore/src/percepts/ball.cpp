@@ -19,7 +19,7 @@ std::optional<std::string> PerceptTraits<Ball>::fromJson(const Json& value, Perc
                                                          std::vector<Ball>& out)
 {
     return readList(value, where, out, [](FieldReader& f) {
-        return Ball{f.number("x"), f.number("y"), f.number("radius")};
+        return Ball{f.number("x"), f.number("y"), f.size("radius")};
     });
 }
 

@@ -28,6 +28,9 @@ std::optional<std::string> PerceptTraits<FieldBoundary>::fromJson(const Json& va
         const Json& item = value[i];
         if (!item.is_array() || item.size() != 2 || !item[0].is_number() || !item[1].is_number())
             return where + "[" + std::to_string(i) + "] must be [x, y]";
+        if (!percept_json::saneCoordinate(item[0].get<double>()) ||
+            !percept_json::saneCoordinate(item[1].get<double>()))
+            return where + "[" + std::to_string(i) + "] must be within ±1000000 px";
         boundary.points.push_back(PointF{item[0].get<double>(), item[1].get<double>()});
     }
     out.push_back(std::move(boundary));

@@ -22,6 +22,16 @@ inline double px(double v)
     return std::isfinite(v) ? std::round(v * 1000.0) / 1000.0 : v;
 }
 
+/// The largest coordinate or size a percept may have in JSON, px: far beyond any frame (at most
+/// 8192 px a side), small enough that sums, products and rounding cannot overflow.
+inline constexpr double kMaxCoordinate = 1e6;
+
+/// A coordinate read from JSON is a finite number within ±kMaxCoordinate.
+inline bool saneCoordinate(double v)
+{
+    return std::isfinite(v) && std::abs(v) <= kMaxCoordinate;
+}
+
 /// Reads the fields of one JSON object, remembering the first problem.
 class FieldReader
 {
@@ -42,7 +52,22 @@ public:
             m_problem = m_where + "." + key + " must be a number";
             return 0;
         }
-        return it->get<double>();
+        const double v = it->get<double>();
+        if (!saneCoordinate(v)) {
+            m_problem = m_where + "." + key + " must be within ±1000000 px (is " + it->dump() + ")";
+            return 0;
+        }
+        return v;
+    }
+    /// A size: a number from 0 to kMaxCoordinate.
+    double size(const char* key)
+    {
+        const double v = number(key);
+        if (!m_problem && v < 0) {
+            m_problem = m_where + "." + key + " must not be negative";
+            return 0;
+        }
+        return v;
     }
     /// A pixel index: any JSON number, rounded to the nearest integer.
     int pixel(const char* key) { return int(std::lround(number(key))); }
