@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 
@@ -113,6 +114,11 @@ int evalCommand(const QStringList& args, const Context& ctx)
         auto truth = Annotations::load(truth_path, ctx.pipeline);
         if (!truth)
             return badInput(ctx, truth.error().message);
+        // Precision and recall of nothing would print as a perfect 1.000.
+        if (std::none_of(truth.value().frames.begin(), truth.value().frames.end(),
+                         [](const auto& f) { return f.second.done; }))
+            return badInput(ctx,
+                            truth_path + ": nothing to score (no frame is marked \"done\": true)");
         auto report = evaluateStream(input.value(), truth.value(), truth_path, int(*threads));
         if (!report)
             return badInput(ctx, report.error().message);

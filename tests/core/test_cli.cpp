@@ -493,6 +493,18 @@ private slots:
         const Outcome missing = fieldsight({"eval", m_stream, "--truth", path("nope.json")});
         QCOMPARE(missing.status, 2);
         verifyOneLineError(missing, path("nope.json"));
+
+        // Annotations without a done frame: nothing to score, not a perfect 1.000 (issue 10).
+        const QString none_done = path("none_done.json");
+        QFile undone(none_done);
+        QVERIFY(undone.open(QIODevice::WriteOnly));
+        undone.write(R"({"format": "fieldsight-annotations/1", "frames": {
+            "frame_000000.png": {"done": false}}})");
+        undone.close();
+        const Outcome nothing = fieldsight({"eval", m_stream, "--truth", none_done});
+        QCOMPARE(nothing.status, 2);
+        verifyOneLineError(nothing, none_done);
+        QVERIFY(nothing.err.contains("nothing to score"));
     }
     void lutBuildWritesATableFromSamples()
     {

@@ -12,6 +12,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 
 using namespace fieldsight;
@@ -362,6 +363,28 @@ private slots:
         QCOMPARE(bad.error().message, path + ": frame 2 out of range (2 frames)");
         QCOMPARE(wrapper.frameIndex(), std::size_t(1)); // the previous frame stays current
         QVERIFY(sameImage(wrapper.image(), frames[1].ycbcr));
+    }
+
+    void rejectsUnknownVersionsAndNonFiniteTimestamps()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("odd.strm").toStdString();
+        const std::string pixels(8, '\0');
+        writeBytes(path, header(7, 2, 1, 0, false) + pixels);
+        auto opened = openStream(path);
+        QVERIFY(!opened.ok());
+        QCOMPARE(opened.error().message,
+                 path + ": record 0 at byte offset 0: unsupported version 7 (this reader knows "
+                        "versions 0 and 1)");
+        const std::size_t record = header(1, 2, 1, 0, false).size() + pixels.size();
+        writeBytes(path, header(1, 2, 1, 0, false) + pixels +
+                             header(1, 2, 1, std::numeric_limits<double>::quiet_NaN(), false) +
+                             pixels);
+        opened = openStream(path);
+        QVERIFY(!opened.ok());
+        QCOMPARE(opened.error().message, path + ": record 1 at byte offset " +
+                                             std::to_string(record) +
+                                             ": timestamp is not a finite number");
     }
 };
 

@@ -5,6 +5,7 @@
 #include "io/stream_readers.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
@@ -153,8 +154,12 @@ ReaderResult openStrm(const std::string& path, const std::string& spec)
                 shown += (c >= 32 && c < 127) ? c : '?';
             return fail(index, offset, "bad magic \"" + shown + "\" (expected \"IMAG\")");
         }
-        if (header.version < 0)
-            return fail(index, offset, "bad version " + std::to_string(header.version));
+        if (header.version < 0 || header.version > 1)
+            return fail(index, offset,
+                        "unsupported version " + std::to_string(header.version) +
+                            " (this reader knows versions 0 and 1)");
+        if (!std::isfinite(header.timestamp_ms))
+            return fail(index, offset, "timestamp is not a finite number");
         if (!isSaneFrameSize(header.width, header.height))
             return fail(index, offset,
                         "absurd frame size " + std::to_string(header.width) + "x" +
