@@ -83,15 +83,15 @@ std::optional<int> parseCommand(QCommandLineParser& parser, const QString& comma
 }
 
 std::optional<long long> intOption(const QCommandLineParser& parser, const QString& name,
-                                   long long fallback, long long min, QString& error)
+                                   long long fallback, long long min, QString& error, long long max)
 {
     if (!parser.isSet(name))
         return fallback;
     bool ok = false;
     const long long value = parser.value(name).toLongLong(&ok);
-    if (!ok || value < min) {
-        error = "--" + name + ": expected a whole number >= " + QString::number(min) + ", got '" +
-                parser.value(name) + "'";
+    if (!ok || value < min || value > max) {
+        error = "--" + name + ": expected a whole number from " + QString::number(min) + " to " +
+                QString::number(max) + ", got '" + parser.value(name) + "'";
         return std::nullopt;
     }
     return value;

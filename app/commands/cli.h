@@ -12,6 +12,7 @@
 #include <QStringList>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -59,9 +60,11 @@ std::optional<int> parseCommand(QCommandLineParser& parser, const QString& comma
                                 const QStringList& args, int positional_min, int positional_max,
                                 const Context& ctx);
 
-/// Reads a whole-number option; `min` is the smallest allowed value.
+/// Reads a whole-number option from `min` to `max` (a value out of range, such as a width that
+/// would wrap in an int, is an error, never truncated).
 std::optional<long long> intOption(const QCommandLineParser& parser, const QString& name,
-                                   long long fallback, long long min, QString& error);
+                                   long long fallback, long long min, QString& error,
+                                   long long max = std::numeric_limits<int>::max());
 
 QCommandLineOption lutOption();
 QCommandLineOption setOption();

@@ -49,7 +49,7 @@ int runCommand(const QStringList& args, const Context& ctx)
         QString error;
         const auto threads = intOption(parser, "threads", 1, 0, error);
         const auto limit = intOption(parser, "limit", 0, 1, error);
-        const auto scale = intOption(parser, "scale", 2, 1, error);
+        const auto scale = intOption(parser, "scale", 2, 1, error, 64);
         if (!threads || !limit || !scale)
             return badInput(ctx, ("run: " + error).toStdString());
         if (*scale > 16)

@@ -44,8 +44,8 @@ int synthCommand(const QStringList& args, const Context& ctx)
     const auto frames = parser.value("frames") == "paper"
                             ? std::optional<long long>(options.frames)
                             : intOption(parser, "frames", options.frames, 1, error);
-    const auto width = intOption(parser, "width", options.width, 16, error);
-    const auto height = intOption(parser, "height", options.height, 16, error);
+    const auto width = intOption(parser, "width", options.width, 16, error, 8192);
+    const auto height = intOption(parser, "height", options.height, 16, error, 8192);
     if (!frames || !width || !height)
         return badInput(ctx, "synth: " + error);
     options.frames = int(*frames);

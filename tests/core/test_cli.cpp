@@ -635,6 +635,20 @@ private slots:
             {"run", m_stream, "--params", params, "--set", "ball.min_radius=3", "--out", "-"});
         QCOMPARE(good.status, 0);
     }
+
+    void numericOptionsOutOfRangeAreRefusedNotTruncated()
+    {
+        // 4294967312 would become 16 through an int (issue 10).
+        const Outcome wide = fieldsight({"synth", "--width", "4294967312", "--out", path("w")});
+        QCOMPARE(wide.status, 2);
+        QVERIFY2(wide.err.contains("--width: expected a whole number from 16 to 8192, got "
+                                   "'4294967312'"),
+                 qPrintable(wide.err));
+        QVERIFY(!QFileInfo::exists(path("w")));
+        const Outcome frames = fieldsight({"run", m_stream, "--limit", "99999999999"});
+        QCOMPARE(frames.status, 2);
+        QVERIFY(frames.err.contains("--limit"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)
