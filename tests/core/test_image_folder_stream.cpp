@@ -219,6 +219,8 @@ private slots:
              "frames[0].timestamp_ms must be a number"},
             {R"({"frames": [{"file": "a.png"}, {"name": "b.png"}]})",
              "frames[1].file must be a string"},
+            {R"({"frames": [{"file": "a.png"}, {"file": "a.png", "timestamp_ms": 5}]})",
+             "frames[1].file \"a.png\" is listed twice"},
             {R"([1, 2])", "expected a JSON object at the top level"},
         };
         for (const Case& c : cases) {

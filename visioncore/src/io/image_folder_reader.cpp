@@ -166,6 +166,8 @@ Result<Manifest> parseManifest(const std::string& path)
             const auto file = entry.find("file");
             if (file == entry.end() || !file->is_string())
                 return bad(where + ".file must be a string");
+            if (manifest.frames.count(file->get<std::string>()))
+                return bad(where + ".file \"" + file->get<std::string>() + "\" is listed twice");
             FrameMeta meta;
             if (const auto t = entry.find("timestamp_ms"); t != entry.end()) {
                 if (!t->is_number())
