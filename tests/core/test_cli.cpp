@@ -649,6 +649,33 @@ private slots:
         QCOMPARE(frames.status, 2);
         QVERIFY(frames.err.contains("--limit"));
     }
+
+    void librariesPrintNothingOfTheirOwn()
+    {
+        // A file no video back end can open (GStreamer and FFmpeg used to print their own lines)
+        // and a PNG whose header is damaged (libpng used to print "libpng error"): one line each.
+        const QString video = path("noise.avi");
+        QFile noise(video);
+        QVERIFY(noise.open(QIODevice::WriteOnly));
+        for (int i = 0; i < 500; ++i)
+            noise.write(QByteArray::number(i * 7919 % 10007).repeated(3));
+        noise.close();
+        const Outcome bad_video = fieldsight({"run", video, "--out", path("v.json")});
+        QCOMPARE(bad_video.status, 2);
+        verifyOneLineError(bad_video, video);
+
+        const QString folder = path("damaged_png");
+        makeStream(folder, true, 1);
+        const QString frame = folder + "/" + frameName(0);
+        QFile png(frame);
+        QVERIFY(png.open(QIODevice::ReadWrite));
+        png.seek(20); // inside the header's height: its checksum no longer matches
+        png.write("\x7f", 1);
+        png.close();
+        const Outcome bad_png = fieldsight({"run", folder, "--out", path("p.json")});
+        QCOMPARE(bad_png.status, 2);
+        verifyOneLineError(bad_png, frame);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCli)

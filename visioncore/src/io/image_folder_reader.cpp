@@ -194,10 +194,29 @@ std::uint32_t bigEndian(const unsigned char* p, int bytes)
     return v;
 }
 
+/// The CRC-32 of PNG chunks (ISO 3309), bit by bit: only the 17 bytes of a header are checked.
+std::uint32_t crc32(const unsigned char* p, std::size_t n)
+{
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (std::size_t i = 0; i < n; ++i) {
+        c ^= p[i];
+        for (int k = 0; k < 8; ++k)
+            c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return c ^ 0xFFFFFFFFu;
+}
+
+struct HeaderSize
+{
+    long long width = 0;
+    long long height = 0;
+    bool bad_checksum = false; ///< a PNG header whose CRC does not match (libpng would print)
+};
+
 /// The size an image file's header claims (PNG, JPEG, BMP), read before decoding so a small file
 /// claiming a huge image is refused instead of allocated; nullopt when the header says nothing
 /// this recognises (the decoder then decides).
-std::optional<std::pair<long long, long long>> headerSize(const std::string& path)
+std::optional<HeaderSize> headerSize(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     std::vector<unsigned char> head(65536);
@@ -207,12 +226,13 @@ std::optional<std::pair<long long, long long>> headerSize(const std::string& pat
     const std::size_t n = head.size();
     static const unsigned char png[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
     if (n >= 24 && std::equal(png, png + 8, h) && std::memcmp(h + 12, "IHDR", 4) == 0)
-        return std::pair{(long long)bigEndian(h + 16, 4), (long long)bigEndian(h + 20, 4)};
+        return HeaderSize{(long long)bigEndian(h + 16, 4), (long long)bigEndian(h + 20, 4),
+                          n >= 33 && crc32(h + 12, 17) != bigEndian(h + 29, 4)};
     if (n >= 26 && h[0] == 'B' && h[1] == 'M') {
         std::int32_t w = 0, ht = 0;
         std::memcpy(&w, h + 18, 4); // little-endian on every machine this builds for
         std::memcpy(&ht, h + 22, 4);
-        return std::pair{std::llabs(w), std::llabs(ht)};
+        return HeaderSize{std::llabs(w), std::llabs(ht)};
     }
     if (n >= 4 && h[0] == 0xFF && h[1] == 0xD8) { // JPEG: walk the segments to a frame header
         std::size_t at = 2;
@@ -222,8 +242,8 @@ std::optional<std::pair<long long, long long>> headerSize(const std::string& pat
             const bool sof = (marker >= 0xC0 && marker <= 0xCF) && marker != 0xC4 &&
                              marker != 0xC8 && marker != 0xCC;
             if (sof)
-                return std::pair{(long long)bigEndian(h + at + 7, 2),
-                                 (long long)bigEndian(h + at + 5, 2)};
+                return HeaderSize{(long long)bigEndian(h + at + 7, 2),
+                                  (long long)bigEndian(h + at + 5, 2)};
             if (length < 2)
                 break;
             at += 2 + length;
@@ -278,11 +298,13 @@ public:
     Result<Frame> decode(std::size_t index) const
     {
         const std::string path = (m_folder / m_files[index]).string();
-        if (const auto claimed = headerSize(path);
-            claimed && !isSaneFrameSize(claimed->first, claimed->second))
-            return Error{path + ": the image header claims " + std::to_string(claimed->first) +
-                         "x" + std::to_string(claimed->second) + " pixels (at most " +
+        const auto claimed = headerSize(path);
+        if (claimed && !isSaneFrameSize(claimed->width, claimed->height))
+            return Error{path + ": the image header claims " + std::to_string(claimed->width) +
+                         "x" + std::to_string(claimed->height) + " pixels (at most " +
                          std::to_string(kMaxFrameSide) + " a side); not decoded"};
+        if (claimed && claimed->bad_checksum)
+            return Error{"cannot read " + path + ": damaged PNG header (checksum mismatch)"};
         cv::Mat bgr;
         try {
             bgr = cv::imread(path, cv::IMREAD_COLOR);

@@ -3,6 +3,8 @@
 
 #include "io/stream_readers.h"
 
+#include <opencv2/core/utils/logger.hpp>
+
 #include <algorithm>
 #include <cstdlib>
 #include <cctype>
@@ -72,8 +74,11 @@ Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec)
     // OpenCV's own ceiling on decoded pixels (1 Gpx by default) down to what a frame may be
     // (8192 x 8192), for images whose header this reader cannot read first; a user's setting
     // wins. Read by OpenCV at its first decode.
+    // OpenCV's own log lines (GStreamer and FFmpeg warnings, "raised OpenCV exception" while
+    // probing back ends) are silenced: the user sees Fieldsight's one line naming the file.
     static const bool capped = [] {
         ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(8192LL * 8192LL).c_str(), 0);
+        cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
         return true;
     }();
     (void)capped;
