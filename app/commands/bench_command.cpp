@@ -3,6 +3,7 @@
 // design) and a full-frame classification with OpenCV connected components (a common baseline).
 #include "commands/commands.h"
 
+#include "visioncore/io/json_text.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/io/memory_data_wrapper.h"
 #include "visioncore/services/worker_pool.h"
@@ -440,7 +441,7 @@ std::string benchJson(const BenchResults& r)
     Json j;
     j["format"] = "fieldsight-bench/1";
     appendBench(j, r);
-    return j.dump(2) + "\n";
+    return jsonText(j, 2) + "\n";
 }
 
 std::string benchStreamName(const std::string& stream)
@@ -632,7 +633,7 @@ std::string multiBenchJson(const MultiBenchResults& m)
     c["frames"] = m.combined.frames;
     appendTimings(c, m.combined);
     j["combined"] = std::move(c);
-    return j.dump(2) + "\n";
+    return jsonText(j, 2) + "\n";
 }
 
 /// Opens one stream of a bench and applies the settings. With several streams, an error that

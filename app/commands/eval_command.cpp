@@ -2,6 +2,7 @@
 // §5.3, printed as a table and written as fieldsight-eval/1.
 #include "commands/commands.h"
 
+#include "visioncore/io/json_text.h"
 #include "visioncore/services/evaluation.h"
 
 #include <nlohmann/json.hpp>
@@ -78,7 +79,7 @@ std::string evalJson(const EvalReport& report)
     boundary["frames"] = s.boundary_frames;
     j["field_boundary"] = std::move(boundary);
     j["note"] = kPrecisionNote;
-    return j.dump(2) + "\n";
+    return jsonText(j, 2) + "\n";
 }
 
 } // namespace

@@ -13,6 +13,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+
+#include <filesystem>
 #include <QTemporaryDir>
 
 #include <set>
@@ -675,6 +677,24 @@ private slots:
         const Outcome bad_png = fieldsight({"run", folder, "--out", path("p.json")});
         QCOMPARE(bad_png.status, 2);
         verifyOneLineError(bad_png, frame);
+    }
+
+    void aFrameNameThatIsNotUtf8IsWrittenNotThrown()
+    {
+        // A frame file named in Latin-1 ("caf\xe9.png"): the results JSON is still written,
+        // valid, with U+FFFD for the bad byte (it used to end in a raw library exception).
+        const QString folder = path("latin1");
+        makeStream(folder, true, 1);
+        const std::string from = (folder + "/" + frameName(0)).toStdString();
+        const std::string to = folder.toStdString() + "/caf\xe9.png";
+        std::filesystem::rename(from, to);
+        const QString json = path("latin1.json");
+        const Outcome o = fieldsight({"run", folder, "--out", json});
+        QCOMPARE(o.status, 0);
+        const QJsonObject doc = readObject(json);
+        const QJsonArray frames = doc.value("frames").toArray();
+        QCOMPARE(frames.size(), 1);
+        QCOMPARE(frames[0].toObject().value("name").toString(), QString::fromUtf8("caf\uFFFD.png"));
     }
 };
 

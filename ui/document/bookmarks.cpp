@@ -1,5 +1,6 @@
 #include "ui/document/bookmarks.h"
 
+#include "visioncore/io/json_text.h"
 #include "visioncore/io/atomic_file.h"
 
 #include <nlohmann/json.hpp>
@@ -77,7 +78,7 @@ std::string Bookmarks::toJson() const
     doc["bookmarks"] = nlohmann::ordered_json::array();
     for (const Bookmark& b : m_list)
         doc["bookmarks"].push_back({{"frame", b.frame}, {"name", b.name}, {"note", b.note}});
-    return doc.dump(1) + "\n";
+    return jsonText(doc, 1) + "\n";
 }
 
 Status Bookmarks::save(const std::string& path) const

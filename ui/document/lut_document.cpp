@@ -1,5 +1,6 @@
 #include "ui/document/lut_document.h"
 
+#include "visioncore/io/json_text.h"
 #include "visioncore/io/atomic_file.h"
 
 #include <QDateTime>
@@ -157,7 +158,7 @@ Status LutDocument::writeRecovery()
         {"path", m_path.toStdString()},
         {"stream", m_stream.toStdString()},
         {"saved_at", QDateTime::currentDateTime().toString(Qt::ISODate).toStdString()}};
-    return writeFileAtomically(base.toStdString() + ".json", meta.dump(2) + '\n');
+    return writeFileAtomically(base.toStdString() + ".json", jsonText(meta, 2) + '\n');
 }
 
 std::optional<LutRecovery> LutDocument::findRecovery() const

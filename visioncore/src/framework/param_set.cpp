@@ -1,6 +1,7 @@
 // Parameter sets: JSON, settings, and the check against a pipeline's parameters.
 #include "visioncore/framework/param_set.h"
 
+#include "visioncore/io/json_text.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/atomic_file.h"
 
@@ -83,7 +84,7 @@ std::string ParamSet::toJson() const
     nlohmann::ordered_json root;
     root["format"] = kFormat;
     root["stages"] = std::move(stages);
-    return root.dump(2) + "\n";
+    return jsonText(root, 2) + "\n";
 }
 
 Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& source)

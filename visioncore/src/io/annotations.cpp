@@ -1,6 +1,7 @@
 // Ground-truth annotation files (SPEC §5.2): strict reading, atomic writing.
 #include "visioncore/io/annotations.h"
 
+#include "visioncore/io/json_text.h"
 #include "io/json_format.h"
 
 #include "visioncore/io/atomic_file.h"
@@ -70,7 +71,7 @@ std::string Annotations::toJson() const
     OrderedJson root;
     root["format"] = kFormat;
     root["frames"] = std::move(frames_json);
-    return root.dump(1) + "\n";
+    return jsonText(root, 1) + "\n";
 }
 
 std::string frameStem(const std::string& name)

@@ -2,6 +2,7 @@
 // their smoothing.
 #include "visioncore/services/lut_building.h"
 
+#include "visioncore/io/json_text.h"
 #include "io/json_format.h"
 
 #include "visioncore/io/atomic_file.h"
@@ -265,7 +266,7 @@ std::string lutSamplesToJson(const LutSamples& samples)
         for (const cv::Point& p : s.polygon)
             polygon.push_back({p.x, p.y});
         json["polygon"] = std::move(polygon);
-        text += (i == 0 ? "\n  " : ",\n  ") + json.dump();
+        text += (i == 0 ? "\n  " : ",\n  ") + jsonText(json);
     }
     text += samples.samples.empty() ? "]\n}\n" : "\n ]\n}\n";
     return text;

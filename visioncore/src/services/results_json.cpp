@@ -1,6 +1,8 @@
 // fieldsight-results/1: built and read with the JSON library.
 #include "visioncore/services/results_json.h"
 
+#include "visioncore/io/json_text.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -99,7 +101,7 @@ std::string resultsJson(const ResultsHeader& header, const std::vector<FrameResu
     for (const FrameResult& f : frames)
         list.push_back(frameJson(f));
     doc["summary"] = summaryJson(frames, stage_ids);
-    return doc.dump() + "\n";
+    return jsonText(doc) + "\n";
 }
 
 Result<ResultsFile> readResults(const std::string& text, const std::string& source,
