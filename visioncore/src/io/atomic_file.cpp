@@ -9,7 +9,9 @@
 #include <cstring>
 #include <string>
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -35,6 +37,38 @@ std::string temporaryNameFor(const std::string& path)
 {
     static std::atomic<unsigned> counter{0};
     return path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+}
+
+mode_t currentUmask()
+{
+    static const mode_t mask = [] {
+        const mode_t m = ::umask(0);
+        ::umask(m);
+        return m;
+    }();
+    return mask;
+}
+
+/// Removes temporaries beside `path` ("<path>.tmp-<pid>-<n>") left by writers that died: a
+/// temporary whose process is gone.
+void removeStaleTemporaries(const std::string& path)
+{
+    const std::string folder = folderOf(path);
+    const auto slash = path.find_last_of('/');
+    const std::string prefix =
+        (slash == std::string::npos ? path : path.substr(slash + 1)) + ".tmp-";
+    DIR* dir = ::opendir(folder.c_str());
+    if (!dir)
+        return;
+    while (const dirent* entry = ::readdir(dir)) {
+        const std::string name = entry->d_name;
+        if (name.compare(0, prefix.size(), prefix) != 0)
+            continue;
+        const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+        if (pid > 0 && pid != long(::getpid()) && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH)
+            ::unlink((folder + "/" + name).c_str());
+    }
+    ::closedir(dir);
 }
 
 bool writeAll(int fd, const char* data, std::size_t size)
@@ -121,9 +155,15 @@ Status writeFileAtomically(const std::string& requested, const void* data, std::
     if (target_exists && !S_ISREG(target.st_mode))
         return writeStraight(requested, data, size);
 
+    removeStaleTemporaries(path);
     const std::string temp = temporaryNameFor(path);
-    // 0666 lets the umask decide, as for any newly created file.
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    // The bytes go to an unnamed file (O_TMPFILE) that gets its temporary name only once
+    // complete: a writer killed while writing leaves nothing behind. Where the file system has
+    // no unnamed files, a named temporary (removed by the next save if its writer died).
+    int fd = ::open(folderOf(path).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    const bool unnamed = fd >= 0;
+    if (!unnamed)
+        fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0)
         return errnoError("write", path, errno);
 
@@ -134,11 +174,17 @@ Status writeFileAtomically(const std::string& requested, const void* data, std::
     };
     if (!writeAll(fd, static_cast<const char*>(data), size))
         return fail(errno);
-    // Keep the permissions of the file being replaced.
-    if (target_exists && ::fchmod(fd, target.st_mode & 07777) != 0)
+    // Keep the permissions of the file being replaced (an unnamed file starts as 0000).
+    const mode_t mode = target_exists ? (target.st_mode & 07777) : (0666 & ~currentUmask());
+    if ((target_exists || unnamed) && ::fchmod(fd, mode) != 0)
         return fail(errno);
     if (::fsync(fd) != 0)
         return fail(errno);
+    if (unnamed) {
+        const std::string self = "/proc/self/fd/" + std::to_string(fd);
+        if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) != 0)
+            return fail(errno);
+    }
     if (::close(fd) != 0) {
         const int error = errno;
         ::unlink(temp.c_str());
