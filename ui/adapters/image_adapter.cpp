@@ -3,6 +3,9 @@
 
 #include "visioncore/ycbcr.h"
 
+#include <QPainter>
+#include <QPixmap>
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -59,6 +62,22 @@ QColor toQColor(Rgb colour)
 } // namespace fieldsight::ui
 
 namespace fieldsight::ui {
+
+QString colourLabel(Colour colour)
+{
+    const std::string_view name = colourName(colour);
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+
+QIcon colourSwatch(Colour colour)
+{
+    QPixmap pixmap(16, 16);
+    pixmap.fill(toQColor(colourDisplayRgb(colour)));
+    QPainter p(&pixmap);
+    p.setPen(QColor(90, 90, 90));
+    p.drawRect(0, 0, 15, 15);
+    return QIcon(pixmap);
+}
 
 QImage maskToQImage(const cv::Mat& mask, QColor colour)
 {

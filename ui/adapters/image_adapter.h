@@ -1,10 +1,13 @@
-// The only cv::Mat <-> QImage code: frames from the core to QImages for painting and display.
+// The only cv::Mat <-> QImage code: frames from the core to QImages for painting and display;
+// and the colour classes as the GUI shows them (name, swatch).
 #pragma once
 
 #include "visioncore/colour.h"
 
 #include <QColor>
+#include <QIcon>
 #include <QImage>
+#include <QString>
 
 #include <opencv2/core/mat.hpp>
 
@@ -25,6 +28,10 @@ QImage ycbcrToZoomedQImage(const cv::Mat& ycbcr, int scale);
 QImage bgrToQImage(const cv::Mat& bgr);
 
 QColor toQColor(Rgb colour);
+/// A colour class's name as shown ("pink_orange").
+QString colourLabel(Colour colour);
+/// A 16 px square of the class's display colour (SPEC §1) with a grey border.
+QIcon colourSwatch(Colour colour);
 /// A highlight: `colour` where the CV_8U `mask` is nonzero, transparent elsewhere (null when the
 /// mask is empty).
 QImage maskToQImage(const cv::Mat& mask, QColor colour);

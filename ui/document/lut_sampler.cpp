@@ -1,5 +1,7 @@
 #include "ui/document/lut_sampler.h"
 
+#include "ui/adapters/image_adapter.h"
+
 #include "visioncore/io/annotations.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_compare.h"
@@ -103,11 +105,8 @@ void LutSampler::addRect(const QString& frame, Colour colour, const QRect& rect)
         {r.left(), r.top()}, {r.right(), r.top()}, {r.right(), r.bottom()}, {r.left(), r.bottom()}};
     std::vector<LutSample> after = m_samples.samples;
     after.push_back(std::move(sample));
-    const std::string_view name = colourName(colour);
-    m_undo.push(new SamplesCommand(
-        *this,
-        tr("Sample %1 on %2").arg(QString::fromUtf8(name.data(), qsizetype(name.size())), frame),
-        m_samples.samples, std::move(after)));
+    m_undo.push(new SamplesCommand(*this, tr("Sample %1 on %2").arg(colourLabel(colour), frame),
+                                   m_samples.samples, std::move(after)));
 }
 
 void LutSampler::setSamples(std::vector<LutSample> samples, const QString& text)

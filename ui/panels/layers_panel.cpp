@@ -29,16 +29,6 @@ QIcon swatch(const LayerInfo& layer)
     return QIcon(pixmap);
 }
 
-QIcon classSwatch(Colour c)
-{
-    QPixmap pixmap(16, 16);
-    pixmap.fill(toQColor(colourDisplayRgb(c)));
-    QPainter p(&pixmap);
-    p.setPen(QColor(90, 90, 90));
-    p.drawRect(0, 0, 15, 15);
-    return QIcon(pixmap);
-}
-
 QString group(const std::string& id)
 {
     return QString::fromStdString(id.substr(0, id.find('.')));
@@ -89,9 +79,8 @@ LayersPanel::LayersPanel(const Pipeline& pipeline, QWidget* parent) : QTreeWidge
     legend->setFlags(Qt::ItemIsEnabled);
     for (int c = 0; c < kColourCount; ++c) {
         auto* item = new QTreeWidgetItem(
-            legend, {QStringLiteral("%1  %2").arg(c).arg(QString::fromUtf8(
-                        colourName(Colour(c)).data(), qsizetype(colourName(Colour(c)).size())))});
-        item->setIcon(0, classSwatch(Colour(c)));
+            legend, {QStringLiteral("%1  %2").arg(c).arg(colourLabel(Colour(c)))});
+        item->setIcon(0, colourSwatch(Colour(c)));
         item->setFlags(Qt::ItemIsEnabled);
     }
     legend->setExpanded(false);

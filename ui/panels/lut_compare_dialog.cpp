@@ -18,12 +18,6 @@ namespace fieldsight::ui {
 
 namespace {
 
-QString name(Colour c)
-{
-    const std::string_view n = colourName(c);
-    return QString::fromUtf8(n.data(), qsizetype(n.size()));
-}
-
 } // namespace
 
 LutCompareDialog::LutCompareDialog(LutDocument& doc, ColourLut other, const QString& other_path,
@@ -70,13 +64,9 @@ LutCompareDialog::LutCompareDialog(LutDocument& doc, ColourLut other, const QStr
     for (int c = 1; c < kColourCount; ++c) {
         if (!present[std::size_t(c)])
             continue;
-        auto* box = new QCheckBox(name(Colour(c)), merge_box);
-        box->setObjectName(QStringLiteral("merge.%1").arg(name(Colour(c))));
-        box->setIcon(QIcon(QPixmap::fromImage([c] {
-            QImage swatch(12, 12, QImage::Format_RGB32);
-            swatch.fill(toQColor(colourDisplayRgb(Colour(c))));
-            return swatch;
-        }())));
+        auto* box = new QCheckBox(colourLabel(Colour(c)), merge_box);
+        box->setObjectName(QStringLiteral("merge.%1").arg(colourLabel(Colour(c))));
+        box->setIcon(colourSwatch(Colour(c)));
         box->setChecked(true);
         connect(box, &QCheckBox::toggled, this, &LutCompareDialog::refreshPreview);
         grid->addWidget(box, slot / 4, slot % 4);
@@ -121,14 +111,10 @@ void LutCompareDialog::refresh()
     const QLocale locale;
     int row = 0;
     for (const auto& [pair, cells] : m_pairs) {
-        auto* here = new QTableWidgetItem(name(pair.first));
+        auto* here = new QTableWidgetItem(colourLabel(pair.first));
         here->setData(Qt::UserRole, int(pair.first));
-        here->setIcon(QIcon(QPixmap::fromImage([c = pair.first] {
-            QImage swatch(12, 12, QImage::Format_RGB32);
-            swatch.fill(toQColor(colourDisplayRgb(c)));
-            return swatch;
-        }())));
-        auto* there = new QTableWidgetItem(name(pair.second));
+        here->setIcon(colourSwatch(pair.first));
+        auto* there = new QTableWidgetItem(colourLabel(pair.second));
         there->setData(Qt::UserRole, int(pair.second));
         auto* count = new QTableWidgetItem(locale.toString(qulonglong(cells)));
         count->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -190,7 +176,7 @@ bool LutCompareDialog::merge()
     QStringList names;
     for (const auto& [colour, box] : m_merge_boxes)
         if (box->isChecked())
-            names << name(colour);
+            names << colourLabel(colour);
     return m_doc.edit(tr("Merge %1 from %2").arg(names.join(QStringLiteral(", ")), m_other_name),
                       plannedMerge());
 }

@@ -10,8 +10,6 @@
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QLabel>
-#include <QPainter>
-#include <QPixmap>
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QPushButton>
@@ -37,22 +35,6 @@ namespace fieldsight::ui {
 
 namespace {
 
-QString className(Colour c)
-{
-    const std::string_view name = colourName(c);
-    return QString::fromUtf8(name.data(), qsizetype(name.size()));
-}
-
-QIcon swatch(Colour c)
-{
-    QPixmap pixmap(16, 16);
-    pixmap.fill(toQColor(colourDisplayRgb(c)));
-    QPainter p(&pixmap);
-    p.setPen(Qt::darkGray);
-    p.drawRect(0, 0, 15, 15);
-    return QIcon(pixmap);
-}
-
 } // namespace
 
 LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
@@ -66,13 +48,13 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     m_colours = new QActionGroup(this);
     m_colours->setExclusive(true);
     for (int c = 0; c < kColourCount; ++c) {
-        auto* action = new QAction(swatch(Colour(c)), className(Colour(c)), this);
-        action->setObjectName(QStringLiteral("colour.%1").arg(className(Colour(c))));
+        auto* action = new QAction(colourSwatch(Colour(c)), colourLabel(Colour(c)), this);
+        action->setObjectName(QStringLiteral("colour.%1").arg(colourLabel(Colour(c))));
         action->setCheckable(true);
         action->setData(c);
         if (c <= 9) {
             action->setShortcut(QKeySequence(Qt::Key_0 + c));
-            action->setToolTip(QStringLiteral("%1 (%2)").arg(className(Colour(c))).arg(c));
+            action->setToolTip(QStringLiteral("%1 (%2)").arg(colourLabel(Colour(c))).arg(c));
         }
         m_colours->addAction(action);
         auto* button = new QToolButton(this);
@@ -342,7 +324,7 @@ std::optional<PlannedEdit> LutPanel::planAt(QPoint pixel) const
                                .arg(t.y)
                                .arg(t.cb)
                                .arg(t.cr)
-                               .arg(className(m_colour)),
+                               .arg(colourLabel(m_colour)),
                            changesTo(m_lut.table(), cellsInBox(c[0], c[1], c[2], t), m_colour, keep,
                                      softClasses())};
     }
@@ -353,7 +335,7 @@ std::optional<PlannedEdit> LutPanel::planAt(QPoint pixel) const
                 .arg(pixel.x())
                 .arg(pixel.y())
                 .arg(qsizetype(pixels.size()))
-                .arg(className(m_colour)),
+                .arg(colourLabel(m_colour)),
             changesTo(m_lut.table(), cellsOfPixels(*image, pixels), m_colour, keep, softClasses())};
     }
     case LutTool::Brush:
@@ -370,7 +352,7 @@ PlannedEdit LutPanel::brushEdit(const std::vector<cv::Point>& pixels) const
     const Tolerance t = erase ? Tolerance{} : tolerance();
     const bool keep = !erase && m_keep_others->isChecked();
     return PlannedEdit{erase ? tr("Erase stroke")
-                             : tr("Brush stroke → %1").arg(className(m_colour)),
+                             : tr("Brush stroke → %1").arg(colourLabel(m_colour)),
                        changesTo(m_lut.table(), cellsOfPixels(*frame(), pixels, t), target, keep,
                                  !erase && softClasses())};
 }
@@ -509,8 +491,9 @@ void LutPanel::preview(std::optional<QPoint> pixel)
         QStringList overlap;
         for (int c = 1; c < kColourCount; ++c)
             if (taken[std::size_t(c)] > 0)
-                overlap
-                    << QStringLiteral("%1 %2").arg(taken[std::size_t(c)]).arg(className(Colour(c)));
+                overlap << QStringLiteral("%1 %2")
+                               .arg(taken[std::size_t(c)])
+                               .arg(colourLabel(Colour(c)));
         text = tr("Here: %1 cells would change, %2 px of this frame")
                    .arg(qsizetype(m_preview.size()))
                    .arg(cv::countNonZero(pixels));
@@ -585,7 +568,8 @@ void LutPanel::refreshStats()
     QStringList lines;
     for (int c = 1; c < kColourCount; ++c)
         if (counts[std::size_t(c)] > 0)
-            lines << QStringLiteral("%1 %2").arg(className(Colour(c))).arg(counts[std::size_t(c)]);
+            lines
+                << QStringLiteral("%1 %2").arg(colourLabel(Colour(c))).arg(counts[std::size_t(c)]);
     m_stats->setText(
         tr("Cells per class: %1")
             .arg(lines.isEmpty() ? tr("none classified") : lines.join(QStringLiteral(", "))));

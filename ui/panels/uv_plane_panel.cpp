@@ -220,15 +220,12 @@ void UvCanvas::dab(QPoint cell)
     const Colour colour = erase ? Colour::Unclassified : m_panel.colour();
     std::sort(cells.begin(), cells.end());
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    m_lut.edit(erase ? tr("UV erase, Y cells %1-%2").arg(m_y_lo).arg(m_y_hi)
-                     : tr("UV paint → %1, Y cells %2-%3")
-                           .arg(QString::fromUtf8(colourName(colour).data(),
-                                                  qsizetype(colourName(colour).size())))
-                           .arg(m_y_lo)
-                           .arg(m_y_hi),
-               changesTo(m_lut.table(), cells, colour, !erase && m_panel.keepOthers(),
-                         !erase && m_panel.softClasses()),
-               m_stroke);
+    m_lut.edit(
+        erase ? tr("UV erase, Y cells %1-%2").arg(m_y_lo).arg(m_y_hi)
+              : tr("UV paint → %1, Y cells %2-%3").arg(colourLabel(colour)).arg(m_y_lo).arg(m_y_hi),
+        changesTo(m_lut.table(), cells, colour, !erase && m_panel.keepOthers(),
+                  !erase && m_panel.softClasses()),
+        m_stroke);
 }
 
 void UvCanvas::mousePressEvent(QMouseEvent* event)
