@@ -220,7 +220,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
                     statusBar()->clearMessage();
                 m_preview_shown = m_lut_panel->previewText();
             });
-    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshUvSelection);
+    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshCellHighlights);
     connect(m_lut_doc, &LutDocument::changed, this, &MainWindow::refreshPreview);
     connect(m_lut_panel, &LutPanel::cellsToOutline, this,
             [this](const std::vector<std::uint32_t>& cells) {
@@ -649,13 +649,10 @@ LutCompareDialog* MainWindow::compareLut(const QString& path)
     connect(dialog, &LutCompareDialog::cellsChosen, this,
             [this](const std::vector<std::uint32_t>& cells) {
                 m_uv->canvas().setOutlinedCells(cells);
-                const auto& out = m_doc->current();
-                m_view->setHighlight(
-                    QStringLiteral("compare"),
-                    cells.empty() || !out
-                        ? QImage()
-                        : maskToQImage(pixelsIn(out->frame.ycbcr, CellMask::of(cells)),
-                                       QColor(255, 140, 0, 170)));
+                m_compare_cells.reset();
+                if (!cells.empty())
+                    m_compare_cells = CellMask::of(cells);
+                refreshCellHighlights();
             });
     dialog->show();
     return dialog;
@@ -693,7 +690,7 @@ void MainWindow::onFrameReady()
 {
     const auto& out = m_doc->current();
     m_view->setOutput(out);
-    refreshUvSelection();
+    refreshCellHighlights();
     if (m_hover && m_view->toolActive())
         refreshPreview();
     // The view first; the panels follow once it has painted (at once when it cannot paint).
@@ -710,17 +707,21 @@ void MainWindow::refreshPreview()
     m_lut_panel->preview(m_view->toolActive() ? m_hover : std::nullopt);
 }
 
-void MainWindow::refreshUvSelection()
+void MainWindow::refreshCellHighlights()
 {
-    const auto& selection = m_uv->canvas().selection();
+    // The pixels of the current frame in the cells of a UV selection (cyan) and of the compare
+    // dialog's chosen row (orange), found again for every frame shown.
     const auto& out = m_doc->current();
-    if (!selection || !out || out->frame.ycbcr.empty()) {
-        m_view->setHighlight(QStringLiteral("uv_selection"), {});
-        return;
-    }
-    m_view->setHighlight(
-        QStringLiteral("uv_selection"),
-        maskToQImage(pixelsIn(out->frame.ycbcr, *selection), QColor(0, 230, 255, 170)));
+    const auto light = [&](const QString& id, const CellMask* cells, QColor colour) {
+        m_view->setHighlight(id, cells && out && !out->frame.ycbcr.empty()
+                                     ? maskToQImage(pixelsIn(out->frame.ycbcr, *cells), colour)
+                                     : QImage());
+    };
+    const auto& selection = m_uv->canvas().selection();
+    light(QStringLiteral("uv_selection"), selection ? &*selection : nullptr,
+          QColor(0, 230, 255, 170));
+    light(QStringLiteral("compare"), m_compare_cells ? &*m_compare_cells : nullptr,
+          QColor(255, 140, 0, 170));
 }
 
 void MainWindow::refreshPanels()

@@ -7,6 +7,7 @@
 #include "ui/document/lut_document.h"
 #include "ui/document/stream_document.h"
 #include "ui/frame_view/frame_view.h"
+#include "visioncore/services/lut_compare.h"
 
 #include <QFutureWatcher>
 #include <QMainWindow>
@@ -110,8 +111,9 @@ private:
     void refreshPanels();
     /// The LUT tool's preview at the hovered pixel (or none).
     void refreshPreview();
-    /// The pixels of the UV plane's selected cells, highlighted in the image.
-    void refreshUvSelection();
+    /// The current frame's pixels in chosen cells (the UV plane's selection, the compare
+    /// dialog's row), highlighted in the image.
+    void refreshCellHighlights();
     void updateTitle();
     void rememberRecent(const QString& spec);
     void rebuildRecentMenu();
@@ -126,6 +128,7 @@ private:
     LutPanel* m_lut_panel = nullptr;
     EditEffectScan* m_effect = nullptr;
     UvPlanePanel* m_uv = nullptr;
+    std::optional<CellMask> m_compare_cells; ///< the compare dialog's chosen row, if any
     FrameRecorder* m_recorder = nullptr;
     EffectStrip* m_effect_strip = nullptr;
     QWidget* m_recovery_bar = nullptr;
