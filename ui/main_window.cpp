@@ -758,11 +758,8 @@ void MainWindow::onLutLoaded()
         m_lut_doc->reset(m_doc->lut(), m_doc->lutPath());
     }
     m_lut_doc->setStream(m_doc->streamSpec());
-    if (m_effect->stream() != m_doc->streamSpec()) {
-        m_effect->setSettings(std::make_shared<ParamSet>(m_doc->paramChanges()),
-                              m_doc->skippedStages());
+    if (m_effect->stream() != m_doc->streamSpec()) // its settings follow settingsChanged
         m_effect->setStream(m_doc->streamSpec(), m_lut_doc->version());
-    }
     updateTitle();
 }
 

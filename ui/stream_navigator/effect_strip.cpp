@@ -83,12 +83,7 @@ QString EffectStrip::summary() const
         pixels += e.changed_pixels;
         unclassified += e.unclassified;
         all += e.pixels;
-        total.balls_appeared += e.delta.balls_appeared;
-        total.balls_vanished += e.delta.balls_vanished;
-        total.goalposts_appeared += e.delta.goalposts_appeared;
-        total.goalposts_vanished += e.delta.goalposts_vanished;
-        total.obstacles_appeared += e.delta.obstacles_appeared;
-        total.obstacles_vanished += e.delta.obstacles_vanished;
+        total += e.delta;
     }
     const QLocale locale;
     QString text;

@@ -119,6 +119,16 @@ struct DetectionDelta
 
     int appeared() const { return balls_appeared + goalposts_appeared + obstacles_appeared; }
     int vanished() const { return balls_vanished + goalposts_vanished + obstacles_vanished; }
+    DetectionDelta& operator+=(const DetectionDelta& other)
+    {
+        balls_appeared += other.balls_appeared;
+        balls_vanished += other.balls_vanished;
+        goalposts_appeared += other.goalposts_appeared;
+        goalposts_vanished += other.goalposts_vanished;
+        obstacles_appeared += other.obstacles_appeared;
+        obstacles_vanished += other.obstacles_vanished;
+        return *this;
+    }
     friend bool operator==(const DetectionDelta&, const DetectionDelta&) = default;
 };
 
