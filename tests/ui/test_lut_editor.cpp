@@ -78,12 +78,18 @@ std::set<std::uint32_t> differences(const ColourLut& a, const ColourLut& b)
     return cells;
 }
 
+/// The window shown and active (for key shortcuts) on the sample stream.
+bool showAndOpen(MainWindow& w)
+{
+    w.show();
+    return QTest::qWaitForWindowActive(&w) && openAndWait(w);
+}
+
 /// A large window on the sample stream with the UV plane's dock in front.
 bool openWithUvPlane(MainWindow& w)
 {
     w.resize(1400, 900);
-    w.show();
-    if (!QTest::qWaitForWindowActive(&w) || !openAndWait(w))
+    if (!showAndOpen(w))
         return false;
     auto* dock = w.findChild<QDockWidget*>("uv_dock");
     if (!dock)
@@ -141,9 +147,7 @@ private slots:
     void aClickClassifiesExactlyTheToleranceBox()
     {
         MainWindow w;
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
+        QVERIFY(showAndOpen(w));
         showPixelsOneToOne(w);
         const ColourLut before = w.lutDocument().table();
 
@@ -180,9 +184,7 @@ private slots:
     void aBrushStrokeIsOneUndoStepAndUndoRestoresTheBytes()
     {
         MainWindow w;
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
+        QVERIFY(showAndOpen(w));
         showPixelsOneToOne(w);
         const ColourLut before = w.lutDocument().table();
         const int steps = w.lutDocument().undoStack().count();
@@ -297,9 +299,7 @@ private slots:
     void theEffectStripCountsWhatAnEditChangedOnEveryFrame()
     {
         MainWindow w;
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
+        QVERIFY(showAndOpen(w));
         ui::EditEffectScan& scan = w.effectScan();
         QVERIFY(waitForScan(scan)); // the first scan records every frame's detections
         QVERIFY(!scan.showsEdit());
@@ -481,9 +481,7 @@ private slots:
     void comparingTwoKnownTablesListsTheRightCellsAndMergesByClass()
     {
         MainWindow w;
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
+        QVERIFY(showAndOpen(w));
         const ColourLut here = w.lutDocument().table();
         // The other table: 5 orange cells become pink, 3 unclassified cells become yellow, and
         // 2 green cells become unclassified.
@@ -554,9 +552,7 @@ private slots:
     void retargetingMovesTheGreenOntoAFieldUnderNewLight()
     {
         MainWindow w;
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openAndWait(w));
+        QVERIFY(showAndOpen(w));
         const ColourLut lab = w.lutDocument().table();
         std::size_t samples = 0;
         const ColourShift none = w.lutPanel().estimateRetarget(&samples);

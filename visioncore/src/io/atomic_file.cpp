@@ -102,7 +102,7 @@ std::string fileKindName(unsigned mode)
         return "a socket";
     if (S_ISLNK(mode))
         return "a symbolic link";
-    return "not a regular file";
+    return "a special file";
 }
 
 namespace {
@@ -112,9 +112,10 @@ namespace {
 Status writeStraight(const std::string& path, const void* data, std::size_t size)
 {
     const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0 && errno == ENXIO)
+        return Error{"cannot write " + path + ": a FIFO that nothing reads"};
     if (fd < 0)
-        return errnoError("write", path,
-                          errno == ENXIO ? EPIPE : errno); // a FIFO nobody reads
+        return errnoError("write", path, errno);
     const int flags = ::fcntl(fd, F_GETFL);
     if (flags >= 0)
         ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
