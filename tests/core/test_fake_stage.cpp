@@ -9,6 +9,7 @@
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/io/atomic_file.h"
+#include "visioncore/services/results_json.h"
 
 #include <QImage>
 #include <QTemporaryDir>
@@ -132,6 +133,45 @@ private slots:
                                  "--render", dir, "--layers", "fake.nothing"});
         QCOMPARE(bad.status, 2);
         QVERIFY2(QString::fromStdString(bad.err).contains("fake.nothing"), bad.err.c_str());
+    }
+
+    void aFaultyStageIsADiagnosticOfItsFrames_data()
+    {
+        QTest::addColumn<int>("fault");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("throws") << int(FakeStage::kThrows) << "failed on purpose";
+        QTest::newRow("NaN") << int(FakeStage::kNotANumber)
+                             << "returned fake_marks with the point (nan, 30) for a 320x240 image";
+        QTest::newRow("far outside") << int(FakeStage::kFarOutside) << "(10000000, 30)";
+    }
+
+    void aFaultyStageIsADiagnosticOfItsFrames()
+    {
+        QFETCH(int, fault);
+        QFETCH(QString, message);
+        // The fault strikes frames 2 and 5 of 6; the run goes on and says so per frame.
+        const nlohmann::json doc =
+            runJson({"--limit", "6", "--set", QString("fake.fault=%1").arg(fault), "--set",
+                     "fake.every=3"});
+        QCOMPARE(doc["frames"].size(), std::size_t(6));
+        for (std::size_t i = 0; i < 6; ++i) {
+            const auto& frame = doc["frames"][i];
+            const bool struck = i % 3 == 2;
+            QCOMPARE(frame.contains("diagnostics"), struck);
+            QCOMPARE(frame["fake_marks"].size(), struck ? std::size_t(0) : std::size_t(1));
+            QVERIFY(frame.contains("balls")); // the other stages ran
+            if (struck) {
+                QCOMPARE(frame["diagnostics"].size(), std::size_t(1));
+                QCOMPARE(frame["diagnostics"][0]["stage"].get<std::string>(), std::string("fake"));
+                const auto text = frame["diagnostics"][0]["message"].get<std::string>();
+                QVERIFY2(QString::fromStdString(text).contains(message), text.c_str());
+            }
+        }
+        // No NaN or absurd number reached the file: it reads back with the checks of every reader.
+        auto text = readWholeFile(m_dir.filePath("results.json").toStdString());
+        QVERIFY(text.ok());
+        const auto back = readResults(text.value(), "results.json", m_pipeline);
+        QVERIFY2(back.ok(), back ? "" : back.error().message.c_str());
     }
 
     void usageListsTheFakeStage()

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace fieldsight::test {
@@ -59,6 +60,8 @@ constexpr Rgb kFakeLayerColour{250, 10, 200};
 class FakeStage : public Stage
 {
 public:
+    enum Fault { kNoFault, kThrows, kNotANumber, kFarOutside };
+
     const StageInfo& info() const override
     {
         static const StageInfo info{"fake",
@@ -73,16 +76,26 @@ public:
     }
     void run(Blackboard& bb) override
     {
-        if (m_fail)
+        // Faults on every `every`-th frame this stage runs (frame order on one core).
+        const int fault = m_runs++ % m_every == m_every - 1 ? int(m_fault) : kNoFault;
+        if (fault == kThrows)
             throw std::runtime_error("failed on purpose");
-        bb.percepts.output<FakeMark>().push_back({40, 30, m_level});
+        const double x = fault == kNotANumber ? std::nan("") : fault == kFarOutside ? 1e7 : 40.0;
+        bb.percepts.output<FakeMark>().push_back({x, 30, m_level});
         if (auto* d = bb.debug.layer("fake.box"))
             d->add({ShapeKind::Rect, {{10, 10}, {19, 19}}, kFakeLayerColour, 1, true, 1});
     }
 
 private:
     Param<double> m_level{this, 1.5, {"level", "", 0, 10, 0.5, "Written into every mark."}};
-    Param<bool> m_fail{this, false, {"fail", "", 0, 1, 1, "Throws instead of marking."}};
+    Param<int> m_fault{this,
+                       kNoFault,
+                       {"fault", "", 0, 3, 1,
+                        "0 none; 1 throws; 2 marks at x = NaN; 3 marks at "
+                        "x = 10^7 px (a faulty stage's nonsense)."}};
+    Param<int> m_every{
+        this, 1, {"every", "frames", 1, 100, 1, "The fault strikes every Nth frame."}};
+    int m_runs = 0;
 };
 
 inline Pipeline withFakeStage()

@@ -344,23 +344,40 @@ private slots:
         QVERIFY(!reset->isEnabled());
     }
 
-    void aThrowingStageIsADiagnosticAndTheRestRuns()
+    void aFaultyStageIsADiagnosticAndTheRestRuns_data()
     {
+        QTest::addColumn<int>("fault");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("throws") << int(FakeStage::kThrows) << "failed on purpose";
+        QTest::newRow("NaN") << int(FakeStage::kNotANumber) << "(nan, 30)";
+        QTest::newRow("far outside") << int(FakeStage::kFarOutside) << "(10000000, 30)";
+    }
+
+    void aFaultyStageIsADiagnosticAndTheRestRuns()
+    {
+        QFETCH(int, fault);
+        QFETCH(QString, message);
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(openAndWait(w, sampleStream()));
-        QVERIFY(w.document().setParam("fake", "fail", 1).ok());
+        QVERIFY(w.document().setParam("fake", "fault", fault).ok());
         QVERIFY(waitForFrame(w, 0));
         const auto out = w.document().current();
         QCOMPARE(out->result.diagnostics.size(), std::size_t(1));
         QCOMPARE(out->result.diagnostics[0].stage, std::string("fake"));
+        QVERIFY2(QString::fromStdString(out->result.diagnostics[0].message).contains(message),
+                 out->result.diagnostics[0].message.c_str());
         QVERIFY(w.detectionsPanel().topLevelTexts().contains("Diagnostics (1)"));
-        // The stages before and after it still ran: their lists are there.
+        // Its nonsense never reaches the overlay: the list is there and empty.
+        const auto* marks = out->result.percepts.find<FakeMark>();
+        QVERIFY(marks && marks->empty());
+        // The stages before it still ran: their lists are there.
         QVERIFY(
             w.detectionsPanel().topLevelTexts().filter(QRegularExpression("^Balls \\(")).size() ==
             1);
         QVERIFY(out->result.percepts.find<Ball>());
+        w.grab();                           // the overlay paints
         QTest::keyClick(&w, Qt::Key_Right); // and the tool goes on
         QVERIFY(waitForFrame(w, 1));
     }

@@ -2,9 +2,14 @@
 // exceptions as diagnostics.
 #include "visioncore/framework/controller.h"
 
+#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/percepts/percept_set.h"
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
 namespace fieldsight {
@@ -142,6 +147,41 @@ std::vector<StageDescriptor> Controller::descriptors() const
     return out;
 }
 
+namespace {
+
+std::string pixelText(double v)
+{
+    if (std::isnan(v))
+        return "nan";
+    if (std::isinf(v))
+        return v > 0 ? "inf" : "-inf";
+    return std::to_string(std::lround(v));
+}
+
+/// Why `entry`, as a stage wrote it for a width x height image, is nonsense, or nullopt: a
+/// coordinate or size that is not a finite number, or a point more than one image size beyond
+/// the image's edge. Read through the percepts' own drawing, so every kind is checked alike.
+std::optional<std::string> nonsenseIn(const PerceptEntry& entry, int width, int height)
+{
+    if (entry.size() == 0)
+        return std::nullopt;
+    DebugDrawing drawing;
+    entry.draw(Rgb{}, 1.0, drawing);
+    const double margin = std::max(width, height);
+    for (const DebugShape& shape : drawing.shapes) {
+        if (!std::isfinite(shape.size) || std::abs(shape.size) > 2 * margin)
+            return "a size of " + pixelText(shape.size) + " px";
+        for (const PointF& p : shape.points)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || p.x < -margin ||
+                p.x > width + margin || p.y < -margin || p.y > height + margin)
+                return "the point (" + pixelText(p.x) + ", " + pixelText(p.y) + ") for a " +
+                       std::to_string(width) + "x" + std::to_string(height) + " image";
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
 void Controller::prepare(Blackboard& bb) const
 {
     for (const auto& s : m_stages)
@@ -173,6 +213,17 @@ FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std
             if (bb.percepts.presentCount() != present)
                 bb.diagnostics.push_back(
                     {info.id, "wrote a percept list its StageInfo does not declare"});
+            // A faulty stage's nonsense stops here, before the later stages, the results file
+            // and the overlay see it: its list is dropped for this frame, and the frame says why.
+            for (const PerceptKind* kind : info.percepts) {
+                PerceptEntry& entry = bb.percepts.entry(*kind);
+                if (const auto why = nonsenseIn(entry, bb.width(), bb.height())) {
+                    bb.diagnostics.push_back({info.id, "returned " + std::string(kind->key) +
+                                                           " with " + *why +
+                                                           "; dropped for this frame"});
+                    entry.clear();
+                }
+            }
             timing.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
             timing.ran = true;
         }

@@ -48,7 +48,10 @@ Status ParamSet::parseSetting(std::string_view text)
 
 Status ParamSet::check(const std::vector<StageDescriptor>& stages) const
 {
-    for (const auto& [stage_id, params] : values) {
+    // Named references, not structured bindings: clang before 16 cannot capture those.
+    for (const auto& stage_entry : values) {
+        const std::string& stage_id = stage_entry.first;
+        const auto& params = stage_entry.second;
         const auto stage =
             std::find_if(stages.begin(), stages.end(),
                          [&](const StageDescriptor& d) { return d.info.id == stage_id; });
@@ -58,7 +61,9 @@ Status ParamSet::check(const std::vector<StageDescriptor>& stages) const
                 list += (list.empty() ? "" : ", ") + d.info.id;
             return Error{"unknown stage '" + stage_id + "' (the stages are " + list + ")"};
         }
-        for (const auto& [name, value] : params) {
+        for (const auto& param_entry : params) {
+            const std::string& name = param_entry.first;
+            const double value = param_entry.second;
             const auto param = std::find_if(stage->params.begin(), stage->params.end(),
                                             [&](const ParamInfo& p) { return p.name == name; });
             if (param == stage->params.end())

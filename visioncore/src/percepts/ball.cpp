@@ -23,11 +23,11 @@ std::optional<std::string> PerceptTraits<Ball>::fromJson(const Json& value, Perc
     });
 }
 
-void PerceptTraits<Ball>::draw(const std::vector<Ball>& balls, Rgb colour, double width,
+void PerceptTraits<Ball>::draw(const std::vector<Ball>& balls, Rgb ink, double width,
                                DebugDrawing& out)
 {
     for (const Ball& b : balls)
-        out.add({ShapeKind::Circle, {{b.x, b.y}}, colour, b.radius, false, width});
+        out.add({ShapeKind::Circle, {{b.x, b.y}}, ink, b.radius, false, width});
 }
 
 } // namespace fieldsight

@@ -37,11 +37,11 @@ std::optional<std::string> PerceptTraits<FieldBoundary>::fromJson(const Json& va
     return std::nullopt;
 }
 
-void PerceptTraits<FieldBoundary>::draw(const std::vector<FieldBoundary>& boundary, Rgb colour,
+void PerceptTraits<FieldBoundary>::draw(const std::vector<FieldBoundary>& boundary, Rgb ink,
                                         double width, DebugDrawing& out)
 {
     for (const FieldBoundary& b : boundary)
-        out.add({ShapeKind::Polyline, b.points, colour, width, false, width});
+        out.add({ShapeKind::Polyline, b.points, ink, width, false, width});
 }
 
 const std::vector<PointF>& boundaryOf(const PerceptSet& set)

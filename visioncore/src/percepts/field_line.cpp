@@ -24,11 +24,11 @@ std::optional<std::string> PerceptTraits<FieldLine>::fromJson(const Json& value,
     });
 }
 
-void PerceptTraits<FieldLine>::draw(const std::vector<FieldLine>& lines, Rgb colour, double width,
+void PerceptTraits<FieldLine>::draw(const std::vector<FieldLine>& lines, Rgb ink, double width,
                                     DebugDrawing& out)
 {
     for (const FieldLine& l : lines)
-        out.add({ShapeKind::Line, {{l.x1, l.y1}, {l.x2, l.y2}}, colour, width, false, width});
+        out.add({ShapeKind::Line, {{l.x1, l.y1}, {l.x2, l.y2}}, ink, width, false, width});
 }
 
 } // namespace fieldsight

@@ -38,17 +38,17 @@ std::optional<std::string> PerceptTraits<Goalpost>::fromJson(const Json& value, 
     });
 }
 
-void PerceptTraits<Goalpost>::draw(const std::vector<Goalpost>& posts, Rgb colour, double width,
+void PerceptTraits<Goalpost>::draw(const std::vector<Goalpost>& posts, Rgb ink, double width,
                                    DebugDrawing& out)
 {
     for (const Goalpost& g : posts) {
         out.add({ShapeKind::Rect,
                  {{double(g.left), double(g.top)}, {double(g.right), double(g.bottom)}},
-                 colour,
+                 ink,
                  width,
                  false,
                  width});
-        out.add({ShapeKind::Points, {{g.base_x, g.base_y}}, colour, 2 * width + 1, true, width});
+        out.add({ShapeKind::Points, {{g.base_x, g.base_y}}, ink, 2 * width + 1, true, width});
     }
 }
 

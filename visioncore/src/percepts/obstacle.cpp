@@ -25,13 +25,13 @@ std::optional<std::string> PerceptTraits<Obstacle>::fromJson(const Json& value, 
     });
 }
 
-void PerceptTraits<Obstacle>::draw(const std::vector<Obstacle>& obstacles, Rgb colour, double width,
+void PerceptTraits<Obstacle>::draw(const std::vector<Obstacle>& obstacles, Rgb ink, double width,
                                    DebugDrawing& out)
 {
     for (const Obstacle& o : obstacles)
         out.add({ShapeKind::Rect,
                  {{double(o.left), double(o.top)}, {double(o.right), double(o.bottom)}},
-                 colour,
+                 ink,
                  width,
                  false,
                  width});

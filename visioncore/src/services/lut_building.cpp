@@ -283,7 +283,9 @@ std::vector<LutSample> samplesFromAnnotations(const Annotations& annotations, cv
     std::vector<LutSample> out;
     const double shrink = std::max(0.0, rules.shrink_px);
     const int grow = int(std::lround(shrink));
-    for (const auto& [name, frame] : annotations.frames) {
+    for (const auto& entry : annotations.frames) {
+        const std::string& name = entry.first; // not a structured binding: captured below
+        const auto& frame = entry.second;
         if (!frame.done)
             continue;
         auto add = [&](Colour colour, std::vector<cv::Point> polygon, bool exclude = false) {

@@ -22,7 +22,7 @@ template <> struct PerceptTraits<Ball>
                        nlohmann::ordered_json& value);
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where, std::vector<Ball>& out);
-    static void draw(const std::vector<Ball>& balls, Rgb colour, double width, DebugDrawing& out);
+    static void draw(const std::vector<Ball>& balls, Rgb ink, double width, DebugDrawing& out);
 };
 
 } // namespace fieldsight

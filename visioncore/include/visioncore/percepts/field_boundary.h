@@ -26,7 +26,7 @@ template <> struct PerceptTraits<FieldBoundary>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<FieldBoundary>& out);
-    static void draw(const std::vector<FieldBoundary>& boundary, Rgb colour, double width,
+    static void draw(const std::vector<FieldBoundary>& boundary, Rgb ink, double width,
                      DebugDrawing& out);
 };
 

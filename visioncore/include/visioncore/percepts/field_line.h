@@ -24,8 +24,7 @@ template <> struct PerceptTraits<FieldLine>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<FieldLine>& out);
-    static void draw(const std::vector<FieldLine>& lines, Rgb colour, double width,
-                     DebugDrawing& out);
+    static void draw(const std::vector<FieldLine>& lines, Rgb ink, double width, DebugDrawing& out);
 };
 
 } // namespace fieldsight

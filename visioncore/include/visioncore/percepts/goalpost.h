@@ -30,8 +30,7 @@ template <> struct PerceptTraits<Goalpost>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<Goalpost>& out);
-    static void draw(const std::vector<Goalpost>& posts, Rgb colour, double width,
-                     DebugDrawing& out);
+    static void draw(const std::vector<Goalpost>& posts, Rgb ink, double width, DebugDrawing& out);
 };
 
 } // namespace fieldsight

@@ -24,7 +24,7 @@ template <> struct PerceptTraits<Obstacle>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<Obstacle>& out);
-    static void draw(const std::vector<Obstacle>& obstacles, Rgb colour, double width,
+    static void draw(const std::vector<Obstacle>& obstacles, Rgb ink, double width,
                      DebugDrawing& out);
 };
 
