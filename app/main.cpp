@@ -9,7 +9,7 @@
 int main(int argc, char* argv[])
 {
     using namespace fieldsight;
-    const QString command = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QString();
+    const QString command = argc > 1 ? ui::fromLocalPath(argv[1]) : QString();
     const cli::Context ctx{Pipeline::standard(), std::cout, std::cerr};
     if (command.isEmpty() || command == "gui")
         return cli::guiCommand(argc, argv, ctx);
@@ -22,7 +22,8 @@ int main(int argc, char* argv[])
     QCoreApplication::setApplicationName("fieldsight");
     QCoreApplication::setApplicationVersion(QStringLiteral(FIELDSIGHT_VERSION));
     // A command's parser sees the program name followed by the command's own arguments.
-    QStringList args = QCoreApplication::arguments();
+    // Not QCoreApplication::arguments(): a path that is not UTF-8 must reach the command unchanged.
+    QStringList args = ui::argumentsOf(argc, argv);
     args.removeAt(1);
     return cli::runHeadless(command, args, ctx);
 }

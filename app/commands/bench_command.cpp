@@ -679,8 +679,8 @@ int benchCommand(const QStringList& args, const Context& ctx)
     try {
         BenchOptions options;
         for (const QString& stream : parser.positionalArguments())
-            options.streams.push_back(stream.toStdString());
-        options.json = parser.value("json").toStdString();
+            options.streams.push_back(toLocalPath(stream));
+        options.json = toLocalPath(parser.value("json"));
         QString error;
         const auto repeat = intOption(parser, "repeat", 1, 1, error);
         const auto threads = intOption(parser, "threads", 1, 0, error);

@@ -125,7 +125,7 @@ Result<ParamSet> paramsFrom(const QCommandLineParser& parser)
 {
     ParamSet params;
     if (parser.isSet("params")) {
-        auto loaded = ParamSet::load(parser.value("params").toStdString());
+        auto loaded = ParamSet::load(toLocalPath(parser.value("params")));
         if (!loaded)
             return loaded.error();
         params = std::move(loaded).value();
@@ -142,13 +142,13 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
     auto params = paramsFrom(parser);
     if (!params)
         return params.error();
-    auto input = openStreamInput(stream, parser.value("lut").toStdString(), ctx.pipeline);
+    auto input = openStreamInput(stream, toLocalPath(parser.value("lut")), ctx.pipeline);
     if (!input)
         return input.error();
     input.value().params = std::move(params).value();
     if (Status s = input.value().params.check(ctx.pipeline); !s)
         return Error{(parser.isSet("params")
-                          ? "--params " + parser.value("params").toStdString() + " or --set: "
+                          ? "--params " + toLocalPath(parser.value("params")) + " or --set: "
                           : std::string("--set: ")) +
                      s.error().message};
     return input;

@@ -6,6 +6,8 @@
 #include "visioncore/result.h"
 #include "visioncore/services/stream_runner.h"
 
+#include "ui/adapters/local_path.h"
+
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QString>
@@ -19,6 +21,9 @@
 #include <string_view>
 
 namespace fieldsight::cli {
+
+/// Paths from the command line are bytes, kept exactly (ui/adapters/local_path.h).
+using ui::toLocalPath;
 
 /// Exit statuses of the commands (SPEC §5).
 inline constexpr int kExitOk = 0;

@@ -102,7 +102,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
         return *done;
 
     try {
-        const std::string stream = parser.positionalArguments().first().toStdString();
+        const std::string stream = toLocalPath(parser.positionalArguments().first());
         QString error;
         const auto threads = intOption(parser, "threads", 0, 0, error);
         if (!threads)
@@ -111,7 +111,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
         if (!input)
             return badInput(ctx, input.error().message);
         const std::string truth_path =
-            parser.isSet("truth") ? parser.value("truth").toStdString() : defaultTruthPath(stream);
+            parser.isSet("truth") ? toLocalPath(parser.value("truth")) : defaultTruthPath(stream);
         auto truth = Annotations::load(truth_path, ctx.pipeline);
         if (!truth)
             return badInput(ctx, truth.error().message);
@@ -124,7 +124,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
         if (!report)
             return badInput(ctx, report.error().message);
         report.value().stream = stream;
-        return finishReport(ctx, evalTable(report.value()), parser.value("json").toStdString(),
+        return finishReport(ctx, evalTable(report.value()), toLocalPath(parser.value("json")),
                             evalJson(report.value()));
     } catch (const std::exception& e) {
         printError(ctx.err, e.what());

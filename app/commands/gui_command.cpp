@@ -1,5 +1,6 @@
 // `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
 #include "commands/commands.h"
+#include "ui/adapters/local_path.h"
 #include "ui/main_window.h"
 
 #include <QApplication>
@@ -14,7 +15,7 @@ int guiCommand(int& argc, char** argv, const Context& ctx)
     QApplication::setApplicationVersion(QStringLiteral(FIELDSIGHT_VERSION));
     QApplication::setApplicationDisplayName(QStringLiteral("Fieldsight"));
 
-    QStringList args = QApplication::arguments();
+    QStringList args = ui::argumentsOf(argc, argv); // exact bytes of paths (local_path.h)
     if (args.size() > 1 && args[1] == QLatin1String("gui"))
         args.removeAt(1);
     QCommandLineParser parser;

@@ -29,8 +29,8 @@ int convertCommand(const QStringList& args, const Context& ctx)
     if (auto done = parseCommand(parser, "lut convert", args, 3, 3, ctx))
         return *done;
     const QStringList positional = parser.positionalArguments();
-    const std::string in = positional[1].toStdString();
-    const std::string out = positional[2].toStdString();
+    const std::string in = toLocalPath(positional[1]);
+    const std::string out = toLocalPath(positional[2]);
     auto lut = fieldsight::importLut(in);
     if (!lut) {
         return badInput(ctx, lut.error().message);
@@ -95,10 +95,10 @@ int buildCommand(const QStringList& args, const Context& ctx)
 
     try {
         const auto started = std::chrono::steady_clock::now();
-        const std::string stream = parser.positionalArguments()[1].toStdString();
+        const std::string stream = toLocalPath(parser.positionalArguments()[1]);
         if (!parser.isSet("out"))
             return badInput(ctx, "lut build: --out FILE is required");
-        const std::string out = parser.value("out").toStdString();
+        const std::string out = toLocalPath(parser.value("out"));
         QString error;
         const auto smoothing = intOption(parser, "smoothing", -1, 0, error);
         if (!smoothing || *smoothing > 8)
@@ -122,13 +122,13 @@ int buildCommand(const QStringList& args, const Context& ctx)
 
         LutSamples samples;
         if (parser.isSet("samples")) {
-            auto loaded = loadLutSamples(parser.value("samples").toStdString());
+            auto loaded = loadLutSamples(toLocalPath(parser.value("samples")));
             if (!loaded)
                 return badInput(ctx, loaded.error().message);
             samples = std::move(loaded).value();
         } else {
             const std::string truth_path = parser.isSet("truth")
-                                               ? parser.value("truth").toStdString()
+                                               ? toLocalPath(parser.value("truth"))
                                                : defaultTruthPath(stream);
             auto truth = Annotations::load(truth_path, ctx.pipeline);
             if (!truth)
@@ -152,8 +152,7 @@ int buildCommand(const QStringList& args, const Context& ctx)
             return kExitFailure;
         }
         if (parser.isSet("save-samples")) {
-            if (Status s = saveLutSamples(parser.value("save-samples").toStdString(), samples);
-                !s) {
+            if (Status s = saveLutSamples(toLocalPath(parser.value("save-samples")), samples); !s) {
                 printError(ctx.err, s.error().message);
                 return kExitFailure;
             }

@@ -45,7 +45,7 @@ int runCommand(const QStringList& args, const Context& ctx)
         return *done;
 
     try {
-        const std::string stream = parser.positionalArguments().first().toStdString();
+        const std::string stream = toLocalPath(parser.positionalArguments().first());
         QString error;
         const auto threads = intOption(parser, "threads", 1, 0, error);
         const auto limit = intOption(parser, "limit", 0, 1, error);
@@ -55,10 +55,9 @@ int runCommand(const QStringList& args, const Context& ctx)
         if (*scale > 16)
             return badInput(ctx, "run: --scale: at most 16");
         const std::string out_path =
-            parser.isSet("out") ? parser.value("out").toStdString() : "fieldsight-results.json";
+            parser.isSet("out") ? toLocalPath(parser.value("out")) : "fieldsight-results.json";
         const std::string render_dir =
-            (parser.isSet("render") ? parser.value("render") : parser.value("overlays"))
-                .toStdString();
+            toLocalPath(parser.isSet("render") ? parser.value("render") : parser.value("overlays"));
         if (render_dir.empty() && (parser.isSet("layers") || parser.isSet("scale")))
             return badInput(ctx, "run: --layers and --scale need --render DIR");
 

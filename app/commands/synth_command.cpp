@@ -30,7 +30,7 @@ int synthCommand(const QStringList& args, const Context& ctx)
     synth::SynthOptions options;
     if (!parser.isSet("out"))
         return badInput(ctx, "synth: --out DIR is required");
-    options.out_dir = parser.value("out").toStdString();
+    options.out_dir = toLocalPath(parser.value("out"));
     if (parser.isSet("scenario")) {
         auto scenario = synth::scenarioFromName(parser.value("scenario").toStdString());
         if (!scenario)

@@ -205,7 +205,9 @@ private slots:
             const char* problem;
         };
         const Case cases[] = {
-            {"{ \"pixel_format\": ", "not valid JSON"},
+            {"{ \"pixel_format\": ",
+             "not valid JSON at line 1, column 19 (syntax error while parsing value - unexpected "
+             "end of input; expected '[', '{', or a literal)"},
             {R"({"pixel_format": 3})", "\"pixel_format\" must be \"rgb\" or \"ycbcr\""},
             {R"({"pixel_format": "yuv"})", "\"pixel_format\" must be \"rgb\" or \"ycbcr\""},
             {R"({"format": "fieldsight-stream/9"})",

@@ -31,7 +31,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kFrames = 8;
 
 std::vector<char> readBytes(const fs::path& path)

@@ -45,11 +45,10 @@ template <> struct fieldsight::PerceptTraits<fieldsight::test::FakeMark>
             out.push_back({m.value("x", 0.0), m.value("y", 0.0), m.value("value", 0.0)});
         return std::nullopt;
     }
-    static void draw(const std::vector<test::FakeMark>& marks, Rgb colour, double,
-                     DebugDrawing& out)
+    static void draw(const std::vector<test::FakeMark>& marks, Rgb ink, double, DebugDrawing& out)
     {
         for (const test::FakeMark& m : marks)
-            out.add({ShapeKind::Points, {{m.x, m.y}}, colour, 5, true, 1});
+            out.add({ShapeKind::Points, {{m.x, m.y}}, ink, 5, true, 1});
     }
 };
 

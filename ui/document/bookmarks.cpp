@@ -31,20 +31,20 @@ Result<Bookmarks> Bookmarks::load(const std::string& path)
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         return Bookmarks{};
-    if (!std::filesystem::is_regular_file(path, ec))
-        return Error{path + ": not a regular file"};
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return Error{path + ": cannot open for reading"};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return fromJson(text.str(), path);
+    // The kind and size checks of every read: a FIFO sidecar must not hang the window.
+    auto text = readWholeFile(path);
+    if (!text)
+        return text.error();
+    return fromJson(text.value(), path);
 }
 
 Result<Bookmarks> Bookmarks::fromJson(const std::string& text, const std::string& source)
 {
-    const nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
-    if (doc.is_discarded() || !doc.is_object())
+    auto parsed = parseJson(text, source);
+    if (!parsed)
+        return parsed.error();
+    const nlohmann::json doc = std::move(parsed).value();
+    if (!doc.is_object())
         return Error{source + ": not a JSON object"};
     if (doc.value("format", std::string()) != kFormat)
         return Error{source + ": format must be \"" + kFormat + "\""};

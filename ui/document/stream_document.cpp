@@ -1,5 +1,7 @@
 #include "ui/document/stream_document.h"
 
+#include "ui/adapters/local_path.h"
+
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 
@@ -11,7 +13,7 @@ namespace {
 
 std::string local(const QString& s)
 {
-    return s.toStdString();
+    return toLocalPath(s);
 }
 
 } // namespace
@@ -51,7 +53,7 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
             opened->names.push_back(r->frameName(i));
     }
 
-    opened->lut_path = lut.isEmpty() ? QString::fromStdString(opened->info.default_lut) : lut;
+    opened->lut_path = lut.isEmpty() ? fromLocalPath(opened->info.default_lut) : lut;
     if (opened->lut_path.isEmpty()) {
         opened->lut = std::make_shared<const ColourLut>();
         opened->warnings << spec + QStringLiteral(": no LUT given and none beside the stream; "
@@ -156,7 +158,7 @@ QString StreamDocument::frameName(std::size_t index) const
 {
     if (!m_stream || index >= m_stream->names.size())
         return QString();
-    return QString::fromStdString(m_stream->names[index]);
+    return fromLocalPath(m_stream->names[index]);
 }
 
 void StreamDocument::setCurrentIndex(std::size_t index)
@@ -312,8 +314,7 @@ Status StreamDocument::setParamChanges(const ParamSet& params)
 
 QString StreamDocument::bookmarksPath() const
 {
-    return m_stream ? QString::fromStdString(Bookmarks::sidecarPath(local(m_stream->spec)))
-                    : QString();
+    return m_stream ? fromLocalPath(Bookmarks::sidecarPath(local(m_stream->spec))) : QString();
 }
 
 Status StreamDocument::saveBookmarks()

@@ -94,9 +94,10 @@ std::string ParamSet::toJson() const
 
 Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& source)
 {
-    const nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{source + ": not valid JSON"};
+    auto parsed = parseJson(text, source);
+    if (!parsed)
+        return parsed.error();
+    const nlohmann::json root = std::move(parsed).value();
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat)
         return Error{source + ": expected \"format\": \"" + kFormat + "\""};
     ParamSet set;

@@ -6,18 +6,19 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <system_error>
 
 #include "visioncore/io/atomic_file.h"
+#include "visioncore/io/json_text.h"
 #include "visioncore/ycbcr.h"
 
 namespace fieldsight::io {
@@ -112,9 +113,10 @@ Result<Manifest> parseManifest(const std::string& path)
     auto text = readWholeFile(path);
     if (!text)
         return text.error();
-    const nlohmann::json root = nlohmann::json::parse(text.value(), nullptr, false);
-    if (root.is_discarded())
-        return Error{path + ": not valid JSON"};
+    auto parsed = parseJson(text.value(), path);
+    if (!parsed)
+        return parsed.error();
+    const nlohmann::json root = std::move(parsed).value();
     auto bad = [&](const std::string& problem) { return Error{path + ": " + problem}; };
     if (!root.is_object())
         return bad("expected a JSON object at the top level");
@@ -194,40 +196,62 @@ std::uint32_t bigEndian(const unsigned char* p, int bytes)
     return v;
 }
 
-/// The CRC-32 of PNG chunks (ISO 3309), bit by bit: only the 17 bytes of a header are checked.
+/// The CRC-32 of PNG chunks (ISO 3309), a byte at a time from a table.
 std::uint32_t crc32(const unsigned char* p, std::size_t n)
 {
+    static const auto table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t i = 0; i < 256; ++i) {
+            std::uint32_t c = i;
+            for (int k = 0; k < 8; ++k)
+                c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+            t[i] = c;
+        }
+        return t;
+    }();
     std::uint32_t c = 0xFFFFFFFFu;
-    for (std::size_t i = 0; i < n; ++i) {
-        c ^= p[i];
-        for (int k = 0; k < 8; ++k)
-            c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        c = table[(c ^ p[i]) & 0xFFu] ^ (c >> 8);
     return c ^ 0xFFFFFFFFu;
+}
+
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+
+/// Why a PNG's chunks are damaged (truncated, a checksum that does not match, no IEND), or
+/// nullopt. Checked before decoding because libpng prints its own line on such files.
+std::optional<std::string> pngDamage(const unsigned char* h, std::size_t n)
+{
+    std::size_t at = 8;
+    while (at + 12 <= n) {
+        const std::size_t length = bigEndian(h + at, 4);
+        const std::string type(reinterpret_cast<const char*>(h + at + 4), 4);
+        if (length > n - at - 12)
+            return "truncated PNG (chunk " + type + " at byte " + std::to_string(at) + " needs " +
+                   std::to_string(length + 12) + " bytes, " + std::to_string(n - at) + " left)";
+        if (crc32(h + at + 4, length + 4) != bigEndian(h + at + 8 + length, 4))
+            return "damaged PNG (checksum mismatch in chunk " + type + " at byte " +
+                   std::to_string(at) + ")";
+        if (type == "IEND")
+            return std::nullopt;
+        at += length + 12;
+    }
+    return "truncated PNG (ends at byte " + std::to_string(n) + " before its IEND chunk)";
 }
 
 struct HeaderSize
 {
     long long width = 0;
     long long height = 0;
-    bool bad_checksum = false; ///< a PNG header whose CRC does not match (libpng would print)
 };
 
 /// The size an image file's header claims (PNG, JPEG, BMP), read before decoding so a small file
 /// claiming a huge image is refused instead of allocated; nullopt when the header says nothing
 /// this recognises (the decoder then decides).
-std::optional<HeaderSize> headerSize(const std::string& path)
+std::optional<HeaderSize> headerSize(const unsigned char* h, std::size_t n)
 {
-    std::ifstream in(path, std::ios::binary);
-    std::vector<unsigned char> head(65536);
-    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
-    head.resize(std::size_t(in.gcount()));
-    const unsigned char* h = head.data();
-    const std::size_t n = head.size();
-    static const unsigned char png[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
-    if (n >= 24 && std::equal(png, png + 8, h) && std::memcmp(h + 12, "IHDR", 4) == 0)
-        return HeaderSize{(long long)bigEndian(h + 16, 4), (long long)bigEndian(h + 20, 4),
-                          n >= 33 && crc32(h + 12, 17) != bigEndian(h + 29, 4)};
+    if (n >= 24 && std::equal(kPngSignature, kPngSignature + 8, h) &&
+        std::memcmp(h + 12, "IHDR", 4) == 0)
+        return HeaderSize{(long long)bigEndian(h + 16, 4), (long long)bigEndian(h + 20, 4)};
     if (n >= 26 && h[0] == 'B' && h[1] == 'M') {
         std::int32_t w = 0, ht = 0;
         std::memcpy(&w, h + 18, 4); // little-endian on every machine this builds for
@@ -252,13 +276,35 @@ std::optional<HeaderSize> headerSize(const std::string& path)
     return std::nullopt;
 }
 
-/// Why `path` could not be decoded: the OS error if it cannot even be opened.
-std::string unreadableReason(const std::string& path)
+/// An image file's pixels as BGR, or an Error naming the file: read with the checks of every
+/// read (a FIFO or device is refused, not waited on), the header's size and a PNG's chunks
+/// checked before the decoder sees the bytes.
+Result<cv::Mat> decodeImageFile(const std::string& path)
 {
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe)
-        return std::strerror(errno);
-    return "not a decodable image";
+    auto bytes = readWholeFile(path);
+    if (!bytes)
+        return bytes.error();
+    const auto* h = reinterpret_cast<const unsigned char*>(bytes.value().data());
+    const std::size_t n = bytes.value().size();
+    if (const auto claimed = headerSize(h, n);
+        claimed && !isSaneFrameSize(claimed->width, claimed->height))
+        return Error{path + ": the image header claims " + std::to_string(claimed->width) + "x" +
+                     std::to_string(claimed->height) + " pixels (at most " +
+                     std::to_string(kMaxFrameSide) + " a side); not decoded"};
+    if (n >= 8 && std::equal(kPngSignature, kPngSignature + 8, h))
+        if (const auto damage = pngDamage(h, n))
+            return Error{"cannot read " + path + ": " + *damage};
+    cv::Mat bgr;
+    try {
+        bgr = cv::imdecode(cv::Mat(1, int(n), CV_8U, const_cast<unsigned char*>(h)),
+                           cv::IMREAD_COLOR);
+    } catch (const cv::Exception& e) {
+        return Error{"cannot read " + path + ": the decoder failed (" + e.err + ")"};
+    }
+    if (bgr.empty())
+        return Error{"cannot read " + path + ": " +
+                     (n == 0 ? "empty file" : "not a decodable image")};
+    return bgr;
 }
 
 class ImageFolderReader final : public StreamReader
@@ -298,21 +344,10 @@ public:
     Result<Frame> decode(std::size_t index) const
     {
         const std::string path = (m_folder / m_files[index]).string();
-        const auto claimed = headerSize(path);
-        if (claimed && !isSaneFrameSize(claimed->width, claimed->height))
-            return Error{path + ": the image header claims " + std::to_string(claimed->width) +
-                         "x" + std::to_string(claimed->height) + " pixels (at most " +
-                         std::to_string(kMaxFrameSide) + " a side); not decoded"};
-        if (claimed && claimed->bad_checksum)
-            return Error{"cannot read " + path + ": damaged PNG header (checksum mismatch)"};
-        cv::Mat bgr;
-        try {
-            bgr = cv::imread(path, cv::IMREAD_COLOR);
-        } catch (const cv::Exception& e) {
-            return Error{"cannot read " + path + ": the decoder failed (" + e.err + ")"};
-        }
-        if (bgr.empty())
-            return Error{"cannot read " + path + ": " + unreadableReason(path)};
+        auto decoded = decodeImageFile(path);
+        if (!decoded)
+            return decoded.error();
+        cv::Mat bgr = std::move(decoded).value();
         if (!isSaneFrameSize(bgr.cols, bgr.rows))
             return Error{path + ": absurd frame size " + std::to_string(bgr.cols) + "x" +
                          std::to_string(bgr.rows)};

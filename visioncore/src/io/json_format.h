@@ -2,6 +2,7 @@
 // messages for every such file, each naming the file and the problem.
 #pragma once
 
+#include "visioncore/io/json_text.h"
 #include "visioncore/result.h"
 
 #include <nlohmann/json.hpp>
@@ -14,9 +15,10 @@ namespace fieldsight::io {
 inline Result<nlohmann::json> parseFormattedJson(const std::string& text, const std::string& source,
                                                  const std::string& format)
 {
-    nlohmann::json root = nlohmann::json::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{source + ": not valid JSON"};
+    auto parsed = parseJson(text, source);
+    if (!parsed)
+        return parsed.error();
+    nlohmann::json root = std::move(parsed).value();
     if (!root.is_object())
         return Error{source + ": expected a JSON object at the top level"};
     const auto found = root.find("format");

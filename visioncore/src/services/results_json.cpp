@@ -108,9 +108,10 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
                                 const Pipeline& pipeline)
 {
     // Ordered, so stage times come back in the order they were written (pipeline order).
-    const OrderedJson root = OrderedJson::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{source + ": not valid JSON"};
+    auto parsed = parseJson<OrderedJson>(text, source);
+    if (!parsed)
+        return parsed.error();
+    const OrderedJson root = std::move(parsed).value();
     if (!root.is_object() || !root.contains("format") || root["format"] != kFormat)
         return Error{source + ": expected \"format\": \"" + std::string(kFormat) + "\""};
     ResultsFile file;
