@@ -4,11 +4,15 @@
 
 #include <QCoreApplication>
 
+#include <csignal>
 #include <iostream>
 
 int main(int argc, char* argv[])
 {
     using namespace fieldsight;
+    // Past a file-size limit (ulimit -f) a write fails with EFBIG and is reported like a full
+    // disk, naming the file, instead of the process being killed mid-save.
+    std::signal(SIGXFSZ, SIG_IGN);
     const QString command = argc > 1 ? ui::fromLocalPath(argv[1]) : QString();
     const cli::Context ctx{Pipeline::standard(), std::cout, std::cerr};
     if (command.isEmpty() || command == "gui")

@@ -4,6 +4,7 @@
 // layer, its parameter and its timing without any UI change.
 #include "commands/commands.h"
 #include "support/fake_stage.h"
+#include "support/window_waits.h"
 #include "support/synthetic_frames.h"
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/overlay_painter.h"
@@ -46,32 +47,6 @@ namespace {
 QString sampleStream()
 {
     return QString::fromStdString(sampleStreamsDir() + "/lab1");
-}
-
-/// Waits until the document answered its newest request with frame `index`, and the view and the
-/// panels show it.
-bool waitForFrame(MainWindow& w, std::size_t index)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 10000) {
-        const auto& out = w.document().current();
-        if (!w.document().waiting() && out && out->index == index &&
-            (!w.view().isVisible() || w.view().paintedSerial() == out->serial) &&
-            w.detectionsPanel().shownSerial() == out->serial)
-            return true;
-        QTest::qWait(2);
-    }
-    return false;
-}
-
-bool openAndWait(MainWindow& w, const QString& stream)
-{
-    QSignalSpy opened(&w, &MainWindow::streamOpened);
-    w.openStream(stream);
-    if (!opened.wait(10000) || !opened.front().front().toBool())
-        return false;
-    return waitForFrame(w, 0);
 }
 
 /// The view's image region at zoom 1 with the image at the view's top-left corner.

@@ -24,9 +24,11 @@ void ParamSet::set(std::string_view stage, std::string_view name, double value)
 
 void ParamSet::merge(const ParamSet& other)
 {
-    for (const auto& [stage, params] : other.values)
+    for (const auto& [stage, params] : other.values) {
+        values[stage]; // a stage with no values is kept, so check() still sees its name
         for (const auto& [name, value] : params)
             set(stage, name, value);
+    }
 }
 
 Status ParamSet::parseSetting(std::string_view text)
@@ -109,6 +111,7 @@ Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& 
     for (const auto& [stage, params] : stages->items()) {
         if (!params.is_object())
             return Error{source + ": stages." + stage + " must be an object"};
+        set.values[stage]; // kept even when empty: check() then names an unknown stage
         for (const auto& [name, value] : params.items()) {
             if (value.is_boolean())
                 set.set(stage, name, value.get<bool>() ? 1.0 : 0.0);

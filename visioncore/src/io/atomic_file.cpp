@@ -205,6 +205,11 @@ Status writeFileAtomically(const std::string& requested, const void* data, std::
     return {};
 }
 
+Error notARegularFile(const std::string& path, unsigned mode)
+{
+    return Error{"cannot read " + path + ": " + fileKindName(mode) + ", not a regular file"};
+}
+
 Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes)
 {
     // Non-blocking, so opening a FIFO cannot wait for a writer; refused below anyway.
@@ -221,8 +226,7 @@ Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes
     }
     if (!S_ISREG(st.st_mode)) {
         ::close(fd);
-        return Error{"cannot read " + path + ": " + fileKindName(st.st_mode) +
-                     ", not a regular file"};
+        return notARegularFile(path, st.st_mode);
     }
     if (std::uint64_t(st.st_size) > max_bytes) {
         ::close(fd);

@@ -286,6 +286,8 @@ Result<cv::Mat> decodeImageFile(const std::string& path)
         return bytes.error();
     const auto* h = reinterpret_cast<const unsigned char*>(bytes.value().data());
     const std::size_t n = bytes.value().size();
+    if (n == 0)
+        return Error{"cannot read " + path + ": empty file"};
     if (const auto claimed = headerSize(h, n);
         claimed && !isSaneFrameSize(claimed->width, claimed->height))
         return Error{path + ": the image header claims " + std::to_string(claimed->width) + "x" +
@@ -302,8 +304,7 @@ Result<cv::Mat> decodeImageFile(const std::string& path)
         return Error{"cannot read " + path + ": the decoder failed (" + e.err + ")"};
     }
     if (bgr.empty())
-        return Error{"cannot read " + path + ": " +
-                     (n == 0 ? "empty file" : "not a decodable image")};
+        return Error{"cannot read " + path + ": not a decodable image"};
     return bgr;
 }
 

@@ -4,6 +4,7 @@
 #include "visioncore/io/atomic_file.h"
 
 #include <bzlib.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -213,6 +214,9 @@ Result<ColourLut> importLut(const std::string& path)
         return ColourLut::load(path);
     const bool known = endsWith(name, ".c64") || endsWith(name, ".nnmc.bz2") ||
                        endsWith(name, ".nnmc") || endsWith(name, ".raw");
+    // A folder, FIFO or device is refused as such first: the name is the smaller problem.
+    if (struct stat st{}; !known && ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        return notARegularFile(path, st.st_mode);
     if (!known)
         return Error{path + ": unknown colour table format (expected .lut, .c64, .nnmc.bz2, "
                             ".nnmc or .raw)"};

@@ -31,5 +31,7 @@ Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes
 
 /// What kind of thing `mode` (a stat st_mode) is, for messages: "a folder", "a FIFO", ...
 std::string fileKindName(unsigned mode);
+/// "cannot read <path>: a FIFO, not a regular file": the refusal of every read of a non-file.
+Error notARegularFile(const std::string& path, unsigned mode);
 
 } // namespace fieldsight
