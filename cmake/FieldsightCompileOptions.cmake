@@ -10,4 +10,8 @@ function(fieldsight_target_options target)
             -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
+    if(FIELDSIGHT_FUZZ)
+        # Coverage for libFuzzer in every library the fuzz targets link (tests/fuzz/).
+        target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+    endif()
 endfunction()

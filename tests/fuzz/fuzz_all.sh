@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Fuzzes every reader longer than CTest does: each target of BUILD (default build-asan, made by
+# .ci/sanitize) runs RUNS executions (default 1000000), two targets at a time, from its seed corpus
+# (new inputs go to BUILD/tests/fuzz/work/, never into the repository). Prints executions and
+# seconds per target; a crash stops that target and its input is kept in BUILD/tests/fuzz/crashes/.
+#   tests/fuzz/fuzz_all.sh [BUILD] [RUNS]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${1:-build-asan}
+runs=${2:-1000000}
+dir="$build/tests/fuzz"
+[ -x "$dir/fuzz_strm" ] || { echo "no fuzz targets in $dir: run .ci/sanitize first"; exit 2; }
+mkdir -p "$dir/logs" "$dir/crashes"
+
+fuzz_one() {
+    local target=$1 name=${1#fuzz_} start end
+    mkdir -p "$dir/work/$name"
+    start=$(date +%s)
+    if "$dir/$target" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+        -artifact_prefix="$dir/crashes/$name-" "$dir/work/$name" "tests/fuzz/corpus/$name" \
+        > "$dir/logs/$name.log" 2>&1; then result=ok; else result=CRASH; fi
+    end=$(date +%s)
+    printf '%-20s %12s %8s  %s\n' "$name" \
+        "$(sed -n 's/^stat::number_of_executed_units: //p' "$dir/logs/$name.log")" \
+        "$((end - start))" "$result"
+}
+export -f fuzz_one
+export dir runs
+
+printf '%-20s %12s %8s  %s\n' target executions seconds result
+ls "$dir" | grep '^fuzz_' | grep -v '\.' | xargs -P 2 -I{} bash -c 'fuzz_one {}' | sort
+! grep -l "ERROR: \|deadly signal" "$dir"/logs/*.log
