@@ -332,6 +332,10 @@ private slots:
                    R"({"done": true, "balls": [{"x": 20, "y": 1, "radius": -3}]}}})");
         add("annotation with a negative radius", {"eval", "good", "--truth", "truth_neg.json"}, 2,
             {"truth_neg.json", "radius must not be negative"});
+        writeBytes(at("truth_huge.json"), R"({"format": "fieldsight-annotations/1", "x": 4e4444})");
+        add("annotations with a number past double's range",
+            {"eval", "good", "--truth", "truth_huge.json"}, 2,
+            {"truth_huge.json", "not valid JSON", "number overflow"});
         writeBytes(at("truth_none.json"),
                    R"({"format": "fieldsight-annotations/1", "frames": {}})");
         add("annotations with no frame done", {"eval", "good", "--truth", "truth_none.json"}, 2,

@@ -46,7 +46,9 @@ Result<Bookmarks> Bookmarks::fromJson(const std::string& text, const std::string
     const nlohmann::json doc = std::move(parsed).value();
     if (!doc.is_object())
         return Error{source + ": not a JSON object"};
-    if (doc.value("format", std::string()) != kFormat)
+    // Not doc.value("format", ...): that throws when "format" is not a string.
+    if (const auto format = doc.find("format");
+        format == doc.end() || !format->is_string() || format->get<std::string>() != kFormat)
         return Error{source + ": format must be \"" + kFormat + "\""};
     const auto list = doc.find("bookmarks");
     if (list == doc.end() || !list->is_array())

@@ -28,7 +28,7 @@ Result<Json> parseJson(const std::string& text, const std::string& source)
 {
     try {
         return Json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) { // a syntax error, or a number overflow
         return Error{jsonSyntaxError(source, e.what())};
     }
 }
