@@ -1,4 +1,5 @@
 // Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
+#include "support/synthetic_frames.h"
 #include "visioncore/io/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 
@@ -258,12 +259,8 @@ private slots:
     {
         // Small files whose headers claim 30000 x 30000 (PNG), 65535 x 65535 (PNG), 60000 x 9
         // (JPEG) and 9 x 70000 (BMP): each refused by name, quickly, without the allocation.
-        const auto be32 = [](std::uint32_t v) {
-            return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-        };
-        const auto png = [&](std::uint32_t w, std::uint32_t h) {
-            return std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR" + be32(w) + be32(h) +
-                   std::string("\x08\x02\x00\x00\x00", 5) + be32(0) + std::string(64, '\0');
+        const auto png = [](std::uint32_t w, std::uint32_t h) {
+            return test::pngHeaderClaiming(w, h) + std::string(64, '\0');
         };
         const std::string jpeg = std::string("\xFF\xD8\xFF\xE0\x00\x04\x00\x00", 8) +
                                  std::string("\xFF\xC0\x00\x11\x08\x00\x09\xEA\x60", 9) +

@@ -87,4 +87,19 @@ std::string sampleStreamsDir()
     return FIELDSIGHT_SAMPLE_STREAMS_DIR;
 }
 
+std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height)
+{
+    auto big = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    std::string ihdr = "IHDR" + big(width) + big(height) + std::string("\x08\x02\x00\x00\x00", 5);
+    std::uint32_t crc = 0xFFFFFFFFu;
+    for (unsigned char b : ihdr) {
+        crc ^= b;
+        for (int k = 0; k < 8; ++k)
+            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return std::string("\x89PNG\r\n\x1a\n", 8) + big(13) + ihdr + big(crc ^ 0xFFFFFFFFu);
+}
+
 } // namespace fieldsight::test

@@ -29,4 +29,8 @@ void drawLine(cv::Mat& frame, int x1, int y1, int x2, int y2, int thickness, Col
 std::string referenceDataDir();
 std::string sampleStreamsDir();
 
+/// A PNG signature and an IHDR chunk (with a correct checksum) claiming width x height, and no
+/// pixel data: a small file promising a huge image.
+std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height);
+
 } // namespace fieldsight::test

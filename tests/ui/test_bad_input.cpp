@@ -132,8 +132,6 @@ std::string strmRecord(std::int32_t version, std::int32_t width, std::int32_t he
     return r;
 }
 
-std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height);
-
 bool amRoot()
 {
     return ::geteuid() == 0;
@@ -532,27 +530,6 @@ private slots:
         QVERIFY(fs::is_symlink(at("venue.lut"))); // the link is still a link
     }
 };
-
-namespace {
-
-/// A PNG signature and an IHDR chunk (with a correct checksum) claiming width x height, and no
-/// pixel data: a small file promising a huge image.
-std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height)
-{
-    auto big = [](std::uint32_t v) {
-        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-    };
-    std::string ihdr = "IHDR" + big(width) + big(height) + std::string("\x08\x02\x00\x00\x00", 5);
-    std::uint32_t crc = 0xFFFFFFFFu;
-    for (unsigned char b : ihdr) {
-        crc ^= b;
-        for (int k = 0; k < 8; ++k)
-            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return std::string("\x89PNG\r\n\x1a\n", 8) + big(13) + ihdr + big(crc ^ 0xFFFFFFFFu);
-}
-
-} // namespace
 
 QTEST_MAIN(TestBadInput)
 #include "test_bad_input.moc"

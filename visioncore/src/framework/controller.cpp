@@ -213,8 +213,11 @@ FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std
             if (bb.percepts.presentCount() != present)
                 bb.diagnostics.push_back(
                     {info.id, "wrote a percept list its StageInfo does not declare"});
+            timing.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            timing.ran = true;
             // A faulty stage's nonsense stops here, before the later stages, the results file
             // and the overlay see it: its list is dropped for this frame, and the frame says why.
+            // (After the timing: a stage's time is its own work.)
             for (const PerceptKind* kind : info.percepts) {
                 PerceptEntry& entry = bb.percepts.entry(*kind);
                 if (const auto why = nonsenseIn(entry, bb.width(), bb.height())) {
@@ -224,8 +227,6 @@ FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std
                     entry.clear();
                 }
             }
-            timing.ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-            timing.ran = true;
         }
         report.stages.push_back(std::move(timing));
     }
