@@ -174,14 +174,15 @@ private slots:
         auto bad = reader->read(1);
         QVERIFY(!bad.ok());
         QCOMPARE(bad.error().message,
-                 "cannot read " + dir.filePath("f2.png").toStdString() + ": not a decodable image");
+                 "cannot read " + dir.filePath("f2.png").toStdString() +
+                     ": not a decodable image (no PNG, JPEG or BMP signature)");
 
         // When the first frame is bad, opening already fails.
         QTemporaryDir dir2;
         writeText(dir2, "f0.png", "garbage");
         writePngRgb(dir2, "f1.png", 2, 2, {{0, 0, 0}});
         QCOMPARE(openError(dir2), "cannot read " + dir2.filePath("f0.png").toStdString() +
-                                      ": not a decodable image");
+                                      ": not a decodable image (no PNG, JPEG or BMP signature)");
     }
 
     void frameOfAnotherSizeIsAnError()

@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:-build-asan}
 runs=${2:-1000000}
+pattern=${3:-.}
 dir="$build/tests/fuzz"
 [ -x "$dir/fuzz_strm" ] || { echo "no fuzz targets in $dir: run .ci/sanitize first"; exit 2; }
 mkdir -p "$dir/logs" "$dir/crashes"
@@ -28,5 +29,9 @@ export -f fuzz_one
 export dir runs
 
 printf '%-20s %12s %8s  %s\n' target executions seconds result
-ls "$dir" | grep '^fuzz_' | grep -v '\.' | xargs -P 2 -I{} bash -c 'fuzz_one {}' | sort
-! grep -l "ERROR: \|deadly signal" "$dir"/logs/*.log
+targets=$(ls "$dir" | grep '^fuzz_' | grep -v '\.' | grep -E -- "$pattern")
+echo "$targets" | xargs -P "${JOBS:-2}" -I{} bash -c 'fuzz_one {}' | sort
+for t in $targets; do
+    ! grep -al "ERROR: AddressSanitizer\|runtime error\|deadly signal\|ERROR: libFuzzer" \
+        "$dir/logs/${t#fuzz_}.log" || exit 1
+done

@@ -237,7 +237,7 @@ private slots:
         goodStream("f_magic");
         writeBytes(at("f_magic/frame_000001.png"), "GIF89a not really a frame");
         add("frame with the wrong magic", {"run", "f_magic"}, 2,
-            {"f_magic/frame_000001.png", "not a decodable image"}, "f_magic", "", 1);
+            {"f_magic/frame_000001.png", "no PNG, JPEG or BMP signature"}, "f_magic", "", 1);
         goodStream("f_crc");
         {
             std::string bad = png1;

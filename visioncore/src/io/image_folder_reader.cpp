@@ -306,7 +306,16 @@ Result<cv::Mat> decodeImageFile(const std::string& path)
         return Error{path + ": the image header claims " + std::to_string(claimed->width) + "x" +
                      std::to_string(claimed->height) + " pixels (at most " +
                      std::to_string(kMaxFrameSide) + " a side); not decoded"};
-    if (n >= 8 && std::equal(kPngSignature, kPngSignature + 8, h))
+    // Only the three formats a stream folder holds reach the decoder: given anything else,
+    // imdecode would try every codec OpenCV was built with (GDAL among them, which copies the
+    // bytes to a temporary file and prints its own errors).
+    const bool png = n >= 8 && std::equal(kPngSignature, kPngSignature + 8, h);
+    const bool jpeg = n >= 3 && h[0] == 0xFF && h[1] == 0xD8 && h[2] == 0xFF;
+    const bool bmp = n >= 2 && h[0] == 'B' && h[1] == 'M';
+    if (!png && !jpeg && !bmp)
+        return Error{"cannot read " + path +
+                     ": not a decodable image (no PNG, JPEG or BMP signature)"};
+    if (png)
         if (const auto damage = pngDamage(h, n))
             return Error{"cannot read " + path + ": " + *damage};
     cv::Mat bgr;
