@@ -6,6 +6,8 @@
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"
 
+#include "support/kill_during_save.h"
+
 #include <QtTest>
 
 #include <fstream>
@@ -97,6 +99,46 @@ private slots:
         // Saving what was loaded gives the same text.
         QCOMPARE(b.toJson(), a.toJson());
         QVERIFY(a.toJson().find("\"format\": \"fieldsight-annotations/1\"") != std::string::npos);
+    }
+
+    void aWriterKilledMidSaveLeavesTheOldOrTheNewFile()
+    {
+        // A child saves two versions of a 3000-frame annotation file in turn through
+        // Annotations::save and is killed at a random moment, 100 times. Every time the file
+        // reads back as one version or the other, whole, and loads (issue 10).
+        Annotations first, second;
+        for (int i = 0; i < 3000; ++i) {
+            const std::string name = "frame_" + std::to_string(100000 + i) + ".png";
+            FrameAnnotation& a = first.frames[name];
+            a.done = true;
+            a.truth.output<Ball>().push_back({10.0 + i % 300, 20.5, 6.25});
+            a.truth.output<FieldBoundary>() = {{{{0, 60.5}, {160, 58.25}, {319, 61}}}};
+            FrameAnnotation& b = second.frames[name];
+            b = a;
+            b.truth.output<Ball>()[0].x += 0.5; // another version of the file
+        }
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("annotations.json").toStdString();
+        const std::string first_bytes = first.toJson(), second_bytes = second.toJson();
+        QVERIFY(first_bytes != second_bytes);
+        QVERIFY(first.save(path).ok());
+        QCOMPARE(readWholeFile(path).value(), first_bytes); // a save writes toJson()
+
+        const auto result = test::killDuringSaves(
+            path, [&](bool two) { (void)(two ? second : first).save(path); }, first_bytes,
+            second_bytes, 100, 60000);
+        QCOMPARE(result.rounds, 100);
+        QVERIFY2(result.mixes == 0 && result.unreadable == 0, result.first_problem.c_str());
+        QVERIFY(result.saw_second > 0);
+        auto loaded = Annotations::load(path);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
+        QCOMPARE(loaded.value().frames.size(), std::size_t(3000));
+        QVERIFY(first.save(path).ok());
+        QCOMPARE(test::temporariesOf(path), 0); // the next save removes a stray temporary
+        qInfo("100 kills of a %zu-byte save: the new file %d times, the old %d times, %lld "
+              "temporaries left before the next save",
+              first_bytes.size(), result.saw_second, result.rounds - result.saw_second,
+              (long long)result.temporaries);
     }
 
     void rejectsWrongFormatString()

@@ -2,6 +2,8 @@
 #include "visioncore/io/atomic_file.h"
 #include "visioncore/colour_lut.h"
 
+#include "support/kill_during_save.h"
+
 #include <QtTest>
 
 #include <csignal>
@@ -284,41 +286,33 @@ private slots:
 
     void aWriterKilledMidSaveLeavesTheOldOrTheNewFile()
     {
-        // A child process saves two 2 MiB tables in turn without end; it is killed at a random
-        // moment, 100 times. Every time the file is one table or the other, whole (issue 10).
+        // A child process saves two 2 MiB tables in turn through ColourLut::save without end; it
+        // is killed at a random moment, 100 times. Every time the file is one table or the
+        // other, whole (issue 10).
         const std::string path = (m_dir.path() + "/killed.lut").toStdString();
-        const std::string a(ColourLut::kCells, '\x01');
-        const std::string b(ColourLut::kCells, '\x02');
-        QVERIFY(writeFileAtomically(path, a).ok());
-        const auto temporaries = [&] {
-            return QDir(m_dir.path()).entryList({"killed.lut.tmp-*"}, QDir::Files).size();
-        };
-        std::mt19937 rng(11);
-        int saw_b = 0;
-        qsizetype left = 0;
-        for (int round = 0; round < 100; ++round) {
-            const pid_t child = ::fork();
-            QVERIFY(child >= 0);
-            if (child == 0) {
-                for (unsigned i = 0;; ++i)
-                    (void)writeFileAtomically(path, i % 2 ? a : b);
-            }
-            ::usleep(useconds_t(rng() % 30000));
-            ::kill(child, SIGKILL);
-            ::waitpid(child, nullptr, 0);
-            const auto now = readWholeFile(path);
-            QVERIFY(now.ok());
-            QVERIFY2(now.value() == a || now.value() == b, "a mix of two saves");
-            saw_b += now.value() == b;
-            left += temporaries();
+        ColourLut first, second;
+        for (std::size_t i = 0; i < ColourLut::kCells; ++i) {
+            first.setCell(i, Colour::Green);
+            second.setCell(i, Colour::Orange);
         }
-        QVERIFY(saw_b > 0); // the child did get saves through
+        QVERIFY(first.save(path).ok());
+        const std::string first_bytes = readWholeFile(path).value();
+        const std::string second_bytes(ColourLut::kCells, char(Colour::Orange));
+        QCOMPARE(first_bytes.size(), second_bytes.size());
+
+        const auto result = test::killDuringSaves(
+            path, [&](bool two) { (void)(two ? second : first).save(path); }, first_bytes,
+            second_bytes);
+        QCOMPARE(result.rounds, 100);
+        QVERIFY2(result.mixes == 0 && result.unreadable == 0, result.first_problem.c_str());
+        QVERIFY(result.saw_second > 0); // the child did get saves through
         // A writer killed between naming its finished file and the rename can leave it: the
         // next save removes it.
-        QVERIFY(writeFileAtomically(path, a).ok());
-        QCOMPARE(temporaries(), 0);
-        qInfo("100 kills: the new table %d times, %lld temporaries left before the next save",
-              saw_b, (long long)left);
+        QVERIFY(first.save(path).ok());
+        QCOMPARE(test::temporariesOf(path), 0);
+        qInfo("100 kills: the new table %d times, the old %d times, %lld temporaries left before "
+              "the next save",
+              result.saw_second, result.rounds - result.saw_second, (long long)result.temporaries);
     }
 };
 
