@@ -1,5 +1,7 @@
 #include "ui/main_window.h"
 
+#include "ui/adapters/local_path.h"
+
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/layers_panel.h"
@@ -50,6 +52,20 @@ constexpr int kMaxRecent = 10;
 QString qs(const std::string& s)
 {
     return QString::fromStdString(s);
+}
+
+/// A path as a setting: its exact bytes, since settings files store text as UTF-8.
+QVariant pathSetting(const QString& path)
+{
+    return QByteArray::fromStdString(toLocalPath(path));
+}
+
+/// A path read back from pathSetting() (or a plain string, as older settings hold it).
+QString pathFromSetting(const QVariant& value)
+{
+    return value.typeId() == QMetaType::QByteArray
+               ? fromLocalPath(value.toByteArray().toStdString())
+               : value.toString();
 }
 
 QStringList toList(const LayerSet& layers)
@@ -486,7 +502,7 @@ void MainWindow::buildMenus()
                                          tr("Parameter sets (*.json)"));
         if (path.isEmpty())
             return;
-        if (Status s = m_doc->paramChanges().save(path.toStdString()); !s)
+        if (Status s = m_doc->paramChanges().save(toLocalPath(path)); !s)
             showMessage(qs(s.error().message));
         else
             showMessage(tr("Saved the parameters to %1").arg(path), false);
@@ -496,7 +512,7 @@ void MainWindow::buildMenus()
                                                           tr("Parameter sets (*.json)"));
         if (path.isEmpty())
             return;
-        auto params = ParamSet::load(path.toStdString());
+        auto params = ParamSet::load(toLocalPath(path));
         Status s = params ? m_doc->setParamChanges(params.value()) : Status(params.error());
         if (!s)
             showMessage(qs(s.error().message));
@@ -551,7 +567,7 @@ QString MainWindow::bundledSampleStream()
         QStringLiteral(FIELDSIGHT_SOURCE_SAMPLE_STREAMS "/lab1"),
     };
     for (const QString& c : candidates)
-        if (!c.isEmpty() && QFileInfo(c).isDir())
+        if (isLocalFolder(c))
             return QDir::cleanPath(QFileInfo(c).absoluteFilePath());
     return {};
 }
@@ -559,10 +575,10 @@ QString MainWindow::bundledSampleStream()
 void MainWindow::openLastSession()
 {
     const QSettings settings;
-    const QString last = settings.value(QStringLiteral("session/stream")).toString();
-    if (!last.isEmpty() && QFileInfo::exists(last)) {
-        QString lut = settings.value(QStringLiteral("session/lut")).toString();
-        if (!lut.isEmpty() && !QFileInfo::exists(lut))
+    const QString last = pathFromSetting(settings.value(QStringLiteral("session/stream")));
+    if (localPathExists(last)) {
+        QString lut = pathFromSetting(settings.value(QStringLiteral("session/lut")));
+        if (!localPathExists(lut))
             lut.clear();
         openStream(last, lut);
         return;
@@ -639,7 +655,7 @@ void MainWindow::openStream(const QString& spec, const QString& lut)
 
 LutCompareDialog* MainWindow::compareLut(const QString& path)
 {
-    auto other = importLut(path.toStdString());
+    auto other = importLut(toLocalPath(path));
     if (!other) {
         showMessage(QString::fromStdString(other.error().message));
         return nullptr;
@@ -923,8 +939,7 @@ bool MainWindow::saveSnapshot(const QString& path)
         showMessage(tr("%1: cannot encode the view as PNG").arg(path));
         return false;
     }
-    if (Status s =
-            writeFileAtomically(path.toStdString(), png.constData(), std::size_t(png.size()));
+    if (Status s = writeFileAtomically(toLocalPath(path), png.constData(), std::size_t(png.size()));
         !s) {
         showMessage(qs(s.error().message));
         return false;
@@ -949,12 +964,17 @@ void MainWindow::saveSettings() const
     s.setValue(QStringLiteral("view/labels"), m_labels_action->isChecked());
     s.setValue(QStringLiteral("play/fps"), m_navigator->speed());
     s.setValue(QStringLiteral("play/loop"), m_navigator->loopAction()->isChecked());
-    s.setValue(QStringLiteral("recent/streams"), m_recent);
+    QVariantList recent;
+    for (const QString& path : m_recent)
+        recent << pathSetting(path);
+    s.setValue(QStringLiteral("recent/streams"), recent);
     if (m_doc->hasStream()) {
-        s.setValue(QStringLiteral("session/stream"), m_recent.value(0, m_doc->streamSpec()));
+        s.setValue(QStringLiteral("session/stream"),
+                   pathSetting(m_recent.value(0, m_doc->streamSpec())));
         s.setValue(QStringLiteral("session/lut"),
-                   m_doc->lutPath().isEmpty() ? QString()
-                                              : QFileInfo(m_doc->lutPath()).absoluteFilePath());
+                   pathSetting(m_doc->lutPath().isEmpty()
+                                   ? QString()
+                                   : QFileInfo(m_doc->lutPath()).absoluteFilePath()));
     }
 }
 
@@ -982,7 +1002,9 @@ void MainWindow::restoreSettings()
     m_view->setLabelsShown(m_labels_action->isChecked());
     m_navigator->setSpeed(s.value(QStringLiteral("play/fps"), 30).toInt());
     m_navigator->loopAction()->setChecked(s.value(QStringLiteral("play/loop"), false).toBool());
-    m_recent = s.value(QStringLiteral("recent/streams")).toStringList();
+    m_recent.clear();
+    for (const QVariant& path : s.value(QStringLiteral("recent/streams")).toList())
+        m_recent << pathFromSetting(path);
     rebuildRecentMenu();
 }
 

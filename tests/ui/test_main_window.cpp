@@ -7,6 +7,7 @@
 #include "support/window_waits.h"
 #include "support/synthetic_frames.h"
 #include "ui/adapters/image_adapter.h"
+#include "ui/adapters/local_path.h"
 #include "ui/adapters/overlay_painter.h"
 #include "ui/document/frame_recorder.h"
 #include "ui/main_window.h"
@@ -522,6 +523,34 @@ private slots:
         QVERIFY(opened.wait(5000));
         QCOMPARE(QFileInfo(w.document().streamSpec()).canonicalFilePath(),
                  QFileInfo(sampleStream()).canonicalFilePath());
+    }
+
+    void aFolderNamedInAnotherEncodingKeepsItsBytes()
+    {
+        // "café ÿ" in Latin-1: bytes that are not UTF-8. The window opens the stream, saves a LUT
+        // beside it and, after a restart, reopens it: each at exactly these bytes (issue 10).
+        namespace fs = std::filesystem;
+        const std::string folder = m_dir.path().toStdString() + "/caf\xe9 \xff";
+        fs::create_directories(folder);
+        const std::string sample = sampleStream().toStdString();
+        for (const char* name : {"frame_000000.png", "frame_000001.png", "default.lut"})
+            fs::copy_file(sample + "/" + name, folder + "/" + name);
+        const std::string lut = folder + "/venue\xe9.lut";
+        {
+            MainWindow w(m_pipeline);
+            w.show();
+            QVERIFY(openAndWait(w, ui::fromLocalPath(folder)));
+            QCOMPARE(ui::toLocalPath(w.document().streamSpec()), folder);
+            QVERIFY(w.lutDocument().saveAs(ui::fromLocalPath(lut)).ok());
+            QVERIFY(fs::is_regular_file(lut));
+            w.close(); // saves the settings
+        }
+        MainWindow w(m_pipeline);
+        QSignalSpy opened(&w, &MainWindow::streamOpened);
+        w.openLastSession();
+        QVERIFY(opened.wait(5000));
+        QVERIFY(opened.front().front().toBool());
+        QCOMPARE(ui::toLocalPath(w.document().streamSpec()), folder);
     }
 };
 

@@ -1,5 +1,7 @@
 #include "ui/adapters/local_path.h"
 
+#include <filesystem>
+
 namespace fieldsight::ui {
 
 namespace {
@@ -95,6 +97,25 @@ std::string toLocalPath(const QString& path)
         }
     }
     return out;
+}
+
+bool localPathExists(const QString& path)
+{
+    std::error_code ec;
+    return !path.isEmpty() && std::filesystem::exists(toLocalPath(path), ec);
+}
+
+bool isLocalFolder(const QString& path)
+{
+    std::error_code ec;
+    return !path.isEmpty() && std::filesystem::is_directory(toLocalPath(path), ec);
+}
+
+bool makeLocalFolder(const QString& path)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(toLocalPath(path), ec);
+    return !ec && isLocalFolder(path);
 }
 
 QStringList argumentsOf(int argc, char** argv)

@@ -16,6 +16,12 @@ namespace fieldsight::ui {
 QString fromLocalPath(std::string_view bytes);
 /// The bytes fromLocalPath() came from (other text: UTF-8).
 std::string toLocalPath(const QString& path);
+/// Whether something exists at `path`'s exact bytes (QFileInfo would ask about its UTF-8 form).
+bool localPathExists(const QString& path);
+/// Whether `path` is a folder, by its exact bytes.
+bool isLocalFolder(const QString& path);
+/// Makes the folder `path` and its parents, by its exact bytes; false if it cannot.
+bool makeLocalFolder(const QString& path);
 /// argv[0..argc) through fromLocalPath(), in place of Qt's lossy decoding.
 QStringList argumentsOf(int argc, char** argv);
 

@@ -1,5 +1,7 @@
 #include "ui/document/edit_effect_scan.h"
 
+#include "ui/adapters/local_path.h"
+
 #include "visioncore/services/lut_compare.h"
 
 #include <QMetaObject>
@@ -158,11 +160,11 @@ void EditEffectScan::scan(Job job)
     };
     try {
         if (!m_input) {
-            auto reader = openStream(m_spec.toStdString());
+            auto reader = openStream(toLocalPath(m_spec));
             if (!reader)
                 return fail(reader.error().message);
             StreamInput input;
-            input.stream = m_spec.toStdString();
+            input.stream = toLocalPath(m_spec);
             input.reader = std::move(reader).value();
             input.pipeline = &m_pipeline;
             m_input.emplace(std::move(input));

@@ -1,5 +1,7 @@
 #include "ui/document/frame_recorder.h"
 
+#include "ui/adapters/local_path.h"
+
 #include <QDir>
 #include <QFileInfo>
 
@@ -23,15 +25,15 @@ FrameRecorder::~FrameRecorder()
 Status FrameRecorder::start(const QString& folder, const ColourLut& lut)
 {
     if (recording())
-        return Error{m_path.toStdString() + ": already recording"};
-    if (!QDir().mkpath(folder))
-        return Error{folder.toStdString() + ": cannot make the folder"};
+        return Error{toLocalPath(m_path) + ": already recording"};
+    if (!makeLocalFolder(folder))
+        return Error{toLocalPath(folder) + ": cannot make the folder"};
     const QString path = QDir(folder).filePath(QStringLiteral("recording.strm"));
-    if (QFileInfo::exists(path))
-        return Error{path.toStdString() + ": a recording is already there (choose another folder)"};
-    if (Status s = lut.save(QDir(folder).filePath(QStringLiteral("default.lut")).toStdString()); !s)
+    if (localPathExists(path))
+        return Error{toLocalPath(path) + ": a recording is already there (choose another folder)"};
+    if (Status s = lut.save(toLocalPath(QDir(folder).filePath(QStringLiteral("default.lut")))); !s)
         return s;
-    auto writer = StrmWriter::create(path.toStdString());
+    auto writer = StrmWriter::create(toLocalPath(path));
     if (!writer)
         return writer.error();
     m_writer.emplace(std::move(writer).value());

@@ -1,5 +1,7 @@
 #include "ui/document/lut_document.h"
 
+#include "ui/adapters/local_path.h"
+
 #include "visioncore/io/json_text.h"
 #include "visioncore/io/atomic_file.h"
 
@@ -13,6 +15,34 @@
 #include <nlohmann/json.hpp>
 
 namespace fieldsight::ui {
+
+namespace {
+
+/// `meta[key]` when it is a string, else "" (a damaged recovery file is ignored, never thrown on).
+std::string stringAt(const nlohmann::json& meta, const std::string& key)
+{
+    const auto it = meta.find(key);
+    return it != meta.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+/// A path in the recovery file: "<key>" for people (bad bytes shown as U+FFFD) and
+/// "<key>_bytes", the file name's exact bytes percent-encoded, for finding it again.
+void putPath(nlohmann::ordered_json& meta, const std::string& key, const QString& path)
+{
+    const std::string bytes = toLocalPath(path);
+    meta[key] = bytes;
+    meta[key + "_bytes"] = QByteArray::fromStdString(bytes).toPercentEncoding("/").toStdString();
+}
+
+QString pathAt(const nlohmann::json& meta, const std::string& key)
+{
+    if (const std::string encoded = stringAt(meta, key + "_bytes"); !encoded.empty())
+        return fromLocalPath(
+            QByteArray::fromPercentEncoding(QByteArray::fromStdString(encoded)).toStdString());
+    return fromLocalPath(stringAt(meta, key));
+}
+
+} // namespace
 
 /// One edit: the cells it changed, with what they were, so undo restores the bytes exactly.
 class LutCellsCommand : public QUndoCommand
@@ -129,8 +159,8 @@ Status LutDocument::saveAs(const QString& path)
 {
     // Only .lut is written; the foreign formats are import-only.
     if (!path.endsWith(QLatin1String(".lut"), Qt::CaseInsensitive))
-        return Error{path.toStdString() + ": LUTs are saved as .lut (SPEC §3)"};
-    if (Status s = m_table.save(path.toStdString()); !s)
+        return Error{toLocalPath(path) + ": LUTs are saved as .lut (SPEC §3)"};
+    if (Status s = m_table.save(toLocalPath(path)); !s)
         return s; // the edits stay in memory, and modified
     m_path = path;
     m_recovered = false;
@@ -148,41 +178,40 @@ QString LutDocument::recoveryBase() const
 
 Status LutDocument::writeRecovery()
 {
-    if (!QDir().mkpath(m_recovery_dir))
-        return Error{m_recovery_dir.toStdString() + ": cannot create the recovery folder"};
+    if (!makeLocalFolder(m_recovery_dir))
+        return Error{toLocalPath(m_recovery_dir) + ": cannot create the recovery folder"};
     const QString base = recoveryBase();
-    if (Status s = m_table.save((base + ".lut").toStdString()); !s)
+    if (Status s = m_table.save(toLocalPath(base + ".lut")); !s)
         return s;
-    nlohmann::ordered_json meta{
-        {"format", "fieldsight-lut-recovery/1"},
-        {"path", m_path.toStdString()},
-        {"stream", m_stream.toStdString()},
-        {"saved_at", QDateTime::currentDateTime().toString(Qt::ISODate).toStdString()}};
-    return writeFileAtomically(base.toStdString() + ".json", jsonText(meta, 2) + '\n');
+    nlohmann::ordered_json meta{{"format", "fieldsight-lut-recovery/1"}};
+    putPath(meta, "path", m_path);
+    putPath(meta, "stream", m_stream);
+    meta["saved_at"] = QDateTime::currentDateTime().toString(Qt::ISODate).toStdString();
+    return writeFileAtomically(toLocalPath(base + ".json"), jsonText(meta, 2) + '\n');
 }
 
 std::optional<LutRecovery> LutDocument::findRecovery() const
 {
     const QString base = recoveryBase();
-    if (!QFileInfo::exists(base + ".lut") || !QFileInfo::exists(base + ".json"))
+    if (!localPathExists(base + ".lut") || !localPathExists(base + ".json"))
         return std::nullopt;
-    const Result<std::string> text = readWholeFile((base + ".json").toStdString());
+    const Result<std::string> text = readWholeFile(toLocalPath(base + ".json"));
     if (!text)
         return std::nullopt;
     const auto meta = nlohmann::json::parse(text.value(), nullptr, false);
-    if (!meta.is_object() || meta.value("format", "") != "fieldsight-lut-recovery/1")
+    if (!meta.is_object() || stringAt(meta, "format") != "fieldsight-lut-recovery/1")
         return std::nullopt;
     LutRecovery r;
     r.lut_file = base + ".lut";
-    r.path = QString::fromStdString(meta.value("path", ""));
-    r.stream = QString::fromStdString(meta.value("stream", ""));
-    r.saved_at = QString::fromStdString(meta.value("saved_at", ""));
+    r.path = pathAt(meta, "path");
+    r.stream = pathAt(meta, "stream");
+    r.saved_at = QString::fromStdString(stringAt(meta, "saved_at"));
     return r;
 }
 
 Status LutDocument::recover(const LutRecovery& recovery)
 {
-    auto table = ColourLut::load(recovery.lut_file.toStdString());
+    auto table = ColourLut::load(toLocalPath(recovery.lut_file));
     if (!table)
         return table.error();
     m_table = std::move(table).value();

@@ -1,6 +1,7 @@
 #include "ui/document/lut_sampler.h"
 
 #include "ui/adapters/image_adapter.h"
+#include "ui/adapters/local_path.h"
 
 #include "visioncore/io/annotations.h"
 #include "visioncore/services/evaluation.h"
@@ -72,10 +73,10 @@ Status LutSampler::setStream(const QString& spec)
     m_ambiguous.clear();
     m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
                  ? QString()
-                 : QString::fromStdString(defaultLutSamplesPath(spec.toStdString()));
+                 : fromLocalPath(defaultLutSamplesPath(toLocalPath(spec)));
     Status status;
-    if (!m_path.isEmpty() && QFileInfo::exists(m_path)) {
-        auto loaded = loadLutSamples(m_path.toStdString());
+    if (localPathExists(m_path)) {
+        auto loaded = loadLutSamples(toLocalPath(m_path));
         if (loaded)
             m_samples = std::move(loaded).value();
         else
@@ -89,7 +90,7 @@ void LutSampler::store(std::vector<LutSample> samples)
 {
     m_samples.samples = std::move(samples);
     if (!m_path.isEmpty())
-        if (Status s = saveLutSamples(m_path.toStdString(), m_samples); !s)
+        if (Status s = saveLutSamples(toLocalPath(m_path), m_samples); !s)
             emit problem(QString::fromStdString(s.error().message) +
                          tr(" (the samples stay in memory)"));
     emit samplesChanged();
@@ -99,7 +100,7 @@ void LutSampler::addRect(const QString& frame, Colour colour, const QRect& rect)
 {
     const QRect r = rect.normalized();
     LutSample sample;
-    sample.frame = frame.toStdString();
+    sample.frame = toLocalPath(frame);
     sample.colour = colour;
     sample.polygon = {
         {r.left(), r.top()}, {r.right(), r.top()}, {r.right(), r.bottom()}, {r.left(), r.bottom()}};
@@ -163,9 +164,8 @@ void LutSampler::build(bool with_annotations)
     m_cancel = false;
     m_done = 0;
     m_total = 0;
-    m_watcher.setFuture(QtConcurrent::run(&LutSampler::buildTable, m_stream.toStdString(),
-                                          m_samples, with_annotations, &m_cancel, &m_done,
-                                          &m_total));
+    m_watcher.setFuture(QtConcurrent::run(&LutSampler::buildTable, toLocalPath(m_stream), m_samples,
+                                          with_annotations, &m_cancel, &m_done, &m_total));
 }
 
 } // namespace fieldsight::ui

@@ -1,5 +1,7 @@
 #include "ui/panels/lut_panel.h"
 
+#include "ui/adapters/local_path.h"
+
 #include "ui/adapters/image_adapter.h"
 #include "visioncore/services/lut_compare.h"
 
@@ -424,7 +426,7 @@ void LutPanel::release()
         const QRect r = QRect(*m_sample_from, *m_sample_to).normalized();
         const auto& out = m_stream.current();
         if (out && r.width() >= 2 && r.height() >= 2)
-            m_sampler->addRect(QString::fromStdString(out->frame.name), m_colour, r);
+            m_sampler->addRect(fromLocalPath(out->frame.name), m_colour, r);
         m_sample_from.reset();
         m_sample_to.reset();
         emit previewChanged({}, {});
