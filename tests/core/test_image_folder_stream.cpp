@@ -11,6 +11,8 @@
 #include <cstring>
 #include <fstream>
 
+#include <sys/resource.h>
+
 using namespace fieldsight;
 
 namespace {
@@ -196,6 +198,37 @@ private slots:
         QVERIFY(!bad.ok());
         QCOMPARE(bad.error().message, dir.filePath("f2.png").toStdString() +
                                           ": frame size 5x4 differs from the stream's 4x4");
+    }
+
+    void aFrameClaimingAnotherSizeIsNotDecoded()
+    {
+        // A 32x24 JPEG whose frame header is changed to claim 8000x6000: libjpeg would decode
+        // the missing data as grey, 144 MB. Once the stream's size is known, the header is
+        // compared first and nothing is decoded (issue 10: limits before allocating).
+        QTemporaryDir dir;
+        std::vector<unsigned char> jpeg;
+        QVERIFY(cv::imencode(".jpg", cv::Mat(24, 32, CV_8UC3, cv::Scalar(40, 160, 60)), jpeg));
+        writeText(dir, "f1.jpg", std::string(jpeg.begin(), jpeg.end()));
+        std::size_t sof = 2;
+        while (sof + 9 < jpeg.size() && jpeg[sof + 1] != 0xC0)
+            sof += 2 + (std::size_t(jpeg[sof + 2]) << 8 | jpeg[sof + 3]);
+        QVERIFY(sof + 9 < jpeg.size());
+        const unsigned char claim[4] = {6000 >> 8, 6000 & 255, 8000 >> 8, 8000 & 255};
+        std::memcpy(&jpeg[sof + 5], claim, 4); // height, width
+        writeText(dir, "f2.jpg", std::string(jpeg.begin(), jpeg.end()));
+        auto reader = openOk(dir);
+        QVERIFY(reader);
+        struct rusage before
+        {
+        }, after{};
+        ::getrusage(RUSAGE_SELF, &before);
+        auto bad = reader->read(1);
+        ::getrusage(RUSAGE_SELF, &after);
+        QVERIFY(!bad.ok());
+        QCOMPARE(bad.error().message, dir.filePath("f2.jpg").toStdString() +
+                                          ": frame size 8000x6000 differs from the stream's 32x24");
+        QVERIFY2(after.ru_maxrss - before.ru_maxrss < 50 * 1024, "the frame was decoded");
+        QVERIFY(reader->read(0).ok());
     }
 
     void badManifestIsAnErrorNamingStreamJson()

@@ -17,7 +17,7 @@ fuzz_one() {
     local target=$1 name=${1#fuzz_} start end
     mkdir -p "$dir/work/$name"
     start=$(date +%s)
-    if "$dir/$target" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    if "$dir/$target" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 ${FUZZ_FLAGS:-} \
         -artifact_prefix="$dir/crashes/$name-" "$dir/work/$name" "tests/fuzz/corpus/$name" \
         > "$dir/logs/$name.log" 2>&1; then result=ok; else result=CRASH; fi
     end=$(date +%s)

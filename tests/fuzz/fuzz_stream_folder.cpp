@@ -1,6 +1,6 @@
 // An image folder: FUZZ_MODE "manifest" fuzzes stream.json beside two good frames; "png", "jpg"
-// or "bmp" fuzzes the bytes of the one frame a good manifest lists (image decoding through the
-// DataWrapper, header checks first).
+// or "bmp" fuzzes the bytes of the second frame a good manifest lists, after a good first frame
+// that sets the stream's size (image decoding through the DataWrapper, header checks first).
 #include "fuzz_support.h"
 
 #include <opencv2/core.hpp>
@@ -42,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string mode = FUZZ_MODE;
     const std::string bytes(reinterpret_cast<const char*>(data), size);
     const std::string dir = folder(mode == "manifest" ? "png" : mode);
-    fuzz::writeInput(mode == "manifest" ? "stream/stream.json" : "stream/frame_0." + mode, bytes);
+    fuzz::writeInput(mode == "manifest" ? "stream/stream.json" : "stream/frame_1." + mode, bytes);
     fuzz::readStream(dir);
     return 0;
 }

@@ -291,8 +291,11 @@ std::optional<HeaderSize> headerSize(const unsigned char* h, std::size_t n)
 
 /// An image file's pixels as BGR, or an Error naming the file: read with the checks of every
 /// read (a FIFO or device is refused, not waited on), the header's size and a PNG's chunks
-/// checked before the decoder sees the bytes.
-Result<cv::Mat> decodeImageFile(const std::string& path)
+/// checked before the decoder sees the bytes. When `expected` is given (the stream's size, known
+/// once its first frame is read), a header claiming another size is refused before decoding: a
+/// 100-byte file cannot make a 32x24 stream decode 200 MB.
+Result<cv::Mat> decodeImageFile(const std::string& path,
+                                std::optional<HeaderSize> expected = std::nullopt)
 {
     auto bytes = readWholeFile(path);
     if (!bytes)
@@ -306,6 +309,14 @@ Result<cv::Mat> decodeImageFile(const std::string& path)
         return Error{path + ": the image header claims " + std::to_string(claimed->width) + "x" +
                      std::to_string(claimed->height) + " pixels (at most " +
                      std::to_string(kMaxFrameSide) + " a side); not decoded"};
+    // Either way round: a JPEG's EXIF orientation may turn it when decoded.
+    if (const auto claimed = headerSize(h, n);
+        claimed && expected &&
+        !(claimed->width == expected->width && claimed->height == expected->height) &&
+        !(claimed->width == expected->height && claimed->height == expected->width))
+        return Error{path + ": frame size " + std::to_string(claimed->width) + "x" +
+                     std::to_string(claimed->height) + " differs from the stream's " +
+                     std::to_string(expected->width) + "x" + std::to_string(expected->height)};
     // Only the three formats a stream folder holds reach the decoder: given anything else,
     // imdecode would try every codec OpenCV was built with (GDAL among them, which copies the
     // bytes to a temporary file and prints its own errors).
@@ -367,7 +378,10 @@ public:
     Result<Frame> decode(std::size_t index) const
     {
         const std::string path = (m_folder / m_files[index]).string();
-        auto decoded = decodeImageFile(path);
+        auto decoded = decodeImageFile(
+            path, m_info.width > 0
+                      ? std::optional<HeaderSize>(HeaderSize{m_info.width, m_info.height})
+                      : std::nullopt);
         if (!decoded)
             return decoded.error();
         cv::Mat bgr = std::move(decoded).value();
