@@ -9,6 +9,8 @@
 #include <QFileInfo>
 #include <QString>
 
+#include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <functional>
 #include <random>
@@ -40,8 +42,9 @@ inline qsizetype temporariesOf(const std::string& path)
 
 /// Kills a child that calls `save(i % 2 == 0)` for i = 0, 1, 2, ... (the second version first, so
 /// that any save that completes shows) at a random moment of up to
-/// `max_delay_us`, `rounds` times. `first` and `second` are the bytes each version saves as; the
-/// file at `path` must already hold `first`.
+/// `max_delay_us` (at least three saves long, timed here, so that a slow build still kills during
+/// saves of both versions), `rounds` times. `first` and `second` are the bytes each version saves
+/// as; the file at `path` must already hold `first`.
 inline KillDuringSaveResult killDuringSaves(const std::string& path,
                                             const std::function<void(bool second)>& save,
                                             const std::string& first, const std::string& second,
@@ -49,6 +52,11 @@ inline KillDuringSaveResult killDuringSaves(const std::string& path,
                                             unsigned seed = 11)
 {
     KillDuringSaveResult result;
+    const auto start = std::chrono::steady_clock::now();
+    save(false); // the file already holds the first version
+    const auto one_save = std::chrono::duration_cast<std::chrono::microseconds>(
+        std::chrono::steady_clock::now() - start);
+    max_delay_us = std::max<unsigned>(max_delay_us, unsigned(3 * one_save.count()) + 1);
     std::mt19937 rng(seed);
     for (int round = 0; round < rounds; ++round) {
         const pid_t child = ::fork();

@@ -4,6 +4,7 @@
 #include "visioncore/io/atomic_file.h"
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -36,9 +37,13 @@ Result<ColourLut> ColourLut::fromBytes(std::vector<std::uint8_t> bytes, const st
     if (bytes.size() != kCells)
         return Error{source + ": wrong size: " + std::to_string(bytes.size()) +
                      " bytes, expected " + std::to_string(kCells) + " (128x128x128)"};
-    const auto bad = std::find_if(bytes.begin(), bytes.end(),
-                                  [](std::uint8_t v) { return !isValidColourId(v); });
-    if (bad != bytes.end()) {
+    // The largest id first, in a loop that vectorises; the first bad cell only when there is one.
+    std::uint8_t largest = 0;
+    for (const std::uint8_t v : bytes)
+        largest = std::max(largest, v);
+    if (!isValidColourId(largest)) {
+        const auto bad = std::find_if(bytes.begin(), bytes.end(),
+                                      [](std::uint8_t v) { return !isValidColourId(v); });
         const auto count =
             std::count_if(bad, bytes.end(), [](std::uint8_t v) { return !isValidColourId(v); });
         return Error{source + ": invalid colour id " + std::to_string(int(*bad)) + " at offset " +
@@ -62,7 +67,9 @@ Result<ColourLut> ColourLut::load(const std::string& path)
     if (!text)
         return text.error();
     const std::string& s = text.value();
-    return fromBytes(std::vector<std::uint8_t>(s.begin(), s.end()), path);
+    std::vector<std::uint8_t> bytes(s.size());
+    std::memcpy(bytes.data(), s.data(), s.size());
+    return fromBytes(std::move(bytes), path);
 }
 
 Status ColourLut::save(const std::string& path) const
