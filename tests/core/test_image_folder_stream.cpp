@@ -2,16 +2,22 @@
 #include "support/synthetic_frames.h"
 #include "visioncore/io/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
+#include "visioncore/ycbcr.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <QtTest>
 
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iostream>
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 using namespace fieldsight;
 
@@ -47,6 +53,62 @@ std::string openError(const QTemporaryDir& dir)
 {
     auto opened = openStream(dir.path().toStdString());
     return opened.ok() ? std::string("(opened)") : opened.error().message;
+}
+
+/// What `run` writes on file descriptor 2, where libraries print their own lines (libjpeg with
+/// fprintf, OpenCV's decoders through std::cerr).
+template <class Run> std::string stderrOf(Run run)
+{
+    std::cerr.flush();
+    std::fflush(stderr);
+    FILE* capture = std::tmpfile();
+    const int saved = ::dup(2);
+    ::dup2(::fileno(capture), 2);
+    run();
+    std::cerr.flush();
+    std::fflush(stderr);
+    ::dup2(saved, 2);
+    ::close(saved);
+    std::string text;
+    std::rewind(capture);
+    for (int c = std::fgetc(capture); c != EOF; c = std::fgetc(capture))
+        text += char(c);
+    std::fclose(capture);
+    return text;
+}
+
+/// The encoding of a 32x24 frame (green, an orange disc) in `ext`'s format.
+std::string encodedFrame(const char* ext)
+{
+    cv::Mat bgr(24, 32, CV_8UC3, cv::Scalar(40, 160, 60));
+    cv::circle(bgr, {16, 12}, 5, cv::Scalar(0, 128, 255), -1);
+    std::vector<unsigned char> bytes;
+    cv::imencode(ext, bgr, bytes);
+    return std::string(bytes.begin(), bytes.end());
+}
+
+/// The error reading frame 1 (`bytes`, named `name`) after a good frame 0 of the same format,
+/// with what was printed on stderr meanwhile.
+std::pair<std::string, std::string> secondFrameError(const char* name, const std::string& bytes)
+{
+    QTemporaryDir dir;
+    const std::string ext = std::filesystem::path(name).extension().string();
+    writeText(dir, ("f0" + ext).c_str(), encodedFrame(ext.c_str()));
+    writeText(dir, name, bytes);
+    std::string message = "(opened)";
+    const std::string printed = stderrOf([&] {
+        auto opened = openStream(dir.path().toStdString());
+        if (!opened.ok()) {
+            message = opened.error().message;
+            return;
+        }
+        auto frame = opened.value()->read(1);
+        message = frame.ok() ? "(read)" : frame.error().message;
+    });
+    const std::string path = dir.filePath(name).toStdString();
+    if (message.find(path) != std::string::npos)
+        message.replace(message.find(path), path.size(), name);
+    return {message, printed};
 }
 
 } // namespace
@@ -320,6 +382,78 @@ private slots:
                      error.c_str());
         }
         QVERIFY(clock.elapsed() < 2000);
+    }
+
+    void jpegFramesDecodeAsOpenCvDecodesThem()
+    {
+        // Fieldsight decodes JPEG frames with libjpeg itself (so that libjpeg's own lines are
+        // not printed): the pixels must be exactly OpenCV's, for colour and grey frames, and for
+        // the real camera frames of the reference data where it is present.
+        std::vector<std::string> files;
+        QTemporaryDir made;
+        cv::Mat colour(48, 64, CV_8UC3);
+        cv::randu(colour, 0, 255);
+        cv::GaussianBlur(colour, colour, {5, 5}, 2);
+        files.push_back(made.filePath("colour.jpg").toStdString());
+        QVERIFY(cv::imwrite(files.back(), colour));
+        files.push_back(made.filePath("grey.jpg").toStdString());
+        cv::Mat grey;
+        cv::cvtColor(colour, grey, cv::COLOR_BGR2GRAY);
+        QVERIFY(cv::imwrite(files.back(), grey));
+        files.push_back(made.filePath("progressive.jpg").toStdString());
+        QVERIFY(cv::imwrite(files.back(), colour, {cv::IMWRITE_JPEG_PROGRESSIVE, 1}));
+        if (const std::string ref = test::referenceDataDir(); !ref.empty())
+            for (const auto& entry :
+                 std::filesystem::directory_iterator(ref + "/nubots_nusight_frames"))
+                if (entry.path().extension() == ".jpg")
+                    files.push_back(entry.path().string());
+        QVERIFY(files.size() >= 3);
+        for (const std::string& file : files) {
+            QTemporaryDir dir;
+            std::filesystem::copy_file(file, dir.filePath("frame.jpg").toStdString());
+            auto reader = openOk(dir);
+            QVERIFY2(reader, file.c_str());
+            auto frame = reader->read(0);
+            QVERIFY2(frame.ok(), file.c_str());
+            const cv::Mat expected = bgrToYcbcr(cv::imread(file, cv::IMREAD_COLOR));
+            QCOMPARE(frame.value().ycbcr.size(), expected.size());
+            QVERIFY2(cv::norm(frame.value().ycbcr, expected, cv::NORM_INF) == 0, file.c_str());
+        }
+    }
+
+    void aDamagedFrameIsRefusedWithOneLineAndNothingPrinted()
+    {
+        // Damage that libjpeg reports as a warning (and OpenCV's decoders print on stderr) is
+        // Fieldsight's one error line, naming the file; the libraries print nothing.
+        const std::string jpeg = encodedFrame(".jpg");
+        std::string extraneous = jpeg;
+        extraneous.insert(extraneous.find("\xFF\xDA"), "\x12\x34"); // before the scan
+        const std::string bmp = encodedFrame(".bmp");
+        std::string rle = bmp;
+        rle[30] = 1; // BI_RLE8
+        const std::vector<std::pair<std::string, std::string>> cases = {
+            {extraneous, "cannot read f1.jpg: damaged JPEG (Corrupt JPEG data: 2 extraneous "
+                         "bytes before marker 0xda)"},
+            {jpeg.substr(0, jpeg.size() / 2),
+             "cannot read f1.jpg: damaged JPEG (Premature end of JPEG file)"},
+            {std::string("\xFF\xD8\xFF\xD9", 4),
+             "cannot read f1.jpg: damaged JPEG (JPEG datastream contains no image)"},
+            {bmp.substr(0, 30),
+             "cannot read f1.bmp: truncated BMP (the header needs 54 bytes, the file has 30)"},
+            {bmp.substr(0, 1000), "cannot read f1.bmp: truncated BMP (24 rows of 96 bytes from "
+                                  "byte 54, the file has 1000)"},
+            {rle, "cannot read f1.bmp: run-length-compressed BMP, not a camera frame (save "
+                  "frames uncompressed)"},
+        };
+        for (const auto& [bytes, message] : cases) {
+            const bool isJpeg = bytes[0] == char(0xFF);
+            const auto [error, printed] = secondFrameError(isJpeg ? "f1.jpg" : "f1.bmp", bytes);
+            QCOMPARE(QString::fromStdString(error), QString::fromStdString(message));
+            QVERIFY2(printed.empty(), printed.c_str());
+        }
+        // The good frames themselves still read.
+        QCOMPARE(secondFrameError("f1.jpg", jpeg).first, std::string("(read)"));
+        QCOMPARE(secondFrameError("f1.bmp", bmp).first, std::string("(read)"));
     }
 };
 

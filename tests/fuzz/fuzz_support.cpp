@@ -9,6 +9,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace fieldsight::fuzz {
@@ -25,6 +27,25 @@ std::shared_ptr<const ColourLut> bandedLut()
         return std::shared_ptr<const ColourLut>(table);
     }();
     return lut;
+}
+
+/// readStream without the check of what is printed.
+void readFrames(const std::string& spec)
+{
+    auto reader = openStream(spec);
+    if (!reader)
+        return;
+    const std::size_t count = reader.value()->info().frame_count;
+    StreamDataWrapper data(std::move(reader).value(), bandedLut());
+    ControlWrapper core(data);
+    for (std::size_t index : {std::size_t(0), std::size_t(1), count - 1}) {
+        if (index >= count || !data.seek(index))
+            continue;
+        const cv::Mat& image = data.image();
+        if (image.empty() || image.type() != CV_8UC3)
+            __builtin_trap();
+        (void)core.runFrame();
+    }
 }
 
 void removeScratch()
@@ -78,19 +99,15 @@ std::string tiled(const std::uint8_t* data, std::size_t size, std::size_t target
 
 void readStream(const std::string& spec)
 {
-    auto reader = openStream(spec);
-    if (!reader)
-        return;
-    const std::size_t count = reader.value()->info().frame_count;
-    StreamDataWrapper data(std::move(reader).value(), bandedLut());
-    ControlWrapper core(data);
-    for (std::size_t index : {std::size_t(0), std::size_t(1), count - 1}) {
-        if (index >= count || !data.seek(index))
-            continue;
-        const cv::Mat& image = data.image();
-        if (image.empty() || image.type() != CV_8UC3)
-            __builtin_trap();
-        (void)core.runFrame();
+    // What the libraries print through std::cerr (OpenCV's decoders do on damaged images) is
+    // kept and makes a crash: the user must see Fieldsight's one line, not theirs.
+    std::ostringstream printed;
+    std::streambuf* const console = std::cerr.rdbuf(printed.rdbuf());
+    readFrames(spec);
+    std::cerr.rdbuf(console);
+    if (!printed.str().empty()) {
+        std::cerr << "printed on stderr while reading " << spec << ":\n" << printed.str();
+        __builtin_trap();
     }
 }
 

@@ -22,7 +22,8 @@ std::string tiled(const std::uint8_t* data, std::size_t size, std::size_t target
 
 /// Opens `spec` as a stream and, when it opens, reads its first, second and last frames through
 /// the StreamDataWrapper and runs the core on each, as `fieldsight run` would. Traps when a frame
-/// that reads is not what the reader promised (CV_8UC3, non-empty).
+/// that reads is not what the reader promised (CV_8UC3, non-empty), and when a library prints
+/// through std::cerr meanwhile (the user must see Fieldsight's one line only).
 void readStream(const std::string& spec);
 
 } // namespace fieldsight::fuzz

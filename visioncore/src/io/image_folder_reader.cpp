@@ -1,6 +1,8 @@
 // Image-folder streams (SPEC §4): frames in natural file-name order plus an optional stream.json.
 #include "io/stream_readers.h"
 
+#include "io/jpeg_decoder.h"
+
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -251,6 +253,61 @@ std::optional<std::string> pngDamage(const unsigned char* h, std::size_t n)
     return "truncated PNG (ends at byte " + std::to_string(n) + " before its IEND chunk)";
 }
 
+/// Why a BMP's headers, palette, colour masks or pixel rows do not fit in the file, or nullopt.
+/// Checked before decoding because OpenCV's decoder prints its own line ("imdecode_(''): can't
+/// read header") when it reads past the end. Run-length-compressed BMPs are refused: their length
+/// is known only by decoding, and no camera frame is stored that way.
+std::optional<std::string> bmpDamage(const unsigned char* h, std::size_t n)
+{
+    const auto u32 = [h](std::size_t at) {
+        std::uint32_t v = 0;
+        std::memcpy(&v, h + at, 4); // little-endian on every machine this builds for
+        return v;
+    };
+    const auto u16 = [h](std::size_t at) { return std::uint32_t(h[at] | h[at + 1] << 8); };
+    const auto truncated = [n](const std::string& what, std::size_t needed) {
+        return "truncated BMP (" + what + " needs " + std::to_string(needed) +
+               " bytes, the file has " + std::to_string(n) + ")";
+    };
+    if (n < 18)
+        return truncated("the file header", 18);
+    const std::size_t info = u32(14);
+    const bool core = info == 12; // OS/2 1.x: 16-bit sizes, 3-byte palette entries
+    if (!core && (info < 40 || info > 1024))
+        return "damaged BMP (unknown header size " + std::to_string(info) + ")";
+    if (n < 14 + info)
+        return truncated("the header", 14 + info);
+    const std::int64_t width = core ? std::int64_t(u16(18)) : std::int64_t(std::int32_t(u32(18)));
+    const std::int64_t height = core ? std::int64_t(u16(20)) : std::int64_t(std::int32_t(u32(22)));
+    const std::uint32_t bpp = core ? u16(24) : u16(28);
+    const std::uint32_t compression = core ? 0 : u32(30);
+    if (compression == 1 || compression == 2)
+        return std::string("run-length-compressed BMP, not a camera frame (save frames "
+                           "uncompressed)");
+    std::size_t end = 14 + info;
+    if (bpp <= 8) {
+        const std::uint32_t used = core ? 0 : u32(46);
+        if (used > 256)
+            return "damaged BMP (palette of " + std::to_string(used) + " colours)";
+        end += (used == 0 ? std::size_t(1) << bpp : used) * (core ? 3 : 4);
+        if (n < end)
+            return truncated("the palette", end);
+    } else if (compression == 3) { // colour masks after the header
+        end += 12;
+        if (n < end)
+            return truncated("the colour masks", end);
+    }
+    const std::size_t offset = u32(10);
+    const std::uint64_t bits = bpp == 15 ? 16 : bpp;
+    const std::uint64_t pitch = (std::uint64_t(std::llabs(width)) * bits + 31) / 32 * 4;
+    const std::uint64_t rows = std::uint64_t(std::llabs(height));
+    if (offset > n || (rows > 0 && pitch > (n - offset) / rows))
+        return "truncated BMP (" + std::to_string(rows) + " rows of " + std::to_string(pitch) +
+               " bytes from byte " + std::to_string(offset) + ", the file has " +
+               std::to_string(n) + ")";
+    return std::nullopt;
+}
+
 struct HeaderSize
 {
     long long width = 0;
@@ -309,11 +366,9 @@ Result<cv::Mat> decodeImageFile(const std::string& path,
         return Error{path + ": the image header claims " + std::to_string(claimed->width) + "x" +
                      std::to_string(claimed->height) + " pixels (at most " +
                      std::to_string(kMaxFrameSide) + " a side); not decoded"};
-    // Either way round: a JPEG's EXIF orientation may turn it when decoded.
     if (const auto claimed = headerSize(h, n);
         claimed && expected &&
-        !(claimed->width == expected->width && claimed->height == expected->height) &&
-        !(claimed->width == expected->height && claimed->height == expected->width))
+        !(claimed->width == expected->width && claimed->height == expected->height))
         return Error{path + ": frame size " + std::to_string(claimed->width) + "x" +
                      std::to_string(claimed->height) + " differs from the stream's " +
                      std::to_string(expected->width) + "x" + std::to_string(expected->height)};
@@ -326,9 +381,14 @@ Result<cv::Mat> decodeImageFile(const std::string& path,
     if (!png && !jpeg && !bmp)
         return Error{"cannot read " + path +
                      ": not a decodable image (no PNG, JPEG or BMP signature)"};
-    if (png)
-        if (const auto damage = pngDamage(h, n))
-            return Error{"cannot read " + path + ": " + *damage};
+    if (const auto damage = png ? pngDamage(h, n) : bmp ? bmpDamage(h, n) : std::nullopt)
+        return Error{"cannot read " + path + ": " + *damage};
+    if (jpeg) {
+        auto pixels = decodeJpeg(h, n, kMaxFrameSide);
+        if (!pixels)
+            return Error{"cannot read " + path + ": " + pixels.error().message};
+        return pixels;
+    }
     cv::Mat bgr;
     try {
         bgr = cv::imdecode(cv::Mat(1, int(n), CV_8U, const_cast<unsigned char*>(h)),

@@ -1,0 +1,117 @@
+#include "io/jpeg_decoder.h"
+
+#include <csetjmp>
+#include <cstdio> // before jpeglib.h, which uses FILE
+#include <string>
+
+#include <jerror.h>
+#include <jpeglib.h>
+
+namespace fieldsight::io {
+
+namespace {
+
+/// Progressive scans allowed: each scan passes over the whole image, so a small file of
+/// thousands of scans would keep the decoder busy for minutes (libjpeg-turbo's own fuzzers stop
+/// at 500 too).
+constexpr int kMaxScans = 500;
+
+/// libjpeg's error manager with where to jump on an error and what the error was. libjpeg sees
+/// only `pub`, the first member.
+struct ErrorManager
+{
+    jpeg_error_mgr pub;
+    std::jmp_buf jump;
+    std::string problem;
+};
+
+[[noreturn]] void failWith(j_common_ptr cinfo, std::string problem)
+{
+    auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
+    manager->problem = std::move(problem);
+    std::longjmp(manager->jump, 1);
+}
+
+/// libjpeg's message for the current code, as text.
+std::string messageOf(j_common_ptr cinfo)
+{
+    char text[JMSG_LENGTH_MAX] = {};
+    (*cinfo->err->format_message)(cinfo, text);
+    return text;
+}
+
+[[noreturn]] void onError(j_common_ptr cinfo)
+{
+    failWith(cinfo, messageOf(cinfo));
+}
+
+/// Replaces libjpeg's printing of messages: trace messages (level >= 0) are dropped, warnings
+/// about damaged data end the decode, other warnings are only counted.
+void onMessage(j_common_ptr cinfo, int level)
+{
+    if (level >= 0)
+        return;
+    switch (cinfo->err->msg_code) {
+    case JWRN_BOGUS_PROGRESSION:
+    case JWRN_EXTRANEOUS_DATA:
+    case JWRN_HIT_MARKER:
+    case JWRN_HUFF_BAD_CODE:
+    case JWRN_JPEG_EOF:
+    case JWRN_MUST_RESYNC:
+    case JWRN_NOT_SEQUENTIAL:
+    case JWRN_TOO_MUCH_DATA:
+        failWith(cinfo, messageOf(cinfo));
+    default: // JWRN_ARITH_BAD_CODE exists only in some builds: known by its text
+        if (const std::string text = messageOf(cinfo); text.rfind("Corrupt JPEG data", 0) == 0)
+            failWith(cinfo, text);
+        ++cinfo->err->num_warnings;
+    }
+}
+
+void limitScans(j_common_ptr cinfo)
+{
+    const auto* decompress = reinterpret_cast<j_decompress_ptr>(cinfo);
+    if (decompress->input_scan_number > kMaxScans)
+        failWith(cinfo, "more than " + std::to_string(kMaxScans) + " progressive scans");
+}
+
+} // namespace
+
+Result<cv::Mat> decodeJpeg(const unsigned char* data, std::size_t size, int max_side)
+{
+    // Everything longjmp returns past is made before setjmp: no destructor is skipped.
+    jpeg_decompress_struct cinfo{};
+    ErrorManager errors{};
+    jpeg_progress_mgr progress{};
+    cv::Mat bgr;
+    cinfo.err = jpeg_std_error(&errors.pub);
+    errors.pub.error_exit = onError;
+    errors.pub.emit_message = onMessage;
+    progress.progress_monitor = limitScans;
+    if (setjmp(errors.jump)) {
+        jpeg_destroy_decompress(&cinfo);
+        return Error{"damaged JPEG (" + errors.problem + ")"};
+    }
+    jpeg_create_decompress(&cinfo);
+    cinfo.progress = &progress;
+    jpeg_mem_src(&cinfo, data, static_cast<unsigned long>(size));
+    jpeg_read_header(&cinfo, TRUE);
+    if (cinfo.image_width > JDIMENSION(max_side) || cinfo.image_height > JDIMENSION(max_side))
+        failWith(reinterpret_cast<j_common_ptr>(&cinfo),
+                 "the header claims " + std::to_string(cinfo.image_width) + "x" +
+                     std::to_string(cinfo.image_height) + " pixels");
+    if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK)
+        failWith(reinterpret_cast<j_common_ptr>(&cinfo), "CMYK data, not a camera frame");
+    cinfo.out_color_space = JCS_EXT_BGR;
+    jpeg_start_decompress(&cinfo);
+    bgr.create(int(cinfo.output_height), int(cinfo.output_width), CV_8UC3);
+    while (cinfo.output_scanline < cinfo.output_height) {
+        JSAMPROW row = bgr.ptr(int(cinfo.output_scanline));
+        jpeg_read_scanlines(&cinfo, &row, 1);
+    }
+    jpeg_finish_decompress(&cinfo);
+    jpeg_destroy_decompress(&cinfo);
+    return bgr;
+}
+
+} // namespace fieldsight::io
