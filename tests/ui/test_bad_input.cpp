@@ -11,6 +11,8 @@
 #include "visioncore/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
+#include <opencv2/imgcodecs.hpp>
+
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -166,6 +168,19 @@ class TestBadInput : public QObject
         fs::copy_file(from + "/default.lut", at(name + "/default.lut"));
     }
 
+    /// A 3-frame copy of lab1 as `name`, its frames re-encoded as `ext` (".jpg", ".bmp").
+    void encodedStream(const std::string& name, const std::string& ext)
+    {
+        const std::string from = sampleStreamsDir() + "/lab1";
+        fs::create_directories(at(name));
+        for (int i = 0; i < 3; ++i) {
+            const std::string frame = "frame_00000" + std::to_string(i);
+            QVERIFY(
+                cv::imwrite(at(name + "/" + frame + ext), cv::imread(from + "/" + frame + ".png")));
+        }
+        fs::copy_file(from + "/default.lut", at(name + "/default.lut"));
+    }
+
     Case& add(std::string name, std::vector<std::string> args, int status,
               std::vector<std::string> needles, std::string gui_stream = {},
               std::string gui_lut = {}, std::size_t gui_frame = 0)
@@ -246,6 +261,21 @@ private slots:
         }
         add("frame with a damaged byte", {"run", "f_crc"}, 2,
             {"f_crc/frame_000001.png", "checksum mismatch"}, "f_crc", "", 1);
+        encodedStream("f_jpeg", ".jpg");
+        {
+            // Two bytes before the scan: libjpeg's warning, which it would print itself.
+            std::string bad = readAll(at("f_jpeg/frame_000001.jpg"));
+            bad.insert(bad.find("\xFF\xDA"), "\x12\x34");
+            writeBytes(at("f_jpeg/frame_000001.jpg"), bad);
+        }
+        add("JPEG frame with bytes out of place", {"run", "f_jpeg"}, 2,
+            {"f_jpeg/frame_000001.jpg", "damaged JPEG (Corrupt JPEG data: 2 extraneous bytes"},
+            "f_jpeg", "", 1);
+        encodedStream("f_bmp", ".bmp");
+        writeBytes(at("f_bmp/frame_000001.bmp"),
+                   readAll(at("f_bmp/frame_000001.bmp")).substr(0, 5000));
+        add("truncated BMP frame", {"run", "f_bmp"}, 2,
+            {"f_bmp/frame_000001.bmp", "truncated BMP", "the file has 5000"}, "f_bmp", "", 1);
 
         // .strm files.
         const std::string two = strmRecord(1, 32, 24, 0) + strmRecord(1, 32, 24, 33.3);
