@@ -431,6 +431,8 @@ private slots:
         const std::string bmp = encodedFrame(".bmp");
         std::string rle = bmp;
         rle[30] = 1; // BI_RLE8
+        std::string compressed = bmp;
+        compressed[30] = 4; // BI_JPEG
         const std::vector<std::pair<std::string, std::string>> cases = {
             {extraneous, "cannot read f1.jpg: damaged JPEG (Corrupt JPEG data: 2 extraneous "
                          "bytes before marker 0xda)"},
@@ -442,6 +444,7 @@ private slots:
              "cannot read f1.bmp: truncated BMP (the header needs 54 bytes, the file has 30)"},
             {bmp.substr(0, 1000), "cannot read f1.bmp: truncated BMP (24 rows of 96 bytes from "
                                   "byte 54, the file has 1000)"},
+            {compressed, "cannot read f1.bmp: damaged BMP (unknown compression 4)"},
             {rle, "cannot read f1.bmp: run-length-compressed BMP, not a camera frame (save "
                   "frames uncompressed)"},
         };

@@ -284,6 +284,8 @@ std::optional<std::string> bmpDamage(const unsigned char* h, std::size_t n)
     if (compression == 1 || compression == 2)
         return std::string("run-length-compressed BMP, not a camera frame (save frames "
                            "uncompressed)");
+    if (compression != 0 && compression != 3) // OpenCV asserts on anything but RGB, RLE, masks
+        return "damaged BMP (unknown compression " + std::to_string(compression) + ")";
     std::size_t end = 14 + info;
     if (bpp <= 8) {
         const std::uint32_t used = core ? 0 : u32(46);
@@ -323,6 +325,8 @@ std::optional<HeaderSize> headerSize(const unsigned char* h, std::size_t n)
         std::memcmp(h + 12, "IHDR", 4) == 0)
         return HeaderSize{(long long)bigEndian(h + 16, 4), (long long)bigEndian(h + 20, 4)};
     if (n >= 26 && h[0] == 'B' && h[1] == 'M') {
+        if (h[14] == 12 && h[15] == 0 && h[16] == 0 && h[17] == 0) // OS/2 1.x: 16-bit sizes
+            return HeaderSize{h[18] | h[19] << 8, h[20] | h[21] << 8};
         std::int32_t w = 0, ht = 0;
         std::memcpy(&w, h + 18, 4); // little-endian on every machine this builds for
         std::memcpy(&ht, h + 22, 4);
