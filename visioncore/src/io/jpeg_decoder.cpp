@@ -25,24 +25,26 @@ struct ErrorManager
     std::string problem;
 };
 
-[[noreturn]] void failWith(j_common_ptr cinfo, std::string problem)
-{
-    auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
-    manager->problem = std::move(problem);
-    std::longjmp(manager->jump, 1);
-}
+// longjmp skips destructors, so no function it leaves holds a std::string (or any object with a
+// destructor) at the jump: the problem is stored first, in a statement of its own.
 
-/// libjpeg's message for the current code, as text.
-std::string messageOf(j_common_ptr cinfo)
+/// Stores libjpeg's message for the current code as the problem.
+void keepMessage(j_common_ptr cinfo)
 {
     char text[JMSG_LENGTH_MAX] = {};
     (*cinfo->err->format_message)(cinfo, text);
-    return text;
+    reinterpret_cast<ErrorManager*>(cinfo->err)->problem = text;
+}
+
+[[noreturn]] void jumpOut(j_common_ptr cinfo)
+{
+    std::longjmp(reinterpret_cast<ErrorManager*>(cinfo->err)->jump, 1);
 }
 
 [[noreturn]] void onError(j_common_ptr cinfo)
 {
-    failWith(cinfo, messageOf(cinfo));
+    keepMessage(cinfo);
+    jumpOut(cinfo);
 }
 
 /// Replaces libjpeg's printing of messages: trace messages (level >= 0) are dropped, warnings
@@ -51,6 +53,7 @@ void onMessage(j_common_ptr cinfo, int level)
 {
     if (level >= 0)
         return;
+    keepMessage(cinfo);
     switch (cinfo->err->msg_code) {
     case JWRN_BOGUS_PROGRESSION:
     case JWRN_EXTRANEOUS_DATA:
@@ -60,19 +63,21 @@ void onMessage(j_common_ptr cinfo, int level)
     case JWRN_MUST_RESYNC:
     case JWRN_NOT_SEQUENTIAL:
     case JWRN_TOO_MUCH_DATA:
-        failWith(cinfo, messageOf(cinfo));
+        jumpOut(cinfo);
     default: // JWRN_ARITH_BAD_CODE exists only in some builds: known by its text
-        if (const std::string text = messageOf(cinfo); text.rfind("Corrupt JPEG data", 0) == 0)
-            failWith(cinfo, text);
+        if (reinterpret_cast<ErrorManager*>(cinfo->err)->problem.rfind("Corrupt JPEG data", 0) == 0)
+            jumpOut(cinfo);
         ++cinfo->err->num_warnings;
     }
 }
 
 void limitScans(j_common_ptr cinfo)
 {
-    const auto* decompress = reinterpret_cast<j_decompress_ptr>(cinfo);
-    if (decompress->input_scan_number > kMaxScans)
-        failWith(cinfo, "more than " + std::to_string(kMaxScans) + " progressive scans");
+    if (reinterpret_cast<j_decompress_ptr>(cinfo)->input_scan_number <= kMaxScans)
+        return;
+    reinterpret_cast<ErrorManager*>(cinfo->err)->problem =
+        "more than " + std::to_string(kMaxScans) + " progressive scans";
+    jumpOut(cinfo);
 }
 
 } // namespace
@@ -96,12 +101,16 @@ Result<cv::Mat> decodeJpeg(const unsigned char* data, std::size_t size, int max_
     cinfo.progress = &progress;
     jpeg_mem_src(&cinfo, data, static_cast<unsigned long>(size));
     jpeg_read_header(&cinfo, TRUE);
+    const auto refuse = [&cinfo](std::string problem) {
+        jpeg_destroy_decompress(&cinfo);
+        return Error{std::move(problem)};
+    };
     if (cinfo.image_width > JDIMENSION(max_side) || cinfo.image_height > JDIMENSION(max_side))
-        failWith(reinterpret_cast<j_common_ptr>(&cinfo),
-                 "the header claims " + std::to_string(cinfo.image_width) + "x" +
-                     std::to_string(cinfo.image_height) + " pixels");
+        return refuse("the image header claims " + std::to_string(cinfo.image_width) + "x" +
+                      std::to_string(cinfo.image_height) + " pixels (at most " +
+                      std::to_string(max_side) + " a side); not decoded");
     if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK)
-        failWith(reinterpret_cast<j_common_ptr>(&cinfo), "CMYK data, not a camera frame");
+        return refuse("a CMYK JPEG, not a camera frame");
     cinfo.out_color_space = JCS_EXT_BGR;
     jpeg_start_decompress(&cinfo);
     bgr.create(int(cinfo.output_height), int(cinfo.output_width), CV_8UC3);
