@@ -431,6 +431,12 @@ private slots:
         const std::string bmp = encodedFrame(".bmp");
         std::string rle = bmp;
         rle[30] = 1; // BI_RLE8
+        // A fill byte before the first marker hides the frame header from a walk of the
+        // segments, not from libjpeg: the size is compared with libjpeg's reading too.
+        std::string filled = jpeg;
+        const std::size_t sof = filled.find("\xFF\xC0");
+        filled.replace(sof + 5, 4, "\x17\x70\x1F\x40"); // 6000 high, 8000 wide
+        filled.insert(2, "\xFF");
         std::string compressed = bmp;
         compressed[30] = 4; // BI_JPEG
         const std::vector<std::pair<std::string, std::string>> cases = {
@@ -439,7 +445,8 @@ private slots:
             {jpeg.substr(0, jpeg.size() / 2),
              "cannot read f1.jpg: damaged JPEG (Premature end of JPEG file)"},
             {std::string("\xFF\xD8\xFF\xD9", 4),
-             "cannot read f1.jpg: damaged JPEG (JPEG datastream contains no image)"},
+             "cannot read f1.jpg: undecodable JPEG (JPEG datastream contains no image)"},
+            {filled, "f1.jpg: frame size 8000x6000 differs from the stream's 32x24"},
             {bmp.substr(0, 30),
              "cannot read f1.bmp: truncated BMP (the header needs 54 bytes, the file has 30)"},
             {bmp.substr(0, 1000), "cannot read f1.bmp: truncated BMP (24 rows of 96 bytes from "
@@ -448,6 +455,16 @@ private slots:
             {rle, "cannot read f1.bmp: run-length-compressed BMP, not a camera frame (save "
                   "frames uncompressed)"},
         };
+        {
+            // The frame claiming 8000x6000 is refused before decoding, not after (144 MB).
+            struct rusage before
+            {
+            }, after{};
+            ::getrusage(RUSAGE_SELF, &before);
+            (void)secondFrameError("f1.jpg", filled);
+            ::getrusage(RUSAGE_SELF, &after);
+            QVERIFY2(after.ru_maxrss - before.ru_maxrss < 50 * 1024, "the frame was decoded");
+        }
         for (const auto& [bytes, message] : cases) {
             const bool isJpeg = bytes[0] == char(0xFF);
             const auto [error, printed] = secondFrameError(isJpeg ? "f1.jpg" : "f1.bmp", bytes);

@@ -270,7 +270,7 @@ std::optional<std::string> bmpDamage(const unsigned char* h, std::size_t n)
                " bytes, the file has " + std::to_string(n) + ")";
     };
     if (n < 18)
-        return truncated("the file header", 18);
+        return truncated("the file header and the header size", 18);
     const std::size_t info = u32(14);
     const bool core = info == 12; // OS/2 1.x: 16-bit sizes, 3-byte palette entries
     if (!core && (info < 40 || info > 1024))
@@ -294,7 +294,7 @@ std::optional<std::string> bmpDamage(const unsigned char* h, std::size_t n)
         end += (used == 0 ? std::size_t(1) << bpp : used) * (core ? 3 : 4);
         if (n < end)
             return truncated("the palette", end);
-    } else if (compression == 3) { // colour masks after the header
+    } else if (bpp == 16 && compression == 3) { // masks after the header (read for 16 bpp only)
         end += 12;
         if (n < end)
             return truncated("the colour masks", end);
@@ -387,16 +387,15 @@ Result<cv::Mat> decodeImageFile(const std::string& path,
                      ": not a decodable image (no PNG, JPEG or BMP signature)"};
     if (const auto damage = png ? pngDamage(h, n) : bmp ? bmpDamage(h, n) : std::nullopt)
         return Error{"cannot read " + path + ": " + *damage};
-    if (jpeg) {
-        auto pixels = decodeJpeg(h, n, kMaxFrameSide);
-        if (!pixels)
-            return Error{"cannot read " + path + ": " + pixels.error().message};
-        return pixels;
-    }
+    if (jpeg)
+        return decodeJpeg(path, h, n, kMaxFrameSide,
+                          expected
+                              ? std::optional(cv::Size(int(expected->width), int(expected->height)))
+                              : std::nullopt);
     cv::Mat bgr;
     try {
         bgr = cv::imdecode(cv::Mat(1, int(n), CV_8U, const_cast<unsigned char*>(h)),
-                           cv::IMREAD_COLOR);
+                           cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
     } catch (const cv::Exception& e) {
         return Error{"cannot read " + path + ": the decoder failed (" + e.err + ")"};
     }

@@ -23,6 +23,7 @@ struct ErrorManager
     jpeg_error_mgr pub;
     std::jmp_buf jump;
     std::string problem;
+    const char* kind = "undecodable JPEG"; // what the problem makes the file
 };
 
 // longjmp skips destructors, so no function it leaves holds a std::string (or any object with a
@@ -54,6 +55,8 @@ void onMessage(j_common_ptr cinfo, int level)
     if (level >= 0)
         return;
     keepMessage(cinfo);
+    auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
+    manager->kind = "damaged JPEG";
     switch (cinfo->err->msg_code) {
     case JWRN_BOGUS_PROGRESSION:
     case JWRN_EXTRANEOUS_DATA:
@@ -64,9 +67,10 @@ void onMessage(j_common_ptr cinfo, int level)
     case JWRN_NOT_SEQUENTIAL:
     case JWRN_TOO_MUCH_DATA:
         jumpOut(cinfo);
-    default: // JWRN_ARITH_BAD_CODE exists only in some builds: known by its text
-        if (reinterpret_cast<ErrorManager*>(cinfo->err)->problem.rfind("Corrupt JPEG data", 0) == 0)
+    default: // and the other "Corrupt JPEG data" warnings (JWRN_ARITH_BAD_CODE, ...)
+        if (manager->problem.rfind("Corrupt JPEG data", 0) == 0)
             jumpOut(cinfo);
+        manager->kind = "undecodable JPEG";
         ++cinfo->err->num_warnings;
     }
 }
@@ -75,14 +79,16 @@ void limitScans(j_common_ptr cinfo)
 {
     if (reinterpret_cast<j_decompress_ptr>(cinfo)->input_scan_number <= kMaxScans)
         return;
-    reinterpret_cast<ErrorManager*>(cinfo->err)->problem =
-        "more than " + std::to_string(kMaxScans) + " progressive scans";
+    auto* manager = reinterpret_cast<ErrorManager*>(cinfo->err);
+    manager->problem = "more than " + std::to_string(kMaxScans) + " progressive scans";
+    manager->kind = "refused JPEG";
     jumpOut(cinfo);
 }
 
 } // namespace
 
-Result<cv::Mat> decodeJpeg(const unsigned char* data, std::size_t size, int max_side)
+Result<cv::Mat> decodeJpeg(const std::string& path, const unsigned char* data, std::size_t size,
+                           int max_side, std::optional<cv::Size> expected)
 {
     // Everything longjmp returns past is made before setjmp: no destructor is skipped.
     jpeg_decompress_struct cinfo{};
@@ -95,25 +101,35 @@ Result<cv::Mat> decodeJpeg(const unsigned char* data, std::size_t size, int max_
     progress.progress_monitor = limitScans;
     if (setjmp(errors.jump)) {
         jpeg_destroy_decompress(&cinfo);
-        return Error{"damaged JPEG (" + errors.problem + ")"};
+        return Error{"cannot read " + path + ": " + errors.kind + " (" + errors.problem + ")"};
     }
     jpeg_create_decompress(&cinfo);
     cinfo.progress = &progress;
     jpeg_mem_src(&cinfo, data, static_cast<unsigned long>(size));
     jpeg_read_header(&cinfo, TRUE);
-    const auto refuse = [&cinfo](std::string problem) {
+    const auto refuse = [&cinfo](std::string message) {
         jpeg_destroy_decompress(&cinfo);
-        return Error{std::move(problem)};
+        return Error{std::move(message)};
     };
-    if (cinfo.image_width > JDIMENSION(max_side) || cinfo.image_height > JDIMENSION(max_side))
-        return refuse("the image header claims " + std::to_string(cinfo.image_width) + "x" +
-                      std::to_string(cinfo.image_height) + " pixels (at most " +
+    // The frame header libjpeg itself found: the caller's look at the header may have been
+    // misled (libjpeg skips fill bytes between markers, for one).
+    const long long width = cinfo.image_width, height = cinfo.image_height;
+    const std::string claimed = std::to_string(width) + "x" + std::to_string(height);
+    if (width > max_side || height > max_side)
+        return refuse(path + ": the image header claims " + claimed + " pixels (at most " +
                       std::to_string(max_side) + " a side); not decoded");
+    if (expected && (width != expected->width || height != expected->height))
+        return refuse(path + ": frame size " + claimed + " differs from the stream's " +
+                      std::to_string(expected->width) + "x" + std::to_string(expected->height));
     if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK)
-        return refuse("a CMYK JPEG, not a camera frame");
+        return refuse("cannot read " + path + ": a CMYK JPEG, not a camera frame");
     cinfo.out_color_space = JCS_EXT_BGR;
     jpeg_start_decompress(&cinfo);
-    bgr.create(int(cinfo.output_height), int(cinfo.output_width), CV_8UC3);
+    try {
+        bgr.create(int(cinfo.output_height), int(cinfo.output_width), CV_8UC3);
+    } catch (const cv::Exception&) {
+        return refuse("cannot read " + path + ": out of memory for " + claimed + " pixels");
+    }
     while (cinfo.output_scanline < cinfo.output_height) {
         JSAMPROW row = bgr.ptr(int(cinfo.output_scanline));
         jpeg_read_scanlines(&cinfo, &row, 1);

@@ -7,15 +7,19 @@
 #include <opencv2/core.hpp>
 
 #include <cstddef>
+#include <optional>
+#include <string>
 
 namespace fieldsight::io {
 
-/// The BGR pixels of the JPEG in `data` (grey JPEGs expanded to three channels), or the problem
-/// (without the file's name): libjpeg's error, or one of its warnings that says the data is
-/// damaged (bytes before a marker, a premature end, a bad Huffman code). Harmless warnings (an
-/// unknown JFIF revision) are ignored. No EXIF rotation: frames are taken as the camera stored
-/// them. A header larger than `max_side` a side, CMYK data, or more than 500 progressive scans
-/// is refused before the pixels are decoded.
-Result<cv::Mat> decodeJpeg(const unsigned char* data, std::size_t size, int max_side);
+/// The BGR pixels of the JPEG `data` read from `path` (grey JPEGs expanded to three channels),
+/// or an Error naming `path`. Refused before any pixel is decoded: a frame header larger than
+/// `max_side` a side, or of another size than `expected` (the stream's, once known), CMYK data.
+/// Refused while decoding: libjpeg's errors, its warnings that say the data is damaged (bytes
+/// before a marker, a premature end, a bad Huffman code), more than 500 progressive scans.
+/// Harmless warnings (an unknown JFIF revision) are ignored. No EXIF rotation: frames are taken
+/// as the camera stored them.
+Result<cv::Mat> decodeJpeg(const std::string& path, const unsigned char* data, std::size_t size,
+                           int max_side, std::optional<cv::Size> expected);
 
 } // namespace fieldsight::io
