@@ -350,6 +350,24 @@ std::optional<HeaderSize> headerSize(const unsigned char* h, std::size_t n)
     return std::nullopt;
 }
 
+/// Why a frame of `path` whose header claims (or whose pixels are) `width` x `height` is refused,
+/// or nullopt: more than kMaxFrameSide a side, or another size than `expected` (the stream's,
+/// once known). One rule for the header, libjpeg's reading of it and the decoded frame.
+std::optional<Error> refusedFrameSize(const std::string& path, long long width, long long height,
+                                      std::optional<HeaderSize> expected)
+{
+    const auto size = [](long long w, long long h) {
+        return std::to_string(w) + "x" + std::to_string(h);
+    };
+    if (!isSaneFrameSize(width, height))
+        return Error{path + ": the image header claims " + size(width, height) +
+                     " pixels (at most " + std::to_string(kMaxFrameSide) + " a side); not decoded"};
+    if (expected && (width != expected->width || height != expected->height))
+        return Error{path + ": frame size " + size(width, height) + " differs from the stream's " +
+                     size(expected->width, expected->height)};
+    return std::nullopt;
+}
+
 /// An image file's pixels as BGR, or an Error naming the file: read with the checks of every
 /// read (a FIFO or device is refused, not waited on), the header's size and a PNG's chunks
 /// checked before the decoder sees the bytes. When `expected` is given (the stream's size, known
@@ -365,17 +383,12 @@ Result<cv::Mat> decodeImageFile(const std::string& path,
     const std::size_t n = bytes.value().size();
     if (n == 0)
         return Error{"cannot read " + path + ": empty file"};
-    if (const auto claimed = headerSize(h, n);
-        claimed && !isSaneFrameSize(claimed->width, claimed->height))
-        return Error{path + ": the image header claims " + std::to_string(claimed->width) + "x" +
-                     std::to_string(claimed->height) + " pixels (at most " +
-                     std::to_string(kMaxFrameSide) + " a side); not decoded"};
-    if (const auto claimed = headerSize(h, n);
-        claimed && expected &&
-        !(claimed->width == expected->width && claimed->height == expected->height))
-        return Error{path + ": frame size " + std::to_string(claimed->width) + "x" +
-                     std::to_string(claimed->height) + " differs from the stream's " +
-                     std::to_string(expected->width) + "x" + std::to_string(expected->height)};
+    const auto checkSize = [&](long long width, long long height) {
+        return refusedFrameSize(path, width, height, expected);
+    };
+    if (const auto claimed = headerSize(h, n))
+        if (auto refused = checkSize(claimed->width, claimed->height))
+            return *std::move(refused);
     // Only the three formats a stream folder holds reach the decoder: given anything else,
     // imdecode would try every codec OpenCV was built with (GDAL among them, which copies the
     // bytes to a temporary file and prints its own errors).
@@ -387,11 +400,8 @@ Result<cv::Mat> decodeImageFile(const std::string& path,
                      ": not a decodable image (no PNG, JPEG or BMP signature)"};
     if (const auto damage = png ? pngDamage(h, n) : bmp ? bmpDamage(h, n) : std::nullopt)
         return Error{"cannot read " + path + ": " + *damage};
-    if (jpeg)
-        return decodeJpeg(path, h, n, kMaxFrameSide,
-                          expected
-                              ? std::optional(cv::Size(int(expected->width), int(expected->height)))
-                              : std::nullopt);
+    if (jpeg) // libjpeg's reading of the header is checked too: fill bytes may hide it above
+        return decodeJpeg(path, h, n, checkSize);
     cv::Mat bgr;
     try {
         bgr = cv::imdecode(cv::Mat(1, int(n), CV_8U, const_cast<unsigned char*>(h)),
@@ -429,11 +439,9 @@ public:
         if (!frame)
             return frame;
         const cv::Mat& image = frame.value().ycbcr;
-        if (image.cols != m_info.width || image.rows != m_info.height)
-            return Error{(m_folder / m_files[index]).string() + ": frame size " +
-                         std::to_string(image.cols) + "x" + std::to_string(image.rows) +
-                         " differs from the stream's " + std::to_string(m_info.width) + "x" +
-                         std::to_string(m_info.height)};
+        if (auto refused = refusedFrameSize((m_folder / m_files[index]).string(), image.cols,
+                                            image.rows, HeaderSize{m_info.width, m_info.height}))
+            return *std::move(refused);
         return frame;
     }
 

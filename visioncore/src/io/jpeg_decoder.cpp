@@ -88,7 +88,7 @@ void limitScans(j_common_ptr cinfo)
 } // namespace
 
 Result<cv::Mat> decodeJpeg(const std::string& path, const unsigned char* data, std::size_t size,
-                           int max_side, std::optional<cv::Size> expected)
+                           const FrameSizeCheck& check_size)
 {
     // Everything longjmp returns past is made before setjmp: no destructor is skipped.
     jpeg_decompress_struct cinfo{};
@@ -113,14 +113,8 @@ Result<cv::Mat> decodeJpeg(const std::string& path, const unsigned char* data, s
     };
     // The frame header libjpeg itself found: the caller's look at the header may have been
     // misled (libjpeg skips fill bytes between markers, for one).
-    const long long width = cinfo.image_width, height = cinfo.image_height;
-    const std::string claimed = std::to_string(width) + "x" + std::to_string(height);
-    if (width > max_side || height > max_side)
-        return refuse(path + ": the image header claims " + claimed + " pixels (at most " +
-                      std::to_string(max_side) + " a side); not decoded");
-    if (expected && (width != expected->width || height != expected->height))
-        return refuse(path + ": frame size " + claimed + " differs from the stream's " +
-                      std::to_string(expected->width) + "x" + std::to_string(expected->height));
+    if (auto refused = check_size(cinfo.image_width, cinfo.image_height))
+        return refuse(std::move(refused->message));
     if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK)
         return refuse("cannot read " + path + ": a CMYK JPEG, not a camera frame");
     cinfo.out_color_space = JCS_EXT_BGR;
@@ -128,7 +122,9 @@ Result<cv::Mat> decodeJpeg(const std::string& path, const unsigned char* data, s
     try {
         bgr.create(int(cinfo.output_height), int(cinfo.output_width), CV_8UC3);
     } catch (const cv::Exception&) {
-        return refuse("cannot read " + path + ": out of memory for " + claimed + " pixels");
+        return refuse("cannot read " + path + ": out of memory for " +
+                      std::to_string(cinfo.output_width) + "x" +
+                      std::to_string(cinfo.output_height) + " pixels");
     }
     while (cinfo.output_scanline < cinfo.output_height) {
         JSAMPROW row = bgr.ptr(int(cinfo.output_scanline));
