@@ -149,6 +149,23 @@ private slots:
         };
         QCOMPARE(frames(resultsJson(file.header, file.frames, ids)), frames(text));
 
+        // The whole file, summary included, is a fixed point once read: times are read to the
+        // precision written, so the summary of what was read is the summary of its numbers.
+        const std::string once = resultsJson(file.header, file.frames, ids);
+        auto reread = readResults(once, "results.json");
+        QVERIFY(reread.ok());
+        QCOMPARE(resultsJson(reread.value().header, reread.value().frames, ids), once);
+        // A time that is negative, not finite or absurd is refused by name.
+        for (const char* bad : {"-1", "1e300", "\"1\""}) {
+            const std::string doc = R"({"format": "fieldsight-results/1", "frames": [{"index": 0,
+                "name": "a.png", "time_ms": {"total": 1, "ball": )" +
+                                    std::string(bad) + "}}]}";
+            auto refused = readResults(doc, "r.json");
+            QVERIFY2(!refused.ok(), bad);
+            QVERIFY2(refused.error().message.find("frames[0].time_ms.ball") != std::string::npos,
+                     refused.error().message.c_str());
+        }
+
         QVERIFY(!readResults("{", "r.json").ok());
         QVERIFY(!readResults(R"({"format": "fieldsight-results/1", "frames": [{"index": 0}]})",
                              "r.json")

@@ -9,6 +9,7 @@
 #include "ui/document/bookmarks.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
 namespace {
@@ -29,8 +30,16 @@ void roundTrip(const std::string& text, Parse parse, Write write)
         return;
     const std::string written = write(first.value());
     auto second = parse(written);
-    if (!second || write(second.value()) != written)
+    if (!second) {
+        std::fprintf(stderr, "written:\n%s\ndoes not read back: %s\n", written.c_str(),
+                     second.error().message.c_str());
         __builtin_trap();
+    }
+    const std::string again = write(second.value());
+    if (again != written) {
+        std::fprintf(stderr, "written:\n%s\nwritten again:\n%s\n", written.c_str(), again.c_str());
+        __builtin_trap();
+    }
 }
 
 } // namespace

@@ -15,6 +15,7 @@ using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json; // keeps the field order of SPEC §5.1
 
 constexpr const char* kFormat = "fieldsight-results/1";
+constexpr double kMaxTimeMs = 1e9; // 11 days a frame: more is a damaged file
 
 /// ms to 0.1 microsecond.
 double ms(double v)
@@ -143,12 +144,16 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
         r.name = f["name"].get<std::string>();
         if (const auto time = f.find("time_ms"); time != f.end() && time->is_object())
             for (const auto& [key, value] : time->items()) {
-                if (!value.is_number())
-                    return Error{source + ": " + where + ".time_ms." + key + " must be a number"};
+                // Read to the precision written (0.1 microsecond), so a summary made from what
+                // was read is the summary of the file's own numbers.
+                const double v = value.is_number() ? value.get<double>() : -1.0;
+                if (!(v >= 0.0 && v <= kMaxTimeMs))
+                    return Error{source + ": " + where + ".time_ms." + key +
+                                 " must be a number of milliseconds from 0 to 1e9"};
                 if (key == "total")
-                    r.report.total_ms = value.get<double>();
+                    r.report.total_ms = ms(v);
                 else
-                    r.report.stages.push_back({key, value.get<double>(), true});
+                    r.report.stages.push_back({key, ms(v), true});
             }
         if (auto problem = r.percepts.fromJson(Json(f), kinds, PerceptNames::Results, where))
             return Error{source + ": " + *problem};
