@@ -10,7 +10,11 @@
 #include <QtTest>
 #include <nlohmann/json.hpp>
 
+#include <QTemporaryDir>
+
 #include <atomic>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <set>
 
@@ -112,6 +116,53 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::runtime_error,
                                  (void)runStream(input, firstFrames(6), 1, hooks));
         QCOMPARE(calls.load(), 3);
+    }
+
+    void anUnreadableFrameIsAnErrorUnlessAHookTakesIt()
+    {
+        // Four frames of lab1, the third cut short as a recording copied half-way.
+        namespace fs = std::filesystem;
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const std::string from = test::sampleStreamsDir() + "/lab1";
+        const std::string to = dir.path().toStdString();
+        for (int i = 0; i < 4; ++i) {
+            const std::string frame = "/frame_00000" + std::to_string(i) + ".png";
+            fs::copy_file(from + frame, to + frame);
+        }
+        fs::resize_file(to + "/frame_000002.png", 300);
+        auto opened = openStreamInput(to, from + "/default.lut");
+        QVERIFY2(opened.ok(), opened.ok() ? "" : opened.error().message.c_str());
+        StreamInput input = std::move(opened).value();
+
+        auto refused = runStream(input, firstFrames(4), 2);
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.find("frame_000002.png") != std::string::npos,
+                 refused.error().message.c_str());
+
+        std::mutex mutex;
+        std::vector<std::pair<std::size_t, std::string>> unreadable;
+        std::set<std::size_t> ran;
+        RunHooks hooks;
+        hooks.on_unreadable = [&](std::size_t index, const std::string& message) {
+            std::lock_guard lock(mutex);
+            unreadable.emplace_back(index, message);
+        };
+        hooks.on_frame = [&](const FrameResult& r, const Frame&, const DebugCanvas&) {
+            std::lock_guard lock(mutex);
+            ran.insert(r.index);
+            return Status();
+        };
+        auto run = runStream(input, firstFrames(4), 2, hooks);
+        QVERIFY2(run.ok(), run.ok() ? "" : run.error().message.c_str());
+        QCOMPARE(run.value().frames.size(), std::size_t(4));
+        QCOMPARE(ran, (std::set<std::size_t>{0, 1, 3}));
+        QCOMPARE(unreadable.size(), std::size_t(1));
+        QCOMPARE(unreadable[0].first, std::size_t(2));
+        QVERIFY2(unreadable[0].second.find("truncated PNG") != std::string::npos,
+                 unreadable[0].second.c_str());
+        QCOMPARE(run.value().frames[2].index, std::size_t(2));
+        QCOMPARE(run.value().frames[2].name, std::string("frame_000002.png"));
     }
 
     void badSettingsAreRefusedBeforeAnyFrameRuns()

@@ -17,6 +17,7 @@
 #include <QTableWidget>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -294,6 +295,45 @@ private slots:
         // Once saved, nothing is offered any more.
         QVERIFY(w.saveLutAs(m_dir.filePath("recovered.lut")));
         QVERIFY(!w.lutDocument().findRecovery());
+    }
+
+    void theWholeStreamScanMarksAnUnreadableFrameAndGoesOn()
+    {
+        // A copy of the sample stream's first five frames with the second cut short.
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        for (int i = 0; i < 5; ++i) {
+            const QString frame = QStringLiteral("frame_%1.png").arg(i, 6, 10, QLatin1Char('0'));
+            QVERIFY(QFile::copy(sampleStream() + "/" + frame, dir.filePath(frame)));
+        }
+        QFile cut(dir.filePath("frame_000001.png"));
+        QVERIFY(cut.resize(200));
+        auto lut = ColourLut::load((sampleStream() + "/default.lut").toStdString());
+        QVERIFY(lut);
+
+        ui::EditEffectScan scan;
+        scan.setThreads(2);
+        scan.setStream(dir.path(), std::make_shared<const ColourLut>(std::move(lut).value()));
+        QVERIFY(waitForScan(scan));
+        QVERIFY2(scan.error().isEmpty(), qPrintable(scan.error()));
+        QCOMPARE(scan.effects().size(), std::size_t(5));
+        for (std::size_t i = 0; i < 5; ++i) {
+            QVERIFY(scan.effects()[i].done);
+            QCOMPARE(scan.effects()[i].unreadable, i == 1);
+            QCOMPARE(scan.effects()[i].pixels, i == 1 ? 0u : 320u * 240u);
+        }
+        QCOMPARE(scan.unreadableFrames(), std::size_t(1));
+        QCOMPARE(scan.firstUnreadable(), std::size_t(1));
+        QVERIFY(scan.unreadableReason(1).contains("truncated PNG"));
+        QVERIFY(scan.unreadableReason(0).isEmpty());
+
+        // The status line says which frame and why.
+        QSlider slider(Qt::Horizontal);
+        slider.setRange(0, 4);
+        ui::EffectStrip strip(scan, slider);
+        QVERIFY2(strip.summary().contains("unreadable frame 1: ") &&
+                     strip.summary().contains("frame_000001.png"),
+                 qPrintable(strip.summary()));
     }
 
     void theEffectStripCountsWhatAnEditChangedOnEveryFrame()

@@ -56,6 +56,7 @@ void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const Colour
     m_input.reset();
     m_previous.clear();
     m_effects.clear();
+    m_unreadable.clear();
     m_frames_done = 0;
     m_changed_cells = 0;
     m_shows_edit = false;
@@ -130,8 +131,10 @@ void EditEffectScan::start()
         m_shared->done = 0;
         m_shared->finished = false;
         m_shared->error.clear();
+        m_shared->unreadable.clear();
     }
     m_effects.clear();
+    m_unreadable.clear();
     m_frames_done = 0;
     m_changed_cells = 0;
     m_cancel = false;
@@ -214,6 +217,16 @@ void EditEffectScan::scan(Job job)
             record(index, tallies[index], {});
             return false;
         };
+        // A damaged frame is marked and passed: the rest of the stream still shows the edit.
+        hooks.on_unreadable = [&](std::size_t index, const std::string& message) {
+            FrameEffect effect;
+            effect.done = true;
+            effect.unreadable = true;
+            std::lock_guard lock(shared.mutex);
+            shared.effects[index] = effect;
+            shared.unreadable[index] = message;
+            ++shared.done;
+        };
         hooks.on_frame = [&](const FrameResult& result, const Frame&,
                              const DebugCanvas&) -> Status {
             const std::size_t index = result.index;
@@ -237,6 +250,17 @@ void EditEffectScan::scan(Job job)
     }
 }
 
+QString EditEffectScan::unreadableReason(std::size_t index) const
+{
+    const auto it = m_unreadable.find(index);
+    return it == m_unreadable.end() ? QString() : it->second;
+}
+
+std::size_t EditEffectScan::firstUnreadable() const
+{
+    return m_unreadable.empty() ? m_effects.size() : m_unreadable.begin()->first;
+}
+
 void EditEffectScan::collect()
 {
     bool ended = false;
@@ -246,6 +270,11 @@ void EditEffectScan::collect()
         m_effects = m_shared->effects;
         m_frames_done = m_shared->done;
         m_changed_cells = m_shared->changed_cells;
+        if (m_shared->unreadable.size() != m_unreadable.size()) {
+            m_unreadable.clear();
+            for (const auto& [index, message] : m_shared->unreadable)
+                m_unreadable.emplace(index, QString::fromStdString(message));
+        }
         if (!m_shared->error.empty() && m_error.isEmpty())
             m_error = QString::fromStdString(m_shared->error);
         ended = m_shared->finished;

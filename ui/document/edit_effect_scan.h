@@ -14,6 +14,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -28,6 +29,7 @@ namespace fieldsight::ui {
 struct FrameEffect
 {
     bool done = false;                ///< scanned since the last edit
+    bool unreadable = false;          ///< the frame could not be read (unreadableReason says why)
     std::uint32_t changed_pixels = 0; ///< pixels whose class the edit changed
     std::uint32_t unclassified = 0;   ///< pixels the current table leaves unclassified
     std::uint32_t pixels = 0;
@@ -72,6 +74,12 @@ public:
     /// has finished).
     double lastScanMs() const { return m_last_scan_ms; }
     QString error() const { return m_error; }
+    /// Frames the scan could not read (a damaged file): the scan goes on past them.
+    std::size_t unreadableFrames() const { return m_unreadable.size(); }
+    /// Why frame `index` could not be read (empty when it could).
+    QString unreadableReason(std::size_t index) const;
+    /// The first frame that could not be read (the frame count when every frame could).
+    std::size_t firstUnreadable() const;
 
 signals:
     /// New per-frame effects are in.
@@ -97,6 +105,7 @@ private:
         bool finished = false; ///< set once by a scan that covered every frame
         std::chrono::steady_clock::time_point ended;
         std::string error;
+        std::map<std::size_t, std::string> unreadable; ///< frame index: the reader's message
     };
 
     void stop();
@@ -133,6 +142,7 @@ private:
     std::chrono::steady_clock::time_point m_started;   ///< of the running job
     int m_generation = 0;
     QString m_error;
+    std::map<std::size_t, QString> m_unreadable;
 };
 
 } // namespace fieldsight::ui

@@ -102,6 +102,15 @@ QString EffectStrip::summary() const
     if (all > 0)
         text += tr("; %1% of the pixels scanned unclassified")
                     .arg(100.0 * double(unclassified) / double(all), 0, 'f', 1);
+    if (const std::size_t bad = m_scan.unreadableFrames()) {
+        const std::size_t first = m_scan.firstUnreadable();
+        const QString reason = m_scan.unreadableReason(first);
+        text += bad == 1 ? tr("; unreadable frame %1: %2").arg(first).arg(reason)
+                         : tr("; %1 unreadable frames, the first %2: %3")
+                               .arg(locale.toString(qulonglong(bad)))
+                               .arg(first)
+                               .arg(reason);
+    }
     if (m_scan.framesDone() < effects.size())
         text += tr(" (scanning: %1%)").arg(100 * m_scan.framesDone() / effects.size());
     else if (m_scan.lastScanMs() >= 0)
@@ -136,18 +145,22 @@ void EffectStrip::paintEvent(QPaintEvent*)
         if (first > last)
             first = last = frameAt(px);
         bool pending = false;
+        bool unreadable = false;
         std::uint32_t changed = 0;
         int appeared = 0;
         int vanished = 0;
         for (long long f = first; f <= last; ++f) {
             const FrameEffect& e = effects[std::size_t(f)];
             pending |= !e.done;
+            unreadable |= e.unreadable;
             changed = std::max(changed, e.changed_pixels);
             appeared += e.delta.appeared();
             vanished += e.delta.vanished();
         }
         if (pending)
             p.fillRect(px, 0, 1, height(), QColor(70, 70, 70));
+        if (unreadable)
+            p.fillRect(px, 2 * tick + 1, 1, bar_space, QColor(150, 35, 60));
         if (changed > 0) {
             const int h = std::max(1, int(std::lround(bar_space * std::log1p(changed) / scale)));
             p.fillRect(px, height() - h, 1, h, QColor(255, 170, 0));
@@ -181,9 +194,12 @@ bool EffectStrip::event(QEvent* event)
     QString text = summary();
     if (frame >= 0) {
         const FrameEffect& e = m_scan.effects()[std::size_t(frame)];
-        QString line = tr("Frame %1: ").arg(frame + 1);
+        // 0-based, as the frame counter and Go to frame count.
+        QString line = tr("Frame %1: ").arg(frame);
         if (!e.done)
             line += tr("not scanned yet");
+        else if (e.unreadable)
+            line += tr("unreadable (%1)").arg(m_scan.unreadableReason(std::size_t(frame)));
         else {
             line += tr("%1 pixels changed class").arg(e.changed_pixels);
             if (const QString d = deltaText(e.delta); !d.isEmpty())

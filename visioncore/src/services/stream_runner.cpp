@@ -196,8 +196,15 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                 for (std::size_t pos = begin; pos < end && !problem.stopped() && !cancelled();
                      ++pos) {
                     if (Status s = data.seek(indices[pos]); !s) {
-                        problem.report(pos, s.error().message, false);
-                        return;
+                        if (!hooks.on_unreadable) {
+                            problem.report(pos, s.error().message, false);
+                            return;
+                        }
+                        hooks.on_unreadable(indices[pos], s.error().message);
+                        results[pos].index = indices[pos];
+                        results[pos].name = data.reader().frameName(indices[pos]);
+                        markDone(pos);
+                        continue;
                     }
                     if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame())) {
                         results[pos].index = indices[pos];

@@ -70,6 +70,10 @@ struct RunHooks
     /// Called with each frame once it is read, before the pipeline: false leaves the frame out
     /// (its FrameResult keeps only its index and name, and on_frame is not called for it).
     std::function<bool(std::size_t index, const Frame&)> prefilter;
+    /// When set, a frame that cannot be read (a damaged file in a folder, a bad record) is handed
+    /// to it with the reader's message and the run goes on (its FrameResult keeps only its index
+    /// and name). Unset, such a frame is the run's Error.
+    std::function<void(std::size_t index, const std::string& message)> on_unreadable;
     /// Called (one call at a time) after every frame with the count done so far and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
     /// When it becomes true the workers stop after their current frame.
