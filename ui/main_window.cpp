@@ -164,6 +164,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     m_recorder = new FrameRecorder(*m_doc, this);
     connect(m_recorder, &FrameRecorder::problem, this,
             [this](const QString& m) { showMessage(m); });
+    connect(m_doc, &StreamDocument::notice, this, [this](const QString& m) { showMessage(m); });
     m_effect_strip = new EffectStrip(*m_effect, *m_navigator->slider(), m_navigator);
     m_navigator->addTimelineStrip(m_effect_strip);
     connect(m_effect, &EditEffectScan::updated, this,
@@ -245,6 +246,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     connect(m_lut_panel, &LutPanel::toolChanged, this, &MainWindow::refreshPreview);
     connect(m_pipeline, &PipelinePanel::problem, this,
             [this](const QString& m) { showMessage(m); });
+    connect(m_lut_panel, &LutPanel::problem, this, [this](const QString& m) { showMessage(m); });
 
     restoreSettings();
     updateTitle();

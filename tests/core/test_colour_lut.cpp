@@ -201,6 +201,57 @@ private slots:
         QVERIFY(QFileInfo(QString::fromStdString(path)).isDir());
     }
 
+    void aRefusedFileIsSetAsideBeforeASaveReplacesIt()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("marks.json").toStdString();
+        const std::string damaged = "{\"format\": \"fieldsight-bookmarks/9\", ...";
+        QVERIFY(writeFileAtomically(path, damaged).ok());
+        QVERIFY(writeFileAtomically(path + ".unreadable", std::string("earlier")).ok());
+        const auto save = [&](const std::string& text) {
+            return [&path, text] { return writeFileAtomically(path, text); };
+        };
+
+        // A failing save puts the refused file back, to be set aside next time.
+        bool unreadable = true;
+        auto failed =
+            saveReplacingUnreadable(path, unreadable, [] { return Status(Error{"disk full"}); });
+        QVERIFY(!failed.ok());
+        QVERIFY(unreadable);
+        QCOMPARE(readWholeFile(path).value(), damaged);
+
+        // The next one moves it beside (never over an earlier one) and says so.
+        auto saved = saveReplacingUnreadable(path, unreadable, save("new"));
+        QVERIFY2(saved.ok(), saved.ok() ? "" : saved.error().message.c_str());
+        QVERIFY(!unreadable);
+        QVERIFY2(saved.value().find(path + ".unreadable-2") != std::string::npos,
+                 saved.value().c_str());
+        QCOMPARE(readWholeFile(path + ".unreadable-2").value(), damaged);
+        QCOMPARE(readWholeFile(path + ".unreadable").value(), std::string("earlier"));
+        QCOMPARE(readWholeFile(path).value(), std::string("new"));
+
+        // Once set aside, later saves just save.
+        saved = saveReplacingUnreadable(path, unreadable, save("newer"));
+        QVERIFY(saved.ok());
+        QVERIFY(saved.value().empty());
+        QCOMPARE(readWholeFile(path).value(), std::string("newer"));
+        QVERIFY(!QFileInfo::exists(QString::fromStdString(path + ".unreadable-3")));
+
+        // Only a regular file is moved: a folder in its place stops the save.
+        const std::string folder = dir.filePath("folder.json").toStdString();
+        QVERIFY(QDir().mkdir(QString::fromStdString(folder)));
+        unreadable = true;
+        bool saved_anything = false;
+        auto refused = saveReplacingUnreadable(folder, unreadable, [&] {
+            saved_anything = true;
+            return Status();
+        });
+        QVERIFY(!refused.ok());
+        QVERIFY(!saved_anything);
+        QVERIFY2(refused.error().message.find("a folder") != std::string::npos,
+                 refused.error().message.c_str());
+    }
+
     void readWholeFileReturnsExactBytes()
     {
         QTemporaryDir dir;

@@ -9,13 +9,17 @@
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
 #include "ui/adapters/overlay_painter.h"
+#include "ui/document/bookmarks.h"
 #include "ui/document/frame_recorder.h"
+#include "ui/document/lut_sampler.h"
 #include "ui/main_window.h"
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/layers_panel.h"
+#include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/stream_navigator/stream_navigator.h"
 #include "visioncore/io/lut_import.h"
+#include "visioncore/services/lut_building.h"
 #include "visioncore/percepts/ball.h"
 
 #include <opencv2/core.hpp>
@@ -495,6 +499,52 @@ private slots:
         QVERIFY(waitForFrame(w, 3));
         QTest::keyClick(&w, Qt::Key_Home);
         QVERIFY(waitForFrame(w, 0));
+    }
+
+    void aDamagedSidecarIsSetAsideNotOverwritten()
+    {
+        // Bookmarks and LUT samples beside the stream that the window cannot read: its first
+        // save of each moves the file aside and says where, instead of writing over the work.
+        const QString stream = m_dir.filePath("damaged_sidecars");
+        copyStream(stream, 3);
+        const QByteArray marks = "{\"format\": \"fieldsight-bookmarks/1\", \"bookmarks\": [";
+        const QByteArray samples = "{\"format\": \"fieldsight-lut-samples/2\", \"samples\": []}";
+        for (const auto& [name, bytes] :
+             {std::pair{"bookmarks.json", marks}, std::pair{"lut_samples.json", samples}}) {
+            QFile f(stream + "/" + name);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        const auto contents = [&](const QString& name) {
+            QFile f(stream + "/" + name);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, stream));
+        QVERIFY2(w.lastMessage().contains("bookmarks.json") &&
+                     w.lastMessage().contains("set aside, not overwritten"),
+                 qPrintable(w.lastMessage()));
+
+        QVERIFY(w.document().setBookmark(1, "ball lost").ok());
+        QVERIFY2(w.lastMessage().contains("kept as") &&
+                     w.lastMessage().contains("bookmarks.json.unreadable"),
+                 qPrintable(w.lastMessage()));
+        QCOMPARE(contents("bookmarks.json.unreadable"), marks);
+        auto back = ui::Bookmarks::load((stream + "/bookmarks.json").toStdString());
+        QVERIFY(back.ok());
+        QCOMPARE(back.value().list().size(), std::size_t(1));
+
+        ui::LutSampler& sampler = w.lutPanel().sampler();
+        QCOMPARE(sampler.samples().samples.size(), std::size_t(0));
+        sampler.addRect("frame_000000.png", Colour::Green, QRect(10, 200, 20, 10));
+        QCOMPARE(contents("lut_samples.json.unreadable"), samples);
+        auto kept = loadLutSamples((stream + "/lut_samples.json").toStdString());
+        QVERIFY(kept.ok());
+        QCOMPARE(kept.value().samples.size(), std::size_t(1));
+        QVERIFY2(w.lastMessage().contains("lut_samples.json.unreadable"),
+                 qPrintable(w.lastMessage()));
     }
 
     void settingsSurviveARestart()

@@ -4,6 +4,7 @@
 #include "ui/adapters/local_path.h"
 
 #include "visioncore/io/annotations.h"
+#include "visioncore/io/atomic_file.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_compare.h"
 
@@ -71,16 +72,20 @@ Status LutSampler::setStream(const QString& spec)
     m_undo.clear();
     m_samples = {};
     m_ambiguous.clear();
+    m_path_unreadable = false;
     m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
                  ? QString()
                  : fromLocalPath(defaultLutSamplesPath(toLocalPath(spec)));
     Status status;
     if (localPathExists(m_path)) {
         auto loaded = loadLutSamples(toLocalPath(m_path));
-        if (loaded)
+        if (loaded) {
             m_samples = std::move(loaded).value();
-        else
-            status = loaded.error();
+        } else {
+            m_path_unreadable = true;
+            status = Error{loaded.error().message +
+                           " (it is set aside, not overwritten, when a sample is saved)"};
+        }
     }
     emit samplesChanged();
     return status;
@@ -89,10 +94,16 @@ Status LutSampler::setStream(const QString& spec)
 void LutSampler::store(std::vector<LutSample> samples)
 {
     m_samples.samples = std::move(samples);
-    if (!m_path.isEmpty())
-        if (Status s = saveLutSamples(toLocalPath(m_path), m_samples); !s)
-            emit problem(QString::fromStdString(s.error().message) +
+    if (!m_path.isEmpty()) {
+        const std::string path = toLocalPath(m_path);
+        auto saved = saveReplacingUnreadable(path, m_path_unreadable,
+                                             [&] { return saveLutSamples(path, m_samples); });
+        if (!saved)
+            emit problem(QString::fromStdString(saved.error().message) +
                          tr(" (the samples stay in memory)"));
+        else if (!saved.value().empty())
+            emit problem(QString::fromStdString(saved.value()));
+    }
     emit samplesChanged();
 }
 

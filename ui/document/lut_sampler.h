@@ -73,6 +73,7 @@ private:
     LutDocument& m_lut;
     QString m_stream;
     QString m_path;
+    bool m_path_unreadable = false; ///< the file there was refused: set aside before a save
     LutSamples m_samples;
     QUndoStack m_undo;
     QFutureWatcher<Result<Built>> m_watcher;

@@ -2,6 +2,7 @@
 
 #include "ui/adapters/local_path.h"
 
+#include "visioncore/io/atomic_file.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 
@@ -96,13 +97,18 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
     m_first_serial = m_serial + 1; // what the worker still does for the stream before is dropped
     resetMeans();
     m_bookmarks = Bookmarks{};
+    m_bookmarks_unreadable = false;
     const std::string sidecar = local(bookmarksPath());
     if (!sidecar.empty()) {
         auto marks = Bookmarks::load(sidecar);
-        if (marks)
+        if (marks) {
             m_bookmarks = std::move(marks).value();
-        else
-            m_stream->warnings << QString::fromStdString(marks.error().message);
+        } else {
+            m_bookmarks_unreadable = true;
+            m_stream->warnings << QString::fromStdString(marks.error().message) +
+                                      tr(" (it is set aside, not overwritten, when a bookmark is "
+                                         "saved)");
+        }
     }
     emit streamChanged();
     emit lutChanged();
@@ -323,8 +329,12 @@ Status StreamDocument::saveBookmarks()
     const std::string path = local(bookmarksPath());
     if (path.empty())
         return Error{"a live camera has no file to keep bookmarks beside"};
-    if (Status s = m_bookmarks.save(path); !s)
-        return Error{s.error().message + " (the bookmarks are kept until the window closes)"};
+    auto saved = saveReplacingUnreadable(path, m_bookmarks_unreadable,
+                                         [&] { return m_bookmarks.save(path); });
+    if (!saved)
+        return Error{saved.error().message + " (the bookmarks are kept until the window closes)"};
+    if (!saved.value().empty())
+        emit notice(QString::fromStdString(saved.value()));
     return {};
 }
 

@@ -120,6 +120,8 @@ signals:
     void currentIndexChanged(std::size_t index);
     void frameReady();
     void bookmarksChanged();
+    /// Something the user must read that is not a failure of the call that caused it.
+    void notice(const QString& message);
 
 private:
     void submit();
@@ -143,6 +145,7 @@ private:
     std::shared_ptr<const FrameOutput> m_current;
     std::map<std::string, StageMean, std::less<>> m_means;
     Bookmarks m_bookmarks;
+    bool m_bookmarks_unreadable = false; ///< the sidecar was refused: set aside before a save
 };
 
 } // namespace fieldsight::ui

@@ -205,6 +205,54 @@ Status writeFileAtomically(const std::string& requested, const void* data, std::
     return {};
 }
 
+Result<std::string> setAsideUnreadable(const std::string& path)
+{
+    struct stat st
+    {
+    };
+    if (::lstat(path.c_str(), &st) != 0)
+        return errno == ENOENT ? std::string()
+                               : Result<std::string>(errnoError("read", path, errno));
+    if (!S_ISREG(st.st_mode))
+        return Error{"cannot set " + path + " aside: " + fileKindName(st.st_mode) +
+                     ", not a regular file"};
+    for (int n = 1; n < 1000; ++n) {
+        const std::string aside = path + ".unreadable" + (n > 1 ? "-" + std::to_string(n) : "");
+        struct stat taken
+        {
+        };
+        if (::lstat(aside.c_str(), &taken) == 0)
+            continue;
+        if (::rename(path.c_str(), aside.c_str()) != 0)
+            return Error{"cannot set " + path + " aside as " + aside + ": " + std::strerror(errno)};
+        return aside;
+    }
+    return Error{"cannot set " + path + " aside: " + path + ".unreadable-1 to -999 all exist"};
+}
+
+Result<std::string> saveReplacingUnreadable(const std::string& path, bool& unreadable,
+                                            const std::function<Status()>& save)
+{
+    std::string aside;
+    if (unreadable) {
+        auto moved = setAsideUnreadable(path);
+        if (!moved)
+            return Error{moved.error().message + "; not saved over the file it could not read"};
+        aside = std::move(moved).value();
+        unreadable = false;
+    }
+    if (Status s = save(); !s) {
+        // Nothing was saved: the refused file goes back where it was, to be set aside next time.
+        if (!aside.empty() && ::rename(aside.c_str(), path.c_str()) == 0)
+            unreadable = true;
+        return s.error();
+    }
+    if (aside.empty())
+        return std::string();
+    return path + " could not be read when opened; it is kept as " + aside +
+           " and a new one was saved";
+}
+
 Error notARegularFile(const std::string& path, unsigned mode)
 {
     return Error{"cannot read " + path + ": " + fileKindName(mode) + ", not a regular file"};
