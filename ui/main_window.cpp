@@ -164,7 +164,8 @@ MainWindow::MainWindow(const Pipeline& pipeline, QWidget* parent) : QMainWindow(
     m_recorder = new FrameRecorder(*m_doc, this);
     connect(m_recorder, &FrameRecorder::problem, this,
             [this](const QString& m) { showMessage(m); });
-    connect(m_doc, &StreamDocument::notice, this, [this](const QString& m) { showMessage(m); });
+    connect(m_doc, &StreamDocument::notice, this,
+            [this](const QString& m) { showMessage(m, false); });
     m_effect_strip = new EffectStrip(*m_effect, *m_navigator->slider(), m_navigator);
     m_navigator->addTimelineStrip(m_effect_strip);
     connect(m_effect, &EditEffectScan::updated, this,
@@ -637,7 +638,9 @@ void MainWindow::openStream(const QString& spec, const QString& lut)
         }
         m_doc->adopt(result.stream);
         rememberRecent(spec);
-        const QStringList warnings = m_doc->warnings();
+        QStringList warnings = m_doc->warnings();
+        if (const QString samples = m_lut_panel->sampler().loadProblem(); !samples.isEmpty())
+            warnings << samples;
         if (!warnings.isEmpty())
             showMessage(warnings.join('\n'));
         else

@@ -52,6 +52,16 @@ void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const Colour
 {
     m_delay.stop();
     stop();
+    // A collect the old scan queued must not bring its stream's effects back.
+    ++m_generation;
+    {
+        std::lock_guard lock(m_shared->mutex);
+        m_shared->effects.clear();
+        m_shared->unreadable.clear();
+        m_shared->done = 0;
+        m_shared->finished = false;
+        m_shared->error.clear();
+    }
     m_spec = spec.startsWith(QLatin1String("camera:")) ? QString() : spec;
     m_input.reset();
     m_previous.clear();

@@ -73,6 +73,7 @@ Status LutSampler::setStream(const QString& spec)
     m_samples = {};
     m_ambiguous.clear();
     m_path_unreadable = false;
+    m_load_problem.clear();
     m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
                  ? QString()
                  : fromLocalPath(defaultLutSamplesPath(toLocalPath(spec)));
@@ -85,6 +86,7 @@ Status LutSampler::setStream(const QString& spec)
             m_path_unreadable = true;
             status = Error{loaded.error().message +
                            " (it is set aside, not overwritten, when a sample is saved)"};
+            m_load_problem = QString::fromStdString(status.error().message);
         }
     }
     emit samplesChanged();

@@ -25,8 +25,11 @@ public:
     ~LutSampler() override;
 
     /// The stream the samples belong to: its samples file is read if there is one (a bad file
-    /// is an Error naming it; the samples are then empty and the file is left alone).
+    /// is an Error naming it, kept as loadProblem(); the samples are then empty and the file is
+    /// set aside, not overwritten, by the first save).
     Status setStream(const QString& spec);
+    /// Why the stream's samples file could not be read (empty when it could, or there is none).
+    QString loadProblem() const { return m_load_problem; }
     QString path() const { return m_path; }
     const LutSamples& samples() const { return m_samples; }
     QUndoStack& undoStack() { return m_undo; }
@@ -74,6 +77,7 @@ private:
     QString m_stream;
     QString m_path;
     bool m_path_unreadable = false; ///< the file there was refused: set aside before a save
+    QString m_load_problem;
     LutSamples m_samples;
     QUndoStack m_undo;
     QFutureWatcher<Result<Built>> m_watcher;

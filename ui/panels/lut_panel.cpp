@@ -148,10 +148,9 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, QWidget* parent)
     // Samples: regions to build the table from, kept beside the stream.
     m_sampler = new LutSampler(m_lut, this);
     connect(m_sampler, &LutSampler::problem, this, &LutPanel::problem);
-    connect(&m_stream, &StreamDocument::streamChanged, this, [this] {
-        if (Status s = m_sampler->setStream(m_stream.streamSpec()); !s)
-            emit problem(QString::fromStdString(s.error().message));
-    });
+    // A samples file that cannot be read is among the warnings of opening (loadProblem).
+    connect(&m_stream, &StreamDocument::streamChanged, this,
+            [this] { (void)m_sampler->setStream(m_stream.streamSpec()); });
     m_samples_info = new QLabel(this);
     m_samples_info->setObjectName(QStringLiteral("samples_info"));
     m_samples_info->setWordWrap(true);

@@ -213,7 +213,7 @@ Result<std::string> setAsideUnreadable(const std::string& path)
     if (::lstat(path.c_str(), &st) != 0)
         return errno == ENOENT ? std::string()
                                : Result<std::string>(errnoError("read", path, errno));
-    if (!S_ISREG(st.st_mode))
+    if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) // a link moves; its target is untouched
         return Error{"cannot set " + path + " aside: " + fileKindName(st.st_mode) +
                      ", not a regular file"};
     for (int n = 1; n < 1000; ++n) {
@@ -243,8 +243,11 @@ Result<std::string> saveReplacingUnreadable(const std::string& path, bool& unrea
     }
     if (Status s = save(); !s) {
         // Nothing was saved: the refused file goes back where it was, to be set aside next time.
-        if (!aside.empty() && ::rename(aside.c_str(), path.c_str()) == 0)
-            unreadable = true;
+        if (aside.empty())
+            return s.error();
+        if (::rename(aside.c_str(), path.c_str()) != 0)
+            return Error{s.error().message + "; the file it could not read is kept as " + aside};
+        unreadable = true;
         return s.error();
     }
     if (aside.empty())

@@ -25,13 +25,15 @@ inline Status writeFileAtomically(const std::string& path, std::string_view text
 /// Sets aside a file a reader refused (damaged, or of a newer format) before a save replaces it:
 /// renames `path` to `<path>.unreadable` (`.unreadable-2`, ... when taken), never removing
 /// anything, and returns the new name (empty when there is no file at `path`). Only a regular file
-/// is moved; anything else is an error.
+/// or a symbolic link (the link moves, its target is untouched) is moved; anything else is an
+/// error.
 Result<std::string> setAsideUnreadable(const std::string& path);
 
 /// The one rule for a document kept in a file the window saves as it changes (bookmarks, LUT
 /// samples): when the file was refused on opening (`unreadable`), it is set aside before the
 /// first `save`, and `unreadable` cleared. Returns what to tell the user (empty: nothing), or
-/// the error (then nothing was saved, and the file at `path` is as it was).
+/// the error (then nothing was saved, and the file at `path` is as it was, or where the error
+/// says it is kept).
 Result<std::string> saveReplacingUnreadable(const std::string& path, bool& unreadable,
                                             const std::function<Status()>& save);
 

@@ -72,7 +72,8 @@ struct RunHooks
     std::function<bool(std::size_t index, const Frame&)> prefilter;
     /// When set, a frame that cannot be read (a damaged file in a folder, a bad record) is handed
     /// to it with the reader's message and the run goes on (its FrameResult keeps only its index
-    /// and name). Unset, such a frame is the run's Error.
+    /// and name, as a prefiltered frame). Unset, such a frame is the run's Error. Called from the
+    /// workers, several at a time.
     std::function<void(std::size_t index, const std::string& message)> on_unreadable;
     /// Called (one call at a time) after every frame with the count done so far and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
