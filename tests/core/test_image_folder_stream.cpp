@@ -314,6 +314,11 @@ private slots:
              "\"camera.fov_deg\" must be an array of two numbers"},
             {R"({"frames": [{"file": "a.png", "horizon": "high"}]})",
              "frames[0].horizon must be [y at x = 0, y at x = width-1]"},
+            // Found by fuzz_stream_manifest: a row beyond int reached the green horizon stage.
+            {R"({"frames": [{"file": "a.png", "horizon": [4, 6.9e65]}]})",
+             "frames[0].horizon must be two image rows from -1e6 to 1e6"},
+            {R"({"frames": [{"file": "a.png", "horizon": [-1000001, 0]}]})",
+             "frames[0].horizon must be two image rows from -1e6 to 1e6"},
             {R"({"frames": [{"file": "a.png", "timestamp_ms": "0"}]})",
              "frames[0].timestamp_ms must be a number"},
             {R"({"frames": [{"file": "a.png"}, {"name": "b.png"}]})",

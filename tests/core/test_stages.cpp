@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace fieldsight;
 using test::drawLine;
@@ -126,6 +127,31 @@ private slots:
         ControlWrapper core(data);
         const Blackboard& bb = run(core);
         QCOMPARE(bb.green_horizon.yAt(160), 100);
+    }
+
+    void anImplausibleKinematicHorizonIsADiagnosticAndTheWholeImageIsSearched()
+    {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (const Horizon& h : {Horizon{4, 6.9e65}, Horizon{nan, 40}, Horizon{-2e6, 40}}) {
+            MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), field(100),
+                                   h);
+            ControlWrapper core(data);
+            const Blackboard& bb = run(core);
+            QCOMPARE(bb.kinematic_horizon, Horizon{});
+            QCOMPARE(bb.green_horizon.yAt(160), 100);
+            QCOMPARE(bb.diagnostics.size(), std::size_t(1));
+            QCOMPARE(bb.diagnostics[0].stage, std::string("kinematic_horizon"));
+            QVERIFY2(bb.diagnostics[0].message.find("is not two rows within 1e6 px; the whole "
+                                                    "image was searched") != std::string::npos,
+                     bb.diagnostics[0].message.c_str());
+        }
+        // A plausible one, even far below the image, is taken as it is.
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), field(100),
+                               Horizon{5e5, 5e5});
+        ControlWrapper core(data);
+        const Blackboard& bb = run(core);
+        QCOMPARE(bb.kinematic_horizon, (Horizon{5e5, 5e5}));
+        QVERIFY(bb.diagnostics.empty());
     }
 
     void scanlinesCoverTheImageWithExclusiveEnds()

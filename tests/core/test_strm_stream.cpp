@@ -293,9 +293,9 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("image.strm").toStdString();
-        writeStrm(path, {randomFrame(11, 4, 0, 1), randomFrame(11, 4, 33, 2)});
-        // Two NUSensorsData records (design note §4.2), trimmed to a few sensors.
+        // Three NUSensorsData records (design note §4.2), trimmed to a few sensors.
         // Horizon A*x + B*y = C: record 0 is y = 20 - 0.5x, record 1 is invalid.
+        // Record 2 is nearly vertical (B = 1e-8): y = 20 / 1e-8 is no row a camera sees.
         const std::string record0 =
             "[0 HeadPitch , 1 Horizon , 2 Orientation ]\n[0 HeadPitch , 1 Horizon ]\n"
             "[[0], [1], [2]]\n[0, 1, 2]\n3 HeadPitch 10 1 0 0 0 0.25 Horizon 10 0 1 0 0 "
@@ -304,7 +304,11 @@ private slots:
             "[0 HeadPitch , 1 Horizon , 2 Orientation ]\n[0 HeadPitch , 1 Horizon ]\n"
             "[[0], [1], [2]]\n[0, 1, 2]\n3 HeadPitch 43 1 0 0 0 0.25 Horizon 43 0 0 0 0 "
             "[] Orientation 43 0 1 0 0 [0, 0, 0] \n";
-        writeBytes(dir.filePath("sensor.strm").toStdString(), record0 + record1);
+        std::string record2 = record0;
+        record2.replace(record2.find("[0.5, 1, 20]"), 12, "[0.5, 1e-8, 20]");
+        writeStrm(path,
+                  {randomFrame(11, 4, 0, 1), randomFrame(11, 4, 33, 2), randomFrame(11, 4, 66, 3)});
+        writeBytes(dir.filePath("sensor.strm").toStdString(), record0 + record1 + record2);
 
         auto opened = openStream(path);
         QVERIFY(opened.ok());
@@ -316,6 +320,9 @@ private slots:
         auto second = opened.value()->read(1);
         QVERIFY(second.ok());
         QVERIFY(!second.value().horizon.has_value());
+        auto third = opened.value()->read(2);
+        QVERIFY(third.ok());
+        QVERIFY(!third.value().horizon.has_value());
     }
 
     void rawReferencePixelsConvertLikeTheReferencePng()

@@ -1,6 +1,8 @@
 // Small geometric value types shared by the core: image points and the kinematic horizon.
 #pragma once
 
+#include <cmath>
+
 namespace fieldsight {
 
 /// An image pixel position: origin top-left, x right, y down.
@@ -25,11 +27,23 @@ struct Horizon
     double y_left = 0;  ///< px, image y at x = 0
     double y_right = 0; ///< px, image y at x = width-1
 
+    /// The largest |y| a horizon end may have: a million rows, far beyond any camera's tilt, and
+    /// small enough that a row computed from it fits an int.
+    static constexpr double kMaxRows = 1e6;
+
     double yAt(double x, int width) const
     {
         if (width <= 1)
             return y_left;
         return y_left + (y_right - y_left) * x / double(width - 1);
+    }
+    /// Both ends finite and within kMaxRows. Readers refuse other horizons at the file; the
+    /// blackboard replaces one that still arrives (a DataWrapper of another source) by the top
+    /// row and says so.
+    bool isPlausible() const
+    {
+        return std::isfinite(y_left) && std::isfinite(y_right) && std::abs(y_left) <= kMaxRows &&
+               std::abs(y_right) <= kMaxRows;
     }
     friend bool operator==(const Horizon&, const Horizon&) = default;
 };

@@ -1,13 +1,16 @@
 // Per-frame state reset; containers keep their capacity so a frame allocates little.
 #include "visioncore/framework/blackboard.h"
 
+#include <cstdio>
+#include <string>
+
 namespace fieldsight {
 
 void Blackboard::beginFrame(const cv::Mat& image, const ColourLut& lut, Horizon kinematic)
 {
     m_image = &image;
     m_lut = &lut;
-    kinematic_horizon = kinematic;
+    kinematic_horizon = kinematic.isPlausible() ? kinematic : Horizon{};
     green_horizon.setTopRow(image.cols, image.rows);
     gh_scan_points.clear();
     gh_thrown_points.clear();
@@ -23,6 +26,13 @@ void Blackboard::beginFrame(const cv::Mat& image, const ColourLut& lut, Horizon 
     obstacle_points.clear();
     diagnostics.clear();
     debug.clear();
+    if (!kinematic.isPlausible()) {
+        char text[96];
+        std::snprintf(text, sizeof text, "(%.6g, %.6g) is not two rows within 1e6 px",
+                      kinematic.y_left, kinematic.y_right);
+        diagnostics.push_back(
+            {"kinematic_horizon", std::string(text) + "; the whole image was searched"});
+    }
 }
 
 } // namespace fieldsight

@@ -183,6 +183,8 @@ Result<Manifest> parseManifest(const std::string& path)
                 if (!pair)
                     return bad(where + ".horizon must be [y at x = 0, y at x = width-1]");
                 meta.horizon = Horizon{(*pair)[0], (*pair)[1]};
+                if (!meta.horizon->isPlausible())
+                    return bad(where + ".horizon must be two image rows from -1e6 to 1e6");
             }
             manifest.frames[file->get<std::string>()] = meta;
         }

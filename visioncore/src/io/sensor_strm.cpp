@@ -103,6 +103,8 @@ Result<std::vector<std::optional<Horizon>>> readSensorHorizons(const std::string
             const double a = values[0], b = values[1], c = values[2];
             const double last_x = std::max(0, width - 1);
             horizon = Horizon{c / b, (c - a * last_x) / b};
+            if (!horizon->isPlausible()) // nearly vertical, or rows no camera sees: invalid
+                horizon.reset();
         }
         horizons.push_back(horizon);
         i = j;

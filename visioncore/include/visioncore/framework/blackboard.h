@@ -22,7 +22,7 @@ namespace fieldsight {
 /// A problem in one frame that did not stop the frame (a stage threw, a stage was starved).
 struct Diagnostic
 {
-    std::string stage; ///< stage id
+    std::string stage; ///< stage id, or the input the problem came from ("kinematic_horizon")
     std::string message;
 };
 

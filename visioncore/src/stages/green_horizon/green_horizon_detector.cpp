@@ -78,7 +78,8 @@ void GreenHorizonDetector::run(Blackboard& bb)
     const ColourLut& lut = bb.lut();
     const std::ptrdiff_t step = std::ptrdiff_t(image.step[0]);
     for (int x = 0; x < w; x += spacing) {
-        const int y0 = std::clamp(int(bb.kinematic_horizon.yAt(x, w)), 0, h - 1);
+        // Clamped as a double: the blackboard bounds the horizon, but a row is only an int here.
+        const int y0 = int(std::clamp(bb.kinematic_horizon.yAt(x, w), 0.0, double(h - 1)));
         // A run starts on green and counts green pixels; it bridges gaps of up to max_gap pixels
         // (far lines and the thin strip beyond them blend into colours no class claims), like
         // the transition filter's field-noise rules. The original required min_green pixels of
