@@ -251,6 +251,11 @@ private slots:
                    R"({"frames": [{"file": "frame_000000.png"}, {"file": "frame_000000.png"}]})");
         add("manifest listing a frame twice", {"run", "m_twice"}, 2,
             {"m_twice/stream.json", "listed twice"}, "m_twice");
+        goodStream("m_horizon");
+        writeBytes(at("m_horizon/stream.json"),
+                   R"({"frames": [{"file": "frame_000000.png", "horizon": [4, 6.9e65]}]})");
+        add("manifest with a horizon beyond any row", {"run", "m_horizon"}, 2,
+            {"m_horizon/stream.json", "frames[0].horizon must be two image rows"}, "m_horizon");
         goodStream("f_trunc");
         writeBytes(at("f_trunc/frame_000001.png"), png1.substr(0, 200));
         add("truncated frame", {"run", "f_trunc"}, 2, {"f_trunc/frame_000001.png", "truncated PNG"},
