@@ -182,20 +182,26 @@ Status writeFileAtomically(const std::string& requested, const void* data, std::
     if (::fsync(fd) != 0)
         return fail(errno);
     if (unnamed) {
+        // Named and at once renamed: the temporary name lives for two system calls, so a writer
+        // killed now almost never leaves one (the close, which can take as long as a small
+        // write, comes after the rename; the bytes are already on disk).
         const std::string self = "/proc/self/fd/" + std::to_string(fd);
         if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) != 0)
             return fail(errno);
-    }
-    if (::close(fd) != 0) {
+    } else if (::close(fd) != 0) {
         const int error = errno;
         ::unlink(temp.c_str());
         return errnoError("write", path, error);
     }
     if (::rename(temp.c_str(), path.c_str()) != 0) {
         const int error = errno;
+        if (unnamed)
+            ::close(fd);
         ::unlink(temp.c_str());
         return errnoError("write", path, error);
     }
+    if (unnamed && ::close(fd) != 0) // after fsync, a close error is a report, not lost bytes
+        return errnoError("write", path, errno);
     // Make the rename itself durable; failure here does not undo a completed save.
     const int dir = ::open(folderOf(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dir >= 0) {
