@@ -52,26 +52,11 @@ void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const Colour
 {
     m_delay.stop();
     stop();
-    // A collect the old scan queued must not bring its stream's effects back.
-    ++m_generation;
-    {
-        std::lock_guard lock(m_shared->mutex);
-        m_shared->effects.clear();
-        m_shared->unreadable.clear();
-        m_shared->done = 0;
-        m_shared->finished = false;
-        m_shared->error.clear();
-    }
+    clearResults(); // a collect the old scan queued cannot bring its stream's effects back
     m_spec = spec.startsWith(QLatin1String("camera:")) ? QString() : spec;
     m_input.reset();
     m_previous.clear();
-    m_effects.clear();
-    m_unreadable.clear();
-    m_frames_done = 0;
-    m_changed_cells = 0;
     m_shows_edit = false;
-    m_last_scan_ms = -1;
-    m_error.clear();
     m_lut = std::move(lut);
     m_pending.reset();
     if (m_spec.isEmpty() || !m_lut)
@@ -133,23 +118,10 @@ void EditEffectScan::start()
     job.rerun_all = m_settings_changed;
     m_settings_changed = false;
     m_shows_edit = job.before != nullptr;
-    m_last_scan_ms = -1;
-    m_error.clear();
-    {
-        std::lock_guard lock(m_shared->mutex);
-        m_shared->effects.clear();
-        m_shared->done = 0;
-        m_shared->finished = false;
-        m_shared->error.clear();
-        m_shared->unreadable.clear();
-    }
-    m_effects.clear();
-    m_unreadable.clear();
-    m_frames_done = 0;
-    m_changed_cells = 0;
+    clearResults();
     m_cancel = false;
     m_started = m_requested;
-    const int generation = ++m_generation;
+    const int generation = m_generation;
     m_thread = std::thread([this, generation, job = std::move(job)]() mutable {
         scan(std::move(job));
         // Collect at once rather than at the next poll; a later scan ignores this one's call.
@@ -258,6 +230,25 @@ void EditEffectScan::scan(Job job)
     } catch (const std::exception& e) {
         fail(e.what());
     }
+}
+
+void EditEffectScan::clearResults()
+{
+    ++m_generation; // what the previous scan still queues is ignored
+    {
+        std::lock_guard lock(m_shared->mutex);
+        m_shared->effects.clear();
+        m_shared->unreadable.clear();
+        m_shared->done = 0;
+        m_shared->finished = false;
+        m_shared->error.clear();
+    }
+    m_effects.clear();
+    m_unreadable.clear();
+    m_frames_done = 0;
+    m_changed_cells = 0;
+    m_last_scan_ms = -1;
+    m_error.clear();
 }
 
 QString EditEffectScan::unreadableReason(std::size_t index) const

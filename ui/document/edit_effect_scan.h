@@ -109,6 +109,8 @@ private:
     };
 
     void stop();
+    /// Empties the shown and the shared results, and starts a new generation.
+    void clearResults();
     void start();
     void scan(Job job); ///< on the scan thread
     void collect();     ///< on the GUI thread

@@ -10,7 +10,8 @@ void Blackboard::beginFrame(const cv::Mat& image, const ColourLut& lut, Horizon 
 {
     m_image = &image;
     m_lut = &lut;
-    kinematic_horizon = kinematic.isPlausible() ? kinematic : Horizon{};
+    const bool plausible = kinematic.isPlausible();
+    kinematic_horizon = plausible ? kinematic : Horizon{};
     green_horizon.setTopRow(image.cols, image.rows);
     gh_scan_points.clear();
     gh_thrown_points.clear();
@@ -26,7 +27,7 @@ void Blackboard::beginFrame(const cv::Mat& image, const ColourLut& lut, Horizon 
     obstacle_points.clear();
     diagnostics.clear();
     debug.clear();
-    if (!kinematic.isPlausible()) {
+    if (!plausible) {
         char text[96];
         std::snprintf(text, sizeof text, "(%.6g, %.6g) is not two rows within 1e6 px",
                       kinematic.y_left, kinematic.y_right);

@@ -164,6 +164,13 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
             hooks.progress(++done_count, indices.size());
         }
     };
+    // A frame the run leaves out (unreadable, or refused by the prefilter) keeps only its index
+    // and name.
+    const auto leaveOut = [&](std::size_t pos, std::string name) {
+        results[pos].index = indices[pos];
+        results[pos].name = std::move(name);
+        markDone(pos);
+    };
 
     auto worker = [&](int t) {
         try {
@@ -201,15 +208,11 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                             return;
                         }
                         hooks.on_unreadable(indices[pos], s.error().message);
-                        results[pos].index = indices[pos];
-                        results[pos].name = data.reader().frameName(indices[pos]);
-                        markDone(pos);
+                        leaveOut(pos, data.reader().frameName(indices[pos]));
                         continue;
                     }
                     if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame())) {
-                        results[pos].index = indices[pos];
-                        results[pos].name = data.frame().name;
-                        markDone(pos);
+                        leaveOut(pos, data.frame().name);
                         continue;
                     }
                     auto report = control.runFrame();
