@@ -1,7 +1,9 @@
 // `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
 #include "commands/commands.h"
 #include "ui/adapters/local_path.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
 
 #include <QApplication>
 
@@ -35,16 +37,16 @@ int guiCommand(int& argc, char** argv, const Context& ctx)
         return badInput(ctx, s.error().message);
 
     ui::MainWindow window(ctx.pipeline);
-    (void)window.document().setParamChanges(params.value());
+    window.session().settings().reset(params.value()); // checked above
     window.show();
     const QString lut = parser.value(QStringLiteral("lut"));
     const QStringList positional = parser.positionalArguments();
     if (!positional.isEmpty())
-        window.openStream(positional.front(), lut);
+        window.files().openStream(positional.front(), lut);
     else if (!lut.isEmpty())
-        window.openStream(ui::MainWindow::bundledSampleStream(), lut);
-    else
-        window.openLastSession();
+        window.files().openStream(ui::FileCommands::bundledSampleStream(), lut);
+    else if (const ui::WindowSettings last = ui::WindowSettings::load(); true)
+        window.files().openLastSession(last.stream, last.lut);
     return QApplication::exec();
 }
 

@@ -168,6 +168,67 @@ private slots:
         for (const CellChange& c : changesTo(lut, {1, 2}, Colour::Orange))
             QCOMPARE(c.after, Colour::Orange);
     }
+
+    void aStrokeLeavesNoGapBetweenDistantEvents()
+    {
+        // A drag from (0, 0) to (10, 4): one centre per column, each next to the one before.
+        const auto points = strokePoints({0, 0}, {10, 4}, true);
+        QCOMPARE(points.size(), std::size_t(11));
+        QCOMPARE(points.front(), cv::Point(0, 0));
+        QCOMPARE(points.back(), cv::Point(10, 4));
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            QCOMPARE(points[i].x - points[i - 1].x, 1);
+            QVERIFY(std::abs(points[i].y - points[i - 1].y) <= 1);
+        }
+    }
+
+    void aStrokesLaterPieceStartsAfterWhereTheLastEnded()
+    {
+        const auto points = strokePoints({5, 5}, {5, 8}, false);
+        QCOMPARE(points, (std::vector<cv::Point>{{5, 6}, {5, 7}, {5, 8}}));
+        QCOMPARE(strokePoints({5, 5}, {5, 5}, false), std::vector<cv::Point>{cv::Point(5, 5)});
+        QCOMPARE(strokePoints({5, 5}, {5, 5}, true), std::vector<cv::Point>{cv::Point(5, 5)});
+    }
+
+    void strokePixelsCoverTheBrushAlongThePath()
+    {
+        const auto pixels = strokePixels({2, 2}, {12, 2}, 1, {20, 10}, true);
+        const std::set<std::pair<int, int>> covered = [&] {
+            std::set<std::pair<int, int>> s;
+            for (const cv::Point& p : pixels)
+                s.insert({p.x, p.y});
+            return s;
+        }();
+        for (int x = 2; x <= 12; ++x)
+            for (int y = 1; y <= 3; ++y)
+                QVERIFY2(covered.count({x, y}), qPrintable(QStringLiteral("%1,%2").arg(x).arg(y)));
+        QVERIFY(!covered.count({14, 2}));
+        QVERIFY(!covered.count({2, 4}));
+    }
+
+    void aUvStrokeCoversEveryCellOnItsWayOnce()
+    {
+        const auto cells = strokeUvCells({10, 10}, {20, 10}, 0, 5, 6, true);
+        QCOMPARE(cells.size(), std::size_t(11 * 2));
+        QVERIFY(std::is_sorted(cells.begin(), cells.end()));
+        QVERIFY(std::adjacent_find(cells.begin(), cells.end()) == cells.end());
+        for (int cb = 10; cb <= 20; ++cb)
+            QVERIFY(std::binary_search(cells.begin(), cells.end(),
+                                       std::uint32_t((5 << 14) | (cb << 7) | 10)));
+    }
+
+    void takenCellsAreCountedByTheirClassBefore()
+    {
+        const std::vector<CellChange> changes{{1, Colour::Green, Colour::Orange},
+                                              {2, Colour::Green, Colour::Orange},
+                                              {3, Colour::White, Colour::Orange},
+                                              {4, Colour::Unclassified, Colour::Orange}};
+        const auto taken = cellsTakenByClass(changes);
+        QCOMPARE(taken[std::size_t(Colour::Green)], std::size_t(2));
+        QCOMPARE(taken[std::size_t(Colour::White)], std::size_t(1));
+        QCOMPARE(taken[std::size_t(Colour::Unclassified)], std::size_t(0));
+        QCOMPARE(taken[std::size_t(Colour::Orange)], std::size_t(0));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestLutEditing)

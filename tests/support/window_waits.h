@@ -2,7 +2,9 @@
 #pragma once
 
 #include "ui/frame_view/frame_view.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
 #include "ui/panels/detections_panel.h"
 
 #include <QElapsedTimer>
@@ -20,8 +22,8 @@ inline bool waitForFrame(MainWindow& w, std::size_t index)
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < 10000) {
-        const auto& out = w.document().current();
-        if (!w.document().waiting() && out && out->index == index &&
+        const auto& out = w.session().stream().current();
+        if (!w.session().stream().waiting() && out && out->index == index &&
             (!w.view().isVisible() || w.view().paintedSerial() == out->serial) &&
             w.detectionsPanel().shownSerial() == out->serial)
             return true;
@@ -32,8 +34,8 @@ inline bool waitForFrame(MainWindow& w, std::size_t index)
 
 inline bool openAndWait(MainWindow& w, const QString& stream)
 {
-    QSignalSpy opened(&w, &MainWindow::streamOpened);
-    w.openStream(stream);
+    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    w.files().openStream(stream);
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;
     return waitForFrame(w, 0);

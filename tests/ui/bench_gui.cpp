@@ -12,7 +12,9 @@
 // - opening a 9,000-frame .strm and a folder of 9,000 PNGs, and resident memory while playing the
 //   .strm through.
 #include "commands/commands.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/panels/layers_panel.h"
 #include "visioncore/services/lut_editing.h"
@@ -91,7 +93,7 @@ bool waitPainted(MainWindow& w, int timeout_ms = 5000)
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < timeout_ms) {
-        if (!w.document().waiting() && w.view().paintedSerial() >= w.document().lastSerial())
+        if (!w.session().stream().waiting() && w.view().paintedSerial() >= w.session().stream().lastSerial())
             return true;
         QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
     }
@@ -100,23 +102,23 @@ bool waitPainted(MainWindow& w, int timeout_ms = 5000)
 
 bool open(MainWindow& w, const QString& stream)
 {
-    QSignalSpy opened(&w, &MainWindow::streamOpened);
-    w.openStream(stream);
+    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    w.files().openStream(stream);
     return opened.wait(60000) && opened.front().front().toBool() && waitPainted(w);
 }
 
 void allLayers(MainWindow& w)
 {
-    w.layersPanel().setVisibleLayers(selectLayers("all", w.document().pipeline()).value());
+    w.layersPanel().setVisibleLayers(selectLayers("all", w.session().stream().pipeline()).value());
 }
 
 /// A click's edit at `p` of the current frame: its tolerance box becomes `colour`.
 bool clickEdit(MainWindow& w, QPoint p, Colour colour)
 {
-    const cv::Mat& px = w.document().current()->frame.ycbcr;
+    const cv::Mat& px = w.session().stream().current()->frame.ycbcr;
     const cv::Vec3b c = px.at<cv::Vec3b>(p.y() % px.rows, p.x() % px.cols);
     const auto cells = cellsInBox(c[0], c[1], c[2], {6, 4, 4});
-    return w.lutDocument().edit("bench", changesTo(w.lutDocument().table(), cells, colour));
+    return w.session().lut().edit("bench", changesTo(w.session().lut().table(), cells, colour));
 }
 
 /// Waits for the whole-stream scan in a sleeping event loop (as the window's own); returns the
@@ -124,7 +126,7 @@ bool clickEdit(MainWindow& w, QPoint p, Colour colour)
 /// to painted) taken every 100 ms while it ran.
 double waitForScan(MainWindow& w, std::vector<double>* steps)
 {
-    ui::EditEffectScan& scan = w.effectScan();
+    ui::EditEffectScan& scan = w.session().effectScan();
     QEventLoop loop;
     QTimer tick;
     tick.setInterval(5);
@@ -135,8 +137,8 @@ double waitForScan(MainWindow& w, std::vector<double>* steps)
     bool stepping = false;
     double longest = 0;
     QObject::connect(&w.view(), &ui::FrameView::painted, &loop, [&] {
-        if (stepping && !w.document().waiting() &&
-            w.view().paintedSerial() >= w.document().lastSerial()) {
+        if (stepping && !w.session().stream().waiting() &&
+            w.view().paintedSerial() >= w.session().stream().lastSerial()) {
             steps->push_back(double(step.nsecsElapsed()) / 1e6);
             stepping = false;
         }
@@ -172,7 +174,7 @@ void benchEdits(const QString& label, const QString& stream, int scans)
     allLayers(w);
     waitForScan(w, nullptr);
     std::printf("%-20s first whole-stream scan (%zu frames) done %.2f s after the open\n",
-                qPrintable(label), w.effectScan().effects().size(),
+                qPrintable(label), w.session().effectScan().effects().size(),
                 double(opened.elapsed()) / 1000.0);
 
     // Edit to repaint: 40 click edits at different pixels, alternately pink and unclassified;
@@ -207,7 +209,7 @@ void benchEdits(const QString& label, const QString& stream, int scans)
         QPoint at(150 + 10 * i, 200);
         Colour colour = Colour::Yellow;
         QString what = QStringLiteral("field colour");
-        const auto& balls = w.document().current()->result.percepts.list<Ball>();
+        const auto& balls = w.session().stream().current()->result.percepts.list<Ball>();
         if (i % 2 == 1 && !balls.empty()) {
             at = QPoint(int(balls.front().x), int(balls.front().y));
             colour = Colour::Pink;
@@ -217,13 +219,13 @@ void benchEdits(const QString& label, const QString& stream, int scans)
         std::vector<double> steps;
         const double stall = waitForScan(w, &steps);
         std::size_t changed = 0;
-        for (const auto& e : w.effectScan().effects())
+        for (const auto& e : w.session().effectScan().effects())
             changed += e.changed_pixels > 0;
         std::printf("%-20s %s edit to whole-stream strip updated: %.2f s (%zu frames, %zu "
                     "changed); longest event-loop stall %.1f ms; steps meanwhile median %.1f ms "
                     "max %.1f ms\n",
-                    qPrintable(label), qPrintable(what), w.effectScan().lastScanMs() / 1000.0,
-                    w.effectScan().framesDone(), changed, stall, percentile(steps, 0.5),
+                    qPrintable(label), qPrintable(what), w.session().effectScan().lastScanMs() / 1000.0,
+                    w.session().effectScan().framesDone(), changed, stall, percentile(steps, 0.5),
                     percentile(steps, 1.0));
     }
 }
@@ -245,13 +247,13 @@ void benchStepping(const QString& label, const QString& stream)
     QElapsedTimer t;
     double ready = 0;
     const QMetaObject::Connection on_ready =
-        QObject::connect(&w.document(), &ui::StreamDocument::frameReady,
+        QObject::connect(&w.session().stream(), &ui::StreamDocument::frameReady,
                          [&] { ready = double(t.nsecsElapsed()) / 1e6; });
     for (const int gap_ms : {30, 0}) {
-        w.document().setCurrentIndex(0);
+        w.session().stream().setCurrentIndex(0);
         (void)waitPainted(w);
         std::vector<double> step_ms, wait_ms, worker_ms, paint_ms, ready_ms;
-        const int frames = int(w.document().frameCount());
+        const int frames = int(w.session().stream().frameCount());
         for (int i = 1; i < frames; ++i) {
             if (gap_ms > 0)
                 QTest::qWait(gap_ms);
@@ -261,8 +263,8 @@ void benchStepping(const QString& label, const QString& stream)
                 break;
             step_ms.push_back(double(t.nsecsElapsed()) / 1e6);
             ready_ms.push_back(ready);
-            wait_ms.push_back(w.document().current()->wait_ms);
-            worker_ms.push_back(w.document().current()->worker_ms);
+            wait_ms.push_back(w.session().stream().current()->wait_ms);
+            worker_ms.push_back(w.session().stream().current()->worker_ms);
             paint_ms.push_back(w.view().lastPaintMs());
         }
         std::printf("%-20s step %-13s median %5.2f ms  p95 %5.2f ms  (result in %5.2f ms, "
@@ -276,9 +278,9 @@ void benchStepping(const QString& label, const QString& stream)
     std::vector<double> edit_ms;
     for (int i = 0; i < 20; ++i) {
         t.start();
-        const StageDescriptor& stage = w.document().pipeline().descriptors().front();
+        const StageDescriptor& stage = w.session().stream().pipeline().descriptors().front();
         const ParamInfo& p = stage.params.front();
-        (void)w.document().setParam(stage.info.id, p.name,
+        (void)w.session().settings().setParam(stage.info.id, p.name,
                                     i % 2 ? p.default_value : p.default_value + p.step);
         if (!waitPainted(w))
             break;
@@ -288,7 +290,7 @@ void benchStepping(const QString& label, const QString& stream)
                 percentile(edit_ms, 0.5), percentile(edit_ms, 1.0));
 
     // Play at 60 fps for two seconds, looping.
-    w.document().setCurrentIndex(0);
+    w.session().stream().setCurrentIndex(0);
     (void)waitPainted(w);
     w.navigator().setSpeed(60);
     w.navigator().loopAction()->setChecked(true);
@@ -397,8 +399,8 @@ int main(int argc, char** argv)
     }
     std::printf("play big.strm fastest: reached frame %zu in %.1f s (%.0f frames/s painted "
                 "or skipped); RSS %.0f MB at start, %.0f MB max (growth %.0f MB)\n",
-                w.document().currentIndex(), double(t.elapsed()) / 1000.0,
-                double(w.document().currentIndex()) * 1000.0 / double(t.elapsed()), rss_start,
+                w.session().stream().currentIndex(), double(t.elapsed()) / 1000.0,
+                double(w.session().stream().currentIndex()) * 1000.0 / double(t.elapsed()), rss_start,
                 rss_max, rss_max - rss_start);
     return 0;
 }

@@ -7,7 +7,9 @@
 //                  [--preview X,Y] [--uv-select CB0,CR0,CB1,CR1] [--y-range LO,HI]
 // --click edits the LUT with the tool at image pixel X,Y; --preview hovers the tool there (both at
 // zoom 1 unless --zoom); the whole-stream scan is waited for before the shot.
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/lut_panel.h"
@@ -49,39 +51,39 @@ int main(int argc, char** argv)
                 std::cerr << "bad --set\n";
                 return 2;
             }
-        (void)w.document().setParamChanges(params);
+        (void)w.session().settings().setParamChanges(params);
     }
     const QStringList size =
         p.value("size").isEmpty() ? QStringList{"1280", "800"} : p.value("size").split('x');
     w.resize(size[0].toInt(), size[1].toInt());
     w.show();
-    QSignalSpy opened(&w, &ui::MainWindow::streamOpened);
-    w.openStream(pos[1], p.value("lut"));
+    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    w.files().openStream(pos[1], p.value("lut"));
     if (!opened.wait(20000) || !opened.front().front().toBool()) {
         std::cerr << "cannot open: " << w.lastMessage().toStdString() << "\n";
         return 1;
     }
     auto waitFrame = [&] {
-        QSignalSpy ready(&w.document(), &ui::StreamDocument::frameReady);
-        while (w.document().waiting() && ready.wait(5000)) {
+        QSignalSpy ready(&w.session().stream(), &ui::StreamDocument::frameReady);
+        while (w.session().stream().waiting() && ready.wait(5000)) {
         }
         QApplication::processEvents();
     };
     waitFrame();
     if (p.isSet("frame")) {
-        w.document().setCurrentIndex(p.value("frame").toULongLong());
+        w.session().stream().setCurrentIndex(p.value("frame").toULongLong());
         waitFrame();
     }
     const QString layers = p.value("layers");
     if (!layers.isEmpty() && layers != "default") {
-        auto chosen = selectLayers(layers.toStdString(), w.document().pipeline());
+        auto chosen = selectLayers(layers.toStdString(), w.session().stream().pipeline());
         if (!chosen) {
             std::cerr << chosen.error().message << "\n";
             return 2;
         }
         w.layersPanel().setVisibleLayers(chosen.value());
     } else {
-        w.layersPanel().setVisibleLayers(ui::LayersPanel::defaultLayers(w.document().pipeline()));
+        w.layersPanel().setVisibleLayers(ui::LayersPanel::defaultLayers(w.session().stream().pipeline()));
     }
     const QString mode = p.value("mode");
     const ui::ViewMode m = mode == "classified" ? ui::ViewMode::Classified
@@ -93,7 +95,7 @@ int main(int argc, char** argv)
     if (p.isSet("zoom")) {
         const double zoom = p.value("zoom").toDouble();
         w.view().setZoom(zoom);
-        const auto& out = w.document().current();
+        const auto& out = w.session().stream().current();
         for (const ui::PerceptItem& item : out ? out->items : std::vector<ui::PerceptItem>{}) {
             if (!p.isSet("focus") || !item.label.startsWith(p.value("focus")))
                 continue;
@@ -104,7 +106,7 @@ int main(int argc, char** argv)
     }
     if (p.isSet("hover")) {
         const QStringList xy = p.value("hover").split(',');
-        w.inspector().inspect(w.document().current().get(), QPoint(xy[0].toInt(), xy[1].toInt()));
+        w.inspector().inspect(w.session().stream().current().get(), QPoint(xy[0].toInt(), xy[1].toInt()));
     }
     for (const QString& name : p.values("dock")) // bring tabbed docks to the front ("lut_dock")
         if (auto* dock = w.findChild<QDockWidget*>(name))
@@ -112,13 +114,10 @@ int main(int argc, char** argv)
     QApplication::processEvents();
     if (p.isSet("colour"))
         if (auto c = colourFromName(p.value("colour").toStdString()))
-            w.lutPanel().setColour(*c);
+            w.tools().settings().setColour(*c);
     const QString tool = p.value("tool");
     if (!tool.isEmpty())
-        w.lutPanel().setTool(tool == "brush"   ? ui::LutTool::Brush
-                             : tool == "erase" ? ui::LutTool::Erase
-                             : tool == "wand"  ? ui::LutTool::Wand
-                                               : ui::LutTool::Click);
+        w.tools().activate(tool);
     const auto viewPoint = [&](const QString& xy) {
         const QStringList v = xy.split(',');
         const double z = w.view().zoom();
@@ -148,7 +147,7 @@ int main(int argc, char** argv)
     }
     if (p.isSet("preview"))
         QTest::mouseMove(&w.view(), viewPoint(p.value("preview")));
-    for (int i = 0; i < 2000 && w.effectScan().running(); ++i)
+    for (int i = 0; i < 2000 && w.session().effectScan().running(); ++i)
         QTest::qWait(10);
     QApplication::processEvents();
     QTest::qWait(50);

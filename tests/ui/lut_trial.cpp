@@ -10,7 +10,9 @@
 // the foot. Every picture is "done" (a picture without G labels has no post foot to find).
 // Screenshots of the editor go to OUT_DIR/*.png.
 #include "ui/document/edit_effect_scan.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 
@@ -27,14 +29,13 @@
 #include <iostream>
 
 using namespace fieldsight;
-using fieldsight::ui::LutTool;
 
 namespace {
 
 struct Step
 {
     int frame; ///< 1-based, as the file names
-    LutTool tool;
+    const char* tool; ///< a tool id
     Colour colour;
     Tolerance tolerance;
     QPoint at;
@@ -99,12 +100,12 @@ int main(int argc, char** argv)
     ui::MainWindow w;
     w.resize(1500, 950);
     w.show();
-    QSignalSpy opened(&w, &ui::MainWindow::streamOpened);
-    w.openStream(stream); // no default.lut: an empty table
+    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    w.files().openStream(stream); // no default.lut: an empty table
     if (!opened.wait(20000) || !opened.front().front().toBool())
         return 1;
     const auto waitFrame = [&] {
-        for (int i = 0; i < 500 && w.document().waiting(); ++i)
+        for (int i = 0; i < 500 && w.session().stream().waiting(); ++i)
             QTest::qWait(10);
         QApplication::processEvents();
     };
@@ -116,41 +117,41 @@ int main(int argc, char** argv)
     // What a user does: on a far, a middle and a near picture, a wand fill of the carpet, clicks
     // on the lines and on the posts (at the labelled feet, a little above them).
     const std::vector<Step> steps = {
-        {8, LutTool::Wand, Colour::Green, {14, 6, 6}, {60, 200}},
-        {8, LutTool::Click, Colour::White, {16, 5, 5}, {157, 142}},
-        {8, LutTool::Click, Colour::Yellow, {20, 8, 8}, {113, 60}},
-        {8, LutTool::Click, Colour::Yellow, {20, 8, 8}, {205, 60}},
-        {20, LutTool::Wand, Colour::Green, {14, 6, 6}, {160, 200}},
-        {20, LutTool::Click, Colour::Yellow, {20, 8, 8}, {60, 60}},
-        {20, LutTool::Click, Colour::Yellow, {20, 8, 8}, {268, 60}},
-        {20, LutTool::Click, Colour::White, {16, 5, 5}, {160, 145}},
-        {2, LutTool::Wand, Colour::Green, {14, 6, 6}, {160, 200}},
-        {2, LutTool::Click, Colour::Yellow, {20, 8, 8}, {138, 60}},
+        {8, "wand", Colour::Green, {14, 6, 6}, {60, 200}},
+        {8, "click", Colour::White, {16, 5, 5}, {157, 142}},
+        {8, "click", Colour::Yellow, {20, 8, 8}, {113, 60}},
+        {8, "click", Colour::Yellow, {20, 8, 8}, {205, 60}},
+        {20, "wand", Colour::Green, {14, 6, 6}, {160, 200}},
+        {20, "click", Colour::Yellow, {20, 8, 8}, {60, 60}},
+        {20, "click", Colour::Yellow, {20, 8, 8}, {268, 60}},
+        {20, "click", Colour::White, {16, 5, 5}, {160, 145}},
+        {2, "wand", Colour::Green, {14, 6, 6}, {160, 200}},
+        {2, "click", Colour::Yellow, {20, 8, 8}, {138, 60}},
     };
     int edits = 0;
     for (const Step& s : steps) {
-        w.document().setCurrentIndex(std::size_t(s.frame - 1));
+        w.session().stream().setCurrentIndex(std::size_t(s.frame - 1));
         waitFrame();
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
-        w.lutPanel().setTool(s.tool);
-        w.lutPanel().setColour(s.colour);
-        w.lutPanel().setTolerance(s.tolerance);
-        const int before = w.lutDocument().undoStack().count();
+        w.tools().activate(QString::fromLatin1(s.tool));
+        w.tools().settings().setColour(s.colour);
+        w.tools().settings().setTolerance(s.tolerance);
+        const int before = w.session().lut().undoStack().count();
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, s.at);
         waitFrame();
-        edits += w.lutDocument().undoStack().count() - before;
+        edits += w.session().lut().undoStack().count() - before;
     }
-    for (int i = 0; i < 2000 && w.effectScan().running(); ++i)
+    for (int i = 0; i < 2000 && w.session().effectScan().running(); ++i)
         QTest::qWait(10);
     std::cout << edits << " edits\n";
-    if (Status s = w.lutDocument().saveAs(out + "/dnt.lut"); !s) {
+    if (Status s = w.session().lut().saveAs(out + "/dnt.lut"); !s) {
         std::cerr << s.error().message << "\n";
         return 1;
     }
 
     // The editor as the user sees it at the end, on a middle picture, zoomed.
-    w.document().setCurrentIndex(12);
+    w.session().stream().setCurrentIndex(12);
     waitFrame();
     w.view().setMode(ui::ViewMode::SideBySide);
     w.view().fitToWindow();
@@ -159,8 +160,8 @@ int main(int argc, char** argv)
     w.view().setMode(ui::ViewMode::Raw);
     w.view().setZoom(2);
     w.view().setImageOrigin({0, 0});
-    w.lutPanel().setTool(LutTool::Click);
-    w.lutPanel().setColour(Colour::Yellow);
+    w.tools().activate(QStringLiteral("click"));
+    w.tools().settings().setColour(Colour::Yellow);
     QTest::mouseMove(&w.view(), QPoint(2 * 226 + 1, 2 * 70 + 1));
     QTest::qWait(100);
     w.grab().save(out + "/editor_preview.png");

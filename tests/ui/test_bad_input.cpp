@@ -7,7 +7,9 @@
 #include "support/window_waits.h"
 #include "ui/adapters/local_path.h"
 #include "ui/document/lut_document.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
 #include "visioncore/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
@@ -503,11 +505,11 @@ private slots:
                 ui::fromLocalPath(c.gui_stream.starts_with("/") ? c.gui_stream : at(c.gui_stream));
             QString message;
             if (c.gui_frame == 0) {
-                QSignalSpy opened(&w, &MainWindow::streamOpened);
+                QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
                 if (!c.gui_lut.empty())
-                    w.openLut(ui::fromLocalPath(c.gui_lut));
+                    w.files().openLut(ui::fromLocalPath(c.gui_lut));
                 else
-                    w.openStream(stream);
+                    w.files().openStream(stream);
                 if (c.gui_lut.empty() && !opened.wait(10000)) {
                     failures << QString::fromStdString(c.name) + ": no answer";
                     continue;
@@ -518,12 +520,12 @@ private slots:
                     failures << QString::fromStdString(c.name) + ": did not open";
                     continue;
                 }
-                w.document().setCurrentIndex(c.gui_frame);
+                w.session().stream().setCurrentIndex(c.gui_frame);
                 if (!waitForFrame(w, c.gui_frame)) {
                     failures << QString::fromStdString(c.name) + ": frame not shown";
                     continue;
                 }
-                message = w.document().current()->error;
+                message = w.session().stream().current()->error;
                 (void)w.view().grab(); // the error is painted, not a crash
             }
             for (const std::string& needle : c.needles)
@@ -536,7 +538,7 @@ private slots:
                 failures << QString::fromStdString(c.name) + ": the good stream no longer opens";
                 continue;
             }
-            w.document().setCurrentIndex(2);
+            w.session().stream().setCurrentIndex(2);
             if (!waitForFrame(w, 2))
                 failures << QString::fromStdString(c.name) + ": cannot step afterwards";
         }
@@ -554,13 +556,13 @@ private slots:
         w.show();
         QVERIFY(openAndWait(w, QString::fromStdString(path)));
         fs::resize_file(path, 32 * 24 * 4 + 100); // another program cuts it to a record and a bit
-        w.document().setCurrentIndex(2);
+        w.session().stream().setCurrentIndex(2);
         QVERIFY(waitForFrame(w, 2));
-        const QString error = w.document().current()->error;
+        const QString error = w.session().stream().current()->error;
         QVERIFY2(error.contains("shrinks.strm") && error.contains("record 2"), qPrintable(error));
-        w.document().setCurrentIndex(0);
+        w.session().stream().setCurrentIndex(0);
         QVERIFY(waitForFrame(w, 0));
-        QVERIFY(w.document().current()->error.isEmpty());
+        QVERIFY(w.session().stream().current()->error.isEmpty());
     }
 
     void aFullDiskKeepsTheEditsAndSaysSo()
@@ -568,12 +570,12 @@ private slots:
         ui::MainWindow w;
         w.show();
         QVERIFY(openAndWait(w, QString::fromStdString(m_good)));
-        ui::LutDocument& lut = w.lutDocument();
+        ui::LutDocument& lut = w.session().lut();
         QVERIFY(lut.edit("paint", {{12345, lut.version()->cell(12345), Colour::Orange}}));
         QVERIFY(lut.modified());
         // venue.lut is a link to /dev/full: the save reaches a disk with no space left.
         fs::create_symlink("/dev/full", at("venue.lut"));
-        QVERIFY(!w.saveLutAs(QString::fromStdString(at("venue.lut"))));
+        QVERIFY(!w.files().saveLutAs(QString::fromStdString(at("venue.lut"))));
         QVERIFY2(w.lastMessage().contains("the edits are kept") &&
                      w.lastMessage().contains("No space left on device"),
                  qPrintable(w.lastMessage()));

@@ -3,7 +3,10 @@
 // the frame is reclassified, save then load gives the same bytes, and unsaved edits left by a
 // crashed session are offered and restored.
 #include "support/synthetic_frames.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/widgets/message_bar.h"
+#include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/lut_compare_dialog.h"
 #include "ui/panels/uv_plane_panel.h"
@@ -25,7 +28,6 @@
 #include <set>
 
 using namespace fieldsight;
-using fieldsight::ui::LutTool;
 using fieldsight::ui::MainWindow;
 
 namespace {
@@ -40,8 +42,8 @@ bool waitForLut(MainWindow& w, const std::shared_ptr<const ColourLut>& lut)
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < 10000) {
-        const auto& out = w.document().current();
-        if (!w.document().waiting() && out && w.document().lut() == lut)
+        const auto& out = w.session().stream().current();
+        if (!w.session().stream().waiting() && out && w.session().lut().version() == lut)
             return true;
         QTest::qWait(2);
     }
@@ -50,11 +52,11 @@ bool waitForLut(MainWindow& w, const std::shared_ptr<const ColourLut>& lut)
 
 bool openAndWait(MainWindow& w)
 {
-    QSignalSpy opened(&w, &MainWindow::streamOpened);
-    w.openStream(sampleStream());
+    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    w.files().openStream(sampleStream());
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;
-    return waitForLut(w, w.document().lut());
+    return waitForLut(w, w.session().lut().version());
 }
 
 /// Widget position of image pixel `p` at zoom 1 with the image at the view's corner.
@@ -116,7 +118,7 @@ bool waitForScan(ui::EditEffectScan& scan)
 
 cv::Vec3b colourAt(MainWindow& w, QPoint p)
 {
-    return w.document().current()->frame.ycbcr.at<cv::Vec3b>(p.y(), p.x());
+    return w.session().stream().current()->frame.ycbcr.at<cv::Vec3b>(p.y(), p.x());
 }
 
 } // namespace
@@ -150,12 +152,12 @@ private slots:
         MainWindow w;
         QVERIFY(showAndOpen(w));
         showPixelsOneToOne(w);
-        const ColourLut before = w.lutDocument().table();
+        const ColourLut before = w.session().lut().table();
 
         QTest::keyClick(&w, Qt::Key_9); // blue
-        QCOMPARE(w.lutPanel().colour(), Colour::Blue);
-        w.lutPanel().setTool(LutTool::Click);
-        w.lutPanel().setTolerance({4, 2, 2});
+        QCOMPARE(w.tools().settings().colour(), Colour::Blue);
+        w.tools().activate(QStringLiteral("click"));
+        w.tools().settings().setTolerance({4, 2, 2});
         const QPoint pixel(40, 200);
         const cv::Vec3b c = colourAt(w, pixel);
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(pixel));
@@ -165,21 +167,21 @@ private slots:
             if (before.cell(cell) != Colour::Blue)
                 want.insert(cell);
         QVERIFY(!want.empty());
-        QCOMPARE(differences(before, w.lutDocument().table()), want);
+        QCOMPARE(differences(before, w.session().lut().table()), want);
         for (const std::uint32_t cell : want)
-            QCOMPARE(w.lutDocument().table().cell(cell), Colour::Blue);
-        QVERIFY(w.lutDocument().modified());
+            QCOMPARE(w.session().lut().table().cell(cell), Colour::Blue);
+        QVERIFY(w.session().lut().modified());
         QVERIFY(w.isWindowModified());
 
         // The frame is reclassified with the edited table.
-        QVERIFY(waitForLut(w, w.lutDocument().version()));
-        QCOMPARE(Colour(w.document().current()->classes.at<std::uint8_t>(pixel.y(), pixel.x())),
+        QVERIFY(waitForLut(w, w.session().lut().version()));
+        QCOMPARE(Colour(w.session().stream().current()->classes.at<std::uint8_t>(pixel.y(), pixel.x())),
                  Colour::Blue);
 
         // Right-click picks the class under the cursor.
         QTest::keyClick(&w, Qt::Key_1);
         QTest::mouseClick(&w.view(), Qt::RightButton, {}, at(pixel));
-        QCOMPARE(w.lutPanel().colour(), Colour::Blue);
+        QCOMPARE(w.tools().settings().colour(), Colour::Blue);
     }
 
     void aBrushStrokeIsOneUndoStepAndUndoRestoresTheBytes()
@@ -187,19 +189,19 @@ private slots:
         MainWindow w;
         QVERIFY(showAndOpen(w));
         showPixelsOneToOne(w);
-        const ColourLut before = w.lutDocument().table();
-        const int steps = w.lutDocument().undoStack().count();
+        const ColourLut before = w.session().lut().table();
+        const int steps = w.session().lut().undoStack().count();
 
         QTest::keyClick(&w, Qt::Key_6); // orange
-        w.lutPanel().setTool(LutTool::Brush);
-        w.lutPanel().setBrushRadius(1);
-        w.lutPanel().setTolerance({0, 0, 0});
-        const cv::Mat frame = w.document().current()->frame.ycbcr.clone();
+        w.tools().activate(QStringLiteral("brush"));
+        w.tools().settings().setBrushRadius(1);
+        w.tools().settings().setTolerance({0, 0, 0});
+        const cv::Mat frame = w.session().stream().current()->frame.ycbcr.clone();
         QTest::mousePress(&w.view(), Qt::LeftButton, {}, at({100, 150}));
         QTest::mouseMove(&w.view(), at({104, 150}));
         QTest::mouseMove(&w.view(), at({104, 156}));
         QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at({104, 156}));
-        QCOMPARE(w.lutDocument().undoStack().count(), steps + 1);
+        QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
 
         // The cells of every pixel the radius-1 brush went over, 100..104 along y 150, then
         // y 150..156 along x 104.
@@ -215,22 +217,22 @@ private slots:
             if (before.cell(cell) != Colour::Orange)
                 want.insert(cell);
         QVERIFY(!want.empty());
-        const ColourLut after = w.lutDocument().table();
+        const ColourLut after = w.session().lut().table();
         QCOMPARE(differences(before, after), want);
 
         QTest::keySequence(&w, QKeySequence::Undo);
-        QVERIFY(w.lutDocument().table() == before);
-        QVERIFY(!w.lutDocument().modified());
+        QVERIFY(w.session().lut().table() == before);
+        QVERIFY(!w.session().lut().modified());
         QTest::keySequence(&w, QKeySequence::Redo);
-        QCOMPARE(w.lutDocument().undoStack().index(), steps + 1);
-        QVERIFY(w.lutDocument().table() == after);
+        QCOMPARE(w.session().lut().undoStack().index(), steps + 1);
+        QVERIFY(w.session().lut().table() == after);
 
         // Erase takes a painted colour back to unclassified.
-        w.lutPanel().setTool(LutTool::Erase);
-        w.lutPanel().setBrushRadius(0);
+        w.tools().activate(QStringLiteral("erase"));
+        w.tools().settings().setBrushRadius(0);
         const cv::Vec3b c = frame.at<cv::Vec3b>(150, 102);
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({102, 150}));
-        QCOMPARE(w.lutDocument().table().classify(c[0], c[1], c[2]), Colour::Unclassified);
+        QCOMPARE(w.session().lut().table().classify(c[0], c[1], c[2]), Colour::Unclassified);
     }
 
     void saveThenLoadGivesTheSameBytes()
@@ -239,27 +241,27 @@ private slots:
         w.show();
         QVERIFY(openAndWait(w));
         showPixelsOneToOne(w);
-        w.lutPanel().setColour(Colour::Yellow);
-        w.lutPanel().setTool(LutTool::Wand);
-        w.lutPanel().setTolerance({6, 6, 6});
+        w.tools().settings().setColour(Colour::Yellow);
+        w.tools().activate(QStringLiteral("wand"));
+        w.tools().settings().setTolerance({6, 6, 6});
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({160, 40}));
-        QVERIFY(w.lutDocument().modified());
+        QVERIFY(w.session().lut().modified());
 
         const QString path = m_dir.filePath("venue.lut");
-        QVERIFY(w.saveLutAs(path));
-        QVERIFY(!w.lutDocument().modified());
+        QVERIFY(w.files().saveLutAs(path));
+        QVERIFY(!w.session().lut().modified());
         QVERIFY(!w.isWindowModified());
         auto loaded = ColourLut::load(path.toStdString());
         QVERIFY(loaded);
-        QVERIFY(loaded.value() == w.lutDocument().table());
-        QCOMPARE(w.document().lutPath(), path);
+        QVERIFY(loaded.value() == w.session().lut().table());
+        QCOMPARE(w.session().lut().path(), path);
 
         // Saving where it cannot be written keeps the edits and says so in the window.
-        w.lutPanel().setTool(LutTool::Click);
+        w.tools().activate(QStringLiteral("click"));
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({20, 220}));
-        QVERIFY(w.lutDocument().modified());
-        QVERIFY(!w.saveLutAs(m_dir.filePath("missing/folder/x.lut")));
-        QVERIFY(w.lutDocument().modified());
+        QVERIFY(w.session().lut().modified());
+        QVERIFY(!w.files().saveLutAs(m_dir.filePath("missing/folder/x.lut")));
+        QVERIFY(w.session().lut().modified());
         QVERIFY2(w.lastMessage().contains("not saved"), qPrintable(w.lastMessage()));
     }
 
@@ -271,30 +273,30 @@ private slots:
             w.show();
             QVERIFY(openAndWait(w));
             showPixelsOneToOne(w);
-            w.lutDocument().setAutosaveDelay(50);
-            w.lutPanel().setColour(Colour::Pink);
-            w.lutPanel().setTool(LutTool::Click);
-            w.lutPanel().setTolerance({10, 10, 10});
+            w.session().lut().setAutosaveDelay(50);
+            w.tools().settings().setColour(Colour::Pink);
+            w.tools().activate(QStringLiteral("click"));
+            w.tools().settings().setTolerance({10, 10, 10});
             QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at({60, 60}));
-            edited = w.lutDocument().table();
-            QTRY_VERIFY(w.lutDocument().findRecovery().has_value());
+            edited = w.session().lut().table();
+            QTRY_VERIFY(w.session().lut().findRecovery().has_value());
             // The window goes away without closing (a crash): the recovery file stays.
         }
         MainWindow w;
         w.show();
         QVERIFY(openAndWait(w));
-        auto* recover = w.findChild<QPushButton*>("recover_lut");
+        auto* recover = w.recoveryBar().findChild<QPushButton*>("accept");
         QVERIFY(recover);
         QVERIFY(recover->isVisible());
-        QVERIFY(!(w.lutDocument().table() == edited));
+        QVERIFY(!(w.session().lut().table() == edited));
         QTest::mouseClick(recover, Qt::LeftButton);
-        QVERIFY(w.lutDocument().table() == edited);
-        QVERIFY(w.lutDocument().modified());
-        QVERIFY(waitForLut(w, w.lutDocument().version()));
+        QVERIFY(w.session().lut().table() == edited);
+        QVERIFY(w.session().lut().modified());
+        QVERIFY(waitForLut(w, w.session().lut().version()));
 
         // Once saved, nothing is offered any more.
-        QVERIFY(w.saveLutAs(m_dir.filePath("recovered.lut")));
-        QVERIFY(!w.lutDocument().findRecovery());
+        QVERIFY(w.files().saveLutAs(m_dir.filePath("recovered.lut")));
+        QVERIFY(!w.session().lut().findRecovery());
     }
 
     void theWholeStreamScanMarksAnUnreadableFrameAndGoesOn()
@@ -340,21 +342,21 @@ private slots:
     {
         MainWindow w;
         QVERIFY(showAndOpen(w));
-        ui::EditEffectScan& scan = w.effectScan();
+        ui::EditEffectScan& scan = w.session().effectScan();
         QVERIFY(waitForScan(scan)); // the first scan records every frame's detections
         QVERIFY(!scan.showsEdit());
-        QCOMPARE(scan.effects().size(), w.document().frameCount());
+        QCOMPARE(scan.effects().size(), w.session().stream().frameCount());
 
         // A known edit: a field pixel's box becomes pink.
         showPixelsOneToOne(w);
-        const ColourLut before = w.lutDocument().table();
-        w.lutPanel().setColour(Colour::Pink);
-        w.lutPanel().setTool(LutTool::Click);
-        w.lutPanel().setTolerance({10, 6, 6});
+        const ColourLut before = w.session().lut().table();
+        w.tools().settings().setColour(Colour::Pink);
+        w.tools().activate(QStringLiteral("click"));
+        w.tools().settings().setTolerance({10, 6, 6});
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(160, 220)));
         QVERIFY(waitForScan(scan));
         QVERIFY(scan.showsEdit());
-        const ColourLut after = w.lutDocument().table();
+        const ColourLut after = w.session().lut().table();
         QCOMPARE(scan.changedCells(), differences(before, after).size());
 
         // Every frame's count, recomputed here pixel by pixel.
@@ -394,7 +396,7 @@ private slots:
             if (after.cell(i) == Colour::Orange)
                 orange.push_back(i);
         QVERIFY(!orange.empty());
-        w.lutDocument().edit("erase orange", changesTo(after, orange, Colour::Unclassified));
+        w.session().lut().edit("erase orange", changesTo(after, orange, Colour::Unclassified));
         QVERIFY(waitForScan(scan));
         int balls = 0;
         for (const FrameResult& r : run.value().frames) {
@@ -411,7 +413,7 @@ private slots:
         const long long target = strip.frameAt(x);
         QVERIFY(target > 0);
         QTest::mouseClick(&strip, Qt::LeftButton, {}, QPoint(x, strip.height() / 2));
-        QCOMPARE((long long)w.document().currentIndex(), target);
+        QCOMPARE((long long)w.session().stream().currentIndex(), target);
     }
 
     void paintingInTheUvPlaneChangesTheCellsUnderTheBrush()
@@ -432,16 +434,16 @@ private slots:
         QVERIFY((canvas.cellCentre(42, 90) - anchor).manhattanLength() < 1.0);
         QCOMPARE(*canvas.cellAt(canvas.cellCentre(40, 90)), QPoint(40, 90));
 
-        const ColourLut before = w.lutDocument().table();
-        w.lutPanel().setColour(Colour::Orange);
-        w.lutPanel().setTool(LutTool::Brush);
-        w.lutPanel().setBrushRadius(2);
-        const int undo_steps = w.lutDocument().undoStack().count();
+        const ColourLut before = w.session().lut().table();
+        w.tools().settings().setColour(Colour::Orange);
+        w.tools().activate(QStringLiteral("brush"));
+        w.tools().settings().setBrushRadius(2);
+        const int undo_steps = w.session().lut().undoStack().count();
         QTest::mousePress(&canvas, Qt::LeftButton, {}, canvas.cellCentre(40, 90).toPoint());
         QTest::mouseMove(&canvas, canvas.cellCentre(42, 90).toPoint());
         QTest::mouseMove(&canvas, canvas.cellCentre(44, 90).toPoint());
         QTest::mouseRelease(&canvas, Qt::LeftButton, {}, canvas.cellCentre(44, 90).toPoint());
-        QCOMPARE(w.lutDocument().undoStack().count(), undo_steps + 1); // one stroke, one step
+        QCOMPARE(w.session().lut().undoStack().count(), undo_steps + 1); // one stroke, one step
 
         // Every cell within 2 cells of the path (40..44, 90), at Y cells 50..65, not already
         // orange.
@@ -457,11 +459,11 @@ private slots:
                         expected.insert(cell);
                 }
         QVERIFY(!expected.empty());
-        QCOMPARE(differences(before, w.lutDocument().table()), expected);
+        QCOMPARE(differences(before, w.session().lut().table()), expected);
         for (std::uint32_t cell : expected)
-            QCOMPARE(w.lutDocument().table().cell(cell), Colour::Orange);
-        w.lutDocument().undoStack().undo();
-        QVERIFY(w.lutDocument().table() == before);
+            QCOMPARE(w.session().lut().table().cell(cell), Colour::Orange);
+        w.session().lut().undoStack().undo();
+        QVERIFY(w.session().lut().table() == before);
     }
 
     void aUvSelectionLightsUpItsPixelsAndTheImageToolItsCells()
@@ -484,7 +486,7 @@ private slots:
         QVERIFY(canvas.selection().has_value());
         const QImage lit = w.view().highlight("uv_selection");
         QVERIFY(!lit.isNull());
-        const cv::Mat& px = w.document().current()->frame.ycbcr;
+        const cv::Mat& px = w.session().stream().current()->frame.ycbcr;
         int expected = 0, shown = 0;
         for (int y = 0; y < px.rows; ++y)
             for (int x = 0; x < px.cols; ++x) {
@@ -500,29 +502,29 @@ private slots:
 
         // Image -> UV: hovering with the click tool outlines the cells a click would change,
         // highlights the pixels, and counts the cells taken from another class.
-        w.lutPanel().setColour(Colour::Pink);
-        w.lutPanel().setTool(LutTool::Click);
-        w.lutPanel().setTolerance({6, 3, 3});
+        w.tools().settings().setColour(Colour::Pink);
+        w.tools().activate(QStringLiteral("click"));
+        w.tools().settings().setTolerance({6, 3, 3});
         QTest::mouseMove(&w.view(), at(QPoint(160, 220)));
-        QTRY_VERIFY(!w.lutPanel().previewChanges().empty());
+        QTRY_VERIFY(!w.tools().preview().changes.empty());
         const auto cells = cellsInBox(field[0], field[1], field[2], {6, 3, 3});
         std::size_t green = 0;
         for (std::uint32_t c : cells)
-            green += w.lutDocument().table().cell(c) == Colour::Green;
-        QCOMPARE(w.lutPanel().previewChanges().size(), cells.size());
+            green += w.session().lut().table().cell(c) == Colour::Green;
+        QCOMPARE(w.tools().preview().changes.size(), cells.size());
         QVERIFY(green > 0); // a field pixel's box is mostly green already
-        QVERIFY2(w.lutPanel().previewText().contains(QString::number(green) + " green"),
-                 qPrintable(w.lutPanel().previewText()));
+        QVERIFY2(w.tools().preview().text.contains(QString::number(green) + " green"),
+                 qPrintable(w.tools().preview().text));
         QVERIFY(qAlpha(w.view().highlight("preview").pixel(160, 220)) > 0);
-        const ColourLut unchanged = w.lutDocument().table();
-        QVERIFY(unchanged == w.lutDocument().table()); // a preview edits nothing
+        const ColourLut unchanged = w.session().lut().table();
+        QVERIFY(unchanged == w.session().lut().table()); // a preview edits nothing
     }
 
     void comparingTwoKnownTablesListsTheRightCellsAndMergesByClass()
     {
         MainWindow w;
         QVERIFY(showAndOpen(w));
-        const ColourLut here = w.lutDocument().table();
+        const ColourLut here = w.session().lut().table();
         // The other table: 5 orange cells become pink, 3 unclassified cells become yellow, and
         // 2 green cells become unclassified.
         ColourLut other = here;
@@ -545,7 +547,7 @@ private slots:
         const QString path = m_dir.filePath("other.lut");
         QVERIFY(other.save(path.toStdString()));
 
-        ui::LutCompareDialog* dialog = w.compareLut(path);
+        ui::LutCompareDialog* dialog = w.files().compareLut(path);
         QVERIFY(dialog);
         using Pair = std::pair<Colour, Colour>;
         const std::map<Pair, std::size_t> expected = {{{Colour::Unclassified, Colour::Yellow}, 3},
@@ -573,19 +575,19 @@ private slots:
         dialog->setMergeKeepsOthers(false);
         QVERIFY(dialog->merge());
         for (std::uint32_t c : orange)
-            QCOMPARE(w.lutDocument().table().cell(c), Colour::Pink);
-        QCOMPARE(differences(here, w.lutDocument().table()),
+            QCOMPARE(w.session().lut().table().cell(c), Colour::Pink);
+        QCOMPARE(differences(here, w.session().lut().table()),
                  std::set<std::uint32_t>(orange.begin(), orange.end()));
         QCOMPARE(dialog->pairs().size(), std::size_t(2)); // the pink row is gone
-        w.lutDocument().undoStack().undo();
-        QVERIFY(w.lutDocument().table() == here);
+        w.session().lut().undoStack().undo();
+        QVERIFY(w.session().lut().table() == here);
 
         // A table that cannot be read is a message in the window, no dialog.
         QFile bad(m_dir.filePath("bad.lut"));
         QVERIFY(bad.open(QIODevice::WriteOnly));
         bad.write("short");
         bad.close();
-        QVERIFY(!w.compareLut(bad.fileName()));
+        QVERIFY(!w.files().compareLut(bad.fileName()));
         QVERIFY(w.lastMessage().contains("bad.lut"));
     }
 
@@ -593,7 +595,7 @@ private slots:
     {
         MainWindow w;
         QVERIFY(showAndOpen(w));
-        const ColourLut lab = w.lutDocument().table();
+        const ColourLut lab = w.session().lut().table();
         std::size_t samples = 0;
         const ColourShift none = w.lutPanel().estimateRetarget(&samples);
         QCOMPARE(samples, std::size_t(320 * (240 - 160)));
@@ -607,18 +609,18 @@ private slots:
         QVERIFY2(std::abs(back.y - (none.y + 20)) <= 2 && std::abs(back.cb - (none.cb - 8)) <= 2 &&
                      std::abs(back.cr - (none.cr + 8)) <= 2,
                  qPrintable(QString("%1 %2 %3").arg(back.y).arg(back.cb).arg(back.cr)));
-        const int steps = w.lutDocument().undoStack().count();
+        const int steps = w.session().lut().undoStack().count();
         QVERIFY(w.lutPanel().retarget(back));
-        QCOMPARE(w.lutDocument().undoStack().count(), steps + 1);
+        QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         // Green is where the field is again: most of the bottom third classifies green.
-        QVERIFY(waitForLut(w, w.document().lut()));
-        const cv::Mat& classes = w.document().current()->classes;
+        QVERIFY(waitForLut(w, w.session().lut().version()));
+        const cv::Mat& classes = w.session().stream().current()->classes;
         int green = 0;
         for (int y = 160; y < 240; ++y)
             for (int x = 0; x < 320; ++x)
                 green += classes.at<std::uint8_t>(y, x) == std::uint8_t(Colour::Green);
         int green_lab = 0;
-        const cv::Mat& px = w.document().current()->frame.ycbcr;
+        const cv::Mat& px = w.session().stream().current()->frame.ycbcr;
         for (int y = 160; y < 240; ++y)
             for (int x = 0; x < 320; ++x) {
                 const cv::Vec3b c = px.at<cv::Vec3b>(y, x);
@@ -626,9 +628,9 @@ private slots:
             }
         QVERIFY2(green > green_lab * 8 / 10,
                  qPrintable(QString("%1 of %2").arg(green).arg(green_lab)));
-        w.lutDocument().undoStack().undo();
-        w.lutDocument().undoStack().undo();
-        QVERIFY(w.lutDocument().table() == lab);
+        w.session().lut().undoStack().undo();
+        w.session().lut().undoStack().undo();
+        QVERIFY(w.session().lut().table() == lab);
     }
 
     void sampleRegionsAreKeptBesideTheStreamAndBuildTheTable()
@@ -642,18 +644,18 @@ private slots:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QSignalSpy opened(&w, &MainWindow::streamOpened);
-        w.openStream(copy);
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        w.files().openStream(copy);
         QVERIFY(opened.wait(10000));
-        QVERIFY(waitForLut(w, w.document().lut()));
+        QVERIFY(waitForLut(w, w.session().lut().version()));
         showPixelsOneToOne(w);
-        ui::LutSampler& sampler = w.lutPanel().sampler();
+        ui::LutSampler& sampler = w.session().samples();
         QCOMPARE(sampler.path(), copy + "/lut_samples.json");
 
         // A drag with the Sample tool marks a rectangle of the class.
         QTest::keyClick(&w, Qt::Key_S);
-        QCOMPARE(w.lutPanel().tool(), LutTool::Sample);
-        w.lutPanel().setColour(Colour::Green);
+        QCOMPARE(w.tools().active().info().id, QStringLiteral("sample"));
+        w.tools().settings().setColour(Colour::Green);
         QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(QPoint(100, 200)));
         QTest::mouseMove(&w.view(), at(QPoint(120, 215)));
         QTest::mouseMove(&w.view(), at(QPoint(140, 230)));
@@ -661,7 +663,7 @@ private slots:
         QCOMPARE(sampler.samples().samples.size(), std::size_t(1));
         const LutSample& sample = sampler.samples().samples.front();
         QCOMPARE(sample.colour, Colour::Green);
-        QCOMPARE(sample.frame, w.document().current()->frame.name);
+        QCOMPARE(sample.frame, w.session().stream().current()->frame.name);
         const std::vector<cv::Point> corners = {{100, 200}, {140, 200}, {140, 230}, {100, 230}};
         QCOMPARE(sample.polygon, corners);
         auto saved = loadLutSamples(sampler.path().toStdString());
@@ -678,25 +680,25 @@ private slots:
         auto expected = ui::LutSampler::buildTable(copy.toStdString(), sampler.samples(), true,
                                                    nullptr, nullptr, nullptr);
         QVERIFY(expected);
-        const ColourLut before = w.lutDocument().table();
-        const int steps = w.lutDocument().undoStack().count();
+        const ColourLut before = w.session().lut().table();
+        const int steps = w.session().lut().undoStack().count();
         w.findChild<QCheckBox*>("samples.annotations")->setChecked(true);
         QSignalSpy built(&sampler, &ui::LutSampler::built);
         w.lutPanel().buildFromSamples();
         QVERIFY(built.wait(20000));
         QVERIFY2(built.front().front().toBool(), qPrintable(built.front().back().toString()));
-        QVERIFY(w.lutDocument().table() == expected.value().table);
-        QCOMPARE(w.lutDocument().undoStack().count(), steps + 1);
+        QVERIFY(w.session().lut().table() == expected.value().table);
+        QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         QCOMPARE(sampler.ambiguous().size(), expected.value().ambiguous.size());
-        w.lutDocument().undoStack().undo();
-        QVERIFY(w.lutDocument().table() == before);
+        w.session().lut().undoStack().undo();
+        QVERIFY(w.session().lut().table() == before);
 
         // A window opened later finds the samples again.
         MainWindow again;
-        QSignalSpy reopened(&again, &MainWindow::streamOpened);
-        again.openStream(copy);
+        QSignalSpy reopened(&again.files(), &ui::FileCommands::streamOpened);
+        again.files().openStream(copy);
         QVERIFY(reopened.wait(10000));
-        QCOMPARE(again.lutPanel().sampler().samples().samples.size(), std::size_t(1));
+        QCOMPARE(again.session().samples().samples().samples.size(), std::size_t(1));
     }
 };
 

@@ -12,7 +12,10 @@
 #include "ui/document/bookmarks.h"
 #include "ui/document/frame_recorder.h"
 #include "ui/document/lut_sampler.h"
+#include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "ui/panels/bookmarks_panel.h"
+#include "ui/settings/window_settings.h"
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/lut_panel.h"
@@ -59,7 +62,7 @@ QImage viewImage(MainWindow& w)
 {
     w.view().setZoom(1);
     w.view().setImageOrigin({0, 0});
-    const auto& out = w.document().current();
+    const auto& out = w.session().stream().current();
     return w.view()
         .grab()
         .toImage()
@@ -177,13 +180,13 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(openAndWait(w, sampleStream()));
-        QCOMPARE(w.document().frameCount(), std::size_t(30));
+        QCOMPARE(w.session().stream().frameCount(), std::size_t(30));
 
         auto reader = openStream(sampleStream().toStdString());
         QVERIFY(reader.ok());
         auto expectFrame = [&](std::size_t index) {
             QVERIFY2(waitForFrame(w, index), qPrintable(QString::number(index)));
-            QCOMPARE(w.document().currentIndex(), index);
+            QCOMPARE(w.session().stream().currentIndex(), index);
             QCOMPARE(w.navigator().slider()->value(), int(index));
             auto frame = reader.value()->read(index);
             QVERIFY(frame.ok());
@@ -215,9 +218,9 @@ private slots:
     {
         MainWindow w(m_pipeline);
         QVERIFY(openAndWait(w, sampleStream()));
-        QSignalSpy ready(&w.document(), &ui::StreamDocument::frameReady);
+        QSignalSpy ready(&w.session().stream(), &ui::StreamDocument::frameReady);
         for (std::size_t i = 1; i < 30; ++i)
-            w.document().setCurrentIndex(i); // 29 steps without waiting
+            w.session().stream().setCurrentIndex(i); // 29 steps without waiting
         QVERIFY(waitForFrame(w, 29));
         QVERIFY2(ready.count() < 29, qPrintable(QString::number(ready.count())));
         QCOMPARE(w.view().output()->index, std::size_t(29));
@@ -228,7 +231,7 @@ private slots:
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(openAndWait(w, sampleStream()));
-        w.document().setCurrentIndex(4);
+        w.session().stream().setCurrentIndex(4);
         QVERIFY(waitForFrame(w, 4));
         w.layersPanel().setVisibleLayers(selectLayers("all", m_pipeline).value());
         w.view().setLabelsShown(false); // text labels are the window's own, not the render's
@@ -255,14 +258,14 @@ private slots:
         w.show();
         QVERIFY(openAndWait(w, sampleStream()));
         w.view().setLabelsShown(false);
-        const auto out = w.document().current();
+        const auto out = w.session().stream().current();
         const DebugDrawing* box = nullptr;
         for (const DebugDrawing& d : out->drawings)
             if (d.layer == "fake.box")
                 box = &d;
         QVERIFY(box && !box->shapes.empty());
 
-        LayerSet layers = ui::LayersPanel::defaultLayers(w.document().pipeline());
+        LayerSet layers = ui::LayersPanel::defaultLayers(w.session().stream().pipeline());
         layers.erase("fake.box");
         w.layersPanel().setVisibleLayers(layers);
         const QImage without = viewImage(w);
@@ -289,7 +292,7 @@ private slots:
         QCOMPARE(QColor(before.pixel(40, 30)), QColor(12, 200, 34));
 
         w.pipelinePanel().stageBox("fake")->setChecked(false); // the stage's switch
-        QVERIFY(!w.document().stageEnabled("fake"));
+        QVERIFY(!w.session().settings().stageEnabled("fake"));
         QVERIFY(waitForFrame(w, 0));
         for (const QString& row : w.detectionsPanel().topLevelTexts())
             QVERIFY2(!row.startsWith("Fake marks"), qPrintable(row));
@@ -297,11 +300,11 @@ private slots:
         QRect changed;
         QVERIFY(countDifferent(before, after, &changed) > 0);
         QVERIFY(QRect(37, 27, 7, 7).contains(changed)); // only the mark's square went
-        QVERIFY(w.document().current()->result.percepts.list<FakeMark>().empty());
+        QVERIFY(w.session().stream().current()->result.percepts.list<FakeMark>().empty());
 
         w.pipelinePanel().stageBox("fake")->setChecked(true);
         QVERIFY(waitForFrame(w, 0));
-        QCOMPARE(w.document().current()->result.percepts.list<FakeMark>().size(), std::size_t(1));
+        QCOMPARE(w.session().stream().current()->result.percepts.list<FakeMark>().size(), std::size_t(1));
     }
 
     void editingAParameterRerunsTheFrame()
@@ -312,14 +315,14 @@ private slots:
         QVERIFY(level);
         level->setValue(3.5);
         QVERIFY(waitForFrame(w, 0));
-        QCOMPARE(w.document().current()->result.percepts.list<FakeMark>().at(0).value, 3.5);
-        QVERIFY(w.document().paramChanged("fake", "level"));
+        QCOMPARE(w.session().stream().current()->result.percepts.list<FakeMark>().at(0).value, 3.5);
+        QVERIFY(w.session().settings().paramChanged("fake", "level"));
 
         auto* reset = w.pipelinePanel().findChild<QToolButton*>("fake.level.reset");
         QVERIFY(reset && reset->isEnabled());
         reset->click();
         QVERIFY(waitForFrame(w, 0));
-        QCOMPARE(w.document().current()->result.percepts.list<FakeMark>().at(0).value, 1.5);
+        QCOMPARE(w.session().stream().current()->result.percepts.list<FakeMark>().at(0).value, 1.5);
         QCOMPARE(level->value(), 1.5);
         QVERIFY(!reset->isEnabled());
     }
@@ -341,9 +344,9 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(openAndWait(w, sampleStream()));
-        QVERIFY(w.document().setParam("fake", "fault", fault).ok());
+        QVERIFY(w.session().settings().setParam("fake", "fault", fault).ok());
         QVERIFY(waitForFrame(w, 0));
-        const auto out = w.document().current();
+        const auto out = w.session().stream().current();
         QCOMPARE(out->result.diagnostics.size(), std::size_t(1));
         QCOMPARE(out->result.diagnostics[0].stage, std::string("fake"));
         QVERIFY2(QString::fromStdString(out->result.diagnostics[0].message).contains(message),
@@ -374,17 +377,17 @@ private slots:
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(openAndWait(w, stream));
-        QVERIFY(w.document().current()->error.isEmpty());
+        QVERIFY(w.session().stream().current()->error.isEmpty());
         QTest::keyClick(&w, Qt::Key_Right);
         QVERIFY(waitForFrame(w, 1));
-        QVERIFY2(w.document().current()->error.contains("frame_000001.png"),
-                 qPrintable(w.document().current()->error));
+        QVERIFY2(w.session().stream().current()->error.contains("frame_000001.png"),
+                 qPrintable(w.session().stream().current()->error));
         QVERIFY(w.detectionsPanel().topLevelTexts().value(0).startsWith("Frame not processed"));
         (void)w.view().grab(); // paints the error, does not crash
         QTest::keyClick(&w, Qt::Key_Right);
         QVERIFY(waitForFrame(w, 2));
-        QVERIFY(w.document().current()->error.isEmpty());
-        QVERIFY(!w.document().current()->result.percepts.entries().empty());
+        QVERIFY(w.session().stream().current()->error.isEmpty());
+        QVERIFY(!w.session().stream().current()->result.percepts.entries().empty());
     }
 
     void aLiveCameraShowsItsNewestFramesThroughItsOwnDataWrapper()
@@ -404,45 +407,45 @@ private slots:
 
         MainWindow w(m_pipeline);
         w.show();
-        w.document().adopt(std::move(opened));
+        w.session().stream().adopt(std::move(opened));
         QVERIFY(waitForFrame(w, 0));
-        QVERIFY2(w.document().current()->error.isEmpty(),
-                 qPrintable(w.document().current()->error));
-        QVERIFY(w.document().live());
+        QVERIFY2(w.session().stream().current()->error.isEmpty(),
+                 qPrintable(w.session().stream().current()->error));
+        QVERIFY(w.session().stream().live());
         auto* label = w.navigator().findChild<QLabel*>("frame_label");
         QVERIFY(label);
         QVERIFY2(label->text().contains("live"), qPrintable(label->text()));
         QVERIFY(w.detectionsPanel().topLevelTexts().contains("Fake marks (1)"));
 
         // Each step shows a newer camera frame: frames that came meanwhile are skipped.
-        std::size_t last = liveNumber(*w.document().current());
+        std::size_t last = liveNumber(*w.session().stream().current());
         for (std::size_t i = 1; i <= 3; ++i) {
             QTest::qWait(30); // about six camera frames
             QTest::keyClick(&w, Qt::Key_Right);
             QVERIFY(waitForFrame(w, i));
-            const std::size_t now = liveNumber(*w.document().current());
+            const std::size_t now = liveNumber(*w.session().stream().current());
             QVERIFY2(now > last + 1, qPrintable(QStringLiteral("%1 after %2").arg(now).arg(last)));
             last = now;
         }
         // Play runs on the live frames.
         w.navigator().setSpeed(0);
         w.navigator().setPlaying(true);
-        QTRY_VERIFY(w.document().current() && w.document().current()->index >= 8);
+        QTRY_VERIFY(w.session().stream().current() && w.session().stream().current()->index >= 8);
         w.navigator().setPlaying(false);
-        QVERIFY(w.document().current()->error.isEmpty());
+        QVERIFY(w.session().stream().current()->error.isEmpty());
 
         // Recording: every frame shown goes into a stream folder, with the LUT in use.
         const QString folder = m_dir.filePath("recorded");
-        QTRY_VERIFY(!w.document().waiting()); // play's last frame is in
-        QVERIFY(w.recorder().start(folder, *w.document().lut()));
-        QVERIFY(!w.recorder().start(folder, *w.document().lut())); // already recording
+        QTRY_VERIFY(!w.session().stream().waiting()); // play's last frame is in
+        QVERIFY(w.recorder().start(folder, *w.session().lut().version()));
+        QVERIFY(!w.recorder().start(folder, *w.session().lut().version())); // already recording
         std::vector<cv::Mat> shown;
         for (std::size_t i = 0; i < 3; ++i) {
-            const std::uint64_t serial = w.document().lastSerial();
+            const std::uint64_t serial = w.session().stream().lastSerial();
             QTest::qWait(20);
             QTest::keyClick(&w, Qt::Key_Right);
-            QTRY_VERIFY(w.document().current()->serial > serial && !w.document().waiting());
-            shown.push_back(w.document().current()->frame.ycbcr.clone());
+            QTRY_VERIFY(w.session().stream().current()->serial > serial && !w.session().stream().waiting());
+            shown.push_back(w.session().stream().current()->frame.ycbcr.clone());
         }
         QVERIFY(w.recorder().stop());
         QCOMPARE(w.recorder().frames(), std::size_t(3));
@@ -454,9 +457,9 @@ private slots:
             QVERIFY(frame);
             QCOMPARE(cv::norm(frame.value().ycbcr, shown[i], cv::NORM_INF), 0.0);
         }
-        QVERIFY(importLut((folder + "/default.lut").toStdString()).value() == *w.document().lut());
+        QVERIFY(importLut((folder + "/default.lut").toStdString()).value() == *w.session().lut().version());
         // A folder that already holds a recording is not written over.
-        const auto again = w.recorder().start(folder, *w.document().lut());
+        const auto again = w.recorder().start(folder, *w.session().lut().version());
         QVERIFY(!again && QString::fromStdString(again.error().message).contains("recording.strm"));
 
         // Another stream: the camera is closed (on the worker thread).
@@ -468,14 +471,14 @@ private slots:
     {
         MainWindow w(m_pipeline);
         QVERIFY(openAndWait(w, sampleStream()));
-        QSignalSpy opened(&w, &MainWindow::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
         const QString missing = m_dir.filePath("no_such_stream");
-        w.openStream(missing);
+        w.files().openStream(missing);
         QVERIFY(opened.wait(5000));
         QCOMPARE(opened.front().front().toBool(), false);
         QVERIFY2(w.lastMessage().contains(missing), qPrintable(w.lastMessage()));
-        QCOMPARE(w.document().streamSpec(), sampleStream());
-        w.document().setCurrentIndex(3);
+        QCOMPARE(w.session().stream().streamSpec(), sampleStream());
+        w.session().stream().setCurrentIndex(3);
         QVERIFY(waitForFrame(w, 3));
     }
 
@@ -486,16 +489,16 @@ private slots:
         {
             MainWindow w(m_pipeline);
             QVERIFY(openAndWait(w, stream));
-            QVERIFY(w.document().setBookmark(3, "ball lost").ok());
+            w.session().bookmarks().setBookmark(3, w.session().stream().frameName(3), "ball lost");
             QVERIFY(QFileInfo::exists(stream + "/bookmarks.json"));
         }
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(openAndWait(w, stream));
-        QCOMPARE(w.bookmarkList().count(), 1);
-        QVERIFY(w.bookmarkList().item(0)->text().contains("ball lost"));
-        emit w.bookmarkList().itemActivated(w.bookmarkList().item(0));
+        QCOMPARE(w.bookmarksPanel().list().count(), 1);
+        QVERIFY(w.bookmarksPanel().list().item(0)->text().contains("ball lost"));
+        emit w.bookmarksPanel().list().itemActivated(w.bookmarksPanel().list().item(0));
         QVERIFY(waitForFrame(w, 3));
         QTest::keyClick(&w, Qt::Key_Home);
         QVERIFY(waitForFrame(w, 0));
@@ -529,7 +532,7 @@ private slots:
                      w.lastMessage().count("set aside, not overwritten") == 2,
                  qPrintable(w.lastMessage()));
 
-        QVERIFY(w.document().setBookmark(1, "ball lost").ok());
+        w.session().bookmarks().setBookmark(1, w.session().stream().frameName(1), "ball lost");
         QVERIFY2(w.lastMessage().contains("kept as") &&
                      w.lastMessage().contains("bookmarks.json.unreadable"),
                  qPrintable(w.lastMessage()));
@@ -538,7 +541,7 @@ private slots:
         QVERIFY(back.ok());
         QCOMPARE(back.value().list().size(), std::size_t(1));
 
-        ui::LutSampler& sampler = w.lutPanel().sampler();
+        ui::LutSampler& sampler = w.session().samples();
         QCOMPARE(sampler.samples().samples.size(), std::size_t(0));
         sampler.addRect("frame_000000.png", Colour::Green, QRect(10, 200, 20, 10));
         QCOMPARE(contents("lut_samples.json.unreadable"), samples);
@@ -570,10 +573,10 @@ private slots:
         QCOMPARE(w.navigator().speed(), 10);
         QVERIFY(w.navigator().loopAction()->isChecked());
         QCOMPARE(w.size(), QSize(1200, 760));
-        QSignalSpy opened(&w, &MainWindow::streamOpened);
-        w.openLastSession();
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        w.files().openLastSession(ui::WindowSettings::load().stream, ui::WindowSettings::load().lut);
         QVERIFY(opened.wait(5000));
-        QCOMPARE(QFileInfo(w.document().streamSpec()).canonicalFilePath(),
+        QCOMPARE(QFileInfo(w.session().stream().streamSpec()).canonicalFilePath(),
                  QFileInfo(sampleStream()).canonicalFilePath());
     }
 
@@ -592,17 +595,17 @@ private slots:
             MainWindow w(m_pipeline);
             w.show();
             QVERIFY(openAndWait(w, ui::fromLocalPath(folder)));
-            QCOMPARE(ui::toLocalPath(w.document().streamSpec()), folder);
-            QVERIFY(w.lutDocument().saveAs(ui::fromLocalPath(lut)).ok());
+            QCOMPARE(ui::toLocalPath(w.session().stream().streamSpec()), folder);
+            QVERIFY(w.session().lut().saveAs(ui::fromLocalPath(lut)).ok());
             QVERIFY(fs::is_regular_file(lut));
             w.close(); // saves the settings
         }
         MainWindow w(m_pipeline);
-        QSignalSpy opened(&w, &MainWindow::streamOpened);
-        w.openLastSession();
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        w.files().openLastSession(ui::WindowSettings::load().stream, ui::WindowSettings::load().lut);
         QVERIFY(opened.wait(5000));
         QVERIFY(opened.front().front().toBool());
-        QCOMPARE(ui::toLocalPath(w.document().streamSpec()), folder);
+        QCOMPARE(ui::toLocalPath(w.session().stream().streamSpec()), folder);
     }
 };
 

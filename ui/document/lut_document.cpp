@@ -101,7 +101,8 @@ LutDocument::~LutDocument()
 void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path)
 {
     m_table = lut ? *lut : ColourLut();
-    m_version = std::move(lut);
+    m_version = lut;
+    m_saved = std::move(lut);
     m_path = path;
     m_recovered = false;
     m_undo.clear();
@@ -112,7 +113,12 @@ void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& pat
     emit modifiedChanged(false);
 }
 
-std::shared_ptr<const ColourLut> LutDocument::version()
+void LutDocument::revert()
+{
+    reset(m_saved, m_path);
+}
+
+std::shared_ptr<const ColourLut> LutDocument::version() const
 {
     if (!m_version)
         m_version = std::make_shared<const ColourLut>(m_table);
@@ -163,6 +169,7 @@ Status LutDocument::saveAs(const QString& path)
     if (Status s = m_table.save(toLocalPath(path)); !s)
         return s; // the edits stay in memory, and modified
     m_path = path;
+    m_saved = version();
     m_recovered = false;
     m_undo.setClean();
     m_autosave.stop();

@@ -37,9 +37,11 @@ public:
 
     /// A table loaded from `path` (empty: not from a file): clean, with an empty undo stack.
     void reset(std::shared_ptr<const ColourLut> lut, const QString& path);
+    /// Drops the unsaved edits: back to the table as loaded or last saved.
+    void revert();
     const ColourLut& table() const { return m_table; }
     /// The current table as an immutable version for the worker (one copy per change).
-    std::shared_ptr<const ColourLut> version();
+    std::shared_ptr<const ColourLut> version() const;
     QString path() const { return m_path; }
     bool modified() const { return m_recovered || !m_undo.isClean(); }
     QUndoStack& undoStack() { return m_undo; }
@@ -85,7 +87,8 @@ private:
     QString recoveryBase() const;
 
     ColourLut m_table;
-    std::shared_ptr<const ColourLut> m_version;
+    mutable std::shared_ptr<const ColourLut> m_version;
+    std::shared_ptr<const ColourLut> m_saved; ///< as loaded or last saved
     QString m_path;
     QString m_stream;
     QUndoStack m_undo;

@@ -1,6 +1,8 @@
 #include "ui/document/stream_document.h"
 
 #include "ui/adapters/local_path.h"
+#include "ui/document/lut_document.h"
+#include "ui/document/pipeline_settings.h"
 
 #include "visioncore/io/atomic_file.h"
 #include "visioncore/io/lut_import.h"
@@ -19,9 +21,12 @@ std::string local(const QString& s)
 
 } // namespace
 
-StreamDocument::StreamDocument(const Pipeline& pipeline, QObject* parent)
-    : QObject(parent), m_pipeline(pipeline)
+StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
+                               PipelineSettings& settings, QObject* parent)
+    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
 {
+    connect(&m_lut, &LutDocument::changed, this, &StreamDocument::submit);
+    connect(&m_settings, &PipelineSettings::changed, this, &StreamDocument::submit);
     qRegisterMetaType<std::shared_ptr<const FrameOutput>>();
     m_worker = new FrameWorker(pipeline);
     m_worker->moveToThread(&m_thread);
@@ -91,67 +96,15 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
     if (m_stream)
         m_worker->release(std::move(m_stream->source)); // closed on the worker thread
     m_stream = std::move(opened);
+    m_stream->lut.reset(); // the LUT document's now
     m_index = 0;
     m_current.reset();
     m_answered = m_serial;
     m_first_serial = m_serial + 1; // what the worker still does for the stream before is dropped
     resetMeans();
-    m_bookmarks = Bookmarks{};
-    m_bookmarks_unreadable = false;
-    const std::string sidecar = local(bookmarksPath());
-    if (!sidecar.empty()) {
-        auto marks = Bookmarks::load(sidecar);
-        if (marks) {
-            m_bookmarks = std::move(marks).value();
-        } else {
-            m_bookmarks_unreadable = true;
-            m_stream->warnings << QString::fromStdString(marks.error().message) +
-                                      tr(" (it is set aside, not overwritten, when a bookmark is "
-                                         "saved)");
-        }
-    }
     emit streamChanged();
-    emit lutChanged();
-    emit bookmarksChanged();
     emit currentIndexChanged(m_index);
     submit();
-}
-
-Status StreamDocument::open(const QString& spec, const QString& lut)
-{
-    auto opened = openSource(spec, lut, m_pipeline);
-    if (!opened)
-        return opened.error();
-    adopt(std::move(opened).value());
-    return {};
-}
-
-Status StreamDocument::openLut(const QString& path)
-{
-    if (!m_stream)
-        return Error{local(path) + ": open a stream first"};
-    auto table = importLut(local(path));
-    if (!table)
-        return table.error();
-    m_stream->lut = std::make_shared<const ColourLut>(std::move(table).value());
-    m_stream->lut_path = path;
-    emit lutChanged();
-    submit();
-    return {};
-}
-
-void StreamDocument::setEditedLut(std::shared_ptr<const ColourLut> lut)
-{
-    if (!m_stream || !lut || lut == m_stream->lut)
-        return;
-    m_stream->lut = std::move(lut);
-    submit();
-}
-
-void StreamDocument::setLutPath(const QString& path)
-{
-    if (m_stream)
-        m_stream->lut_path = path;
 }
 
 const StreamInfo& StreamDocument::info() const
@@ -193,9 +146,9 @@ void StreamDocument::submit()
     request.serial = ++m_serial;
     request.index = m_index;
     request.source = m_stream->source;
-    request.lut = m_stream->lut;
-    request.params = m_params;
-    request.skip = m_skip;
+    request.lut = m_lut.version();
+    request.params = m_settings.paramVersion();
+    request.skip = m_settings.skippedStages();
     m_worker->submit(std::move(request));
 }
 
@@ -223,132 +176,6 @@ void StreamDocument::resetMeans()
 {
     m_means.clear();
     m_total_mean = {};
-}
-
-Status StreamDocument::setStageEnabled(std::string_view stage_id, bool enabled)
-{
-    if (Status s = checkSkip(m_pipeline, {std::string(stage_id)}); !s)
-        return s;
-    if (enabled == stageEnabled(stage_id))
-        return {};
-    if (enabled)
-        m_skip.erase(m_skip.find(stage_id));
-    else
-        m_skip.insert(std::string(stage_id));
-    emit settingsChanged();
-    submit();
-    return {};
-}
-
-const ParamInfo* StreamDocument::paramInfo(std::string_view stage_id, std::string_view name) const
-{
-    const StageDescriptor* stage = m_pipeline.find(stage_id);
-    if (!stage)
-        return nullptr;
-    for (const ParamInfo& p : stage->params)
-        if (p.name == name)
-            return &p;
-    return nullptr;
-}
-
-double StreamDocument::paramValue(std::string_view stage_id, std::string_view name) const
-{
-    const auto stage = m_params->values.find(stage_id);
-    if (stage != m_params->values.end()) {
-        const auto it = stage->second.find(name);
-        if (it != stage->second.end())
-            return it->second;
-    }
-    const ParamInfo* info = paramInfo(stage_id, name);
-    return info ? info->default_value : 0;
-}
-
-bool StreamDocument::paramChanged(std::string_view stage_id, std::string_view name) const
-{
-    const auto stage = m_params->values.find(stage_id);
-    return stage != m_params->values.end() && stage->second.count(name) != 0;
-}
-
-Status StreamDocument::setParam(std::string_view stage_id, std::string_view name, double value)
-{
-    const ParamInfo* info = paramInfo(stage_id, name);
-    if (!info)
-        return Error{"unknown parameter '" + std::string(stage_id) + "." + std::string(name) + "'"};
-    if (Status s = checkParamValue(*info, stage_id, value); !s)
-        return s;
-    auto next = std::make_shared<ParamSet>(*m_params);
-    if (value == info->default_value) {
-        auto& stage = next->values[std::string(stage_id)];
-        stage.erase(std::string(name));
-        if (stage.empty())
-            next->values.erase(std::string(stage_id));
-    } else {
-        next->set(stage_id, name, value);
-    }
-    m_params = std::move(next);
-    emit settingsChanged();
-    submit();
-    return {};
-}
-
-void StreamDocument::resetParam(std::string_view stage_id, std::string_view name)
-{
-    if (const ParamInfo* info = paramInfo(stage_id, name))
-        (void)setParam(stage_id, name, info->default_value);
-}
-
-void StreamDocument::resetStage(std::string_view stage_id)
-{
-    if (m_params->values.count(stage_id) == 0)
-        return;
-    auto next = std::make_shared<ParamSet>(*m_params);
-    next->values.erase(std::string(stage_id));
-    m_params = std::move(next);
-    emit settingsChanged();
-    submit();
-}
-
-Status StreamDocument::setParamChanges(const ParamSet& params)
-{
-    if (Status s = params.check(m_pipeline); !s)
-        return s;
-    m_params = std::make_shared<ParamSet>(params);
-    emit settingsChanged();
-    submit();
-    return {};
-}
-
-QString StreamDocument::bookmarksPath() const
-{
-    return m_stream ? fromLocalPath(Bookmarks::sidecarPath(local(m_stream->spec))) : QString();
-}
-
-Status StreamDocument::saveBookmarks()
-{
-    emit bookmarksChanged();
-    const std::string path = local(bookmarksPath());
-    if (path.empty())
-        return Error{"a live camera has no file to keep bookmarks beside"};
-    auto saved = saveReplacingUnreadable(path, m_bookmarks_unreadable,
-                                         [&] { return m_bookmarks.save(path); });
-    if (!saved)
-        return Error{saved.error().message + " (the bookmarks are kept until the window closes)"};
-    if (!saved.value().empty())
-        emit notice(QString::fromStdString(saved.value()));
-    return {};
-}
-
-Status StreamDocument::setBookmark(std::size_t frame, const QString& note)
-{
-    m_bookmarks.set({frame, local(frameName(frame)), note.toStdString()});
-    return saveBookmarks();
-}
-
-Status StreamDocument::removeBookmark(std::size_t frame)
-{
-    if (!m_bookmarks.remove(frame))
-        return {};
-    return saveBookmarks();
 }
 
 } // namespace fieldsight::ui

@@ -1,5 +1,6 @@
 #include "ui/frame_view/frame_view.h"
 
+#include "ui/adapters/image_adapter.h"
 #include "ui/adapters/overlay_painter.h"
 
 #include <QElapsedTimer>
@@ -265,10 +266,10 @@ void FrameView::paintEvent(QPaintEvent*)
         }
     }
     // The brush under the cursor: a circle through the outer pixels' centres, in every panel.
-    if (m_tool && m_brush_radius >= 0 && m_cursor_pixel) {
+    if (const int radius = brushRadius(); radius >= 0 && m_cursor_pixel) {
         p.setPen(QPen(Qt::white, 1, Qt::DashLine));
         p.setBrush(Qt::NoBrush);
-        const double r = (m_brush_radius + 0.5) * m_zoom;
+        const double r = (radius + 0.5) * m_zoom;
         for (int panel = 0; panel < panelCount(); ++panel)
             p.drawEllipse(QPointF(panelX(panel) + (m_cursor_pixel->x() + 0.5) * m_zoom,
                                   m_origin.y() + (m_cursor_pixel->y() + 0.5) * m_zoom),
@@ -314,38 +315,64 @@ void FrameView::wheelEvent(QWheelEvent* event)
         setZoom(nextZoomStep(m_zoom, steps), anchor);
 }
 
-void FrameView::setToolActive(bool active)
+void FrameView::setTools(ToolManager* tools)
 {
-    m_tool = active;
-    m_tool_down = false;
-    update();
+    m_tools = tools;
+    if (!tools)
+        return;
+    const auto follow = [this] {
+        m_tool_down = false;
+        setCursor(m_tools->active().cursor());
+        update();
+    };
+    connect(tools, &ToolManager::activeChanged, this, follow);
+    connect(&tools->settings(), &LutToolSettings::changed, this, qOverload<>(&QWidget::update));
+    // What the tool would change, lit in the image (kept across frames until it changes).
+    connect(tools, &ToolManager::previewChanged, this, [this] {
+        const cv::Mat& pixels = m_tools->preview().pixels;
+        setHighlight(QStringLiteral("preview"),
+                     pixels.empty() ? QImage() : maskToQImage(pixels, QColor(255, 0, 255, 150)));
+    });
+    follow();
 }
 
-void FrameView::setBrushRadius(int radius)
+bool FrameView::toolPans() const
 {
-    m_brush_radius = radius;
-    update();
+    return !m_tools || m_tools->active().pans();
+}
+
+int FrameView::brushRadius() const
+{
+    return m_tools ? m_tools->active().outline().brush_radius : -1;
 }
 
 void FrameView::mousePressEvent(QMouseEvent* event)
 {
-    if (m_tool && event->button() == Qt::LeftButton) {
-        if (const std::optional<QPoint> pixel = pixelAt(event->position())) {
-            m_tool_down = true;
-            emit toolPressed(*pixel);
-        }
-        return;
-    }
-    if (m_tool && event->button() == Qt::RightButton) {
-        if (const std::optional<QPoint> pixel = pixelAt(event->position()))
-            emit pixelPicked(*pixel);
-        return;
-    }
-    if ((!m_tool && event->button() == Qt::LeftButton) || event->button() == Qt::MiddleButton) {
+    if (event->button() == Qt::MiddleButton ||
+        (event->button() == Qt::LeftButton && toolPans())) {
         m_drag_from = event->position().toPoint();
         m_drag_origin = m_origin;
         setCursor(Qt::ClosedHandCursor);
+        return;
     }
+    if (!m_tools || toolPans())
+        return;
+    if (const std::optional<QPoint> pixel = pixelAt(event->position())) {
+        if (event->button() == Qt::LeftButton)
+            m_tool_down = true;
+        m_tools->press(toolEvent(event, *pixel));
+    }
+}
+
+ToolEvent FrameView::toolEvent(const QMouseEvent* event, QPoint pixel) const
+{
+    ToolEvent e;
+    e.surface = ToolSurface::Image;
+    e.point = pixel;
+    e.button = event->button();
+    e.buttons = event->buttons();
+    e.modifiers = event->modifiers();
+    return e;
 }
 
 void FrameView::mouseMoveEvent(QMouseEvent* event)
@@ -356,12 +383,14 @@ void FrameView::mouseMoveEvent(QMouseEvent* event)
         update();
     }
     const std::optional<QPoint> pixel = pixelAt(event->position());
-    if (m_tool && m_brush_radius >= 0 && pixel != m_cursor_pixel) {
+    if (brushRadius() >= 0 && pixel != m_cursor_pixel) {
         m_cursor_pixel = pixel;
         update();
     }
-    if (pixel && m_tool_down)
-        emit toolDragged(*pixel);
+    if (pixel && m_tool_down && m_tools)
+        m_tools->move(toolEvent(event, *pixel));
+    if (m_tools)
+        m_tools->hover(pixel);
     if (pixel)
         emit pixelHovered(*pixel);
     else
@@ -370,12 +399,15 @@ void FrameView::mouseMoveEvent(QMouseEvent* event)
 
 void FrameView::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (m_tool_down && event->button() == Qt::LeftButton) {
+    if (m_tool_down && event->button() == Qt::LeftButton && m_tools) {
         m_tool_down = false;
-        emit toolReleased();
+        const std::optional<QPoint> pixel = pixelAt(event->position());
+        m_tools->release(toolEvent(event, pixel.value_or(QPoint(-1, -1))));
     }
-    m_drag_from.reset();
-    setCursor(Qt::CrossCursor);
+    if (m_drag_from) {
+        m_drag_from.reset();
+        setCursor(m_tools ? m_tools->active().cursor() : QCursor(Qt::CrossCursor));
+    }
 }
 
 void FrameView::leaveEvent(QEvent*)
@@ -384,6 +416,8 @@ void FrameView::leaveEvent(QEvent*)
         m_cursor_pixel.reset();
         update();
     }
+    if (m_tools)
+        m_tools->hover(std::nullopt);
     emit hoverLeft();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ui/document/frame_worker.h"
+#include "ui/tools/tool_manager.h"
 #include "visioncore/services/layers.h"
 
 #include <QPoint>
@@ -54,12 +55,9 @@ public:
     std::optional<QPoint> pixelAt(QPointF pos) const;
     /// The detection under widget point `pos`, if any.
     const PerceptItem* itemAt(QPointF pos) const;
-    /// With a tool on (the LUT editor's), the left button applies it (toolPressed, toolDragged,
-    /// toolReleased) and the right button picks (pixelPicked); the middle button still pans.
-    void setToolActive(bool active);
-    bool toolActive() const { return m_tool; }
-    /// The brush outline drawn around the cursor while a tool is on (image px; < 0: none).
-    void setBrushRadius(int radius);
+    /// The tools the mouse reaches: the left and right buttons go to the active tool (unless it
+    /// pans), the middle button always pans; its cursor, outline and preview show here.
+    void setTools(ToolManager* tools);
 
     /// A highlight over the frame, under the overlay: an image of the frame's size, transparent
     /// where nothing is highlighted (a null image removes it). Kept across frames until changed.
@@ -76,10 +74,6 @@ signals:
     void hoverLeft();
     void zoomChanged(double zoom);
     void painted(std::uint64_t serial);
-    void toolPressed(QPoint pixel);
-    void toolDragged(QPoint pixel);
-    void toolReleased();
-    void pixelPicked(QPoint pixel);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -99,6 +93,10 @@ private:
     /// Image coordinates (pixel-centre convention) of widget point `pos`, and its panel.
     std::optional<QPointF> imagePoint(QPointF pos) const;
     void applyFit();
+    bool toolPans() const;
+    /// The active tool's brush outline (image px; < 0: none).
+    int brushRadius() const;
+    ToolEvent toolEvent(const QMouseEvent* event, QPoint pixel) const;
 
     std::shared_ptr<const FrameOutput> m_output;
     LayerSet m_visible;
@@ -110,9 +108,8 @@ private:
     QSize m_last_size;
     std::optional<QPoint> m_drag_from;
     QPoint m_drag_origin;
-    bool m_tool = false;
+    ToolManager* m_tools = nullptr;
     bool m_tool_down = false;
-    int m_brush_radius = -1;
     std::optional<QPoint> m_cursor_pixel; ///< for the brush outline
     std::map<QString, QImage> m_highlights;
     std::uint64_t m_painted_serial = 0;

@@ -34,8 +34,9 @@ int decimalsFor(double step)
 
 } // namespace
 
-PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
-    : QWidget(parent), m_doc(document)
+PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& settings,
+                             QWidget* parent)
+    : QWidget(parent), m_doc(document), m_settings(settings)
 {
     setObjectName(QStringLiteral("pipeline"));
     auto* outer = new QVBoxLayout(this);
@@ -48,7 +49,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
     auto* reset_all = new QPushButton(tr("Reset all"), this);
     reset_all->setToolTip(tr("Every parameter of every stage back to its default"));
     connect(reset_all, &QPushButton::clicked, this, [this] {
-        if (Status s = m_doc.setParamChanges({}); !s)
+        if (Status s = m_settings.setParamChanges({}); !s)
             emit problem(qs(s.error().message));
     });
     top->addWidget(reset_all);
@@ -62,15 +63,15 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
     auto* column = new QVBoxLayout(inner);
     column->setContentsMargins(4, 4, 4, 4);
 
-    for (const StageDescriptor& stage : m_doc.pipeline().descriptors()) {
+    for (const StageDescriptor& stage : m_settings.pipeline().descriptors()) {
         const std::string id = stage.info.id;
         auto* box = new QGroupBox(qs(stage.info.name), inner);
         box->setObjectName(qs(id));
         box->setToolTip(qs(stage.info.description));
         box->setCheckable(stage.info.skippable);
-        box->setChecked(m_doc.stageEnabled(id));
+        box->setChecked(m_settings.stageEnabled(id));
         connect(box, &QGroupBox::toggled, this, [this, id](bool on) {
-            if (Status s = m_doc.setStageEnabled(id, on); !s)
+            if (Status s = m_settings.setStageEnabled(id, on); !s)
                 emit problem(qs(s.error().message));
         });
         auto* form = new QFormLayout(box);
@@ -86,7 +87,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
             ParamWidgets w{id, param, nullptr, {}, nullptr};
             const QString unit = param.unit.empty() ? QString() : ' ' + qs(param.unit);
             auto set = [this, id, name = param.name](double v) {
-                if (Status s = m_doc.setParam(id, name, v); !s)
+                if (Status s = m_settings.setParam(id, name, v); !s)
                     emit problem(qs(s.error().message));
             };
             // Whole numbers that fit an int get a QSpinBox; wider ones (a seed) and reals a
@@ -166,7 +167,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
             reset->setToolTip(tr("Reset to the default (%1)").arg(param.default_value));
             reset->setObjectName(key + ".reset");
             connect(reset, &QToolButton::clicked, this,
-                    [this, id, name = param.name] { m_doc.resetParam(id, name); });
+                    [this, id, name = param.name] { m_settings.resetParam(id, name); });
             w.reset = reset;
             auto* row = new QHBoxLayout;
             row->addWidget(w.editor, 1);
@@ -182,7 +183,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, QWidget* parent)
     scroll->setWidget(inner);
     outer->addWidget(scroll, 1);
 
-    connect(&m_doc, &StreamDocument::settingsChanged, this, &PipelinePanel::refreshValues);
+    connect(&m_settings, &PipelineSettings::changed, this, &PipelinePanel::refreshValues);
     connect(&m_doc, &StreamDocument::frameReady, this, &PipelinePanel::refreshTimes);
     connect(&m_doc, &StreamDocument::streamChanged, this, &PipelinePanel::refreshTimes);
     refreshValues();
@@ -204,9 +205,9 @@ QGroupBox* PipelinePanel::stageBox(const QString& stage_id) const
 void PipelinePanel::refreshValues()
 {
     for (auto& [key, w] : m_params) {
-        const double v = m_doc.paramValue(w.stage, w.info.name);
+        const double v = m_settings.paramValue(w.stage, w.info.name);
         w.show(v);
-        const bool changed = m_doc.paramChanged(w.stage, w.info.name);
+        const bool changed = m_settings.paramChanged(w.stage, w.info.name);
         w.reset->setEnabled(changed);
         QFont f = w.editor->font();
         f.setBold(changed); // a changed value stands out
@@ -214,7 +215,7 @@ void PipelinePanel::refreshValues()
     }
     for (auto& [id, s] : m_stages) {
         QSignalBlocker block(s.box);
-        s.box->setChecked(m_doc.stageEnabled(id));
+        s.box->setChecked(m_settings.stageEnabled(id));
     }
 }
 

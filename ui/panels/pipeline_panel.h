@@ -3,6 +3,7 @@
 // frame and the mean over the frames run.
 #pragma once
 
+#include "ui/document/pipeline_settings.h"
 #include "ui/document/stream_document.h"
 
 #include <QWidget>
@@ -19,7 +20,8 @@ class PipelinePanel : public QWidget
 {
     Q_OBJECT
 public:
-    explicit PipelinePanel(StreamDocument& document, QWidget* parent = nullptr);
+    PipelinePanel(StreamDocument& document, PipelineSettings& settings,
+                  QWidget* parent = nullptr);
 
     /// The editor of a parameter ("<stage id>.<name>"), for tests.
     QWidget* editor(const QString& param) const;
@@ -34,6 +36,7 @@ private:
     void refreshTimes();
 
     StreamDocument& m_doc;
+    PipelineSettings& m_settings;
     struct StageWidgets
     {
         QGroupBox* box = nullptr;

@@ -1,7 +1,7 @@
 #include "ui/panels/uv_plane_panel.h"
 
 #include "ui/adapters/image_adapter.h"
-#include "ui/panels/lut_panel.h"
+#include "ui/tools/tool_manager.h"
 
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -23,8 +23,8 @@ constexpr int kSide = 128; // cells along Cb and along Cr
 
 } // namespace
 
-UvCanvas::UvCanvas(LutDocument& lut, StreamDocument& stream, LutPanel& panel, QWidget* parent)
-    : QWidget(parent), m_lut(lut), m_stream(stream), m_panel(panel)
+UvCanvas::UvCanvas(LutDocument& lut, StreamDocument& stream, ToolManager& tools, QWidget* parent)
+    : QWidget(parent), m_lut(lut), m_stream(stream), m_tools(tools)
 {
     setObjectName(QStringLiteral("uv_canvas"));
     setMinimumSize(120, 120);
@@ -32,6 +32,10 @@ UvCanvas::UvCanvas(LutDocument& lut, StreamDocument& stream, LutPanel& panel, QW
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     connect(&lut, &LutDocument::changed, this, &UvCanvas::refreshPlane);
     connect(&stream, &StreamDocument::frameReady, this, &UvCanvas::refreshScatter);
+    // The cells the image tool would change (or has, mid-stroke) are outlined here.
+    connect(&tools, &ToolManager::previewChanged, this,
+            [this] { setOutlinedCells(m_tools.preview().cells); });
+    connect(&tools, &ToolManager::activeChanged, this, qOverload<>(&QWidget::update));
     refreshPlane();
 }
 
@@ -199,33 +203,25 @@ void UvCanvas::clearSelection()
 
 bool UvCanvas::selecting(Qt::MouseButtons buttons) const
 {
-    return (buttons & Qt::RightButton) ||
-           ((buttons & Qt::LeftButton) && m_panel.tool() == LutTool::Navigate);
+    return (buttons & Qt::RightButton) || ((buttons & Qt::LeftButton) && m_tools.active().pans());
 }
 
-void UvCanvas::dab(QPoint cell)
+bool UvCanvas::toolPaints() const
 {
-    // Every cell the brush passed over since the last event.
-    const QPoint from = m_last_dab.value_or(cell);
-    const int steps = std::max({1, std::abs(cell.x() - from.x()), std::abs(cell.y() - from.y())});
-    std::vector<std::uint32_t> cells;
-    for (int i = m_last_dab ? 1 : 0; i <= steps; ++i) {
-        const int cb = int(std::lround(from.x() + (cell.x() - from.x()) * i / double(steps)));
-        const int cr = int(std::lround(from.y() + (cell.y() - from.y()) * i / double(steps)));
-        const auto disc = cellsInUvDisc(cb, cr, m_panel.brushRadius(), m_y_lo, m_y_hi);
-        cells.insert(cells.end(), disc.begin(), disc.end());
-    }
-    m_last_dab = cell;
-    const bool erase = m_panel.tool() == LutTool::Erase;
-    const Colour colour = erase ? Colour::Unclassified : m_panel.colour();
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    m_lut.edit(
-        erase ? tr("UV erase, Y cells %1-%2").arg(m_y_lo).arg(m_y_hi)
-              : tr("UV paint → %1, Y cells %2-%3").arg(colourLabel(colour)).arg(m_y_lo).arg(m_y_hi),
-        changesTo(m_lut.table(), cells, colour, !erase && m_panel.keepOthers(),
-                  !erase && m_panel.softClasses()),
-        m_stroke);
+    return !m_tools.active().pans() && m_tools.active().accepts(ToolSurface::UvPlane);
+}
+
+ToolEvent UvCanvas::toolEvent(const QMouseEvent* event, QPoint cell) const
+{
+    ToolEvent e;
+    e.surface = ToolSurface::UvPlane;
+    e.point = cell;
+    e.button = event->button();
+    e.buttons = event->buttons();
+    e.modifiers = event->modifiers();
+    e.y_lo = m_y_lo;
+    e.y_hi = m_y_hi;
+    return e;
 }
 
 void UvCanvas::mousePressEvent(QMouseEvent* event)
@@ -240,10 +236,9 @@ void UvCanvas::mousePressEvent(QMouseEvent* event)
         update();
         return;
     }
-    if (event->button() == Qt::LeftButton) {
-        m_stroke = m_lut.newStroke();
-        m_last_dab.reset();
-        dab(*cell);
+    if (event->button() == Qt::LeftButton && toolPaints()) {
+        m_tool_down = true;
+        m_tools.press(toolEvent(event, *cell));
     }
 }
 
@@ -265,19 +260,21 @@ void UvCanvas::mouseMoveEvent(QMouseEvent* event)
         m_select_to = *cell;
         m_selection = CellMask::of(cellsInUvRect(m_select_from->x(), m_select_from->y(), cell->x(),
                                                  cell->y(), m_y_lo, m_y_hi));
-    } else if (cell && m_stroke && (event->buttons() & Qt::LeftButton)) {
-        dab(*cell);
+    } else if (cell && m_tool_down && (event->buttons() & Qt::LeftButton)) {
+        m_tools.move(toolEvent(event, *cell));
     }
     update();
 }
 
-void UvCanvas::mouseReleaseEvent(QMouseEvent*)
+void UvCanvas::mouseReleaseEvent(QMouseEvent* event)
 {
     if (m_select_from && m_selection) {
         emit selectionChanged();
     }
-    m_stroke = 0;
-    m_last_dab.reset();
+    if (m_tool_down && event->button() == Qt::LeftButton) {
+        m_tool_down = false;
+        m_tools.release(toolEvent(event, cellAt(event->position()).value_or(QPoint(-1, -1))));
+    }
 }
 
 void UvCanvas::leaveEvent(QEvent*)
@@ -319,16 +316,15 @@ void UvCanvas::paintEvent(QPaintEvent*)
     p.drawText(labels, Qt::AlignLeft | Qt::AlignTop, tr("↑ Cr"));
     if (m_zoom > 1)
         p.drawText(labels, Qt::AlignRight | Qt::AlignTop, tr("×%1").arg(m_zoom, 0, 'f', 1));
-    const bool painting = m_panel.tool() != LutTool::Navigate;
-    if (painting && m_cursor && r.contains(*m_cursor)) {
+    if (toolPaints() && m_cursor && r.contains(*m_cursor)) {
         p.setPen(QPen(Qt::white, 1, Qt::DashLine));
         p.setBrush(Qt::NoBrush);
-        const double radius = (m_panel.brushRadius() + 0.5) * c;
+        const double radius = (m_tools.settings().brushRadius() + 0.5) * c;
         p.drawEllipse(QPointF(*m_cursor), radius, radius);
     }
 }
 
-UvPlanePanel::UvPlanePanel(LutDocument& lut, StreamDocument& stream, LutPanel& panel,
+UvPlanePanel::UvPlanePanel(LutDocument& lut, StreamDocument& stream, ToolManager& tools,
                            QWidget* parent)
     : QWidget(parent)
 {
@@ -348,7 +344,7 @@ UvPlanePanel::UvPlanePanel(LutDocument& lut, StreamDocument& stream, LutPanel& p
     row->addWidget(m_y_hi);
     row->addStretch(1);
     column->addLayout(row);
-    m_canvas = new UvCanvas(lut, stream, panel, this);
+    m_canvas = new UvCanvas(lut, stream, tools, this);
     column->addWidget(m_canvas, 1);
     m_info = new QLabel(this);
     m_info->setObjectName(QStringLiteral("uv.info"));

@@ -19,14 +19,16 @@ class QSpinBox;
 
 namespace fieldsight::ui {
 
-class LutPanel;
+class ToolManager;
+struct ToolEvent;
 
 /// The plane itself: 128 x 128 cells, Cb to the right, Cr upwards.
 class UvCanvas : public QWidget
 {
     Q_OBJECT
 public:
-    UvCanvas(LutDocument& lut, StreamDocument& stream, LutPanel& panel, QWidget* parent = nullptr);
+    UvCanvas(LutDocument& lut, StreamDocument& stream, ToolManager& tools,
+             QWidget* parent = nullptr);
 
     /// Y range in 7-bit cells, inclusive.
     void setYRange(int lo, int hi);
@@ -67,13 +69,15 @@ private:
     /// zoomed in).
     QRectF planeRect() const;
     bool selecting(Qt::MouseButtons buttons) const;
-    void dab(QPoint cell);
+    /// The active tool paints cells here (the left button reaches it).
+    bool toolPaints() const;
+    ToolEvent toolEvent(const QMouseEvent* event, QPoint cell) const;
     void rebuildPlane();
     void rebuildScatter();
 
     LutDocument& m_lut;
     StreamDocument& m_stream;
-    LutPanel& m_panel;
+    ToolManager& m_tools;
     double m_zoom = 1;
     QPointF m_pan{0, 0}; ///< widget px the plane is moved by
     int m_y_lo = 0;
@@ -86,8 +90,7 @@ private:
     std::optional<CellMask> m_selection;
     std::optional<QPoint> m_select_from; ///< cell where the selection drag began
     std::optional<QPoint> m_select_to;
-    int m_stroke = 0;
-    std::optional<QPoint> m_last_dab;
+    bool m_tool_down = false;
     std::optional<QPoint> m_cursor;
 };
 
@@ -96,7 +99,7 @@ class UvPlanePanel : public QWidget
 {
     Q_OBJECT
 public:
-    UvPlanePanel(LutDocument& lut, StreamDocument& stream, LutPanel& panel,
+    UvPlanePanel(LutDocument& lut, StreamDocument& stream, ToolManager& tools,
                  QWidget* parent = nullptr);
     UvCanvas& canvas() { return *m_canvas; }
     /// Y range in 8-bit levels (shown), inclusive.

@@ -1,10 +1,11 @@
 #include "ui/stream_navigator/stream_navigator.h"
 
+#include "ui/dialogs/dialogs.h"
+
 #include <QAction>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QVBoxLayout>
-#include <QInputDialog>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -148,13 +149,11 @@ void StreamNavigator::askGoTo()
 {
     if (!m_doc.hasStream() || m_doc.live())
         return;
-    bool ok = false;
     const int count = int(m_doc.frameCount());
-    const int frame =
-        QInputDialog::getInt(this, tr("Go to frame"), tr("Frame index (0 to %1):").arg(count - 1),
-                             int(m_doc.currentIndex()), 0, count - 1, 1, &ok);
-    if (ok)
-        goToFrame(std::size_t(frame));
+    if (const auto frame = Dialogs::current().number(this, tr("Go to frame"),
+                                                     tr("Frame index (0 to %1):").arg(count - 1),
+                                                     int(m_doc.currentIndex()), 0, count - 1))
+        goToFrame(std::size_t(*frame));
 }
 
 void StreamNavigator::setPlaying(bool on)

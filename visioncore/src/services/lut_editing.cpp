@@ -91,6 +91,44 @@ std::vector<cv::Point> brushPixels(cv::Point centre, int radius, cv::Size size)
     return pixels;
 }
 
+std::vector<cv::Point> strokePoints(cv::Point from, cv::Point to, bool include_from)
+{
+    std::vector<cv::Point> points;
+    const int steps = std::max({1, std::abs(to.x - from.x), std::abs(to.y - from.y)});
+    if (include_from)
+        points.push_back(from);
+    if (from == to)
+        return include_from ? points : std::vector<cv::Point>{to};
+    for (int i = 1; i <= steps; ++i)
+        points.emplace_back(int(std::lround(from.x + (to.x - from.x) * i / double(steps))),
+                            int(std::lround(from.y + (to.y - from.y) * i / double(steps))));
+    return points;
+}
+
+std::vector<cv::Point> strokePixels(cv::Point from, cv::Point to, int radius, cv::Size size,
+                                    bool include_from)
+{
+    std::vector<cv::Point> pixels;
+    for (const cv::Point& centre : strokePoints(from, to, include_from)) {
+        const auto disc = brushPixels(centre, radius, size);
+        pixels.insert(pixels.end(), disc.begin(), disc.end());
+    }
+    return pixels;
+}
+
+std::vector<std::uint32_t> strokeUvCells(cv::Point from, cv::Point to, int radius, int y_lo,
+                                         int y_hi, bool include_from)
+{
+    std::vector<std::uint32_t> cells;
+    for (const cv::Point& centre : strokePoints(from, to, include_from)) {
+        const auto disc = cellsInUvDisc(centre.x, centre.y, radius, y_lo, y_hi);
+        cells.insert(cells.end(), disc.begin(), disc.end());
+    }
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    return cells;
+}
+
 std::vector<cv::Point> wandPixels(const cv::Mat& ycbcr, cv::Point seed, const Tolerance& tolerance)
 {
     std::vector<cv::Point> pixels;
@@ -171,6 +209,15 @@ std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::u
         changes.push_back({cell, before, after});
     }
     return changes;
+}
+
+std::array<std::size_t, kColourCount> cellsTakenByClass(const std::vector<CellChange>& changes)
+{
+    std::array<std::size_t, kColourCount> taken{};
+    for (const CellChange& c : changes)
+        if (c.before != Colour::Unclassified && std::size_t(c.before) < taken.size())
+            ++taken[std::size_t(c.before)];
+    return taken;
 }
 
 void applyChanges(ColourLut& lut, const std::vector<CellChange>& changes, bool forwards)

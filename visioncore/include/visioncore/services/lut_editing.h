@@ -8,6 +8,7 @@
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -46,6 +47,21 @@ std::vector<std::uint32_t> cellsInUvRect(int cb0, int cr0, int cb1, int cr1, int
 /// `size` image.
 std::vector<cv::Point> brushPixels(cv::Point centre, int radius, cv::Size size);
 
+/// The centres a stroke passes through from `from` to `to`: one per step along the longer axis
+/// (rounded), so a fast drag leaves no gap; `from` itself only with `include_from` (a stroke's
+/// first dab; later pieces start where the one before ended).
+std::vector<cv::Point> strokePoints(cv::Point from, cv::Point to, bool include_from);
+
+/// Every pixel a round brush of `radius` px covers moving from `from` to `to` in a `size` image
+/// (strokePoints, then brushPixels at each; pixels may repeat).
+std::vector<cv::Point> strokePixels(cv::Point from, cv::Point to, int radius, cv::Size size,
+                                    bool include_from);
+
+/// Every cell a UV brush of `radius` cells covers moving from cell `from` to cell `to` (x = Cb,
+/// y = Cr, 7-bit cell coordinates) at every Y cell from `y_lo` to `y_hi`; ascending, no repeats.
+std::vector<std::uint32_t> strokeUvCells(cv::Point from, cv::Point to, int radius, int y_lo,
+                                         int y_hi, bool include_from);
+
 /// The pixels connected (4-neighbours) to `seed` whose Y, Cb and Cr each differ from the seed's by
 /// at most `tolerance` (a magic wand). Empty when the seed is outside the image.
 std::vector<cv::Point> wandPixels(const cv::Mat& ycbcr, cv::Point seed, const Tolerance& tolerance);
@@ -65,6 +81,10 @@ Colour softMeet(Colour existing, Colour wanted);
 /// classes meet become their soft class (softMeet).
 std::vector<CellChange> changesTo(const ColourLut& lut, const std::vector<std::uint32_t>& cells,
                                   Colour colour, bool keep_others = false, bool soft = false);
+
+/// How many of `changes` take a cell from each class (index = colour id; unclassified cells are
+/// not counted): what an edit would take from another class.
+std::array<std::size_t, kColourCount> cellsTakenByClass(const std::vector<CellChange>& changes);
 
 /// Applies `changes` forwards (after) or backwards (before).
 void applyChanges(ColourLut& lut, const std::vector<CellChange>& changes, bool forwards = true);

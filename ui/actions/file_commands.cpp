@@ -1,0 +1,295 @@
+#include "ui/actions/file_commands.h"
+
+#include "ui/adapters/local_path.h"
+#include "ui/dialogs/dialogs.h"
+#include "ui/main_window.h"
+#include "ui/panels/lut_compare_dialog.h"
+#include "ui/widgets/message_bar.h"
+#include "visioncore/io/atomic_file.h"
+#include "visioncore/io/lut_import.h"
+
+#include <QApplication>
+#include <QBuffer>
+#include <QClipboard>
+#include <QDir>
+#include <QFileInfo>
+#include <QMenu>
+#include <QProgressDialog>
+#include <QStatusBar>
+
+namespace fieldsight::ui {
+
+namespace {
+
+constexpr int kMaxRecent = 10;
+
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+
+bool isLutFile(const QString& path)
+{
+    const QString lower = path.toLower();
+    for (std::string_view suffix : importableLutSuffixes())
+        if (lower.endsWith(QString::fromLatin1(suffix.data(), qsizetype(suffix.size()))))
+            return true;
+    return false;
+}
+
+} // namespace
+
+FileCommands::FileCommands(MainWindow& window) : QObject(&window), m_window(window)
+{
+    EditingSession& session = m_window.session();
+    connect(&session, &EditingSession::opened, this, [this](bool ok, const QString& error) {
+        if (m_progress) {
+            m_progress->reset();
+            m_progress->deleteLater();
+            m_progress = nullptr;
+        }
+        if (!ok) {
+            m_window.showMessage(error, !error.contains(tr("was cancelled")));
+            emit streamOpened(false);
+            return;
+        }
+        rememberRecent(m_window.session().stream().streamSpec());
+        if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
+            m_window.showMessage(warnings.join('\n'));
+        else
+            m_window.messageBar().hide();
+        emit streamOpened(true);
+    });
+}
+
+void FileCommands::openStream(const QString& spec, const QString& lut)
+{
+    if (!confirmLutChanges())
+        return;
+    EditingSession& session = m_window.session();
+    if (!session.openStream(spec, lut)) {
+        m_window.showMessage(tr("Still opening %1; wait or cancel it first")
+                                 .arg(session.openingSpec()));
+        return;
+    }
+    m_progress = new QProgressDialog(tr("Opening %1…").arg(spec), tr("Cancel"), 0, 0, &m_window);
+    m_progress->setWindowTitle(tr("Opening stream"));
+    m_progress->setMinimumDuration(400);
+    m_progress->setWindowModality(Qt::WindowModal);
+    connect(m_progress, &QProgressDialog::canceled, &session, &EditingSession::cancelOpening);
+}
+
+bool FileCommands::openLut(const QString& path)
+{
+    if (!confirmLutChanges())
+        return false;
+    if (Status s = m_window.session().openLut(path); !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
+    return true;
+}
+
+void FileCommands::openPath(const QString& path)
+{
+    if (isLutFile(path))
+        openLut(path);
+    else
+        openStream(path);
+}
+
+LutCompareDialog* FileCommands::compareLut(const QString& path)
+{
+    auto other = importLut(toLocalPath(path));
+    if (!other) {
+        m_window.showMessage(qs(other.error().message));
+        return nullptr;
+    }
+    auto* dialog =
+        new LutCompareDialog(m_window.session().lut(), std::move(other).value(), path, &m_window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &LutCompareDialog::cellsChosen, &m_window, &MainWindow::showCompareCells);
+    dialog->show();
+    return dialog;
+}
+
+QString FileCommands::bundledSampleStream()
+{
+    const QString app = QCoreApplication::applicationDirPath();
+    const QStringList candidates{
+        qEnvironmentVariable("FIELDSIGHT_SAMPLE_STREAM"),
+        app + QStringLiteral("/../share/fieldsight/sample_streams/lab1"),
+        app + QStringLiteral("/../../sample_streams/lab1"),
+        app + QStringLiteral("/../sample_streams/lab1"),
+        QStringLiteral(FIELDSIGHT_SOURCE_SAMPLE_STREAMS "/lab1"),
+    };
+    for (const QString& c : candidates)
+        if (isLocalFolder(c))
+            return QDir::cleanPath(QFileInfo(c).absoluteFilePath());
+    return {};
+}
+
+void FileCommands::openLastSession(const QString& stream, const QString& lut)
+{
+    if (localPathExists(stream)) {
+        openStream(stream, localPathExists(lut) ? lut : QString());
+        return;
+    }
+    const QString sample = bundledSampleStream();
+    if (sample.isEmpty()) {
+        m_window.showMessage(tr("The bundled sample stream was not found; open a stream with "
+                                "File > Open stream folder"));
+        return;
+    }
+    openStream(sample);
+}
+
+bool FileCommands::saveLut()
+{
+    LutDocument& lut = m_window.session().lut();
+    if (lut.path().isEmpty() || !lut.path().endsWith(QLatin1String(".lut")))
+        return saveLutAs();
+    if (Status s = lut.save(); !s) {
+        m_window.showMessage(
+            tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));
+        return false;
+    }
+    m_window.showMessage(tr("Saved %1").arg(lut.path()), false);
+    return true;
+}
+
+bool FileCommands::saveLutAs(const QString& given)
+{
+    LutDocument& lut = m_window.session().lut();
+    QString path = given;
+    if (path.isEmpty()) {
+        QString suggestion = lut.path();
+        if (suggestion.isEmpty() || !suggestion.endsWith(QLatin1String(".lut")))
+            suggestion = QFileInfo(m_window.session().stream().streamSpec()).absolutePath() +
+                         "/venue.lut";
+        path = Dialogs::current().saveFile(&m_window, tr("Save LUT as"), suggestion,
+                                           tr("Fieldsight LUT (*.lut)"));
+        if (path.isEmpty())
+            return false;
+    }
+    if (!path.endsWith(QLatin1String(".lut"), Qt::CaseInsensitive))
+        path += QStringLiteral(".lut");
+    if (Status s = lut.saveAs(path); !s) {
+        m_window.showMessage(
+            tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));
+        return false;
+    }
+    m_window.showMessage(tr("Saved %1").arg(path), false);
+    return true;
+}
+
+bool FileCommands::confirmLutChanges()
+{
+    LutDocument& lut = m_window.session().lut();
+    if (!lut.modified())
+        return true;
+    const auto answer = Dialogs::current().question(
+        &m_window, tr("Unsaved LUT edits"),
+        tr("The LUT has edits that are not saved. Save them first?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Save)
+        return saveLut();
+    lut.revert(); // discarded: what loads next replaces it
+    lut.discardRecovery();
+    return true;
+}
+
+void FileCommands::offerRecovery()
+{
+    const std::optional<LutRecovery> r = m_window.session().lut().findRecovery();
+    if (!r) {
+        m_window.recoveryBar().hide();
+        return;
+    }
+    m_window.recoveryBar().offer(
+        tr("Unsaved LUT edits from %1 (%2) were recovered after the last session ended. "
+           "Recover them?")
+            .arg(r->saved_at, r->path.isEmpty() ? tr("a new table") : r->path));
+}
+
+bool FileCommands::recoverLut()
+{
+    LutDocument& lut = m_window.session().lut();
+    const std::optional<LutRecovery> r = lut.findRecovery();
+    m_window.recoveryBar().hide();
+    if (!r)
+        return false;
+    if (Status s = lut.recover(*r); !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
+    m_window.showMessage(tr("Recovered the LUT edits; save them with Ctrl+S"), false);
+    return true;
+}
+
+void FileCommands::discardRecovery()
+{
+    m_window.session().lut().discardRecovery();
+    m_window.recoveryBar().hide();
+}
+
+bool FileCommands::saveSnapshot(const QString& path)
+{
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!m_window.snapshot().save(&buffer, "PNG")) {
+        m_window.showMessage(tr("%1: cannot encode the view as PNG").arg(path));
+        return false;
+    }
+    if (Status s = writeFileAtomically(toLocalPath(path), png.constData(), std::size_t(png.size()));
+        !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
+    m_window.showMessage(tr("Saved the view to %1").arg(path), false);
+    return true;
+}
+
+void FileCommands::copySnapshot()
+{
+    QApplication::clipboard()->setImage(m_window.snapshot());
+    m_window.statusBar()->showMessage(tr("The view is on the clipboard"), 4000);
+}
+
+void FileCommands::setRecent(const QStringList& recent)
+{
+    m_recent = recent.mid(0, kMaxRecent);
+    rebuildRecentMenu();
+}
+
+void FileCommands::setRecentMenu(QMenu* menu)
+{
+    m_recent_menu = menu;
+    rebuildRecentMenu();
+}
+
+void FileCommands::rememberRecent(const QString& spec)
+{
+    const QString path =
+        spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
+    m_recent.removeAll(path);
+    m_recent.prepend(path);
+    while (m_recent.size() > kMaxRecent)
+        m_recent.removeLast();
+    rebuildRecentMenu();
+}
+
+void FileCommands::rebuildRecentMenu()
+{
+    if (!m_recent_menu)
+        return;
+    m_recent_menu->clear();
+    for (const QString& path : m_recent)
+        m_recent_menu->addAction(path, this, [this, path] { openStream(path); });
+    m_recent_menu->setEnabled(!m_recent.isEmpty());
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,76 @@
+// What the File menu does, apart from the window: opening streams in the background (progress,
+// cancel, the stream before stays until the new one is in), opening and comparing tables, saving
+// the table (Save As for one that has no .lut yet), asking before unsaved edits are replaced,
+// offering a crashed session's edits back, the recent streams and snapshots of the view. Every
+// question goes through the Dialogs seam and every error to the window's message bar.
+#pragma once
+
+#include <QObject>
+#include <QStringList>
+
+class QMenu;
+class QProgressDialog;
+
+namespace fieldsight::ui {
+
+class LutCompareDialog;
+class MainWindow;
+
+class FileCommands : public QObject
+{
+    Q_OBJECT
+public:
+    explicit FileCommands(MainWindow& window);
+
+    /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
+    /// before); streamOpened() tells how it went. An error shows in the window.
+    void openStream(const QString& spec, const QString& lut = {});
+    /// Opens the LUT in any importable format; an error shows in the window.
+    bool openLut(const QString& path);
+    /// A dropped or given path: a table by its suffix, else a stream.
+    void openPath(const QString& path);
+    /// Opens the compare-and-merge dialog for the table at `path`; null, with a message in the
+    /// window, when it cannot be read.
+    LutCompareDialog* compareLut(const QString& path);
+    /// Opens `stream` with `lut` if it still exists, else the bundled sample stream.
+    void openLastSession(const QString& stream, const QString& lut);
+    /// The bundled sample stream (sample_streams/lab1), looked for beside the executable, in
+    /// the build tree and in the source tree; empty when not found.
+    static QString bundledSampleStream();
+
+    /// Saves the edited LUT to its file (Save As when it has no .lut file yet); false with a
+    /// message in the window when it could not (the edits stay).
+    bool saveLut();
+    /// Saves the edited LUT to `path` (asks for one when empty).
+    bool saveLutAs(const QString& path = {});
+    /// Asks what to do with unsaved LUT edits (save, discard, cancel); true to go on.
+    bool confirmLutChanges();
+    /// Shows the offer of a recovery file, if one was left.
+    void offerRecovery();
+    /// Loads the recovery file of a session that ended with unsaved LUT edits.
+    bool recoverLut();
+    void discardRecovery();
+
+    /// Saves the view as PNG (atomically); false with a message in the window on failure.
+    bool saveSnapshot(const QString& path);
+    void copySnapshot();
+
+    QStringList recent() const { return m_recent; }
+    void setRecent(const QStringList& recent);
+    /// The Recent streams menu, kept up to date.
+    void setRecentMenu(QMenu* menu);
+
+signals:
+    void streamOpened(bool ok);
+
+private:
+    void rememberRecent(const QString& spec);
+    void rebuildRecentMenu();
+
+    MainWindow& m_window;
+    QProgressDialog* m_progress = nullptr;
+    QStringList m_recent;
+    QMenu* m_recent_menu = nullptr;
+};
+
+} // namespace fieldsight::ui

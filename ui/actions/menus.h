@@ -1,0 +1,31 @@
+// The window's menus, one function per menu, each in its own file: what the window offers and
+// its shortcuts, wired to the session, the tools and the window's commands.
+#pragma once
+
+#include <QKeySequence>
+#include <QMenu>
+#include <QObject>
+
+namespace fieldsight::ui {
+
+class MainWindow;
+
+void addFileMenu(MainWindow& window);
+void addEditMenu(MainWindow& window);
+void addViewMenu(MainWindow& window);
+void addNavigateMenu(MainWindow& window);
+void addPipelineMenu(MainWindow& window);
+void addHelpMenu(MainWindow& window);
+
+/// A menu item with a shortcut, calling `fn` on `receiver`.
+template <class Receiver, class Fn>
+QAction* addMenuItem(QMenu* menu, const QString& text, const QKeySequence& key,
+                     const Receiver* receiver, Fn fn)
+{
+    QAction* action = menu->addAction(text);
+    action->setShortcut(key);
+    QObject::connect(action, &QAction::triggered, receiver, fn);
+    return action;
+}
+
+} // namespace fieldsight::ui

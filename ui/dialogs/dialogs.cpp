@@ -1,0 +1,70 @@
+#include "ui/dialogs/dialogs.h"
+
+#include <QFileDialog>
+#include <QInputDialog>
+
+namespace fieldsight::ui {
+
+namespace {
+
+/// Qt's modal dialogs.
+class QtDialogs final : public Dialogs
+{
+public:
+    QString openFile(QWidget* parent, const QString& title, const QString& dir,
+                     const QString& filter) override
+    {
+        return QFileDialog::getOpenFileName(parent, title, dir, filter);
+    }
+    QString saveFile(QWidget* parent, const QString& title, const QString& suggestion,
+                     const QString& filter) override
+    {
+        return QFileDialog::getSaveFileName(parent, title, suggestion, filter);
+    }
+    QString folder(QWidget* parent, const QString& title, const QString& dir) override
+    {
+        return QFileDialog::getExistingDirectory(parent, title, dir);
+    }
+    std::optional<QString> text(QWidget* parent, const QString& title, const QString& label,
+                                const QString& initial) override
+    {
+        bool ok = false;
+        const QString t =
+            QInputDialog::getText(parent, title, label, QLineEdit::Normal, initial, &ok);
+        return ok ? std::optional<QString>(t) : std::nullopt;
+    }
+    std::optional<int> number(QWidget* parent, const QString& title, const QString& label,
+                              int initial, int min, int max) override
+    {
+        bool ok = false;
+        const int n = QInputDialog::getInt(parent, title, label, initial, min, max, 1, &ok);
+        return ok ? std::optional<int>(n) : std::nullopt;
+    }
+    QMessageBox::StandardButton question(QWidget* parent, const QString& title,
+                                         const QString& text, QMessageBox::StandardButtons buttons,
+                                         QMessageBox::StandardButton preferred) override
+    {
+        return QMessageBox::question(parent, title, text, buttons, preferred);
+    }
+    void information(QWidget* parent, const QString& title, const QString& text) override
+    {
+        QMessageBox::information(parent, title, text);
+    }
+};
+
+QtDialogs g_qt_dialogs;
+Dialogs* g_installed = nullptr;
+
+} // namespace
+
+Dialogs& Dialogs::current()
+{
+    return g_installed ? *g_installed : g_qt_dialogs;
+}
+
+void Dialogs::install(Dialogs* dialogs)
+{
+    g_installed = dialogs;
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,44 @@
+// The one seam every question the window asks goes through: file and folder choosers, text and
+// number prompts, yes/no/cancel questions and notes. The window uses Qt's modal dialogs; a test
+// installs answers of its own (ScriptedDialogs) so it never blocks on a modal box.
+#pragma once
+
+#include <QMessageBox>
+#include <QString>
+
+#include <optional>
+
+class QWidget;
+
+namespace fieldsight::ui {
+
+class Dialogs
+{
+public:
+    virtual ~Dialogs() = default;
+
+    /// The dialogs in use: Qt's own unless a test installed others.
+    static Dialogs& current();
+    /// Installs `dialogs` (not owned; null restores Qt's own).
+    static void install(Dialogs* dialogs);
+
+    /// An empty string when the user cancelled.
+    virtual QString openFile(QWidget* parent, const QString& title, const QString& dir,
+                             const QString& filter) = 0;
+    virtual QString saveFile(QWidget* parent, const QString& title, const QString& suggestion,
+                             const QString& filter) = 0;
+    virtual QString folder(QWidget* parent, const QString& title, const QString& dir) = 0;
+    /// Nothing when the user cancelled.
+    virtual std::optional<QString> text(QWidget* parent, const QString& title,
+                                        const QString& label, const QString& initial) = 0;
+    virtual std::optional<int> number(QWidget* parent, const QString& title, const QString& label,
+                                      int initial, int min, int max) = 0;
+    /// One of `buttons`.
+    virtual QMessageBox::StandardButton question(QWidget* parent, const QString& title,
+                                                 const QString& text,
+                                                 QMessageBox::StandardButtons buttons,
+                                                 QMessageBox::StandardButton preferred) = 0;
+    virtual void information(QWidget* parent, const QString& title, const QString& text) = 0;
+};
+
+} // namespace fieldsight::ui

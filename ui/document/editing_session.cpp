@@ -1,0 +1,138 @@
+#include "ui/document/editing_session.h"
+
+#include "ui/adapters/local_path.h"
+#include "visioncore/io/lut_import.h"
+
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace fieldsight::ui {
+
+EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
+    : QObject(parent), m_pipeline(pipeline)
+{
+    m_lut = new LutDocument(this);
+    m_settings = new PipelineSettings(pipeline, this);
+    m_stream = new StreamDocument(pipeline, *m_lut, *m_settings, this);
+    m_bookmarks = new BookmarksDocument(this);
+    m_samples = new LutSampler(*m_lut, this);
+    m_effect = new EditEffectScan(pipeline, this);
+
+    addUndoDocument(tr("Colour table"), m_lut->undoStack());
+    addUndoDocument(tr("LUT samples"), m_samples->undoStack());
+    addUndoDocument(tr("Pipeline settings"), m_settings->undoStack());
+    addUndoDocument(tr("Bookmarks"), m_bookmarks->undoStack());
+    m_undo_group.setActiveStack(&m_lut->undoStack());
+
+    // The whole-stream scan observes the table and the settings.
+    connect(m_lut, &LutDocument::changed, m_effect,
+            [this] { m_effect->edited(m_lut->editBase(), m_lut->version()); });
+    connect(m_settings, &PipelineSettings::changed, m_effect, [this] {
+        m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
+    });
+
+    connect(m_lut, &LutDocument::problem, this, &EditingSession::problem);
+    connect(m_samples, &LutSampler::problem, this, &EditingSession::problem);
+    connect(m_bookmarks, &BookmarksDocument::problem, this, &EditingSession::problem);
+    connect(m_bookmarks, &BookmarksDocument::notice, this, &EditingSession::notice);
+}
+
+EditingSession::~EditingSession()
+{
+    if (m_open_watcher)
+        m_open_watcher->waitForFinished();
+    for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>())
+        watcher->waitForFinished();
+}
+
+void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
+{
+    m_undo_group.addStack(&stack);
+    m_undo_documents.push_back({name, &stack});
+    // The document edited last is the one Edit > Undo acts on.
+    connect(&stack, &QUndoStack::indexChanged, this, [this, &stack] {
+        if (stack.count() > 0)
+            m_undo_group.setActiveStack(&stack);
+    });
+}
+
+bool EditingSession::openStream(const QString& spec, const QString& lut)
+{
+    if (m_open_watcher)
+        return false;
+    m_opening = spec;
+    m_open_watcher = new QFutureWatcher<Opening>(this);
+    connect(m_open_watcher, &QFutureWatcherBase::finished, this, [this] {
+        const Opening result = m_open_watcher->result();
+        m_open_watcher->deleteLater();
+        m_open_watcher = nullptr;
+        if (!result.stream) {
+            emit opened(false, result.error);
+            return;
+        }
+        adopt(result.stream);
+        emit opened(true, {});
+    });
+    const Pipeline& pipeline = m_pipeline;
+    m_open_watcher->setFuture(QtConcurrent::run([spec, lut, &pipeline] {
+        Opening o;
+        auto stream = StreamDocument::openSource(spec, lut, pipeline);
+        if (stream)
+            o.stream = std::move(stream).value();
+        else
+            o.error = QString::fromStdString(stream.error().message);
+        return o;
+    }));
+    return true;
+}
+
+void EditingSession::cancelOpening()
+{
+    if (!m_open_watcher)
+        return;
+    // The open runs to its end in the background and is dropped.
+    m_open_watcher->disconnect(this);
+    connect(m_open_watcher, &QFutureWatcherBase::finished, m_open_watcher, &QObject::deleteLater);
+    m_open_watcher = nullptr;
+    emit opened(false, tr("Opening %1 was cancelled").arg(m_opening));
+}
+
+Status EditingSession::open(const QString& spec, const QString& lut)
+{
+    auto stream = StreamDocument::openSource(spec, lut, m_pipeline);
+    if (!stream)
+        return stream.error();
+    adopt(std::move(stream).value());
+    return {};
+}
+
+void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
+{
+    m_effect->setStream({}, nullptr); // scanned again once its table is in
+    // Edits are never dropped silently: a table opened under unsaved edits (an open finishing
+    // after a recovery) gives way to the edited one.
+    if (!m_lut->modified())
+        m_lut->reset(opened->lut, opened->lut_path);
+    m_lut->setStream(opened->spec);
+    m_warnings = opened->warnings;
+    const QString spec = opened->spec;
+    m_stream->adopt(std::move(opened));
+    if (Status s = m_bookmarks->setStream(spec); !s)
+        m_warnings << QString::fromStdString(s.error().message);
+    if (Status s = m_samples->setStream(spec); !s)
+        m_warnings << QString::fromStdString(s.error().message);
+    m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
+    m_effect->setStream(spec, m_lut->version());
+}
+
+Status EditingSession::openLut(const QString& path)
+{
+    if (!m_stream->hasStream())
+        return Error{toLocalPath(path) + ": open a stream first"};
+    auto table = importLut(toLocalPath(path));
+    if (!table)
+        return table.error();
+    m_lut->reset(std::make_shared<const ColourLut>(std::move(table).value()), path);
+    return {};
+}
+
+} // namespace fieldsight::ui

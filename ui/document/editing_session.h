@@ -1,0 +1,99 @@
+// One editing session: the open documents, each the single owner of its data (the stream and its
+// frame results, the colour table, the pipeline settings, the bookmarks, the LUT samples; the
+// annotations join them), the observers that follow them (the frame worker inside the stream
+// document, the whole-stream edit-effect scan), and the undo group whose active stack Edit > Undo
+// follows. Opening a stream (in the background) and a table goes through here, so every document
+// changes together.
+#pragma once
+
+#include "ui/document/bookmarks_document.h"
+#include "ui/document/edit_effect_scan.h"
+#include "ui/document/lut_document.h"
+#include "ui/document/lut_sampler.h"
+#include "ui/document/pipeline_settings.h"
+#include "ui/document/stream_document.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QUndoGroup>
+
+#include <vector>
+
+namespace fieldsight::ui {
+
+/// A document with an undo stack, as the history dock lists them.
+struct UndoDocument
+{
+    QString name;
+    QUndoStack* stack = nullptr;
+};
+
+class EditingSession : public QObject
+{
+    Q_OBJECT
+public:
+    explicit EditingSession(const Pipeline& pipeline = Pipeline::standard(),
+                            QObject* parent = nullptr);
+    /// Lets a background open finish first (it reads the pipeline).
+    ~EditingSession() override;
+
+    const Pipeline& pipeline() const { return m_pipeline; }
+    StreamDocument& stream() { return *m_stream; }
+    LutDocument& lut() { return *m_lut; }
+    PipelineSettings& settings() { return *m_settings; }
+    BookmarksDocument& bookmarks() { return *m_bookmarks; }
+    LutSampler& samples() { return *m_samples; }
+    EditEffectScan& effectScan() { return *m_effect; }
+
+    /// Edit > Undo and Redo act on the active stack; the document edited last becomes active.
+    QUndoGroup& undoGroup() { return m_undo_group; }
+    const std::vector<UndoDocument>& undoDocuments() const { return m_undo_documents; }
+
+    /// Opens `spec` in the background (with the table `lut`, or the stream's own); opened()
+    /// tells how it went. False, with the reason in `why`, while another open runs.
+    bool openStream(const QString& spec, const QString& lut = {});
+    /// The same on this thread (tests, scripts); an Error names the file and the problem.
+    Status open(const QString& spec, const QString& lut = {});
+    /// Drops the running open: the stream before stays (the open ends unseen).
+    void cancelOpening();
+    bool opening() const { return m_open_watcher != nullptr; }
+    QString openingSpec() const { return m_opening; }
+    /// Makes an opened stream the session's: every document follows it.
+    void adopt(std::shared_ptr<OpenedStream> opened);
+    /// What the last open could not find or read (the stream still opened).
+    QStringList warnings() const { return m_warnings; }
+
+    /// Loads a table in any importable format as the LUT document's (clean, new history).
+    Status openLut(const QString& path);
+
+signals:
+    /// A background open ended: the stream is in (ok), or `error` says why not (cancelled too).
+    void opened(bool ok, const QString& error);
+    /// A document's problem that is not the failure of a call (a save in a command's redo).
+    void problem(const QString& message);
+    void notice(const QString& message);
+
+private:
+    void addUndoDocument(const QString& name, QUndoStack& stack);
+
+    struct Opening
+    {
+        std::shared_ptr<OpenedStream> stream;
+        QString error;
+    };
+
+    const Pipeline& m_pipeline;
+    LutDocument* m_lut = nullptr;
+    PipelineSettings* m_settings = nullptr;
+    StreamDocument* m_stream = nullptr;
+    BookmarksDocument* m_bookmarks = nullptr;
+    LutSampler* m_samples = nullptr;
+    EditEffectScan* m_effect = nullptr;
+    QUndoGroup m_undo_group;
+    std::vector<UndoDocument> m_undo_documents;
+    QStringList m_warnings;
+    QFutureWatcher<Opening>* m_open_watcher = nullptr;
+    QString m_opening;
+};
+
+} // namespace fieldsight::ui

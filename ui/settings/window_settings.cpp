@@ -1,0 +1,93 @@
+#include "ui/settings/window_settings.h"
+
+#include "ui/adapters/local_path.h"
+
+#include <QSettings>
+
+#include <algorithm>
+
+namespace fieldsight::ui {
+
+namespace {
+
+/// A path as a setting: its exact bytes, since settings files store text as UTF-8.
+QVariant pathSetting(const QString& path)
+{
+    return QByteArray::fromStdString(toLocalPath(path));
+}
+
+/// A path read back from pathSetting() (or a plain string, as older settings hold it).
+QString pathFromSetting(const QVariant& value)
+{
+    return value.typeId() == QMetaType::QByteArray
+               ? fromLocalPath(value.toByteArray().toStdString())
+               : value.toString();
+}
+
+} // namespace
+
+WindowSettings WindowSettings::load()
+{
+    const QSettings s;
+    WindowSettings w;
+    w.geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
+    w.state = s.value(QStringLiteral("window/state")).toByteArray();
+    if (s.contains(QStringLiteral("view/layers"))) {
+        LayerSet layers;
+        for (const QString& id : s.value(QStringLiteral("view/layers")).toStringList())
+            layers.insert(id.toStdString());
+        w.layers = std::move(layers);
+    }
+    w.mode = std::clamp(s.value(QStringLiteral("view/mode"), 0).toInt(), 0, 3);
+    w.labels = s.value(QStringLiteral("view/labels"), true).toBool();
+    w.fps = s.value(QStringLiteral("play/fps"), 30).toInt();
+    w.loop = s.value(QStringLiteral("play/loop"), false).toBool();
+    for (const QVariant& path : s.value(QStringLiteral("recent/streams")).toList())
+        w.recent << pathFromSetting(path);
+    w.stream = pathFromSetting(s.value(QStringLiteral("session/stream")));
+    w.lut = pathFromSetting(s.value(QStringLiteral("session/lut")));
+    w.tool = s.value(QStringLiteral("tools/active")).toString();
+    w.tolerance = {s.value(QStringLiteral("tools/tolerance_y"), 8).toInt(),
+                   s.value(QStringLiteral("tools/tolerance_cb"), 4).toInt(),
+                   s.value(QStringLiteral("tools/tolerance_cr"), 4).toInt()};
+    w.brush_radius = s.value(QStringLiteral("tools/brush_radius"), 2).toInt();
+    w.keep_others = s.value(QStringLiteral("tools/keep_others"), false).toBool();
+    w.soft_classes = s.value(QStringLiteral("tools/soft_classes"), false).toBool();
+    w.preview = s.value(QStringLiteral("tools/preview"), true).toBool();
+    return w;
+}
+
+void WindowSettings::save() const
+{
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), geometry);
+    s.setValue(QStringLiteral("window/state"), state);
+    if (layers) {
+        QStringList list;
+        for (const std::string& id : *layers)
+            list << QString::fromStdString(id);
+        s.setValue(QStringLiteral("view/layers"), list);
+    }
+    s.setValue(QStringLiteral("view/mode"), mode);
+    s.setValue(QStringLiteral("view/labels"), labels);
+    s.setValue(QStringLiteral("play/fps"), fps);
+    s.setValue(QStringLiteral("play/loop"), loop);
+    QVariantList paths;
+    for (const QString& path : recent)
+        paths << pathSetting(path);
+    s.setValue(QStringLiteral("recent/streams"), paths);
+    if (!stream.isEmpty()) {
+        s.setValue(QStringLiteral("session/stream"), pathSetting(stream));
+        s.setValue(QStringLiteral("session/lut"), pathSetting(lut));
+    }
+    s.setValue(QStringLiteral("tools/active"), tool);
+    s.setValue(QStringLiteral("tools/tolerance_y"), tolerance.y);
+    s.setValue(QStringLiteral("tools/tolerance_cb"), tolerance.cb);
+    s.setValue(QStringLiteral("tools/tolerance_cr"), tolerance.cr);
+    s.setValue(QStringLiteral("tools/brush_radius"), brush_radius);
+    s.setValue(QStringLiteral("tools/keep_others"), keep_others);
+    s.setValue(QStringLiteral("tools/soft_classes"), soft_classes);
+    s.setValue(QStringLiteral("tools/preview"), preview);
+}
+
+} // namespace fieldsight::ui

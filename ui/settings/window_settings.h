@@ -1,0 +1,40 @@
+// What the window remembers between sessions, read and written in this one place (QSettings):
+// its geometry and docks, the view's layers and mode, playback, the recent streams, the last
+// stream and table, and the LUT tools' settings.
+#pragma once
+
+#include "visioncore/services/layers.h"
+#include "visioncore/services/lut_editing.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace fieldsight::ui {
+
+struct WindowSettings
+{
+    QByteArray geometry; ///< empty on the first run
+    QByteArray state;
+    std::optional<LayerSet> layers; ///< none: the pipeline's defaults
+    int mode = 0;                   ///< a ViewMode
+    bool labels = true;
+    int fps = 30;
+    bool loop = false;
+    QStringList recent; ///< newest first
+    QString stream;     ///< the last session's stream (empty: none)
+    QString lut;        ///< and its table (empty: the stream's own)
+    QString tool;       ///< the active tool's id
+    Tolerance tolerance{8, 4, 4};
+    int brush_radius = 2;
+    bool keep_others = false;
+    bool soft_classes = false;
+    bool preview = true;
+
+    static WindowSettings load();
+    void save() const;
+};
+
+} // namespace fieldsight::ui

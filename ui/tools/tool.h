@@ -1,0 +1,121 @@
+// A tool: what the left mouse button does in the frame view and the UV plane. The views forward
+// their mouse events to the active tool (ToolManager); a tool edits documents only through their
+// undoable commands, says what it would change under the cursor (its preview), and gives its
+// cursor and the outline drawn around it. Adding a tool is its class and one line in
+// tool_list.cpp.
+#pragma once
+
+#include "visioncore/services/lut_editing.h"
+
+#include <QCursor>
+#include <QKeySequence>
+#include <QObject>
+#include <QPoint>
+#include <QString>
+
+#include <opencv2/core/mat.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace fieldsight::ui {
+
+class EditingSession;
+class LutToolSettings;
+
+/// Where an event happened.
+enum class ToolSurface {
+    Image,   ///< the frame view: `point` is an image pixel
+    UvPlane, ///< the UV plane: `point` is a cell (x = Cb, y = Cr, 7-bit)
+};
+
+struct ToolEvent
+{
+    ToolSurface surface = ToolSurface::Image;
+    QPoint point;
+    Qt::MouseButton button = Qt::NoButton; ///< the button pressed or released (none on a move)
+    Qt::MouseButtons buttons = Qt::NoButton;
+    Qt::KeyboardModifiers modifiers = Qt::NoModifier;
+    int y_lo = 0; ///< the UV plane's Y cells, inclusive
+    int y_hi = 127;
+};
+
+/// What a tool would change at the cursor, or has changed in the stroke so far.
+struct ToolPreview
+{
+    cv::Mat pixels;                   ///< CV_8U mask of the frame's pixels affected (or empty)
+    std::vector<std::uint32_t> cells; ///< LUT cells it would change
+    std::vector<CellChange> changes;  ///< the same, with their classes before and after
+    QString text;                     ///< one line for people (empty when none)
+};
+
+/// Drawn around the cursor.
+struct ToolOutline
+{
+    int brush_radius = -1; ///< image px (UV plane: cells); < 0: no brush outline
+};
+
+/// What the window shows of a tool: its button, menu item and shortcut.
+struct ToolInfo
+{
+    QString id; ///< stable, for settings and tests ("brush")
+    QString name;
+    QString tooltip;
+    QKeySequence shortcut;
+};
+
+/// What every tool may use.
+struct ToolContext
+{
+    EditingSession& session;
+    LutToolSettings& settings;
+};
+
+class Tool : public QObject
+{
+    Q_OBJECT
+public:
+    explicit Tool(ToolContext& context) : m_context(context) {}
+
+    virtual ToolInfo info() const = 0;
+    /// The left button pans the view instead of reaching the tool (and selects in the UV plane).
+    virtual bool pans() const { return false; }
+    virtual bool accepts(ToolSurface surface) const { return surface == ToolSurface::Image; }
+
+    virtual void press(const ToolEvent&) {}
+    /// The mouse moved with a button down.
+    virtual void move(const ToolEvent&) {}
+    virtual void release(const ToolEvent&) {}
+    /// The tool stops being the active one (a stroke in progress ends).
+    virtual void deactivate() {}
+
+    /// What the tool would do at image pixel `pixel` (none: the cursor is off the image).
+    virtual ToolPreview preview(std::optional<QPoint> pixel) const
+    {
+        (void)pixel;
+        return {};
+    }
+    virtual QCursor cursor() const { return Qt::CrossCursor; }
+    virtual ToolOutline outline() const { return {}; }
+
+signals:
+    /// The tool's own preview changed without the cursor moving (a stroke, a rectangle).
+    void previewChanged();
+
+protected:
+    ToolContext& m_context;
+};
+
+using ToolFactory = std::function<std::unique_ptr<Tool>(ToolContext&)>;
+
+template <class T> ToolFactory toolFactory()
+{
+    return [](ToolContext& context) { return std::make_unique<T>(context); };
+}
+
+/// THE tools, in the order of their buttons (tool_list.cpp).
+std::vector<ToolFactory> standardTools();
+
+} // namespace fieldsight::ui

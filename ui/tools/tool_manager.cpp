@@ -1,0 +1,117 @@
+#include "ui/tools/tool_manager.h"
+
+#include "ui/document/editing_session.h"
+
+#include <QAction>
+#include <QActionGroup>
+
+namespace fieldsight::ui {
+
+ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>& tools,
+                         QObject* parent)
+    : QObject(parent), m_session(session), m_context{session, m_settings}
+{
+    m_actions = new QActionGroup(this);
+    m_actions->setExclusive(true);
+    for (const ToolFactory& make : tools) {
+        std::unique_ptr<Tool> tool = make(m_context);
+        const ToolInfo info = tool->info();
+        auto* action = new QAction(info.name, this);
+        action->setObjectName(QStringLiteral("tool.%1").arg(info.id));
+        action->setCheckable(true);
+        action->setShortcut(info.shortcut);
+        action->setToolTip(info.shortcut.isEmpty()
+                               ? info.tooltip
+                               : QStringLiteral("%1 (%2)").arg(
+                                     info.tooltip,
+                                     info.shortcut.toString(QKeySequence::NativeText)));
+        action->setData(info.id);
+        m_actions->addAction(action);
+        connect(action, &QAction::triggered, this, [this, id = info.id] { activate(id); });
+        connect(tool.get(), &Tool::previewChanged, this, [this, t = tool.get()] {
+            if (t == m_active)
+                refreshPreview();
+        });
+        m_tools.push_back(std::move(tool));
+    }
+    if (!m_tools.empty()) {
+        m_active = m_tools.front().get();
+        m_actions->actions().front()->setChecked(true);
+    }
+    // What a tool would change depends on the table, the frame and the shared settings.
+    connect(&m_session.lut(), &LutDocument::changed, this, &ToolManager::refreshPreview);
+    connect(&m_session.stream(), &StreamDocument::frameReady, this, &ToolManager::refreshPreview);
+    connect(&m_settings, &LutToolSettings::changed, this, &ToolManager::refreshPreview);
+}
+
+ToolManager::~ToolManager()
+{
+    blockSignals(true);
+    m_tools.clear();
+}
+
+Tool* ToolManager::find(const QString& id) const
+{
+    for (const auto& tool : m_tools)
+        if (tool->info().id == id)
+            return tool.get();
+    return nullptr;
+}
+
+void ToolManager::activate(const QString& id)
+{
+    Tool* tool = find(id);
+    if (!tool || tool == m_active) {
+        if (tool) // an action unchecked by a click on itself
+            for (QAction* a : m_actions->actions())
+                a->setChecked(a->data().toString() == id);
+        return;
+    }
+    m_active->deactivate();
+    m_active = tool;
+    for (QAction* a : m_actions->actions())
+        a->setChecked(a->data().toString() == id);
+    emit activeChanged();
+    refreshPreview();
+}
+
+QList<QAction*> ToolManager::actions() const
+{
+    return m_actions->actions();
+}
+
+void ToolManager::press(const ToolEvent& event)
+{
+    if (m_active && m_active->accepts(event.surface))
+        m_active->press(event);
+}
+
+void ToolManager::move(const ToolEvent& event)
+{
+    if (m_active && m_active->accepts(event.surface))
+        m_active->move(event);
+}
+
+void ToolManager::release(const ToolEvent& event)
+{
+    if (m_active && m_active->accepts(event.surface))
+        m_active->release(event);
+}
+
+void ToolManager::hover(std::optional<QPoint> pixel)
+{
+    m_hover = pixel;
+    refreshPreview();
+}
+
+void ToolManager::refreshPreview()
+{
+    ToolPreview next = m_active ? m_active->preview(m_hover) : ToolPreview{};
+    if (next.text.isEmpty() && m_preview.text.isEmpty() && next.cells.empty() &&
+        m_preview.cells.empty() && next.pixels.empty() && m_preview.pixels.empty())
+        return; // nothing shown before or now
+    m_preview = std::move(next);
+    emit previewChanged();
+}
+
+} // namespace fieldsight::ui

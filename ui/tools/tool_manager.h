@@ -1,0 +1,65 @@
+// The tools of a window: made from the tool list, one checkable action each (buttons and menu
+// items share them), the active one, and what it would change under the cursor. The frame view
+// and the UV plane forward their mouse events here; the preview follows the cursor, the table,
+// the frame and the shared settings.
+#pragma once
+
+#include "ui/tools/lut_tool_settings.h"
+#include "ui/tools/tool.h"
+
+#include <QObject>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QAction;
+class QActionGroup;
+
+namespace fieldsight::ui {
+
+class ToolManager : public QObject
+{
+    Q_OBJECT
+public:
+    ToolManager(EditingSession& session, const std::vector<ToolFactory>& tools,
+                QObject* parent = nullptr);
+    ~ToolManager() override;
+
+    LutToolSettings& settings() { return m_settings; }
+    const std::vector<std::unique_ptr<Tool>>& tools() const { return m_tools; }
+    Tool* find(const QString& id) const;
+    Tool& active() const { return *m_active; }
+    /// Makes the tool `id` active (unknown ids are ignored); the first tool is active at first.
+    void activate(const QString& id);
+    /// One checkable action per tool, in the tool list's order, with its shortcut.
+    QList<QAction*> actions() const;
+
+    // From the views.
+    void press(const ToolEvent& event);
+    void move(const ToolEvent& event);
+    void release(const ToolEvent& event);
+    /// The cursor is over image pixel `pixel` (none: off the image).
+    void hover(std::optional<QPoint> pixel);
+
+    /// What the active tool would change at the cursor (or has, mid-stroke).
+    const ToolPreview& preview() const { return m_preview; }
+
+signals:
+    void activeChanged();
+    void previewChanged();
+
+private:
+    void refreshPreview();
+
+    EditingSession& m_session;
+    LutToolSettings m_settings;
+    ToolContext m_context;
+    std::vector<std::unique_ptr<Tool>> m_tools;
+    Tool* m_active = nullptr;
+    QActionGroup* m_actions = nullptr;
+    std::optional<QPoint> m_hover;
+    ToolPreview m_preview;
+};
+
+} // namespace fieldsight::ui

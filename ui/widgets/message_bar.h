@@ -1,0 +1,41 @@
+// The bar above the frame where the window says what went wrong (red) or what it did (blue); it
+// stays until closed or replaced, and its text can be selected and copied.
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+
+namespace fieldsight::ui {
+
+class MessageBar : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit MessageBar(QWidget* parent = nullptr);
+    void show(const QString& text, bool error);
+    QString text() const;
+
+private:
+    QLabel* m_text = nullptr;
+};
+
+/// The bar offering what a session that ended without saving left (unsaved edits): a question
+/// and two answers.
+class OfferBar : public QWidget
+{
+    Q_OBJECT
+public:
+    OfferBar(const QString& accept, const QString& decline, QWidget* parent = nullptr);
+    void offer(const QString& question);
+
+signals:
+    void accepted();
+    void declined();
+
+private:
+    QLabel* m_text = nullptr;
+};
+
+} // namespace fieldsight::ui
