@@ -78,8 +78,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
         m_hover.reset();
         m_inspector->clearPixel();
     });
-    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this,
-            &MainWindow::refreshCellHighlights);
+    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshCellHighlights);
     connect(m_lut_panel, &LutPanel::cellsToOutline, &m_uv->canvas(), &UvCanvas::setOutlinedCells);
     // The tool's preview also in the status bar: the editor's own line may be out of sight.
     connect(m_tools, &ToolManager::previewChanged, this, [this] {
@@ -117,8 +116,7 @@ void MainWindow::buildCentre()
     m_navigator = new StreamNavigator(m_session->stream(), central);
     column->addWidget(m_navigator);
     setCentralWidget(central);
-    m_effect_strip =
-        new EffectStrip(m_session->effectScan(), *m_navigator->slider(), m_navigator);
+    m_effect_strip = new EffectStrip(m_session->effectScan(), *m_navigator->slider(), m_navigator);
     m_navigator->addTimelineStrip(m_effect_strip);
     connect(m_effect_strip, &EffectStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
     connect(m_navigator->slider(), &QSlider::valueChanged, m_effect_strip,
@@ -284,9 +282,10 @@ void MainWindow::updateTitle()
     const LutDocument& lut = m_session->lut();
     QString title = QStringLiteral("Fieldsight");
     if (stream.hasStream())
-        title = QStringLiteral("%1 — %2[*] — Fieldsight")
-                    .arg(QFileInfo(stream.streamSpec()).fileName(),
-                         lut.path().isEmpty() ? tr("unsaved LUT") : QFileInfo(lut.path()).fileName());
+        title =
+            QStringLiteral("%1 — %2[*] — Fieldsight")
+                .arg(QFileInfo(stream.streamSpec()).fileName(),
+                     lut.path().isEmpty() ? tr("unsaved LUT") : QFileInfo(lut.path()).fileName());
     setWindowTitle(title);
     setWindowModified(lut.modified());
 }

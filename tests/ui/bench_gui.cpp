@@ -93,7 +93,8 @@ bool waitPainted(MainWindow& w, int timeout_ms = 5000)
     QElapsedTimer clock;
     clock.start();
     while (clock.elapsed() < timeout_ms) {
-        if (!w.session().stream().waiting() && w.view().paintedSerial() >= w.session().stream().lastSerial())
+        if (!w.session().stream().waiting() &&
+            w.view().paintedSerial() >= w.session().stream().lastSerial())
             return true;
         QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
     }
@@ -224,7 +225,8 @@ void benchEdits(const QString& label, const QString& stream, int scans)
         std::printf("%-20s %s edit to whole-stream strip updated: %.2f s (%zu frames, %zu "
                     "changed); longest event-loop stall %.1f ms; steps meanwhile median %.1f ms "
                     "max %.1f ms\n",
-                    qPrintable(label), qPrintable(what), w.session().effectScan().lastScanMs() / 1000.0,
+                    qPrintable(label), qPrintable(what),
+                    w.session().effectScan().lastScanMs() / 1000.0,
                     w.session().effectScan().framesDone(), changed, stall, percentile(steps, 0.5),
                     percentile(steps, 1.0));
     }
@@ -281,7 +283,7 @@ void benchStepping(const QString& label, const QString& stream)
         const StageDescriptor& stage = w.session().stream().pipeline().descriptors().front();
         const ParamInfo& p = stage.params.front();
         (void)w.session().settings().setParam(stage.info.id, p.name,
-                                    i % 2 ? p.default_value : p.default_value + p.step);
+                                              i % 2 ? p.default_value : p.default_value + p.step);
         if (!waitPainted(w))
             break;
         edit_ms.push_back(double(t.nsecsElapsed()) / 1e6);
@@ -400,7 +402,7 @@ int main(int argc, char** argv)
     std::printf("play big.strm fastest: reached frame %zu in %.1f s (%.0f frames/s painted "
                 "or skipped); RSS %.0f MB at start, %.0f MB max (growth %.0f MB)\n",
                 w.session().stream().currentIndex(), double(t.elapsed()) / 1000.0,
-                double(w.session().stream().currentIndex()) * 1000.0 / double(t.elapsed()), rss_start,
-                rss_max, rss_max - rss_start);
+                double(w.session().stream().currentIndex()) * 1000.0 / double(t.elapsed()),
+                rss_start, rss_max, rss_max - rss_start);
     return 0;
 }

@@ -83,7 +83,8 @@ int main(int argc, char** argv)
         }
         w.layersPanel().setVisibleLayers(chosen.value());
     } else {
-        w.layersPanel().setVisibleLayers(ui::LayersPanel::defaultLayers(w.session().stream().pipeline()));
+        w.layersPanel().setVisibleLayers(
+            ui::LayersPanel::defaultLayers(w.session().stream().pipeline()));
     }
     const QString mode = p.value("mode");
     const ui::ViewMode m = mode == "classified" ? ui::ViewMode::Classified
@@ -106,7 +107,8 @@ int main(int argc, char** argv)
     }
     if (p.isSet("hover")) {
         const QStringList xy = p.value("hover").split(',');
-        w.inspector().inspect(w.session().stream().current().get(), QPoint(xy[0].toInt(), xy[1].toInt()));
+        w.inspector().inspect(w.session().stream().current().get(),
+                              QPoint(xy[0].toInt(), xy[1].toInt()));
     }
     for (const QString& name : p.values("dock")) // bring tabbed docks to the front ("lut_dock")
         if (auto* dock = w.findChild<QDockWidget*>(name))

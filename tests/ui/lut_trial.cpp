@@ -34,7 +34,7 @@ namespace {
 
 struct Step
 {
-    int frame; ///< 1-based, as the file names
+    int frame;        ///< 1-based, as the file names
     const char* tool; ///< a tool id
     Colour colour;
     Tolerance tolerance;

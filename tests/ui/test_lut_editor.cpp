@@ -175,8 +175,9 @@ private slots:
 
         // The frame is reclassified with the edited table.
         QVERIFY(waitForLut(w, w.session().lut().version()));
-        QCOMPARE(Colour(w.session().stream().current()->classes.at<std::uint8_t>(pixel.y(), pixel.x())),
-                 Colour::Blue);
+        QCOMPARE(
+            Colour(w.session().stream().current()->classes.at<std::uint8_t>(pixel.y(), pixel.x())),
+            Colour::Blue);
 
         // Right-click picks the class under the cursor.
         QTest::keyClick(&w, Qt::Key_1);

@@ -304,7 +304,8 @@ private slots:
 
         w.pipelinePanel().stageBox("fake")->setChecked(true);
         QVERIFY(waitForFrame(w, 0));
-        QCOMPARE(w.session().stream().current()->result.percepts.list<FakeMark>().size(), std::size_t(1));
+        QCOMPARE(w.session().stream().current()->result.percepts.list<FakeMark>().size(),
+                 std::size_t(1));
     }
 
     void editingAParameterRerunsTheFrame()
@@ -444,7 +445,8 @@ private slots:
             const std::uint64_t serial = w.session().stream().lastSerial();
             QTest::qWait(20);
             QTest::keyClick(&w, Qt::Key_Right);
-            QTRY_VERIFY(w.session().stream().current()->serial > serial && !w.session().stream().waiting());
+            QTRY_VERIFY(w.session().stream().current()->serial > serial &&
+                        !w.session().stream().waiting());
             shown.push_back(w.session().stream().current()->frame.ycbcr.clone());
         }
         QVERIFY(w.recorder().stop());
@@ -457,7 +459,8 @@ private slots:
             QVERIFY(frame);
             QCOMPARE(cv::norm(frame.value().ycbcr, shown[i], cv::NORM_INF), 0.0);
         }
-        QVERIFY(importLut((folder + "/default.lut").toStdString()).value() == *w.session().lut().version());
+        QVERIFY(importLut((folder + "/default.lut").toStdString()).value() ==
+                *w.session().lut().version());
         // A folder that already holds a recording is not written over.
         const auto again = w.recorder().start(folder, *w.session().lut().version());
         QVERIFY(!again && QString::fromStdString(again.error().message).contains("recording.strm"));
@@ -574,7 +577,8 @@ private slots:
         QVERIFY(w.navigator().loopAction()->isChecked());
         QCOMPARE(w.size(), QSize(1200, 760));
         QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
-        w.files().openLastSession(ui::WindowSettings::load().stream, ui::WindowSettings::load().lut);
+        w.files().openLastSession(ui::WindowSettings::load().stream,
+                                  ui::WindowSettings::load().lut);
         QVERIFY(opened.wait(5000));
         QCOMPARE(QFileInfo(w.session().stream().streamSpec()).canonicalFilePath(),
                  QFileInfo(sampleStream()).canonicalFilePath());
@@ -602,7 +606,8 @@ private slots:
         }
         MainWindow w(m_pipeline);
         QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
-        w.files().openLastSession(ui::WindowSettings::load().stream, ui::WindowSettings::load().lut);
+        w.files().openLastSession(ui::WindowSettings::load().stream,
+                                  ui::WindowSettings::load().lut);
         QVERIFY(opened.wait(5000));
         QVERIFY(opened.front().front().toBool());
         QCOMPARE(ui::toLocalPath(w.session().stream().streamSpec()), folder);

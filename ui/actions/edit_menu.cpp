@@ -19,8 +19,8 @@ void addEditMenu(MainWindow& w)
     redo->setObjectName(QStringLiteral("edit.redo"));
     // Both Ctrl+Shift+Z and Ctrl+Y, whatever the platform's own binding is.
     QList<QKeySequence> redo_keys = QKeySequence::keyBindings(QKeySequence::Redo);
-    for (const QKeySequence& key : {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z),
-                                    QKeySequence(Qt::CTRL | Qt::Key_Y)})
+    for (const QKeySequence& key :
+         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)})
         if (!redo_keys.contains(key))
             redo_keys << key;
     redo->setShortcuts(redo_keys);

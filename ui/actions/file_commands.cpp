@@ -68,8 +68,8 @@ void FileCommands::openStream(const QString& spec, const QString& lut)
         return;
     EditingSession& session = m_window.session();
     if (!session.openStream(spec, lut)) {
-        m_window.showMessage(tr("Still opening %1; wait or cancel it first")
-                                 .arg(session.openingSpec()));
+        m_window.showMessage(
+            tr("Still opening %1; wait or cancel it first").arg(session.openingSpec()));
         return;
     }
     m_progress = new QProgressDialog(tr("Opening %1…").arg(spec), tr("Cancel"), 0, 0, &m_window);
@@ -165,8 +165,8 @@ bool FileCommands::saveLutAs(const QString& given)
     if (path.isEmpty()) {
         QString suggestion = lut.path();
         if (suggestion.isEmpty() || !suggestion.endsWith(QLatin1String(".lut")))
-            suggestion = QFileInfo(m_window.session().stream().streamSpec()).absolutePath() +
-                         "/venue.lut";
+            suggestion =
+                QFileInfo(m_window.session().stream().streamSpec()).absolutePath() + "/venue.lut";
         path = Dialogs::current().saveFile(&m_window, tr("Save LUT as"), suggestion,
                                            tr("Fieldsight LUT (*.lut)"));
         if (path.isEmpty())

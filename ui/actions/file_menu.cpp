@@ -105,18 +105,17 @@ void addFileMenu(MainWindow& w)
                 &w, [&] { (void)files.saveLutAs(); });
     files.setRecentMenu(file->addMenu(QObject::tr("Recent streams")));
     file->addSeparator();
-    addMenuItem(file, QObject::tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), &w,
-                [&] {
-                    const QString name =
-                        QStringLiteral("%1_%2.png")
-                            .arg(QFileInfo(session.stream().streamSpec()).completeBaseName())
-                            .arg(session.stream().currentIndex(), 6, 10, QLatin1Char('0'));
-                    const QString path = Dialogs::current().saveFile(
-                        &w, QObject::tr("Save view as PNG"), name,
-                        QObject::tr("PNG images (*.png)"));
-                    if (!path.isEmpty())
-                        files.saveSnapshot(path);
-                });
+    addMenuItem(
+        file, QObject::tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), &w, [&] {
+            const QString name =
+                QStringLiteral("%1_%2.png")
+                    .arg(QFileInfo(session.stream().streamSpec()).completeBaseName())
+                    .arg(session.stream().currentIndex(), 6, 10, QLatin1Char('0'));
+            const QString path = Dialogs::current().saveFile(
+                &w, QObject::tr("Save view as PNG"), name, QObject::tr("PNG images (*.png)"));
+            if (!path.isEmpty())
+                files.saveSnapshot(path);
+        });
     addMenuItem(file, QObject::tr("Copy view"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C),
                 &files, &FileCommands::copySnapshot);
     file->addSeparator();

@@ -38,8 +38,8 @@ void addPipelineMenu(MainWindow& w)
         if (path.isEmpty())
             return;
         auto params = ParamSet::load(toLocalPath(path));
-        Status s = params ? session.settings().setParamChanges(
-                                params.value(), QObject::tr("Load %1").arg(path))
+        Status s = params ? session.settings().setParamChanges(params.value(),
+                                                               QObject::tr("Load %1").arg(path))
                           : Status(params.error());
         if (!s)
             w.showMessage(QString::fromStdString(s.error().message));

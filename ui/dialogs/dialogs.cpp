@@ -40,8 +40,8 @@ public:
         const int n = QInputDialog::getInt(parent, title, label, initial, min, max, 1, &ok);
         return ok ? std::optional<int>(n) : std::nullopt;
     }
-    QMessageBox::StandardButton question(QWidget* parent, const QString& title,
-                                         const QString& text, QMessageBox::StandardButtons buttons,
+    QMessageBox::StandardButton question(QWidget* parent, const QString& title, const QString& text,
+                                         QMessageBox::StandardButtons buttons,
                                          QMessageBox::StandardButton preferred) override
     {
         return QMessageBox::question(parent, title, text, buttons, preferred);

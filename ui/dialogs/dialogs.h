@@ -29,8 +29,8 @@ public:
                              const QString& filter) = 0;
     virtual QString folder(QWidget* parent, const QString& title, const QString& dir) = 0;
     /// Nothing when the user cancelled.
-    virtual std::optional<QString> text(QWidget* parent, const QString& title,
-                                        const QString& label, const QString& initial) = 0;
+    virtual std::optional<QString> text(QWidget* parent, const QString& title, const QString& label,
+                                        const QString& initial) = 0;
     virtual std::optional<int> number(QWidget* parent, const QString& title, const QString& label,
                                       int initial, int min, int max) = 0;
     /// One of `buttons`.

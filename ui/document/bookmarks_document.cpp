@@ -11,8 +11,7 @@ namespace fieldsight::ui {
 class BookmarksCommand : public QUndoCommand
 {
 public:
-    BookmarksCommand(BookmarksDocument& doc, const QString& text, Bookmarks before,
-                     Bookmarks after)
+    BookmarksCommand(BookmarksDocument& doc, const QString& text, Bookmarks before, Bookmarks after)
         : QUndoCommand(text), m_doc(doc), m_before(std::move(before)), m_after(std::move(after))
     {
     }
@@ -83,8 +82,7 @@ void BookmarksDocument::store(const Bookmarks& marks)
         return;
     }
     const std::string path = toLocalPath(m_path);
-    auto saved =
-        saveReplacingUnreadable(path, m_unreadable, [&] { return m_marks.save(path); });
+    auto saved = saveReplacingUnreadable(path, m_unreadable, [&] { return m_marks.save(path); });
     if (!saved)
         emit problem(QString::fromStdString(saved.error().message) +
                      tr(" (the bookmarks are kept until the window closes)"));

@@ -46,8 +46,7 @@ PipelineSettings::~PipelineSettings()
     blockSignals(true); // the stack's last signals do not reach observers being destroyed
 }
 
-const ParamInfo* PipelineSettings::paramInfo(std::string_view stage_id,
-                                             std::string_view name) const
+const ParamInfo* PipelineSettings::paramInfo(std::string_view stage_id, std::string_view name) const
 {
     const StageDescriptor* stage = m_pipeline.find(stage_id);
     if (!stage)
@@ -78,8 +77,8 @@ bool PipelineSettings::paramChanged(std::string_view stage_id, std::string_view 
 
 void PipelineSettings::push(const QString& text, State after, const std::string& merge_key)
 {
-    m_undo.push(new SettingsCommand(*this, text, State{m_params, m_skip}, std::move(after),
-                                    merge_key));
+    m_undo.push(
+        new SettingsCommand(*this, text, State{m_params, m_skip}, std::move(after), merge_key));
 }
 
 void PipelineSettings::store(const State& state)

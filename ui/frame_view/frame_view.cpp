@@ -348,8 +348,7 @@ int FrameView::brushRadius() const
 
 void FrameView::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::MiddleButton ||
-        (event->button() == Qt::LeftButton && toolPans())) {
+    if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && toolPans())) {
         m_drag_from = event->position().toPoint();
         m_drag_origin = m_origin;
         setCursor(Qt::ClosedHandCursor);

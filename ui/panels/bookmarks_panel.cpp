@@ -42,9 +42,9 @@ void BookmarksPanel::markCurrentFrame()
         return;
     const std::size_t frame = m_stream.currentIndex();
     const Bookmark* existing = m_marks.marks().find(frame);
-    const auto note = Dialogs::current().text(
-        this, tr("Bookmark frame %1").arg(frame), tr("Note:"),
-        existing ? QString::fromStdString(existing->note) : QString());
+    const auto note =
+        Dialogs::current().text(this, tr("Bookmark frame %1").arg(frame), tr("Note:"),
+                                existing ? QString::fromStdString(existing->note) : QString());
     if (note)
         m_marks.setBookmark(frame, m_stream.frameName(frame), *note);
 }
@@ -68,11 +68,11 @@ void BookmarksPanel::refresh()
 {
     m_list->clear();
     for (const Bookmark& b : m_marks.marks().list()) {
-        auto* item = new QListWidgetItem(
-            tr("%1  %2")
-                .arg(qulonglong(b.frame), 6)
-                .arg(QString::fromStdString(b.note.empty() ? b.name : b.note)),
-            m_list);
+        auto* item =
+            new QListWidgetItem(tr("%1  %2")
+                                    .arg(qulonglong(b.frame), 6)
+                                    .arg(QString::fromStdString(b.note.empty() ? b.name : b.note)),
+                                m_list);
         item->setData(Qt::UserRole, qulonglong(b.frame));
         item->setToolTip(QString::fromStdString(b.name));
     }

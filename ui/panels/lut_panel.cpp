@@ -103,8 +103,9 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, LutSampler& samples
     };
     for (QSpinBox* box : {m_tol_y, m_tol_cb, m_tol_cr})
         connect(box, &QSpinBox::valueChanged, this, tolerance);
-    connect(m_tol_all, &QSlider::valueChanged, this,
-            [&settings](int v) { settings.setTolerance({v, v, v}); });
+    connect(m_tol_all, &QSlider::valueChanged, this, [&settings](int v) {
+        settings.setTolerance({v, v, v});
+    });
     connect(m_radius, &QSpinBox::valueChanged, &settings, &LutToolSettings::setBrushRadius);
     form->addRow(tr("Tolerance Y"), m_tol_y);
     form->addRow(tr("Tolerance Cb"), m_tol_cb);
@@ -276,9 +277,10 @@ void LutPanel::askRetarget()
     const ColourShift shift = estimateRetarget(&samples);
     const std::size_t cells = shiftChanges(m_lut.table(), shift).size();
     if (cells == 0) {
-        Dialogs::current().information(this, tr("Retarget LUT"),
-                                 tr("The table's green already matches this frame's field (or "
-                                    "the table has no green): nothing to move."));
+        Dialogs::current().information(
+            this, tr("Retarget LUT"),
+            tr("The table's green already matches this frame's field (or "
+               "the table has no green): nothing to move."));
         return;
     }
     const auto answer = Dialogs::current().question(

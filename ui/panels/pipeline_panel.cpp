@@ -34,8 +34,7 @@ int decimalsFor(double step)
 
 } // namespace
 
-PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& settings,
-                             QWidget* parent)
+PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& settings, QWidget* parent)
     : QWidget(parent), m_doc(document), m_settings(settings)
 {
     setObjectName(QStringLiteral("pipeline"));

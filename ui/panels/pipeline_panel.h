@@ -20,8 +20,7 @@ class PipelinePanel : public QWidget
 {
     Q_OBJECT
 public:
-    PipelinePanel(StreamDocument& document, PipelineSettings& settings,
-                  QWidget* parent = nullptr);
+    PipelinePanel(StreamDocument& document, PipelineSettings& settings, QWidget* parent = nullptr);
 
     /// The editor of a parameter ("<stage id>.<name>"), for tests.
     QWidget* editor(const QString& param) const;

@@ -40,8 +40,8 @@ std::optional<PlannedEdit> BrushTool::plan(QPoint pixel) const
     if (!image || pixel.x() < 0 || pixel.y() < 0 || pixel.x() >= image->cols ||
         pixel.y() >= image->rows)
         return std::nullopt;
-    return stroke(brushPixels({pixel.x(), pixel.y()}, m_context.settings.brushRadius(),
-                              image->size()));
+    return stroke(
+        brushPixels({pixel.x(), pixel.y()}, m_context.settings.brushRadius(), image->size()));
 }
 
 void BrushTool::pressImage(QPoint pixel)

@@ -25,13 +25,15 @@ ToolPreview previewOfChanges(std::vector<CellChange> changes, const cv::Mat* fra
     QStringList overlap;
     for (int c = 1; c < kColourCount; ++c)
         if (taken[std::size_t(c)] > 0)
-            overlap << QStringLiteral("%1 %2").arg(taken[std::size_t(c)]).arg(colourLabel(Colour(c)));
+            overlap
+                << QStringLiteral("%1 %2").arg(taken[std::size_t(c)]).arg(colourLabel(Colour(c)));
     p.text = Tool::tr("Here: %1 cells would change, %2 px of this frame")
                  .arg(qsizetype(changes.size()))
                  .arg(p.pixels.empty() ? 0 : cv::countNonZero(p.pixels));
-    p.text += overlap.isEmpty()
-                  ? Tool::tr("; none taken from another class")
-                  : Tool::tr("; taken from another class: %1").arg(overlap.join(QStringLiteral(", ")));
+    p.text +=
+        overlap.isEmpty()
+            ? Tool::tr("; none taken from another class")
+            : Tool::tr("; taken from another class: %1").arg(overlap.join(QStringLiteral(", ")));
     p.changes = std::move(changes);
     return p;
 }
@@ -132,9 +134,8 @@ void LutEditTool::pick(QPoint pixel)
 void LutEditTool::dabUv(const ToolEvent& event)
 {
     const cv::Point cell(event.point.x(), event.point.y());
-    const auto cells = strokeUvCells(m_last.value_or(cell), cell,
-                                     m_context.settings.brushRadius(), event.y_lo, event.y_hi,
-                                     !m_last);
+    const auto cells = strokeUvCells(m_last.value_or(cell), cell, m_context.settings.brushRadius(),
+                                     event.y_lo, event.y_hi, !m_last);
     m_last = cell;
     const Colour colour = target();
     const bool erase = colour == Colour::Unclassified;

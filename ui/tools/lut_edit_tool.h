@@ -46,9 +46,9 @@ protected:
     /// The changes setting `cells` to the target class makes with the shared settings.
     std::vector<CellChange> changesFor(const std::vector<std::uint32_t>& cells, bool erase) const;
 
-    int m_stroke = 0;                                ///< the stroke under way (0: none)
-    std::vector<std::uint32_t> m_stroke_cells;       ///< what it has changed so far
-    std::optional<cv::Point> m_last;                 ///< the stroke's last point
+    int m_stroke = 0;                          ///< the stroke under way (0: none)
+    std::vector<std::uint32_t> m_stroke_cells; ///< what it has changed so far
+    std::optional<cv::Point> m_last;           ///< the stroke's last point
     ToolSurface m_stroke_surface = ToolSurface::Image;
 
 private:

@@ -16,8 +16,7 @@ void LutToolSettings::setTolerance(const Tolerance& t)
 {
     const Tolerance clamped{std::clamp(t.y, 0, 128), std::clamp(t.cb, 0, 128),
                             std::clamp(t.cr, 0, 128)};
-    if (clamped.y == m_tolerance.y && clamped.cb == m_tolerance.cb &&
-        clamped.cr == m_tolerance.cr)
+    if (clamped.y == m_tolerance.y && clamped.cb == m_tolerance.cb && clamped.cr == m_tolerance.cr)
         return;
     m_tolerance = clamped;
     emit changed();

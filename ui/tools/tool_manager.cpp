@@ -20,11 +20,11 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
         action->setObjectName(QStringLiteral("tool.%1").arg(info.id));
         action->setCheckable(true);
         action->setShortcut(info.shortcut);
-        action->setToolTip(info.shortcut.isEmpty()
-                               ? info.tooltip
-                               : QStringLiteral("%1 (%2)").arg(
-                                     info.tooltip,
-                                     info.shortcut.toString(QKeySequence::NativeText)));
+        action->setToolTip(
+            info.shortcut.isEmpty()
+                ? info.tooltip
+                : QStringLiteral("%1 (%2)").arg(info.tooltip,
+                                                info.shortcut.toString(QKeySequence::NativeText)));
         action->setData(info.id);
         m_actions->addAction(action);
         connect(action, &QAction::triggered, this, [this, id = info.id] { activate(id); });

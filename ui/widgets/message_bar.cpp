@@ -51,8 +51,7 @@ QString MessageBar::text() const
     return m_text->text();
 }
 
-OfferBar::OfferBar(const QString& accept, const QString& decline, QWidget* parent)
-    : QWidget(parent)
+OfferBar::OfferBar(const QString& accept, const QString& decline, QWidget* parent) : QWidget(parent)
 {
     setAutoFillBackground(true);
     setColours(this, QColor(255, 244, 200));

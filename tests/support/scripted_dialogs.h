@@ -1,0 +1,81 @@
+// Answers for the window's questions in tests (the Dialogs seam): each kind of question takes the
+// next queued answer; one asked with none queued is recorded and answered as a cancel, so a test
+// never blocks on a modal box and can check what it was asked.
+#pragma once
+
+#include "ui/dialogs/dialogs.h"
+
+#include <QStringList>
+
+#include <deque>
+
+namespace fieldsight::test {
+
+class ScriptedDialogs final : public ui::Dialogs
+{
+public:
+    ScriptedDialogs() { install(this); }
+    ~ScriptedDialogs() override { install(nullptr); }
+
+    std::deque<QString> paths;                       ///< openFile, saveFile, folder
+    std::deque<QString> texts;                       ///< text
+    std::deque<int> numbers;                         ///< number
+    std::deque<QMessageBox::StandardButton> answers; ///< question
+    QStringList asked;                               ///< every title, in order
+    QStringList unanswered;                          ///< titles asked with nothing queued
+
+    QString openFile(QWidget*, const QString& title, const QString&, const QString&) override
+    {
+        return next(paths, title, QString());
+    }
+    QString saveFile(QWidget*, const QString& title, const QString&, const QString&) override
+    {
+        return next(paths, title, QString());
+    }
+    QString folder(QWidget*, const QString& title, const QString&) override
+    {
+        return next(paths, title, QString());
+    }
+    std::optional<QString> text(QWidget*, const QString& title, const QString&,
+                                const QString&) override
+    {
+        asked << title;
+        if (texts.empty()) {
+            unanswered << title;
+            return std::nullopt;
+        }
+        QString t = texts.front();
+        texts.pop_front();
+        return t;
+    }
+    std::optional<int> number(QWidget*, const QString& title, const QString&, int, int,
+                              int) override
+    {
+        if (numbers.empty())
+            return next(numbers, title, std::optional<int>());
+        return next(numbers, title, 0);
+    }
+    QMessageBox::StandardButton question(QWidget*, const QString& title, const QString&,
+                                         QMessageBox::StandardButtons,
+                                         QMessageBox::StandardButton) override
+    {
+        return next(answers, title, QMessageBox::Cancel);
+    }
+    void information(QWidget*, const QString& title, const QString&) override { asked << title; }
+
+private:
+    template <class Queue, class Answer>
+    Answer next(Queue& queue, const QString& title, Answer none)
+    {
+        asked << title;
+        if (queue.empty()) {
+            unanswered << title;
+            return none;
+        }
+        Answer a = queue.front();
+        queue.pop_front();
+        return a;
+    }
+};
+
+} // namespace fieldsight::test

@@ -1,0 +1,310 @@
+// The editing session in the real window, offscreen: one edit of each document kind (the colour
+// table, the LUT samples, a parameter, a stage switch, a bookmark) made as a user makes it, then
+// undone and redone through Edit > Undo and Redo, checking the document's bytes each time; the
+// history dock follows the document edited last; a tool added by this test alone (FakeTool, one
+// registration line) gets its button, menu item and shortcut and receives the view's mouse events;
+// every question goes through the dialogs seam.
+#include "support/fake_stage.h"
+#include "support/fake_tool.h"
+#include "support/scripted_dialogs.h"
+#include "support/synthetic_frames.h"
+#include "support/window_waits.h"
+#include "ui/panels/lut_panel.h"
+#include "ui/panels/pipeline_panel.h"
+#include "ui/stream_navigator/stream_navigator.h"
+#include "visioncore/services/lut_building.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGroupBox>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+using namespace fieldsight;
+using namespace fieldsight::test;
+using fieldsight::ui::MainWindow;
+
+namespace {
+
+QString sampleStream()
+{
+    return QString::fromStdString(sampleStreamsDir() + "/lab1");
+}
+
+QByteArray fileBytes(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+QByteArray lutBytes(MainWindow& w)
+{
+    const ColourLut& t = w.session().lut().table();
+    return QByteArray(reinterpret_cast<const char*>(t.data()), qsizetype(ColourLut::kCells));
+}
+
+QAction* menuAction(MainWindow& w, const char* name)
+{
+    return w.findChild<QAction*>(QString::fromLatin1(name));
+}
+
+/// The widget point of image pixel `p` (the view at zoom 1, image at its top-left corner).
+QPoint at(QPoint p)
+{
+    return p;
+}
+
+} // namespace
+
+class TestSession : public QObject
+{
+    Q_OBJECT
+
+    Pipeline m_pipeline = withFakeStage();
+    QTemporaryDir m_dir;
+
+    QString copyStream(const QString& name)
+    {
+        const QString to = m_dir.filePath(name);
+        QDir().mkpath(to);
+        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
+            if (file.startsWith("frame_") || file == "default.lut")
+                QFile::copy(sampleStream() + "/" + file, to + "/" + file);
+        return to;
+    }
+
+    /// Edit > Undo then Edit > Redo: `bytes` reads the document, `before` and `after` are what
+    /// it must hold after the undo and after the redo.
+    template <class Bytes>
+    bool undoRedo(MainWindow& w, Bytes bytes, const QByteArray& before, const QByteArray& after)
+    {
+        QAction* undo = menuAction(w, "edit.undo");
+        QAction* redo = menuAction(w, "edit.redo");
+        if (!undo || !redo || !undo->isEnabled())
+            return false;
+        undo->trigger();
+        if (bytes() != before)
+            return false;
+        if (!redo->isEnabled())
+            return false;
+        redo->trigger();
+        return bytes() == after;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("FieldsightTest");
+        QCoreApplication::setApplicationName("test_session");
+        QSettings().clear();
+        QVERIFY(m_dir.isValid());
+        if (!QFileInfo(sampleStream()).isDir())
+            QSKIP("the bundled sample streams are missing");
+    }
+
+    void init() { QSettings().clear(); }
+
+    void everyDocumentsEditUndoesAndRedoesThroughTheEditMenu()
+    {
+        const QString stream = copyStream("undo_all");
+        ScriptedDialogs dialogs;
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, stream));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+
+        // The colour table: a click with the Click tool.
+        QTest::keyClick(&w, Qt::Key_C);
+        QCOMPARE(w.tools().active().info().id, QStringLiteral("click"));
+        const QByteArray lut_before = lutBytes(w);
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        const QByteArray lut_after = lutBytes(w);
+        QVERIFY(lut_after != lut_before);
+        QVERIFY(undoRedo(
+            w, [&] { return lutBytes(w); }, lut_before, lut_after));
+
+        // The samples: a rectangle dragged with the Sample tool (saved beside the stream).
+        QTest::keyClick(&w, Qt::Key_S);
+        const QString samples_file = stream + "/lut_samples.json";
+        // The document's bytes, and the file beside the stream holds them after every step.
+        const auto samples = [&] {
+            const QByteArray bytes =
+                QByteArray::fromStdString(lutSamplesToJson(w.session().samples().samples()));
+            return fileBytes(samples_file) == bytes ? bytes : QByteArray("file differs");
+        };
+        const QByteArray samples_before =
+            QByteArray::fromStdString(lutSamplesToJson(w.session().samples().samples()));
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(QPoint(100, 200)));
+        QTest::mouseMove(&w.view(), at(QPoint(130, 220)));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(QPoint(130, 220)));
+        const QByteArray samples_after = samples();
+        QVERIFY(samples_after != samples_before);
+        QVERIFY(undoRedo(w, samples, samples_before, samples_after));
+
+        // A parameter: the fake stage's level in the pipeline panel.
+        const auto params = [&] {
+            return QByteArray::fromStdString(w.session().settings().paramChanges().toJson());
+        };
+        const QByteArray params_before = params();
+        auto* level = qobject_cast<QDoubleSpinBox*>(w.pipelinePanel().editor("fake.level"));
+        QVERIFY(level);
+        level->setValue(level->value() + 1.5);
+        const QByteArray params_after = params();
+        QVERIFY(params_after != params_before);
+        QVERIFY(undoRedo(w, params, params_before, params_after));
+        QCOMPARE(level->value(), w.session().settings().paramValue("fake", "level"));
+
+        // A stage switch: the fake stage's box.
+        const auto switches = [&] {
+            QByteArray b;
+            for (const std::string& id : w.session().settings().skippedStages())
+                b += QByteArray::fromStdString(id) + ';';
+            return b;
+        };
+        const QByteArray skip_before = switches();
+        w.pipelinePanel().stageBox("fake")->setChecked(false);
+        const QByteArray skip_after = switches();
+        QCOMPARE(skip_after, QByteArray("fake;"));
+        QVERIFY(undoRedo(w, switches, skip_before, skip_after));
+        QVERIFY(!w.pipelinePanel().stageBox("fake")->isChecked());
+
+        // A bookmark: Navigate > Bookmark this frame, its note answered through the seam.
+        const QString marks_file = stream + "/bookmarks.json";
+        const auto marks = [&] {
+            const QByteArray bytes =
+                QByteArray::fromStdString(w.session().bookmarks().marks().toJson());
+            return fileBytes(marks_file) == bytes ? bytes : QByteArray("file differs");
+        };
+        const QByteArray marks_before =
+            QByteArray::fromStdString(w.session().bookmarks().marks().toJson());
+        dialogs.texts.push_back(QStringLiteral("ball lost"));
+        QTest::keyClick(&w, Qt::Key_B, Qt::ControlModifier);
+        QVERIFY(dialogs.unanswered.isEmpty());
+        const QByteArray marks_after = marks();
+        QVERIFY(marks_after.contains("ball lost"));
+        QVERIFY(undoRedo(w, marks, marks_before, marks_after));
+    }
+
+    void undoFollowsTheDocumentEditedLast()
+    {
+        ScriptedDialogs dialogs;
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, copyStream("follow")));
+        auto* documents = w.findChild<QComboBox*>("history.document");
+        QVERIFY(documents);
+        w.tools().activate(QStringLiteral("click"));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QCOMPARE(w.session().undoGroup().activeStack(), &w.session().lut().undoStack());
+        QCOMPARE(documents->currentText(), QStringLiteral("Colour table"));
+        QVERIFY(w.session().settings().setParam("fake", "level", 4).ok());
+        QCOMPARE(w.session().undoGroup().activeStack(), &w.session().settings().undoStack());
+        QCOMPARE(documents->currentText(), QStringLiteral("Pipeline settings"));
+        // Undo now takes back the parameter, not the click; choosing the table in the dock
+        // makes Undo take back the click.
+        const QByteArray edited = lutBytes(w);
+        menuAction(w, "edit.undo")->trigger();
+        QCOMPARE(w.session().settings().paramValue("fake", "level"),
+                 m_pipeline.find("fake")->params.front().default_value);
+        QCOMPARE(lutBytes(w), edited);
+        documents->setCurrentIndex(0);
+        emit documents->activated(0);
+        menuAction(w, "edit.undo")->trigger();
+        QVERIFY(lutBytes(w) != edited);
+        QVERIFY(!w.session().lut().modified());
+    }
+
+    void aToolAddedByOneLineGetsItsButtonMenuItemAndEvents()
+    {
+        std::vector<ui::ToolFactory> tools = ui::standardTools();
+        tools.push_back(ui::toolFactory<FakeTool>()); // the line tool_list.cpp would get
+        MainWindow w(m_pipeline, tools);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, copyStream("fake_tool")));
+        // Its button in the LUT editor and its item in Edit > Tool, with its shortcut.
+        QVERIFY(w.lutPanel().findChild<QToolButton*>("tool.fake"));
+        bool in_menu = false;
+        for (QMenu* menu : w.menuBar()->findChildren<QMenu*>())
+            for (QAction* a : menu->actions())
+                in_menu = in_menu || (a->objectName() == "tool.fake" && menu->title() == "Tool");
+        QVERIFY(in_menu);
+        QTest::keyClick(&w, Qt::Key_K);
+        QCOMPARE(w.tools().active().info().id, QStringLiteral("fake"));
+
+        // The view forwards the mouse; the tool's preview shows in the view and the status bar.
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        FakeTool::presses = FakeTool::moves = FakeTool::releases = 0;
+        QTest::mouseMove(&w.view(), at(QPoint(40, 30)));
+        QTRY_COMPARE(w.tools().preview().text, QStringLiteral("Fake at 40,30"));
+        QCOMPARE(w.statusBar()->currentMessage(), QStringLiteral("Fake at 40,30"));
+        const QImage& lit = w.view().highlight(QStringLiteral("preview"));
+        QVERIFY(!lit.isNull());
+        QVERIFY(qAlpha(lit.pixel(40, 30)) > 0);
+        QCOMPARE(qAlpha(lit.pixel(44, 30)), 0);
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(QPoint(40, 30)));
+        QTest::mouseMove(&w.view(), at(QPoint(45, 32)));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(QPoint(45, 32)));
+        QCOMPARE(FakeTool::presses, 1);
+        QVERIFY(FakeTool::moves >= 1);
+        QCOMPARE(FakeTool::releases, 1);
+        // Its edit is a command: in the bookmarks, undone by Edit > Undo.
+        const ui::Bookmark* mark = w.session().bookmarks().marks().find(0);
+        QVERIFY(mark);
+        QCOMPARE(QString::fromStdString(mark->note), QStringLiteral("fake at 40,30"));
+        menuAction(w, "edit.undo")->trigger();
+        QVERIFY(!w.session().bookmarks().marks().find(0));
+
+        // The pan tool does not reach it.
+        w.tools().activate(QStringLiteral("pan"));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(40, 30)));
+        QCOMPARE(FakeTool::presses, 1);
+    }
+
+    void questionsGoThroughTheDialogsSeam()
+    {
+        ScriptedDialogs dialogs;
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, copyStream("seam")));
+        dialogs.numbers.push_back(1);
+        QTest::keyClick(&w, Qt::Key_G, Qt::ControlModifier);
+        QVERIFY(waitForFrame(w, 1));
+        QCOMPARE(dialogs.asked.last(), QStringLiteral("Go to frame"));
+
+        // Unsaved table edits: opening another stream asks first; Cancel keeps everything.
+        w.tools().activate(QStringLiteral("click"));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QVERIFY(w.session().lut().modified());
+        const QString before = w.session().stream().streamSpec();
+        dialogs.answers.push_back(QMessageBox::Cancel);
+        w.files().openStream(copyStream("seam_other"));
+        QCOMPARE(dialogs.asked.last(), QStringLiteral("Unsaved LUT edits"));
+        QVERIFY(!w.session().opening());
+        QCOMPARE(w.session().stream().streamSpec(), before);
+        QVERIFY(w.session().lut().modified());
+        QVERIFY(dialogs.unanswered.isEmpty());
+        // Discard: the other stream opens with its own table, clean.
+        dialogs.answers.push_back(QMessageBox::Discard);
+        QVERIFY(openAndWait(w, copyStream("seam_other")));
+        QVERIFY(!w.session().lut().modified());
+        QVERIFY(dialogs.unanswered.isEmpty());
+    }
+};
+
+QTEST_MAIN(TestSession)
+#include "test_session.moc"
