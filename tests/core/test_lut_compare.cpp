@@ -107,8 +107,8 @@ private slots:
         before.output<Ball>() = {{100, 100, 10}, {200, 50, 4}};
         after.output<Ball>() = {{102, 101, 10}, {20, 20, 5}}; // one moved a little, one new
         const DetectionDelta d = compareDetections(before, after, 320, 240);
-        QCOMPARE(d.balls_appeared, 1);
-        QCOMPARE(d.balls_vanished, 1);
+        QCOMPARE(d.of("balls").appeared, 1);
+        QCOMPARE(d.of("balls").vanished, 1);
         QCOMPARE(d.appeared(), 1);
         QCOMPARE(compareDetections(before, before, 320, 240), DetectionDelta{});
     }

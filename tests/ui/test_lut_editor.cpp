@@ -402,11 +402,14 @@ private slots:
         int balls = 0;
         for (const FrameResult& r : run.value().frames) {
             const int n = int(r.percepts.list<Ball>().size());
-            QCOMPARE(scan.effects()[r.index].delta.balls_vanished, n);
-            QCOMPARE(scan.effects()[r.index].delta.balls_appeared, 0);
+            QCOMPARE(scan.effects()[r.index].delta.of("balls").vanished, n);
+            QCOMPARE(scan.effects()[r.index].delta.of("balls").appeared, 0);
             balls += n;
         }
         QVERIFY(balls > 0);
+        // The status line names the kind as before the delta was keyed by kind: "−3 ball".
+        QVERIFY2(w.effectStrip().summary().contains(QStringLiteral("−%1 ball").arg(balls)),
+                 qPrintable(w.effectStrip().summary()));
 
         // A click on the strip goes to that frame.
         ui::EffectStrip& strip = w.effectStrip();

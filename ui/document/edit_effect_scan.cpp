@@ -2,37 +2,12 @@
 
 #include "ui/adapters/local_path.h"
 
-#include "visioncore/services/lut_compare.h"
-
 #include <QMetaObject>
-
-#ifdef __linux__
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
 
 namespace fieldsight::ui {
 
-namespace {
-
-/// The scan yields to the window and its frame worker: its threads run at a lower priority
-/// (nice 10 on Linux; the threads end with the scan).
-void lowerThreadPriority()
-{
-#ifdef __linux__
-    thread_local bool lowered = false;
-    if (!lowered) {
-        lowered = true;
-        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
-    }
-#endif
-}
-
-} // namespace
-
 EditEffectScan::EditEffectScan(const Pipeline& pipeline, QObject* parent)
-    : QObject(parent), m_pipeline(pipeline)
+    : QObject(parent), m_scanner(pipeline)
 {
     m_delay.setSingleShot(true);
     m_delay.setInterval(150);
@@ -43,7 +18,7 @@ EditEffectScan::EditEffectScan(const Pipeline& pipeline, QObject* parent)
 
 EditEffectScan::~EditEffectScan()
 {
-    m_cancel = true;
+    m_scanner.cancel();
     if (m_thread.joinable())
         m_thread.join();
 }
@@ -54,14 +29,13 @@ void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const Colour
     stop();
     clearResults(); // a collect the old scan queued cannot bring its stream's effects back
     m_spec = spec.startsWith(QLatin1String("camera:")) ? QString() : spec;
-    m_input.reset();
-    m_previous.clear();
+    m_scanner.setStream(toLocalPath(m_spec));
     m_shows_edit = false;
     m_lut = std::move(lut);
     m_pending.reset();
     if (m_spec.isEmpty() || !m_lut)
         return;
-    m_pending = Job{nullptr, m_lut, m_params, m_skip};
+    m_pending = EditEffectJob{nullptr, m_lut, m_params, m_skip};
     m_requested = std::chrono::steady_clock::now();
     start();
 }
@@ -76,7 +50,7 @@ void EditEffectScan::setSettings(std::shared_ptr<const ParamSet> params,
         return;
     if (!m_pending)
         m_requested = std::chrono::steady_clock::now();
-    m_pending = Job{nullptr, m_lut, m_params, m_skip};
+    m_pending = EditEffectJob{nullptr, m_lut, m_params, m_skip};
     m_delay.start();
 }
 
@@ -95,13 +69,13 @@ void EditEffectScan::edited(std::shared_ptr<const ColourLut> before,
         before = m_pending->before;
     else
         m_requested = std::chrono::steady_clock::now();
-    m_pending = Job{std::move(before), m_lut, m_params, m_skip};
+    m_pending = EditEffectJob{std::move(before), m_lut, m_params, m_skip};
     m_delay.start();
 }
 
 void EditEffectScan::stop()
 {
-    m_cancel = true;
+    m_scanner.cancel();
     if (m_thread.joinable())
         m_thread.join();
     m_poll.stop();
@@ -113,17 +87,16 @@ void EditEffectScan::start()
     stop();
     if (!m_pending)
         return;
-    Job job = std::move(*m_pending);
+    EditEffectJob job = std::move(*m_pending);
     m_pending.reset();
     job.rerun_all = m_settings_changed;
     m_settings_changed = false;
     m_shows_edit = job.before != nullptr;
-    clearResults();
-    m_cancel = false;
+    clearResults(); // and forgets the cancel that stopped the last scan
     m_started = m_requested;
     const int generation = m_generation;
-    m_thread = std::thread([this, generation, job = std::move(job)]() mutable {
-        scan(std::move(job));
+    m_thread = std::thread([this, generation, job = std::move(job)] {
+        m_scanner.run(job);
         // Collect at once rather than at the next poll; a later scan ignores this one's call.
         QMetaObject::invokeMethod(
             this,
@@ -136,113 +109,10 @@ void EditEffectScan::start()
     m_poll.start();
 }
 
-void EditEffectScan::scan(Job job)
-{
-    Shared& shared = *m_shared;
-    auto fail = [&](std::string message) {
-        std::lock_guard lock(shared.mutex);
-        shared.error = std::move(message);
-    };
-    try {
-        if (!m_input) {
-            auto reader = openStream(toLocalPath(m_spec));
-            if (!reader)
-                return fail(reader.error().message);
-            StreamInput input;
-            input.stream = toLocalPath(m_spec);
-            input.reader = std::move(reader).value();
-            input.pipeline = &m_pipeline;
-            m_input.emplace(std::move(input));
-            m_previous.assign(m_input->info().frame_count, std::nullopt);
-            m_previous_lut.assign(m_input->info().frame_count, nullptr);
-        }
-        StreamInput& input = *m_input;
-        input.lut = job.after;
-        input.params = *job.params;
-        input.skip.assign(job.skip.begin(), job.skip.end());
-        const CellMask mask =
-            job.before ? CellMask::differences(*job.before, *job.after) : CellMask();
-        const PixelTallier tally_pixels(*job.after, mask);
-        const std::size_t frames = input.info().frame_count;
-        const int width = input.info().width;
-        const int height = input.info().height;
-        {
-            std::lock_guard lock(shared.mutex);
-            shared.effects.assign(frames, FrameEffect{});
-            shared.changed_cells = mask.count();
-        }
-        const auto record = [&](std::size_t index, const PixelTally& tally,
-                                const DetectionDelta& delta) {
-            FrameEffect effect;
-            effect.done = true;
-            effect.changed_pixels = std::uint32_t(tally.in_mask);
-            effect.unclassified = std::uint32_t(tally.unclassified);
-            effect.pixels = std::uint32_t(tally.pixels);
-            effect.delta = delta;
-            std::lock_guard lock(shared.mutex);
-            shared.effects[index] = effect;
-            ++shared.done;
-        };
-        std::vector<PixelTally> tallies(frames);
-        RunHooks hooks;
-        hooks.cancel = &m_cancel;
-        // A frame none of whose pixels changed class keeps its result: the pipeline runs only
-        // where the edit shows (or everywhere when the settings changed).
-        hooks.prefilter = [&](std::size_t index, const Frame& frame) {
-            lowerThreadPriority();
-            tallies[index] = tally_pixels(frame.ycbcr);
-            const bool unchanged = job.before && !job.rerun_all && tallies[index].in_mask == 0 &&
-                                   m_previous[index] && m_previous_lut[index] == job.before;
-            if (!unchanged)
-                return true;
-            m_previous_lut[index] = job.after;
-            record(index, tallies[index], {});
-            return false;
-        };
-        // A damaged frame is marked and passed: the rest of the stream still shows the edit.
-        hooks.on_unreadable = [&](std::size_t index, const std::string& message) {
-            FrameEffect effect;
-            effect.done = true;
-            effect.unreadable = true;
-            std::lock_guard lock(shared.mutex);
-            shared.effects[index] = effect;
-            shared.unreadable[index] = message;
-            ++shared.done;
-        };
-        hooks.on_frame = [&](const FrameResult& result, const Frame&,
-                             const DebugCanvas&) -> Status {
-            const std::size_t index = result.index;
-            DetectionDelta delta;
-            std::optional<PerceptSet>& previous = m_previous[index];
-            if (job.before && previous)
-                delta = compareDetections(*previous, result.percepts, width, height);
-            previous = result.percepts; // one frame per index: no other thread writes it
-            m_previous_lut[index] = job.after;
-            record(index, tallies[index], delta);
-            return {};
-        };
-        auto run = runStream(input, firstFrames(frames), m_threads, hooks);
-        if (!run)
-            return fail(run.error().message);
-        std::lock_guard lock(shared.mutex);
-        shared.finished = !run.value().cancelled;
-        shared.ended = std::chrono::steady_clock::now();
-    } catch (const std::exception& e) {
-        fail(e.what());
-    }
-}
-
 void EditEffectScan::clearResults()
 {
     ++m_generation; // what the previous scan still queues is ignored
-    {
-        std::lock_guard lock(m_shared->mutex);
-        m_shared->effects.clear();
-        m_shared->unreadable.clear();
-        m_shared->done = 0;
-        m_shared->finished = false;
-        m_shared->error.clear();
-    }
+    m_scanner.clearResults();
     m_effects.clear();
     m_unreadable.clear();
     m_frames_done = 0;
@@ -264,24 +134,19 @@ std::size_t EditEffectScan::firstUnreadable() const
 
 void EditEffectScan::collect()
 {
-    bool ended = false;
-    std::chrono::steady_clock::time_point ended_at;
-    {
-        std::lock_guard lock(m_shared->mutex);
-        m_effects = m_shared->effects;
-        m_frames_done = m_shared->done;
-        m_changed_cells = m_shared->changed_cells;
-        if (m_shared->unreadable.size() != m_unreadable.size()) {
-            m_unreadable.clear();
-            for (const auto& [index, message] : m_shared->unreadable)
-                m_unreadable.emplace(index, QString::fromStdString(message));
-        }
-        if (!m_shared->error.empty() && m_error.isEmpty())
-            m_error = QString::fromStdString(m_shared->error);
-        ended = m_shared->finished;
-        ended_at = m_shared->ended;
-        m_shared->finished = false;
+    EditEffectProgress progress = m_scanner.collect();
+    m_effects = std::move(progress.effects);
+    m_frames_done = progress.done;
+    m_changed_cells = progress.changed_cells;
+    if (progress.unreadable.size() != m_unreadable.size()) {
+        m_unreadable.clear();
+        for (const auto& [index, message] : progress.unreadable)
+            m_unreadable.emplace(index, QString::fromStdString(message));
     }
+    if (!progress.error.empty() && m_error.isEmpty())
+        m_error = QString::fromStdString(progress.error);
+    const bool ended = progress.finished;
+    const std::chrono::steady_clock::time_point ended_at = progress.ended;
     if (!ended && !m_error.isEmpty() && m_thread.joinable()) {
         m_thread.join(); // it stopped on the error
         m_poll.stop();

@@ -1,22 +1,19 @@
-// The effect of a LUT edit on the whole stream: after every edit, every frame is run again in the
-// background with the new table; per frame, how many pixels changed class and which detections
-// appeared or vanished (by the eval matching rules) against that frame's previous result.
+// The effect of a LUT edit on the whole stream, for the window: after every edit (once the quiet
+// time has passed) the core's EditEffectScanner runs every frame again on a background thread;
+// its per-frame counts come back to the GUI thread as they are made.
 #pragma once
 
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
-#include "visioncore/services/evaluation.h"
-#include "visioncore/services/stream_runner.h"
+#include "visioncore/services/edit_effect.h"
 
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
-#include <atomic>
 #include <chrono>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
@@ -25,16 +22,7 @@
 
 namespace fieldsight::ui {
 
-/// One frame's effect of the last edit.
-struct FrameEffect
-{
-    bool done = false;                ///< scanned since the last edit
-    bool unreadable = false;          ///< the frame could not be read (unreadableReason says why)
-    std::uint32_t changed_pixels = 0; ///< pixels whose class the edit changed
-    std::uint32_t unclassified = 0;   ///< pixels the current table leaves unclassified
-    std::uint32_t pixels = 0;
-    DetectionDelta delta; ///< against the frame's previous result (none on the first scan)
-};
+using fieldsight::FrameEffect;
 
 class EditEffectScan : public QObject
 {
@@ -46,7 +34,7 @@ public:
     ~EditEffectScan() override;
 
     /// Worker threads of a scan (0: one per core).
-    void setThreads(int threads) { m_threads = threads; }
+    void setThreads(int threads) { m_scanner.setThreads(threads); }
     /// Quiet time after an edit before the scan starts, so a brush stroke scans once it pauses.
     void setDelay(int ms) { m_delay.setInterval(ms); }
 
@@ -88,48 +76,19 @@ signals:
     void finished();
 
 private:
-    struct Job
-    {
-        std::shared_ptr<const ColourLut> before; ///< null: record only
-        std::shared_ptr<const ColourLut> after;
-        std::shared_ptr<const ParamSet> params;
-        std::set<std::string, std::less<>> skip;
-        bool rerun_all = false; ///< the settings changed: no earlier result still holds
-    };
-    struct Shared
-    {
-        std::mutex mutex;
-        std::vector<FrameEffect> effects;
-        std::size_t done = 0;
-        std::size_t changed_cells = 0;
-        bool finished = false; ///< set once by a scan that covered every frame
-        std::chrono::steady_clock::time_point ended;
-        std::string error;
-        std::map<std::size_t, std::string> unreadable; ///< frame index: the reader's message
-    };
-
     void stop();
-    /// Empties the shown and the shared results, and starts a new generation.
+    /// Empties the shown and the scanner's results, and starts a new generation.
     void clearResults();
     void start();
-    void scan(Job job); ///< on the scan thread
-    void collect();     ///< on the GUI thread
+    void collect(); ///< on the GUI thread
 
-    const Pipeline& m_pipeline;
-    int m_threads = 0;
+    EditEffectScanner m_scanner;
     QTimer m_delay;
     QTimer m_poll;
-    std::thread m_thread;
-    std::atomic<bool> m_cancel{false};
-    std::shared_ptr<Shared> m_shared = std::make_shared<Shared>();
-
-    // Touched by the scan thread only while it runs (the GUI thread joins it first).
+    std::thread m_thread; ///< runs m_scanner.run(); joined before the scanner is touched else
     QString m_spec;
-    std::optional<StreamInput> m_input;
-    std::vector<std::optional<PerceptSet>> m_previous;            ///< each frame's last result
-    std::vector<std::shared_ptr<const ColourLut>> m_previous_lut; ///< the table it was run with
 
-    std::optional<Job> m_pending;
+    std::optional<EditEffectJob> m_pending;
     std::shared_ptr<const ColourLut> m_lut; ///< the newest table
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> m_skip;

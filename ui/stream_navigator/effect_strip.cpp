@@ -25,14 +25,22 @@ QString signedCount(int appeared, int vanished, const QString& what)
     return parts.isEmpty() ? QString() : parts.join(QLatin1Char(' ')) + QLatin1Char(' ') + what;
 }
 
+/// What a count of `kind` is called in a sentence: its title's singular in lower case ("Balls":
+/// "ball"), so a new kind needs no words here.
+QString kindNoun(const PerceptKind& kind)
+{
+    QString noun = QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size())).toLower();
+    if (noun.endsWith(QLatin1Char('s')))
+        noun.chop(1);
+    return noun;
+}
+
 QString deltaText(const DetectionDelta& d)
 {
     QStringList parts;
-    for (const QString& part :
-         {signedCount(d.balls_appeared, d.balls_vanished, EffectStrip::tr("ball")),
-          signedCount(d.goalposts_appeared, d.goalposts_vanished, EffectStrip::tr("goalpost")),
-          signedCount(d.obstacles_appeared, d.obstacles_vanished, EffectStrip::tr("obstacle"))})
-        if (!part.isEmpty())
+    for (const KindDelta& k : d.kinds)
+        if (const QString part = signedCount(k.appeared, k.vanished, kindNoun(*k.kind));
+            !part.isEmpty())
             parts << part;
     return parts.join(QStringLiteral(", "));
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <tuple>
+#include <utility>
 
 namespace fieldsight {
 namespace {
@@ -147,18 +148,68 @@ void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, 
     }
 }
 
+KindDelta DetectionDelta::of(std::string_view key) const
+{
+    for (const KindDelta& k : kinds)
+        if (k.kind->key == key)
+            return k;
+    return {};
+}
+
+int DetectionDelta::appeared() const
+{
+    int n = 0;
+    for (const KindDelta& k : kinds)
+        n += k.appeared;
+    return n;
+}
+
+int DetectionDelta::vanished() const
+{
+    int n = 0;
+    for (const KindDelta& k : kinds)
+        n += k.vanished;
+    return n;
+}
+
+DetectionDelta& DetectionDelta::operator+=(const DetectionDelta& other)
+{
+    for (const KindDelta& o : other.kinds) {
+        const auto it = std::find_if(kinds.begin(), kinds.end(), [&](const KindDelta& k) {
+            return k.kind->key == o.kind->key;
+        });
+        if (it == kinds.end()) {
+            kinds.push_back(o);
+        } else {
+            it->appeared += o.appeared;
+            it->vanished += o.vanished;
+        }
+    }
+    return *this;
+}
+
+bool operator==(const DetectionDelta& a, const DetectionDelta& b)
+{
+    const auto covers = [](const DetectionDelta& x, const DetectionDelta& y) {
+        return std::all_of(x.kinds.begin(), x.kinds.end(), [&](const KindDelta& k) {
+            const KindDelta other = y.of(k.kind->key);
+            return k.appeared == other.appeared && k.vanished == other.vanished;
+        });
+    };
+    return covers(a, b) && covers(b, a);
+}
+
 DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
                                  int height)
 {
     EvaluationScores scores;
     scoreFrame(after, before, width, height, scores);
     DetectionDelta delta;
-    delta.balls_appeared = scores.balls.fp;
-    delta.balls_vanished = scores.balls.fn;
-    delta.goalposts_appeared = scores.goalposts.fp;
-    delta.goalposts_vanished = scores.goalposts.fn;
-    delta.obstacles_appeared = scores.obstacles.fp;
-    delta.obstacles_vanished = scores.obstacles.fn;
+    // A false positive is a detection after the edit that nothing before matches: it appeared.
+    for (const auto& [kind, score] : {std::pair{&perceptKind<Ball>(), scores.balls},
+                                      std::pair{&perceptKind<Goalpost>(), scores.goalposts},
+                                      std::pair{&perceptKind<Obstacle>(), scores.obstacles}})
+        delta.kinds.push_back({kind, score.fp, score.fn});
     return delta;
 }
 

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fieldsight {
@@ -105,33 +106,36 @@ struct EvaluationScores
 void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, int height,
                 EvaluationScores& scores);
 
-/// What changed between two runs of one frame (before and after a LUT edit), by the same
-/// matching rules, the run before playing the truth: a detection of `after` that nothing in
-/// `before` matches appeared; one of `before` that nothing in `after` matches vanished.
-struct DetectionDelta
+/// One percept kind's part of a DetectionDelta.
+struct KindDelta
 {
-    int balls_appeared = 0;
-    int balls_vanished = 0;
-    int goalposts_appeared = 0;
-    int goalposts_vanished = 0;
-    int obstacles_appeared = 0;
-    int obstacles_vanished = 0;
-
-    int appeared() const { return balls_appeared + goalposts_appeared + obstacles_appeared; }
-    int vanished() const { return balls_vanished + goalposts_vanished + obstacles_vanished; }
-    DetectionDelta& operator+=(const DetectionDelta& other)
-    {
-        balls_appeared += other.balls_appeared;
-        balls_vanished += other.balls_vanished;
-        goalposts_appeared += other.goalposts_appeared;
-        goalposts_vanished += other.goalposts_vanished;
-        obstacles_appeared += other.obstacles_appeared;
-        obstacles_vanished += other.obstacles_vanished;
-        return *this;
-    }
-    friend bool operator==(const DetectionDelta&, const DetectionDelta&) = default;
+    const PerceptKind* kind = nullptr; ///< from the percept registry (perceptKind<P>())
+    int appeared = 0;                  ///< detections of the run after that nothing before matches
+    int vanished = 0;                  ///< detections of the run before that nothing after matches
 };
 
+/// What changed between two runs of one frame (before and after a LUT edit), by the same
+/// matching rules, the run before playing the truth: a detection of `after` that nothing in
+/// `before` matches appeared; one of `before` that nothing in `after` matches vanished. Per
+/// percept kind, so a new kind with a matching rule needs no change here or in its readers.
+struct DetectionDelta
+{
+    /// compareDetections gives every kind it compares, always in the same order (so sums of
+    /// its results keep that order); a kind not listed counts as nothing changed.
+    std::vector<KindDelta> kinds;
+
+    /// The counts of the kind with results key `key` (PerceptKind::key, e.g. "balls"); zero
+    /// counts when it is not listed.
+    KindDelta of(std::string_view key) const;
+    int appeared() const;
+    int vanished() const;
+    /// Adds `other`'s counts kind by kind (a kind new to this one is appended).
+    DetectionDelta& operator+=(const DetectionDelta& other);
+    /// The same counts for every kind (an unlisted kind counting as zero).
+    friend bool operator==(const DetectionDelta& a, const DetectionDelta& b);
+};
+
+/// Balls, goalposts and obstacles (the kinds with a matching rule), in that order.
 DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
                                  int height);
 

@@ -1,0 +1,160 @@
+// The whole-stream scan of a LUT edit's effect: prefilter, rerun and detection delta per frame.
+#include "visioncore/services/edit_effect.h"
+
+#include "visioncore/services/lut_compare.h"
+
+#include <exception>
+#include <utility>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+namespace fieldsight {
+
+namespace {
+
+/// The scan yields to the window and its frame worker: its threads run at a lower priority
+/// (nice 10 on Linux; the threads end with the scan).
+void lowerThreadPriority()
+{
+#ifdef __linux__
+    thread_local bool lowered = false;
+    if (!lowered) {
+        lowered = true;
+        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+    }
+#endif
+}
+
+} // namespace
+
+EditEffectScanner::EditEffectScanner(const Pipeline& pipeline) : m_pipeline(pipeline) {}
+
+void EditEffectScanner::setStream(std::string path)
+{
+    m_path = std::move(path);
+    m_input.reset();
+    m_previous.clear();
+    m_previous_lut.clear();
+}
+
+void EditEffectScanner::clearResults()
+{
+    m_cancel = false;
+    std::lock_guard lock(m_mutex);
+    m_progress.effects.clear();
+    m_progress.unreadable.clear();
+    m_progress.done = 0;
+    m_progress.finished = false;
+    m_progress.error.clear();
+}
+
+EditEffectProgress EditEffectScanner::collect()
+{
+    std::lock_guard lock(m_mutex);
+    EditEffectProgress copy = m_progress;
+    m_progress.finished = false;
+    return copy;
+}
+
+void EditEffectScanner::fail(std::string message)
+{
+    std::lock_guard lock(m_mutex);
+    m_progress.error = std::move(message);
+}
+
+void EditEffectScanner::run(const EditEffectJob& job)
+{
+    try {
+        if (!m_input) {
+            auto reader = openStream(m_path);
+            if (!reader)
+                return fail(reader.error().message);
+            StreamInput input;
+            input.stream = m_path;
+            input.reader = std::move(reader).value();
+            input.pipeline = &m_pipeline;
+            m_input.emplace(std::move(input));
+            m_previous.assign(m_input->info().frame_count, std::nullopt);
+            m_previous_lut.assign(m_input->info().frame_count, nullptr);
+        }
+        StreamInput& input = *m_input;
+        input.lut = job.after;
+        input.params = *job.params;
+        input.skip.assign(job.skip.begin(), job.skip.end());
+        const CellMask mask =
+            job.before ? CellMask::differences(*job.before, *job.after) : CellMask();
+        const PixelTallier tally_pixels(*job.after, mask);
+        const std::size_t frames = input.info().frame_count;
+        const int width = input.info().width;
+        const int height = input.info().height;
+        {
+            std::lock_guard lock(m_mutex);
+            m_progress.effects.assign(frames, FrameEffect{});
+            m_progress.changed_cells = mask.count();
+        }
+        const auto record = [&](std::size_t index, const PixelTally& tally,
+                                const DetectionDelta& delta) {
+            FrameEffect effect;
+            effect.done = true;
+            effect.changed_pixels = std::uint32_t(tally.in_mask);
+            effect.unclassified = std::uint32_t(tally.unclassified);
+            effect.pixels = std::uint32_t(tally.pixels);
+            effect.delta = delta;
+            std::lock_guard lock(m_mutex);
+            m_progress.effects[index] = effect;
+            ++m_progress.done;
+        };
+        std::vector<PixelTally> tallies(frames);
+        RunHooks hooks;
+        hooks.cancel = &m_cancel;
+        // A frame none of whose pixels changed class keeps its result: the pipeline runs only
+        // where the edit shows (or everywhere when the settings changed).
+        hooks.prefilter = [&](std::size_t index, const Frame& frame) {
+            lowerThreadPriority();
+            tallies[index] = tally_pixels(frame.ycbcr);
+            const bool unchanged = job.before && !job.rerun_all && tallies[index].in_mask == 0 &&
+                                   m_previous[index] && m_previous_lut[index] == job.before;
+            if (!unchanged)
+                return true;
+            m_previous_lut[index] = job.after;
+            record(index, tallies[index], {});
+            return false;
+        };
+        // A damaged frame is marked and passed: the rest of the stream still shows the edit.
+        hooks.on_unreadable = [&](std::size_t index, const std::string& message) {
+            FrameEffect effect;
+            effect.done = true;
+            effect.unreadable = true;
+            std::lock_guard lock(m_mutex);
+            m_progress.effects[index] = effect;
+            m_progress.unreadable[index] = message;
+            ++m_progress.done;
+        };
+        hooks.on_frame = [&](const FrameResult& result, const Frame&,
+                             const DebugCanvas&) -> Status {
+            const std::size_t index = result.index;
+            DetectionDelta delta;
+            std::optional<PerceptSet>& previous = m_previous[index];
+            if (job.before && previous)
+                delta = compareDetections(*previous, result.percepts, width, height);
+            previous = result.percepts; // one frame per index: no other thread writes it
+            m_previous_lut[index] = job.after;
+            record(index, tallies[index], delta);
+            return {};
+        };
+        auto run = runStream(input, firstFrames(frames), m_threads, hooks);
+        if (!run)
+            return fail(run.error().message);
+        std::lock_guard lock(m_mutex);
+        m_progress.finished = !run.value().cancelled;
+        m_progress.ended = std::chrono::steady_clock::now();
+    } catch (const std::exception& e) {
+        fail(e.what());
+    }
+}
+
+} // namespace fieldsight
