@@ -48,6 +48,15 @@ QByteArray lutBytes(MainWindow& w)
     return QByteArray(reinterpret_cast<const char*>(t.data()), qsizetype(ColourLut::kCells));
 }
 
+/// Every detection of a frame with its fields, one per line.
+QString detections(const ui::FrameOutput& out)
+{
+    QStringList lines;
+    for (const ui::PerceptItem& item : out.items)
+        lines << item.details;
+    return lines.join('\n');
+}
+
 QAction* menuAction(MainWindow& w, const char* name)
 {
     return w.findChild<QAction*>(QString::fromLatin1(name));
@@ -270,6 +279,31 @@ private slots:
         w.tools().activate(QStringLiteral("pan"));
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(40, 30)));
         QCOMPARE(FakeTool::presses, 1);
+    }
+
+    void aStepToTheFramePreparedAheadIsAnsweredAtOnce()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, copyStream("ahead")));
+        // While frame 0 is shown the worker runs frame 1 with the same table and settings.
+        QTRY_COMPARE(w.session().stream().preparedAhead(), std::optional<std::size_t>(1));
+        w.navigator().step(1);
+        // Answered on this thread, before any event is processed: nothing waits for the worker.
+        QVERIFY(!w.session().stream().waiting());
+        QCOMPARE(w.session().stream().current()->index, std::size_t(1));
+        const auto ahead = w.session().stream().current();
+        // The same answer the worker gives when asked directly.
+        const QString prepared = detections(*ahead);
+        QVERIFY(!prepared.isEmpty());
+        QTRY_COMPARE(w.session().stream().preparedAhead(), std::optional<std::size_t>(2));
+        QVERIFY(w.session().settings().setParam("fake", "level", 2.5).ok()); // a miss
+        QVERIFY(w.session().stream().waiting());
+        QVERIFY(waitForFrame(w, 1));
+        w.session().settings().undoStack().undo();
+        QVERIFY(waitForFrame(w, 1));
+        QCOMPARE(detections(*w.session().stream().current()), prepared);
     }
 
     void questionsGoThroughTheDialogsSeam()

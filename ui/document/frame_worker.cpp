@@ -150,23 +150,95 @@ void FrameWorker::processPending()
         request = std::move(*m_pending);
         m_pending.reset();
     }
-    std::shared_ptr<FrameOutput> out;
-    try {
-        out = run(request);
-    } catch (const std::exception& e) {
-        // A failure outside the stages (decoding, memory): this frame's error, the tool goes on.
-        out = std::make_shared<FrameOutput>();
-        out->serial = request.serial;
-        out->index = request.index;
-        out->error = QStringLiteral("frame %1: %2").arg(request.index).arg(e.what());
-        m_frame_valid = false;
+    if (request.look_ahead_only) {
+        if (request.source && request.source->reader) {
+            try {
+                (void)load(request.source, request.index);
+            } catch (const std::exception&) {
+                m_frame_valid = false; // the real read of that frame will report it
+            }
+        }
+    } else {
+        std::shared_ptr<FrameOutput> out;
+        try {
+            out = run(request);
+        } catch (const std::exception& e) {
+            // A failure outside the stages (decoding, memory): this frame's error, the tool goes
+            // on.
+            out = std::make_shared<FrameOutput>();
+            out->serial = request.serial;
+            out->index = request.index;
+            out->error = QStringLiteral("frame %1: %2").arg(request.index).arg(e.what());
+            m_frame_valid = false;
+        }
+        emit frameDone(std::move(out));
     }
-    emit frameDone(std::move(out));
     try {
-        prefetch();
+        lookAhead(request);
     } catch (const std::exception&) {
         m_prefetch_source.reset(); // the real read of that frame will report it
     }
+}
+
+std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
+{
+    std::lock_guard lock(m_mutex);
+    const FrameRequest& k = m_ahead_for;
+    if (!m_ahead || k.source != request.source || k.index != request.index ||
+        k.lut != request.lut || k.params != request.params || k.skip != request.skip)
+        return nullptr;
+    return std::exchange(m_ahead, nullptr);
+}
+
+std::optional<std::size_t> FrameWorker::aheadIndex()
+{
+    std::lock_guard lock(m_mutex);
+    return m_ahead ? std::optional<std::size_t>(m_ahead_for.index) : std::nullopt;
+}
+
+void FrameWorker::swapPrefetch()
+{
+    std::swap(m_data.frame(), m_prefetch);
+    std::swap(m_display, m_prefetch_display);
+    std::swap(m_frame_source, m_prefetch_source);
+    std::swap(m_frame_index, m_prefetch_index);
+}
+
+void FrameWorker::lookAhead(const FrameRequest& request)
+{
+    prefetch();
+    FrameRequest next = request;
+    next.index = request.index + 1;
+    next.look_ahead_only = false;
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_pending)
+            return; // there is real work
+        const FrameRequest& k = m_ahead_for;
+        if (m_ahead && k.source == next.source && k.index == next.index && k.lut == next.lut &&
+            k.params == next.params && k.skip == next.skip)
+            return; // prepared already
+    }
+    if (!m_frame_valid || !m_prefetch_source || m_prefetch_source != request.source ||
+        m_prefetch_index != next.index || !request.source->reader)
+        return;
+    const auto start = std::chrono::steady_clock::now();
+    auto out = std::make_shared<FrameOutput>();
+    out->index = next.index;
+    swapPrefetch();
+    try {
+        runCore(next, m_control, m_applied_params, m_data.frame(), *out);
+    } catch (const std::exception&) {
+        out.reset(); // the real run of that frame will report it
+    }
+    swapPrefetch();
+    if (!out || !out->error.isEmpty())
+        return;
+    out->worker_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::lock_guard lock(m_mutex);
+    m_ahead = std::move(out);
+    m_ahead_for = std::move(next);
 }
 
 void FrameWorker::release(std::shared_ptr<FrameSource> source)
@@ -226,6 +298,47 @@ void FrameWorker::prefetch()
     }
 }
 
+void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
+                          std::shared_ptr<const ParamSet>& applied, const Frame& frame,
+                          FrameOutput& out)
+{
+    if (request.params != applied) {
+        control.resetParams();
+        if (request.params) {
+            if (Status s = control.applyParams(*request.params); !s) {
+                out.error = QString::fromStdString(s.error().message);
+                return; // and tried again on the next frame
+            }
+        }
+        applied = request.params;
+    }
+    for (const std::string& id : m_skippable)
+        (void)control.setStageEnabled(id, request.skip.count(id) == 0);
+    m_data.setLut(request.lut);
+    m_last_lut = request.lut;
+
+    Result<FrameReport> report = control.runFrame();
+    out.frame.name = frame.name;
+    out.frame.timestamp_ms = frame.timestamp_ms;
+    out.frame.horizon = frame.horizon;
+    makeDisplay(frame, request.lut, m_display);
+    out.frame.ycbcr = m_display.ycbcr;
+    out.raw = m_display.raw;
+    out.classified = m_display.classified;
+    out.classes = m_display.classes;
+    if (!report) {
+        out.error = QString::fromStdString(frame.name + ": " + report.error().message);
+        return;
+    }
+    out.result =
+        collectResult(request.index, frame.name, std::move(report).value(), control.blackboard());
+
+    const auto truth_it = request.source->truth.find(frameStem(frame.name));
+    const PerceptSet* truth = truth_it == request.source->truth.end() ? nullptr : truth_it->second;
+    out.drawings = frameDrawings(m_pipeline, m_layers, m_data.canvas(), out.result.percepts, truth);
+    out.items = perceptItems(out.result.percepts);
+}
+
 void FrameWorker::makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
                               Display& display)
 {
@@ -278,42 +391,7 @@ std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)
         return out;
     }
 
-    if (request.params != *applied) {
-        control->resetParams();
-        if (request.params) {
-            if (Status s = control->applyParams(*request.params); !s) {
-                out->error = QString::fromStdString(s.error().message);
-                return out; // and tried again on the next frame
-            }
-        }
-        *applied = request.params;
-    }
-    for (const std::string& id : m_skippable)
-        (void)control->setStageEnabled(id, request.skip.count(id) == 0);
-    m_data.setLut(request.lut);
-    m_last_lut = request.lut;
-
-    Result<FrameReport> report = control->runFrame();
-    out->frame.name = frame->name;
-    out->frame.timestamp_ms = frame->timestamp_ms;
-    out->frame.horizon = frame->horizon;
-    makeDisplay(*frame, request.lut, m_display);
-    out->frame.ycbcr = m_display.ycbcr;
-    out->raw = m_display.raw;
-    out->classified = m_display.classified;
-    out->classes = m_display.classes;
-    if (!report) {
-        out->error = QString::fromStdString(frame->name + ": " + report.error().message);
-        return out;
-    }
-    out->result =
-        collectResult(request.index, frame->name, std::move(report).value(), control->blackboard());
-
-    const auto truth_it = request.source->truth.find(frameStem(frame->name));
-    const PerceptSet* truth = truth_it == request.source->truth.end() ? nullptr : truth_it->second;
-    out->drawings =
-        frameDrawings(m_pipeline, m_layers, m_data.canvas(), out->result.percepts, truth);
-    out->items = perceptItems(out->result.percepts);
+    runCore(request, *control, *applied, *frame, *out);
     out->worker_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;

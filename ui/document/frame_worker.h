@@ -47,6 +47,8 @@ struct FrameRequest
     std::shared_ptr<const ParamSet> params; ///< values that differ from the defaults
     std::set<std::string, std::less<>> skip;
     std::chrono::steady_clock::time_point submitted = std::chrono::steady_clock::now();
+    /// Answered already (from takeAhead): make `index` current and prepare the frame after it.
+    bool look_ahead_only = false;
 };
 
 /// A detection as the view shows it: where it is, for hovering, and its numbers.
@@ -85,6 +87,13 @@ public:
 
     /// Thread-safe. Replaces any request not yet started.
     void submit(FrameRequest request);
+    /// Thread-safe. The output prepared ahead for exactly what `request` asks (the same source,
+    /// frame, table, parameters and switches), taken out; null when there is none. While the user
+    /// looks at a frame, the worker runs the next one with the same settings, so a step finds its
+    /// answer ready on the GUI thread without waiting for a thread to wake.
+    std::shared_ptr<FrameOutput> takeAhead(const FrameRequest& request);
+    /// Thread-safe. The frame prepared ahead, if any.
+    std::optional<std::size_t> aheadIndex();
     /// Thread-safe. Lets go of a source no longer shown, on the worker thread (closing a camera
     /// waits for its capture thread; a reader may close files), after any run still using it.
     void release(std::shared_ptr<FrameSource> source);
@@ -95,6 +104,14 @@ signals:
 private:
     void processPending();
     std::shared_ptr<FrameOutput> run(const FrameRequest& request);
+    /// Runs `control`'s core on `frame` (already in its DataWrapper) with the request's settings.
+    void runCore(const FrameRequest& request, ControlWrapper& control,
+                 std::shared_ptr<const ParamSet>& applied, const Frame& frame, FrameOutput& out);
+    /// After a request: decodes the next frame and runs it with the request's settings, kept
+    /// for takeAhead(); the current frame stays loaded.
+    void lookAhead(const FrameRequest& request);
+    /// Swaps the loaded frame with the prefetched one (pixels, display, and which they are).
+    void swapPrefetch();
     /// Makes frame `index` of `source` current in m_data: kept from the last run (a parameter
     /// or LUT edit), taken from the prefetch, or read.
     Status load(const std::shared_ptr<FrameSource>& source, std::size_t index);
@@ -140,6 +157,8 @@ private:
     std::mutex m_mutex;
     std::optional<FrameRequest> m_pending;
     bool m_scheduled = false;
+    std::shared_ptr<FrameOutput> m_ahead; ///< under m_mutex: the answer to m_ahead_for
+    FrameRequest m_ahead_for;
 };
 
 /// The percept items of one frame's detections.

@@ -149,6 +149,15 @@ void StreamDocument::submit()
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
+    if (std::shared_ptr<FrameOutput> ready = m_worker->takeAhead(request)) {
+        // Prepared while the frame before was shown: answered here, no thread hop on the way;
+        // the worker moves on to the frame after it.
+        ready->serial = request.serial;
+        request.look_ahead_only = true;
+        m_worker->submit(std::move(request));
+        onFrameDone(std::move(ready));
+        return;
+    }
     m_worker->submit(std::move(request));
 }
 

@@ -68,6 +68,9 @@ public:
 
     /// The newest frame result (null before the first).
     const std::shared_ptr<const FrameOutput>& current() const { return m_current; }
+    /// The frame the worker has run ahead with the current settings (a step there is answered at
+    /// once), if any.
+    std::optional<std::size_t> preparedAhead() const { return m_worker->aheadIndex(); }
     /// A request has not been answered yet.
     bool waiting() const { return m_answered < m_serial; }
     std::uint64_t lastSerial() const { return m_serial; }
