@@ -653,7 +653,7 @@ private slots:
         QVERIFY(opened.wait(10000));
         QVERIFY(waitForLut(w, w.session().lut().version()));
         showPixelsOneToOne(w);
-        ui::LutSampler& sampler = w.session().samples();
+        ui::SamplesDocument& sampler = w.session().samples();
         QCOMPARE(sampler.path(), copy + "/lut_samples.json");
 
         // A drag with the Sample tool marks a rectangle of the class.
@@ -681,13 +681,13 @@ private slots:
                  std::size_t(1));
 
         // Built with the annotations, in the background, as one undoable edit.
-        auto expected = ui::LutSampler::buildTable(copy.toStdString(), sampler.samples(), true,
-                                                   nullptr, nullptr, nullptr);
+        auto expected = ui::SamplesDocument::buildTable(copy.toStdString(), sampler.samples(), true,
+                                                        nullptr, nullptr, nullptr);
         QVERIFY(expected);
         const ColourLut before = w.session().lut().table();
         const int steps = w.session().lut().undoStack().count();
         w.findChild<QCheckBox*>("samples.annotations")->setChecked(true);
-        QSignalSpy built(&sampler, &ui::LutSampler::built);
+        QSignalSpy built(&sampler, &ui::SamplesDocument::built);
         w.lutPanel().buildFromSamples();
         QVERIFY(built.wait(20000));
         QVERIFY2(built.front().front().toBool(), qPrintable(built.front().back().toString()));

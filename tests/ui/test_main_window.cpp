@@ -11,7 +11,7 @@
 #include "ui/adapters/overlay_painter.h"
 #include "ui/document/bookmarks.h"
 #include "ui/document/frame_recorder.h"
-#include "ui/document/lut_sampler.h"
+#include "ui/document/samples_document.h"
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/panels/bookmarks_panel.h"
@@ -544,7 +544,7 @@ private slots:
         QVERIFY(back.ok());
         QCOMPARE(back.value().list().size(), std::size_t(1));
 
-        ui::LutSampler& sampler = w.session().samples();
+        ui::SamplesDocument& sampler = w.session().samples();
         QCOMPARE(sampler.samples().samples.size(), std::size_t(0));
         sampler.addRect("frame_000000.png", Colour::Green, QRect(10, 200, 20, 10));
         QCOMPARE(contents("lut_samples.json.unreadable"), samples);

@@ -14,7 +14,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_settings = new PipelineSettings(pipeline, this);
     m_stream = new StreamDocument(pipeline, *m_lut, *m_settings, this);
     m_bookmarks = new BookmarksDocument(this);
-    m_samples = new LutSampler(*m_lut, this);
+    m_samples = new SamplesDocument(*m_lut, this);
     m_effect = new EditEffectScan(pipeline, this);
 
     addUndoDocument(tr("Colour table"), m_lut->undoStack());
@@ -31,7 +31,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     });
 
     connect(m_lut, &LutDocument::problem, this, &EditingSession::problem);
-    connect(m_samples, &LutSampler::problem, this, &EditingSession::problem);
+    connect(m_samples, &SamplesDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::notice, this, &EditingSession::notice);
 }

@@ -9,7 +9,7 @@
 #include "ui/document/bookmarks_document.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/document/lut_document.h"
-#include "ui/document/lut_sampler.h"
+#include "ui/document/samples_document.h"
 #include "ui/document/pipeline_settings.h"
 #include "ui/document/stream_document.h"
 
@@ -42,7 +42,7 @@ public:
     LutDocument& lut() { return *m_lut; }
     PipelineSettings& settings() { return *m_settings; }
     BookmarksDocument& bookmarks() { return *m_bookmarks; }
-    LutSampler& samples() { return *m_samples; }
+    SamplesDocument& samples() { return *m_samples; }
     EditEffectScan& effectScan() { return *m_effect; }
 
     /// Edit > Undo and Redo act on the active stack; the document edited last becomes active.
@@ -87,7 +87,7 @@ private:
     PipelineSettings* m_settings = nullptr;
     StreamDocument* m_stream = nullptr;
     BookmarksDocument* m_bookmarks = nullptr;
-    LutSampler* m_samples = nullptr;
+    SamplesDocument* m_samples = nullptr;
     EditEffectScan* m_effect = nullptr;
     QUndoGroup m_undo_group;
     std::vector<UndoDocument> m_undo_documents;

@@ -43,7 +43,7 @@ QSpinBox* spinBox(QWidget* parent, const QString& name, int max)
 
 } // namespace
 
-LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, LutSampler& samples,
+LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& samples,
                    ToolManager& tools, QWidget* parent)
     : QWidget(parent), m_lut(lut), m_stream(stream), m_samples(samples), m_tools(tools)
 {
@@ -170,9 +170,9 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, LutSampler& samples
                          ? QString()
                          : tr(" (%1)").arg(QFileInfo(m_samples.path()).fileName())));
     };
-    connect(&m_samples, &LutSampler::samplesChanged, this, describe);
+    connect(&m_samples, &SamplesDocument::samplesChanged, this, describe);
     describe();
-    connect(&m_samples, &LutSampler::built, this, [this](bool ok, const QString& summary) {
+    connect(&m_samples, &SamplesDocument::built, this, [this](bool ok, const QString& summary) {
         m_samples_info->setText(summary);
         if (!ok)
             emit problem(summary);
@@ -241,7 +241,7 @@ void LutPanel::buildFromSamples()
     progress->setObjectName(QStringLiteral("samples.progress"));
     progress->setAttribute(Qt::WA_DeleteOnClose);
     progress->setMinimumDuration(300);
-    connect(progress, &QProgressDialog::canceled, &m_samples, &LutSampler::cancel);
+    connect(progress, &QProgressDialog::canceled, &m_samples, &SamplesDocument::cancel);
     auto* poll = new QTimer(progress);
     connect(poll, &QTimer::timeout, progress, [this, progress] {
         const auto [done, total] = m_samples.progress();

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "ui/document/lut_document.h"
-#include "ui/document/lut_sampler.h"
+#include "ui/document/samples_document.h"
 #include "ui/document/stream_document.h"
 #include "ui/tools/tool_manager.h"
 
@@ -24,7 +24,7 @@ class LutPanel : public QWidget
 {
     Q_OBJECT
 public:
-    LutPanel(LutDocument& lut, StreamDocument& stream, LutSampler& samples, ToolManager& tools,
+    LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& samples, ToolManager& tools,
              QWidget* parent = nullptr);
 
     /// The palette's actions (one per class, keys 0-9), for the window's menu.
@@ -51,7 +51,7 @@ private:
 
     LutDocument& m_lut;
     StreamDocument& m_stream;
-    LutSampler& m_samples;
+    SamplesDocument& m_samples;
     ToolManager& m_tools;
     QActionGroup* m_colours = nullptr;
     QSpinBox* m_tol_y = nullptr;

@@ -1,4 +1,4 @@
-#include "ui/document/lut_sampler.h"
+#include "ui/document/samples_document.h"
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
@@ -18,7 +18,7 @@ namespace fieldsight::ui {
 class SamplesCommand : public QUndoCommand
 {
 public:
-    SamplesCommand(LutSampler& sampler, const QString& text, std::vector<LutSample> before,
+    SamplesCommand(SamplesDocument& sampler, const QString& text, std::vector<LutSample> before,
                    std::vector<LutSample> after)
         : QUndoCommand(text), m_sampler(sampler), m_before(std::move(before)),
           m_after(std::move(after))
@@ -28,12 +28,12 @@ public:
     void undo() override { m_sampler.store(m_before); }
 
 private:
-    LutSampler& m_sampler;
+    SamplesDocument& m_sampler;
     std::vector<LutSample> m_before;
     std::vector<LutSample> m_after;
 };
 
-LutSampler::LutSampler(LutDocument& lut, QObject* parent) : QObject(parent), m_lut(lut)
+SamplesDocument::SamplesDocument(LutDocument& lut, QObject* parent) : QObject(parent), m_lut(lut)
 {
     connect(&m_watcher, &QFutureWatcher<Result<Built>>::finished, this, [this] {
         auto result = m_watcher.result();
@@ -59,14 +59,14 @@ LutSampler::LutSampler(LutDocument& lut, QObject* parent) : QObject(parent), m_l
     });
 }
 
-LutSampler::~LutSampler()
+SamplesDocument::~SamplesDocument()
 {
     m_cancel = true;
     m_watcher.waitForFinished();
     QObject::disconnect(&m_undo, nullptr, this, nullptr);
 }
 
-Status LutSampler::setStream(const QString& spec)
+Status SamplesDocument::setStream(const QString& spec)
 {
     m_stream = spec;
     m_undo.clear();
@@ -93,7 +93,7 @@ Status LutSampler::setStream(const QString& spec)
     return status;
 }
 
-void LutSampler::store(std::vector<LutSample> samples)
+void SamplesDocument::store(std::vector<LutSample> samples)
 {
     m_samples.samples = std::move(samples);
     if (!m_path.isEmpty()) {
@@ -109,7 +109,7 @@ void LutSampler::store(std::vector<LutSample> samples)
     emit samplesChanged();
 }
 
-void LutSampler::addRect(const QString& frame, Colour colour, const QRect& rect)
+void SamplesDocument::addRect(const QString& frame, Colour colour, const QRect& rect)
 {
     const QRect r = rect.normalized();
     LutSample sample;
@@ -123,16 +123,15 @@ void LutSampler::addRect(const QString& frame, Colour colour, const QRect& rect)
                                    m_samples.samples, std::move(after)));
 }
 
-void LutSampler::setSamples(std::vector<LutSample> samples, const QString& text)
+void SamplesDocument::setSamples(std::vector<LutSample> samples, const QString& text)
 {
     m_undo.push(new SamplesCommand(*this, text, m_samples.samples, std::move(samples)));
 }
 
-Result<LutSampler::Built> LutSampler::buildTable(const std::string& stream,
-                                                 const LutSamples& samples, bool with_annotations,
-                                                 std::atomic<bool>* cancel,
-                                                 std::atomic<std::size_t>* done,
-                                                 std::atomic<std::size_t>* total)
+Result<SamplesDocument::Built>
+SamplesDocument::buildTable(const std::string& stream, const LutSamples& samples,
+                            bool with_annotations, std::atomic<bool>* cancel,
+                            std::atomic<std::size_t>* done, std::atomic<std::size_t>* total)
 {
     auto reader = openStream(stream);
     if (!reader)
@@ -170,15 +169,16 @@ Result<LutSampler::Built> LutSampler::buildTable(const std::string& stream,
     return built;
 }
 
-void LutSampler::build(bool with_annotations)
+void SamplesDocument::build(bool with_annotations)
 {
     if (building() || m_stream.isEmpty())
         return;
     m_cancel = false;
     m_done = 0;
     m_total = 0;
-    m_watcher.setFuture(QtConcurrent::run(&LutSampler::buildTable, toLocalPath(m_stream), m_samples,
-                                          with_annotations, &m_cancel, &m_done, &m_total));
+    m_watcher.setFuture(QtConcurrent::run(&SamplesDocument::buildTable, toLocalPath(m_stream),
+                                          m_samples, with_annotations, &m_cancel, &m_done,
+                                          &m_total));
 }
 
 } // namespace fieldsight::ui

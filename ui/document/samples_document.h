@@ -1,4 +1,4 @@
-// Sample regions for building a LUT: rectangles of frames marked with a colour class, kept beside
+// The LUT samples document: rectangles of frames marked with a colour class, kept beside
 // the stream (lut_samples.json, saved at every change) so the table can be built again after the
 // light changes; each added or removed sample is an undoable command of its own stack. Building
 // reads every sampled frame (and, as an option, the stream's annotations as samples) in the
@@ -17,12 +17,12 @@
 
 namespace fieldsight::ui {
 
-class LutSampler : public QObject
+class SamplesDocument : public QObject
 {
     Q_OBJECT
 public:
-    explicit LutSampler(LutDocument& lut, QObject* parent = nullptr);
-    ~LutSampler() override;
+    explicit SamplesDocument(LutDocument& lut, QObject* parent = nullptr);
+    ~SamplesDocument() override;
 
     /// The stream the samples belong to: its samples file is read if there is one (a bad file
     /// is an Error naming it, kept as loadProblem(); the samples are then empty and the file is
