@@ -250,6 +250,13 @@ void FrameWorker::release(std::shared_ptr<FrameSource> source)
                 m_live_control.reset();
                 m_live_source.reset();
             }
+            {
+                std::lock_guard lock(m_mutex);
+                if (m_ahead_for.source == source) { // a step on the new stream never finds it
+                    m_ahead.reset();
+                    m_ahead_for = {};
+                }
+            }
             source.reset();
         },
         Qt::QueuedConnection);

@@ -80,7 +80,7 @@ void LutEditTool::press(const ToolEvent& event)
         return;
     }
     if (event.button == Qt::RightButton) {
-        pick(event.point);
+        pickColourAt(m_context, event.point);
         return;
     }
     if (event.button == Qt::LeftButton) {
@@ -122,13 +122,13 @@ void LutEditTool::pressImage(QPoint pixel)
         apply(std::move(*p));
 }
 
-void LutEditTool::pick(QPoint pixel)
+void pickColourAt(ToolContext& context, QPoint pixel)
 {
-    const auto& out = m_context.session.stream().current();
+    const auto& out = context.session.stream().current();
     if (!out || out->classes.empty() || pixel.x() < 0 || pixel.y() < 0 ||
         pixel.x() >= out->classes.cols || pixel.y() >= out->classes.rows)
         return;
-    m_context.settings.setColour(Colour(out->classes.at<std::uint8_t>(pixel.y(), pixel.x())));
+    context.settings.setColour(Colour(out->classes.at<std::uint8_t>(pixel.y(), pixel.x())));
 }
 
 void LutEditTool::dabUv(const ToolEvent& event)

@@ -53,8 +53,11 @@ protected:
 
 private:
     void dabUv(const ToolEvent& event);
-    void pick(QPoint pixel);
 };
+
+/// Makes the class under image pixel `pixel` of the current frame the one the tools paint (what
+/// the right button does with every LUT tool).
+void pickColourAt(ToolContext& context, QPoint pixel);
 
 /// The preview of `changes` on `frame`: their pixels, cells and the cells taken by class.
 ToolPreview previewOfChanges(std::vector<CellChange> changes, const cv::Mat* frame);

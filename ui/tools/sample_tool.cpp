@@ -3,6 +3,7 @@
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
 #include "ui/document/editing_session.h"
+#include "ui/tools/lut_edit_tool.h"
 #include "ui/tools/lut_tool_settings.h"
 
 #include <QRect>
@@ -21,6 +22,8 @@ ToolInfo SampleTool::info() const
 
 void SampleTool::press(const ToolEvent& event)
 {
+    if (event.button == Qt::RightButton)
+        pickColourAt(m_context, event.point);
     if (event.button != Qt::LeftButton)
         return;
     m_from = m_to = event.point;
