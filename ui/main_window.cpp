@@ -112,6 +112,7 @@ void MainWindow::buildCentre()
     m_view = new FrameView(central);
     m_view->setObjectName(QStringLiteral("frame_view"));
     m_view->setTools(m_tools);
+    m_view->setStream(m_session->stream());
     column->addWidget(m_view, 1);
     m_navigator = new StreamNavigator(m_session->stream(), central);
     column->addWidget(m_navigator);
@@ -229,8 +230,6 @@ void MainWindow::showCompareCells(const std::vector<std::uint32_t>& cells)
 
 void MainWindow::onStreamChanged()
 {
-    m_view->setOutput(nullptr);
-    m_view->fitToWindow();
     m_detections->showOutput(nullptr);
     updateTitle();
 }
@@ -238,7 +237,6 @@ void MainWindow::onStreamChanged()
 void MainWindow::onFrameReady()
 {
     const auto& out = m_session->stream().current();
-    m_view->setOutput(out);
     refreshCellHighlights();
     // The view first; the panels follow once it has painted (at once when it cannot paint).
     if (!m_view->isVisible())

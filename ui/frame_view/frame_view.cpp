@@ -315,6 +315,16 @@ void FrameView::wheelEvent(QWheelEvent* event)
         setZoom(nextZoomStep(m_zoom, steps), anchor);
 }
 
+void FrameView::setStream(StreamDocument& stream)
+{
+    connect(&stream, &StreamDocument::frameReady, this,
+            [this, &stream] { setOutput(stream.current()); });
+    connect(&stream, &StreamDocument::streamChanged, this, [this] {
+        setOutput(nullptr);
+        fitToWindow();
+    });
+}
+
 void FrameView::setTools(ToolManager* tools)
 {
     m_tools = tools;

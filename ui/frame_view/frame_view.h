@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ui/document/frame_worker.h"
+#include "ui/document/stream_document.h"
 #include "ui/tools/tool_manager.h"
 #include "visioncore/services/layers.h"
 
@@ -30,6 +31,8 @@ public:
     explicit FrameView(QWidget* parent = nullptr);
 
     void setOutput(std::shared_ptr<const FrameOutput> output);
+    /// Shows `stream`'s frames as they come (a new stream fits the window).
+    void setStream(StreamDocument& stream);
     const std::shared_ptr<const FrameOutput>& output() const { return m_output; }
 
     void setVisibleLayers(LayerSet layers);
