@@ -14,7 +14,7 @@
 #include "visioncore/io/lut_import.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <QAction>
 #include <QActionGroup>

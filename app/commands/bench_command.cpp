@@ -3,7 +3,7 @@
 // design) and a full-frame classification with OpenCV connected components (a common baseline).
 #include "commands/commands.h"
 
-#include "visioncore/io/json_text.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/io/memory_data_wrapper.h"
 #include "visioncore/services/worker_pool.h"

@@ -2,7 +2,7 @@
 // §5.3, printed as a table and written as fieldsight-eval/1.
 #include "commands/commands.h"
 
-#include "visioncore/io/json_text.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/services/evaluation.h"
 
 #include <nlohmann/json.hpp>

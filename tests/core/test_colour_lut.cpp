@@ -1,5 +1,5 @@
 // The native .lut format (SPEC §3) and atomic saving.
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/colour_lut.h"
 
 #include "support/kill_during_save.h"

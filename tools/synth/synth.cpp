@@ -6,7 +6,7 @@
 #include "synth/stream_frame.h"
 
 #include "visioncore/io/annotations.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "visioncore/colour_lut.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 #include "visioncore/services/lut_editing.h"
 
 #include <QObject>

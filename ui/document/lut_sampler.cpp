@@ -4,7 +4,7 @@
 #include "ui/adapters/local_path.h"
 
 #include "visioncore/io/annotations.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_compare.h"
 

@@ -2,7 +2,7 @@
 
 #include "ui/adapters/local_path.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 

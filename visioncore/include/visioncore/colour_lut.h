@@ -1,8 +1,8 @@
 // The colour lookup table: 128^3 cells of colour ids, indexed by 7-bit Y, Cb, Cr (SPEC §3).
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/result.h"
 
 #include <cstddef>
 #include <cstdint>

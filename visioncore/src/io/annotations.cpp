@@ -1,10 +1,10 @@
 // Ground-truth annotation files (SPEC §5.2): strict reading, atomic writing.
 #include "visioncore/io/annotations.h"
 
-#include "visioncore/io/json_text.h"
-#include "io/json_format.h"
+#include "visioncore/basics/json_text.h"
+#include "basics/json_format.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -21,7 +21,7 @@ using OrderedJson = nlohmann::ordered_json;
 Result<Annotations> Annotations::fromJson(const std::string& text, const std::string& source,
                                           const Pipeline& pipeline)
 {
-    auto parsed = io::parseFormattedJson(text, source, kFormat);
+    auto parsed = parseFormattedJson(text, source, kFormat);
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();

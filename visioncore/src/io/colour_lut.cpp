@@ -1,7 +1,7 @@
 // The native .lut format (SPEC §3): 2,097,152 raw colour ids, validated on load, saved atomically.
 #include "visioncore/colour_lut.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <algorithm>
 #include <cstring>

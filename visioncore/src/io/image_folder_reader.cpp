@@ -19,9 +19,9 @@
 #include <optional>
 #include <system_error>
 
-#include "visioncore/io/atomic_file.h"
-#include "visioncore/io/json_text.h"
-#include "visioncore/ycbcr.h"
+#include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/json_text.h"
+#include "visioncore/basics/ycbcr.h"
 
 namespace fieldsight::io {
 

@@ -6,10 +6,10 @@
 
 #include "visioncore/colour_lut.h"
 #include "visioncore/framework/debug_drawing.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/green_horizon.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/segments.h"
+#include "visioncore/basics/segments.h"
 
 #include <opencv2/core/mat.hpp>
 

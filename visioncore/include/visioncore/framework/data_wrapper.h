@@ -3,7 +3,7 @@
 
 #include "visioncore/colour_lut.h"
 #include "visioncore/framework/debug_drawing.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <opencv2/core/mat.hpp>
 

@@ -3,7 +3,7 @@
 
 #include "visioncore/framework/controller.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <map>
 #include <string>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "visioncore/colour_lut.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <string>
 #include <string_view>

@@ -7,7 +7,7 @@
 #include "visioncore/colour_lut.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/stream_reader.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <opencv2/core/types.hpp>
 

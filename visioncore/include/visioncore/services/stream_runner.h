@@ -9,7 +9,7 @@
 #include "visioncore/framework/param_set.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <atomic>
 #include <cstddef>
