@@ -1,6 +1,6 @@
 // The native .lut format (SPEC §3) and atomic saving.
 #include "visioncore/basics/atomic_file.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include "support/kill_during_save.h"
 

@@ -8,7 +8,7 @@
 #include "ui/adapters/local_path.h"
 #include "ui/document/lut_document.h"
 #include "ui/main_window.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <opencv2/imgcodecs.hpp>

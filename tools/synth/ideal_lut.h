@@ -11,7 +11,7 @@
 #pragma once
 
 #include "visioncore/basics/colour.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include <opencv2/core/mat.hpp>
 

@@ -7,7 +7,7 @@
 
 #include "visioncore/io/annotations.h"
 #include "visioncore/basics/atomic_file.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <nlohmann/json.hpp>

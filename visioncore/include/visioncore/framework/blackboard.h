@@ -4,7 +4,7 @@
 // percepts are the frame's output.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/debug_drawing.h"
 #include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/green_horizon.h"

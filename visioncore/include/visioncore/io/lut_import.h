@@ -1,7 +1,7 @@
 // Colour tables of other RoboCup teams (SPEC §3), mapped onto Fieldsight's colour ids.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/basics/result.h"
 
 #include <string>

@@ -4,7 +4,7 @@
 // table can be rebuilt after the light changes. Shared by `fieldsight lut build` and the GUI.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/basics/result.h"

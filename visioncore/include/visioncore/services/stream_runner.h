@@ -3,7 +3,7 @@
 // the command line and the GUI both drive it.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"

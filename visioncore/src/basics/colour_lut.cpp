@@ -1,5 +1,5 @@
 // The native .lut format (SPEC §3): 2,097,152 raw colour ids, validated on load, saved atomically.
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include "visioncore/basics/atomic_file.h"
 
