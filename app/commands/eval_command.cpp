@@ -112,7 +112,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, input.error().message);
         const std::string truth_path =
             parser.isSet("truth") ? toLocalPath(parser.value("truth")) : defaultTruthPath(stream);
-        auto truth = Annotations::load(truth_path, ctx.pipeline);
+        auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
         if (!truth)
             return badInput(ctx, truth.error().message);
         // Precision and recall of nothing would print as a perfect 1.000.

@@ -130,7 +130,7 @@ int buildCommand(const QStringList& args, const Context& ctx)
             const std::string truth_path = parser.isSet("truth")
                                                ? toLocalPath(parser.value("truth"))
                                                : defaultTruthPath(stream);
-            auto truth = Annotations::load(truth_path, ctx.pipeline);
+            auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
             if (!truth)
                 return badInput(ctx, truth.error().message);
             samples.samples =

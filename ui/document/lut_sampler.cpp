@@ -3,6 +3,7 @@
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
 
+#include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/services/evaluation.h"
@@ -140,7 +141,7 @@ Result<LutSampler::Built> LutSampler::buildTable(const std::string& stream,
     std::vector<LutSample> all;
     if (with_annotations) {
         const std::string truth = defaultTruthPath(stream);
-        auto annotations = Annotations::load(truth);
+        auto annotations = Annotations::load(truth, Pipeline::standard().perceptKinds());
         if (!annotations)
             return annotations.error();
         const StreamInfo& info = reader.value()->info();

@@ -74,7 +74,7 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
     const std::string truth_path = defaultTruthPath(local(spec));
     std::error_code ec;
     if (!truth_path.empty() && std::filesystem::exists(truth_path, ec)) {
-        auto annotations = Annotations::load(truth_path, pipeline);
+        auto annotations = Annotations::load(truth_path, pipeline.perceptKinds());
         if (annotations) {
             auto shared = std::make_shared<const Annotations>(std::move(annotations).value());
             opened->source->truth = shared->truthByStem();
