@@ -5,7 +5,7 @@
 
 #include "visioncore/basics/json_text.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/memory_data_wrapper.h"
+#include "visioncore/datawrappers/memory_data_wrapper.h"
 #include "visioncore/services/worker_pool.h"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // skip stages and survives a throwing stage, and no singletons (two cores side by side).
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/memory_data_wrapper.h"
+#include "visioncore/datawrappers/memory_data_wrapper.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_line.h"
 #include "visioncore/percepts/goalpost.h"

@@ -1,6 +1,6 @@
 // Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
 #include "support/synthetic_frames.h"
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/basics/ycbcr.h"
 

@@ -2,7 +2,7 @@
 
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <cstdlib>
