@@ -77,14 +77,6 @@ double msSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-/// Every pixel through the LUT into `classes` (CV_8UC1 of colour ids).
-void classifyFrame(const cv::Mat& image, const ColourLut& lut, cv::Mat& classes)
-{
-    classes.create(image.rows, image.cols, CV_8UC1);
-    for (int y = 0; y < image.rows; ++y)
-        lut.classifyRun(image.ptr<std::uint8_t>(y), 3, image.cols, classes.ptr<std::uint8_t>(y));
-}
-
 /// The floor: only the lookups of the pixels the pipeline's scan lines touch (full-width rows at
 /// `rows`, and columns from each start down to the bottom), through the scan lines' own lookup
 /// loop. Returns a checksum of the classes so the work cannot be optimised away; `pixels`
@@ -126,7 +118,7 @@ struct BaselineBuffers
 /// classes a mask and connected components, keeping the largest blob. Returns a checksum.
 std::uint32_t fullFrameBaseline(const cv::Mat& image, const ColourLut& lut, BaselineBuffers& b)
 {
-    classifyFrame(image, lut, b.classes);
+    lut.classifyImage(image, b.classes);
     std::uint32_t sum = 0;
     for (Colour colour : {Colour::Orange, Colour::Yellow}) {
         cv::compare(b.classes, cv::Scalar(double(colour)), b.mask, cv::CMP_EQ);
@@ -273,7 +265,7 @@ Result<BenchResults> runBench(StreamInput& input, const BenchOptions& options)
                     data.setFrame(*frame);
                     // Untimed: bring the frame and its LUT cells into cache, so all three
                     // measurements below start from the same state.
-                    classifyFrame(frame->ycbcr, *input.lut, warm);
+                    input.lut->classifyImage(frame->ycbcr, warm);
 
                     const auto start = Clock::now();
                     auto frame_report = control.runFrame();

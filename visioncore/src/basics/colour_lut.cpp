@@ -32,6 +32,14 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
     lookupRun(m_cells.data(), px, stride, count, out);
 }
 
+void ColourLut::classifyImage(const cv::Mat& ycbcr, cv::Mat& classes) const
+{
+    CV_Assert(ycbcr.type() == CV_8UC3);
+    classes.create(ycbcr.rows, ycbcr.cols, CV_8UC1);
+    for (int y = 0; y < ycbcr.rows; ++y)
+        classifyRun(ycbcr.ptr<std::uint8_t>(y), 3, ycbcr.cols, classes.ptr<std::uint8_t>(y));
+}
+
 Result<ColourLut> ColourLut::fromBytes(std::vector<std::uint8_t> bytes, const std::string& source)
 {
     if (bytes.size() != kCells)
