@@ -1,7 +1,7 @@
 // The pieces every headless command shares.
 #include "commands/cli.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 namespace fieldsight::cli {
 

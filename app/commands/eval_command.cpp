@@ -2,7 +2,7 @@
 // §5.3, printed as a table and written as fieldsight-eval/1.
 #include "commands/commands.h"
 
-#include "visioncore/io/json_text.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/services/evaluation.h"
 
 #include <nlohmann/json.hpp>
@@ -112,7 +112,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, input.error().message);
         const std::string truth_path =
             parser.isSet("truth") ? toLocalPath(parser.value("truth")) : defaultTruthPath(stream);
-        auto truth = Annotations::load(truth_path, ctx.pipeline);
+        auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
         if (!truth)
             return badInput(ctx, truth.error().message);
         // Precision and recall of nothing would print as a perfect 1.000.

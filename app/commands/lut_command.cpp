@@ -2,7 +2,7 @@
 // votes one from samples of a stream (a fieldsight-lut-samples/1 file, or its annotations).
 #include "commands/commands.h"
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_building.h"
@@ -130,7 +130,7 @@ int buildCommand(const QStringList& args, const Context& ctx)
             const std::string truth_path = parser.isSet("truth")
                                                ? toLocalPath(parser.value("truth"))
                                                : defaultTruthPath(stream);
-            auto truth = Annotations::load(truth_path, ctx.pipeline);
+            auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
             if (!truth)
                 return badInput(ctx, truth.error().message);
             samples.samples =

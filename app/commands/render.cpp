@@ -2,7 +2,7 @@
 #include "commands/render.h"
 
 #include "ui/adapters/overlay_painter.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <QBuffer>
 #include <QImage>

@@ -85,7 +85,7 @@ int runCommand(const QStringList& args, const Context& ctx)
             // The stream's annotations, if any, are the truth layers.
             const std::string truth_path = defaultTruthPath(stream);
             if (std::filesystem::is_regular_file(truth_path)) {
-                auto loaded = Annotations::load(truth_path, ctx.pipeline);
+                auto loaded = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
                 if (!loaded)
                     return badInput(ctx, loaded.error().message);
                 truth = std::move(loaded).value();

@@ -1,4 +1,5 @@
 // Ground-truth annotation files (SPEC §5.2): round trip, derived goalpost base, bad input.
+#include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
@@ -24,6 +25,12 @@ const char* kSpecExample = R"({"format": "fieldsight-annotations/1",
    "field_boundary": [[0, 62], [319, 58]],
    "field_lines": [{"x1": 10, "y1": 200, "x2": 300, "y2": 181}]}}})";
 
+/// The percept kinds the standard pipeline reads and writes.
+std::vector<const PerceptKind*> kinds()
+{
+    return Pipeline::standard().perceptKinds();
+}
+
 } // namespace
 
 class TestAnnotations : public QObject
@@ -33,7 +40,7 @@ class TestAnnotations : public QObject
 private slots:
     void readsTheSpecExample()
     {
-        auto parsed = Annotations::fromJson(kSpecExample, "annotations.json");
+        auto parsed = Annotations::fromJson(kSpecExample, "annotations.json", kinds());
         QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
         const Annotations& a = parsed.value();
         QCOMPARE(a.frames.size(), std::size_t(1));
@@ -77,8 +84,8 @@ private slots:
 
         QTemporaryDir dir;
         const std::string path = dir.filePath("annotations.json").toStdString();
-        QVERIFY(a.save(path).ok());
-        auto loaded = Annotations::load(path);
+        QVERIFY(a.save(path, kinds()).ok());
+        auto loaded = Annotations::load(path, kinds());
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
         const Annotations& b = loaded.value();
         QCOMPARE(b.frames.size(), std::size_t(2));
@@ -97,8 +104,9 @@ private slots:
         QCOMPARE(boundaryOf(g.truth), boundaryOf(f.truth));
         QCOMPARE(g.truth.list<FieldLine>()[0].x2, 3.0);
         // Saving what was loaded gives the same text.
-        QCOMPARE(b.toJson(), a.toJson());
-        QVERIFY(a.toJson().find("\"format\": \"fieldsight-annotations/1\"") != std::string::npos);
+        QCOMPARE(b.toJson(kinds()), a.toJson(kinds()));
+        QVERIFY(a.toJson(kinds()).find("\"format\": \"fieldsight-annotations/1\"") !=
+                std::string::npos);
     }
 
     void aWriterKilledMidSaveLeavesTheOldOrTheNewFile()
@@ -119,21 +127,22 @@ private slots:
         }
         QTemporaryDir dir;
         const std::string path = dir.filePath("annotations.json").toStdString();
-        const std::string first_bytes = first.toJson(), second_bytes = second.toJson();
+        const std::string first_bytes = first.toJson(kinds()),
+                          second_bytes = second.toJson(kinds());
         QVERIFY(first_bytes != second_bytes);
-        QVERIFY(first.save(path).ok());
+        QVERIFY(first.save(path, kinds()).ok());
         QCOMPARE(readWholeFile(path).value(), first_bytes); // a save writes toJson()
 
         const auto result = test::killDuringSaves(
-            path, [&](bool two) { (void)(two ? second : first).save(path); }, first_bytes,
+            path, [&](bool two) { (void)(two ? second : first).save(path, kinds()); }, first_bytes,
             second_bytes, 100, 60000);
         QCOMPARE(result.rounds, 100);
         QVERIFY2(result.mixes == 0 && result.unreadable == 0, result.first_problem.c_str());
         QVERIFY(result.saw_second > 0);
-        auto loaded = Annotations::load(path);
+        auto loaded = Annotations::load(path, kinds());
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
         QCOMPARE(loaded.value().frames.size(), std::size_t(1000));
-        QVERIFY(first.save(path).ok());
+        QVERIFY(first.save(path, kinds()).ok());
         QCOMPARE(test::temporariesOf(path), 0); // the next save removes a stray temporary
         qInfo("100 kills of a %zu-byte save: the new file %d times, the old %d times, %lld "
               "temporaries left before the next save",
@@ -144,12 +153,12 @@ private slots:
     void rejectsWrongFormatString()
     {
         auto parsed = Annotations::fromJson(R"({"format": "fieldsight-results/1", "frames": {}})",
-                                            "/x/annotations.json");
+                                            "/x/annotations.json", kinds());
         QVERIFY(!parsed.ok());
         QCOMPARE(parsed.error().message,
                  std::string("/x/annotations.json: unsupported format \"fieldsight-results/1\" "
                              "(expected \"fieldsight-annotations/1\")"));
-        auto missing = Annotations::fromJson(R"({"frames": {}})", "a.json");
+        auto missing = Annotations::fromJson(R"({"frames": {}})", "a.json", kinds());
         QVERIFY(!missing.ok());
         QCOMPARE(missing.error().message,
                  std::string("a.json: missing \"format\": \"fieldsight-annotations/1\""));
@@ -187,11 +196,11 @@ private slots:
         for (const auto& [frames, problem] : cases) {
             const std::string text =
                 std::string(R"({"format": "fieldsight-annotations/1", "frames": )") + frames + "}";
-            auto parsed = Annotations::fromJson(text, "ann.json");
+            auto parsed = Annotations::fromJson(text, "ann.json", kinds());
             QVERIFY(!parsed.ok());
             QCOMPARE(parsed.error().message, std::string("ann.json: ") + problem);
         }
-        auto not_json = Annotations::fromJson("{", "ann.json");
+        auto not_json = Annotations::fromJson("{", "ann.json", kinds());
         QVERIFY(!not_json.ok());
         // Where the text stops being JSON, and why.
         QVERIFY2(
@@ -201,7 +210,7 @@ private slots:
 
     void loadingAMissingFileNamesIt()
     {
-        auto loaded = Annotations::load("/nonexistent/annotations.json");
+        auto loaded = Annotations::load("/nonexistent/annotations.json", kinds());
         QVERIFY(!loaded.ok());
         QCOMPARE(
             loaded.error().message,

@@ -1,8 +1,9 @@
 // The paper's architecture, minus its drawbacks: wrappers as the only doors, a controller that can
-// skip stages and survives a throwing stage, and no singletons (two cores side by side).
+// skip stages and survives a throwing stage, no singletons (two cores side by side), and the
+// core's layers as folders that include only downwards.
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/memory_data_wrapper.h"
+#include "visioncore/datawrappers/memory_data_wrapper.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_line.h"
 #include "visioncore/percepts/goalpost.h"
@@ -10,9 +11,94 @@
 
 #include <QtTest>
 
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
 using namespace fieldsight;
 
 namespace {
+
+namespace fs = std::filesystem;
+
+/// The folders below include/visioncore/ and src/ that are layers, lowest first, and the layers
+/// each must not include (STYLE.md, "The shape": basics <- formats (io) <- framework and the
+/// DataWrappers <- percepts <- services; the stages use the framework and are used by nothing
+/// but the stage list).
+const std::map<std::string, std::set<std::string>>& forbiddenIncludes()
+{
+    static const std::map<std::string, std::set<std::string>> rules{
+        {"basics", {"io", "framework", "datawrappers", "percepts", "services", "stages"}},
+        {"io", {"framework", "datawrappers", "services", "stages"}},
+        {"framework", {"io", "datawrappers", "services"}},
+        {"datawrappers", {"services", "stages"}},
+        {"percepts", {"io", "datawrappers", "services", "stages"}},
+        {"services", {"stages"}},
+    };
+    return rules;
+}
+
+/// The layer an include path names: "visioncore/io/frame.h" (public) and "io/strm_format.h"
+/// (private to the core) are both "io"; empty for anything else.
+std::string layerOfInclude(std::string path)
+{
+    if (path.rfind("visioncore/", 0) == 0)
+        path.erase(0, std::string("visioncore/").size());
+    const auto slash = path.find('/');
+    if (slash == std::string::npos)
+        return {};
+    const std::string layer = path.substr(0, slash);
+    return forbiddenIncludes().count(layer) || layer == "stages" ? layer : std::string();
+}
+
+/// Every quoted include of a file under `core` (a visioncore folder: include/visioncore/<layer>
+/// and src/<layer>) that its layer must not include, as "<file>: <include>". Loose headers at
+/// include/visioncore/ (in no layer) are reported too.
+std::vector<std::string> layerViolations(const fs::path& core)
+{
+    std::vector<std::string> problems;
+    const auto check = [&](const fs::path& root) {
+        std::error_code ec;
+        for (auto it = fs::recursive_directory_iterator(root, ec);
+             !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+            const fs::path& file = it->path();
+            if (!it->is_regular_file() || (file.extension() != ".h" && file.extension() != ".cpp"))
+                continue;
+            const fs::path relative = file.lexically_relative(root);
+            if (relative.begin() == relative.end() ||
+                std::next(relative.begin()) == relative.end()) {
+                if (root.filename() == "visioncore")
+                    problems.push_back(file.string() + ": a header in no layer");
+                continue;
+            }
+            const auto rule = forbiddenIncludes().find(relative.begin()->string());
+            if (rule == forbiddenIncludes().end())
+                continue;
+            std::ifstream in(file);
+            std::string line;
+            while (std::getline(in, line)) {
+                const auto open = line.find("#include \"");
+                if (open == std::string::npos)
+                    continue;
+                const auto start = open + std::string("#include \"").size();
+                const std::string included = line.substr(start, line.find('"', start) - start);
+                if (rule->second.count(layerOfInclude(included)))
+                    problems.push_back(file.string() + ": " + included);
+            }
+        }
+    };
+    check(core / "include" / "visioncore");
+    check(core / "src");
+    return problems;
+}
+
+/// Writes `text` to `path`, making its folder.
+void writeFile(const fs::path& path, const std::string& text)
+{
+    fs::create_directories(path.parent_path());
+    std::ofstream(path) << text;
+}
 
 class RecordingSink : public DebugSink
 {
@@ -41,6 +127,42 @@ class TestArchitecture : public QObject
 {
     Q_OBJECT
 private slots:
+    void layersIncludeOnlyDownwards()
+    {
+        const fs::path core = fs::path(FIELDSIGHT_SOURCE_DIR) / "visioncore";
+        QVERIFY(fs::is_directory(core / "include" / "visioncore" / "basics"));
+        std::string all;
+        for (const std::string& problem : layerViolations(core))
+            all += problem + "\n";
+        QVERIFY2(all.empty(), all.c_str());
+    }
+
+    void layerCheckFindsUpwardIncludes()
+    {
+        // The check above must be able to fail: a small tree with one upward include per rule
+        // the task cares about, and one loose header.
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const fs::path core = fs::path(dir.path().toStdString());
+        const fs::path include = core / "include" / "visioncore";
+        writeFile(include / "loose.h", "#pragma once\n");
+        writeFile(include / "basics" / "ok.h", "#include \"visioncore/basics/result.h\"\n");
+        writeFile(include / "basics" / "up.h", "#include \"visioncore/framework/stage.h\"\n");
+        writeFile(include / "io" / "up.h", "#include \"visioncore/datawrappers/x.h\"\n");
+        writeFile(core / "src" / "io" / "up.cpp", "#include \"visioncore/services/y.h\"\n");
+        writeFile(core / "src" / "framework" / "up.cpp", "#include \"io/strm_format.h\"\n");
+        writeFile(core / "src" / "framework" / "ok.cpp", "#include <io/not_ours.h>\n");
+        std::vector<std::string> found = layerViolations(core);
+        for (std::string& f : found)
+            f = fs::path(f.substr(0, f.find(':'))).filename().string() + f.substr(f.find(':'));
+        std::sort(found.begin(), found.end());
+        const std::vector<std::string> expected{
+            "loose.h: a header in no layer", "up.cpp: io/strm_format.h",
+            "up.cpp: visioncore/services/y.h", "up.h: visioncore/datawrappers/x.h",
+            "up.h: visioncore/framework/stage.h"};
+        QCOMPARE(found, expected);
+    }
+
     void pipelineHasTheSevenStagesInOrder()
     {
         const std::vector<std::string> expected{"green_horizon", "scanlines",   "transitions",

@@ -4,7 +4,7 @@
 // camera:0 is tried when the machine has one.
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/camera_data_wrapper.h"
+#include "visioncore/datawrappers/camera_data_wrapper.h"
 #include "visioncore/percepts/ball.h"
 
 #include <QElapsedTimer>

@@ -1,7 +1,7 @@
 // The fieldsight executable's headless commands as a user meets them: exit statuses, one-line
 // errors naming the file, and the JSON of run, bench and eval on a tiny stream.
 #include "support/synthetic_frames.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <QtTest>

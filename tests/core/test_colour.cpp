@@ -1,5 +1,5 @@
 // Colour class names and display colours (SPEC §1).
-#include "visioncore/colour.h"
+#include "visioncore/basics/colour.h"
 
 #include <QtTest>
 

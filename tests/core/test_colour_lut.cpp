@@ -1,6 +1,6 @@
 // The native .lut format (SPEC §3) and atomic saving.
-#include "visioncore/io/atomic_file.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include "support/kill_during_save.h"
 
@@ -72,6 +72,30 @@ private slots:
         QCOMPARE(ColourLut::index(0, 2, 0), std::size_t(128));
         QCOMPARE(ColourLut::index(2, 0, 0), std::size_t(16384));
         QCOMPARE(ColourLut::index(255, 255, 255), ColourLut::kCells - 1);
+    }
+
+    void classifyImageGivesEachPixelsCellId()
+    {
+        ColourLut lut;
+        lut.setCell(ColourLut::index(200, 100, 50), Colour::Orange);
+        lut.setCell(ColourLut::index(31, 128, 129), Colour::Green);
+        // A region of interest of a bigger image: rows are not contiguous.
+        cv::Mat big(5, 7, CV_8UC3, cv::Scalar(0, 0, 0));
+        cv::Mat image = big(cv::Rect(1, 1, 3, 2));
+        image.at<cv::Vec3b>(0, 0) = {200, 100, 50};
+        image.at<cv::Vec3b>(0, 2) = {201, 101, 51}; // the same cell: 7 bits of each channel
+        image.at<cv::Vec3b>(1, 1) = {30, 129, 128};
+        cv::Mat classes(1, 1, CV_8UC1, cv::Scalar(99)); // replaced, whatever it held
+        lut.classifyImage(image, classes);
+        QCOMPARE(classes.type(), CV_8UC1);
+        QCOMPARE(classes.size(), image.size());
+        const std::uint8_t orange = std::uint8_t(Colour::Orange);
+        const std::uint8_t green = std::uint8_t(Colour::Green);
+        const std::uint8_t none = std::uint8_t(Colour::Unclassified);
+        const std::vector<std::uint8_t> expected{orange, none, orange, none, green, none};
+        QCOMPARE(
+            std::vector<std::uint8_t>(classes.begin<std::uint8_t>(), classes.end<std::uint8_t>()),
+            expected);
     }
 
     void saveThenLoadIsByteIdentical()

@@ -8,7 +8,7 @@
 #include "support/fake_stage.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/blackboard.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/services/results_json.h"
 
 #include <QImage>

@@ -1,8 +1,8 @@
 // Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
 #include "support/synthetic_frames.h"
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
-#include "visioncore/ycbcr.h"
+#include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>

@@ -2,6 +2,7 @@
 // exactly the expected cells, smoothing, majority, soft classes, cancel, and a table built from a
 // bundled stream's annotations that finds what the stream's ideal LUT finds.
 #include "support/synthetic_frames.h"
+#include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_building.h"
 #include "visioncore/services/lut_editing.h"
@@ -302,7 +303,7 @@ private slots:
                       "field_boundary": [[0, 10], [63, 10]],
                       "field_lines": [{"x1": 0, "y1": 40, "x2": 63, "y2": 40}]},
             "b.png": {"done": false, "balls": [{"x": 30, "y": 30, "radius": 5}]}}})",
-                                           "truth");
+                                           "truth", Pipeline::standard().perceptKinds());
         QVERIFY(truth.ok());
         const auto samples = samplesFromAnnotations(truth.value(), {64, 48});
         // Paint them as a frame would be painted: each pixel its last sample's class.
@@ -367,7 +368,8 @@ private slots:
     {
         auto reader = openStream(lab2());
         QVERIFY(reader.ok());
-        auto truth = Annotations::load(defaultTruthPath(lab2()));
+        auto truth =
+            Annotations::load(defaultTruthPath(lab2()), Pipeline::standard().perceptKinds());
         QVERIFY(truth.ok());
         const auto samples = samplesFromAnnotations(truth.value(), {320, 240});
         std::size_t calls = 0;
@@ -397,7 +399,7 @@ private slots:
         auto input = openStreamInput(lab2(), "");
         QVERIFY(input.ok());
         const std::string truth_path = defaultTruthPath(lab2());
-        auto truth = Annotations::load(truth_path);
+        auto truth = Annotations::load(truth_path, Pipeline::standard().perceptKinds());
         QVERIFY(truth.ok());
         auto ideal = evaluateStream(input.value(), truth.value(), truth_path, 2);
         QVERIFY(ideal.ok());

@@ -4,7 +4,7 @@
 #include "stages/transitions/transition_filter.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/memory_data_wrapper.h"
+#include "visioncore/datawrappers/memory_data_wrapper.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_line.h"
 #include "visioncore/percepts/goalpost.h"

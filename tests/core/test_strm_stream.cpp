@@ -1,5 +1,5 @@
 // Original NUbots image streams (.strm): writer/reader round trip, flips, and damaged files.
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 
 #include "support/synthetic_frames.h"

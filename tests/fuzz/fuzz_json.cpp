@@ -49,8 +49,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string text(reinterpret_cast<const char*>(data), size);
 #if FUZZ_DOCUMENT == FUZZ_ANNOTATIONS
     roundTrip(
-        text, [](const std::string& t) { return Annotations::fromJson(t, "annotations.json"); },
-        [](const Annotations& a) { return a.toJson(); });
+        text,
+        [](const std::string& t) {
+            return Annotations::fromJson(t, "annotations.json",
+                                         Pipeline::standard().perceptKinds());
+        },
+        [](const Annotations& a) { return a.toJson(Pipeline::standard().perceptKinds()); });
 #elif FUZZ_DOCUMENT == FUZZ_RESULTS
     roundTrip(
         text, [](const std::string& t) { return readResults(t, "results.json"); },

@@ -1,8 +1,8 @@
 #include "fuzz_support.h"
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <cstdlib>

@@ -2,7 +2,7 @@
 // stored output. Regenerate on purpose with FIELDSIGHT_REGENERATE_GOLDEN=1 (the run then fails, so
 // regeneration can never pass CI silently).
 #include "support/synthetic_frames.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <QtTest>

@@ -3,7 +3,7 @@
 // version or the other, whole. Used by the LUT and the annotations tests.
 #pragma once
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <QDir>
 #include <QFileInfo>

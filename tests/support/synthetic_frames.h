@@ -1,7 +1,7 @@
 // Small synthetic frames with known answers for the core tests, and the test-data paths.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include <opencv2/core/mat.hpp>
 

@@ -10,7 +10,7 @@
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <opencv2/imgcodecs.hpp>

@@ -1,7 +1,7 @@
 // The generator's pinhole camera: a robot's head camera with a pose in the field frame.
 #pragma once
 
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <Eigen/Core>
 

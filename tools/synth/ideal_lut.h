@@ -10,8 +10,8 @@
 // "unclassified", so its cells stay unclassified.
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include <opencv2/core/mat.hpp>
 

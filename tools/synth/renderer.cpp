@@ -2,7 +2,7 @@
 #include "synth/renderer.h"
 
 #include "synth/synth_random.h"
-#include "visioncore/ycbcr.h"
+#include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/imgproc.hpp>
 

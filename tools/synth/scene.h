@@ -3,7 +3,7 @@
 
 #include "synth/camera_model.h"
 
-#include "visioncore/colour.h"
+#include "visioncore/basics/colour.h"
 
 #include <Eigen/Core>
 

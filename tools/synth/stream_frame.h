@@ -8,7 +8,7 @@
 #include "synth/scene.h"
 
 #include "visioncore/io/annotations.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <string>
 

@@ -5,9 +5,10 @@
 #include "synth/scenario_script.h"
 #include "synth/stream_frame.h"
 
+#include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
-#include "visioncore/io/atomic_file.h"
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <nlohmann/json.hpp>
@@ -143,7 +144,9 @@ Status generateStream(const SynthOptions& options)
 
     if (Status s = lut.build().save((dir / "default.lut").string()); !s)
         return s;
-    if (Status s = annotations.save((dir / "annotations.json").string()); !s)
+    if (Status s = annotations.save((dir / "annotations.json").string(),
+                                    Pipeline::standard().perceptKinds());
+        !s)
         return s;
     if (!options.write_png)
         return {}; // a manifest would name frames that do not exist

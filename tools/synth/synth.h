@@ -2,7 +2,7 @@
 // writes the frames with exact ground truth (SPEC §5.2), the kinematic horizon and an ideal LUT.
 #pragma once
 
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <cstdint>
 #include <string>

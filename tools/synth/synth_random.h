@@ -2,7 +2,7 @@
 // because the std:: distributions are allowed to differ between standard libraries.
 #pragma once
 
-#include "visioncore/splitmix.h"
+#include "visioncore/basics/splitmix.h"
 
 #include <cmath>
 #include <cstdint>

@@ -5,7 +5,7 @@
 #include "ui/main_window.h"
 #include "ui/panels/lut_compare_dialog.h"
 #include "ui/widgets/message_bar.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/io/lut_import.h"
 
 #include <QApplication>

@@ -1,7 +1,7 @@
 // cv::Mat <-> QImage conversions for the GUI and the Qt overlay renderer.
 #include "ui/adapters/image_adapter.h"
 
-#include "visioncore/ycbcr.h"
+#include "visioncore/basics/ycbcr.h"
 
 #include <QPainter>
 #include <QPixmap>

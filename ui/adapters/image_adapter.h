@@ -2,7 +2,7 @@
 // and the colour classes as the GUI shows them (name, swatch).
 #pragma once
 
-#include "visioncore/colour.h"
+#include "visioncore/basics/colour.h"
 
 #include <QColor>
 #include <QIcon>

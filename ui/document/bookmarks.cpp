@@ -1,7 +1,7 @@
 #include "ui/document/bookmarks.h"
 
-#include "visioncore/io/json_text.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/json_text.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 

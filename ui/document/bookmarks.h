@@ -2,7 +2,7 @@
 // stream (fieldsight-bookmarks/1) so every session, and any tool, finds them.
 #pragma once
 
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <cstddef>
 #include <string>

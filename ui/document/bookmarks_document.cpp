@@ -1,7 +1,7 @@
 #include "ui/document/bookmarks_document.h"
 
 #include "ui/adapters/local_path.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <QUndoCommand>
 

@@ -105,13 +105,12 @@ QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classe
         const Rgb rgb = colourDisplayRgb(Colour(c));
         palette[std::size_t(c)] = qRgb(rgb.r, rgb.g, rgb.b);
     }
-    classes.create(ycbcr.rows, ycbcr.cols, CV_8UC1);
+    lut.classifyImage(ycbcr, classes);
     QImage classified(ycbcr.cols, ycbcr.rows, QImage::Format_RGB32);
     if (classified.isNull())
         return classified;
     for (int y = 0; y < ycbcr.rows; ++y) {
-        std::uint8_t* ids = classes.ptr<std::uint8_t>(y);
-        lut.classifyRun(ycbcr.ptr<std::uint8_t>(y), 3, ycbcr.cols, ids);
+        const std::uint8_t* ids = classes.ptr<std::uint8_t>(y);
         auto* out = reinterpret_cast<QRgb*>(classified.scanLine(y));
         for (int x = 0; x < ycbcr.cols; ++x)
             out[x] = palette[ids[x]];

@@ -6,7 +6,7 @@
 #include "ui/document/gui_data_wrapper.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/io/annotations.h"
-#include "visioncore/io/camera_data_wrapper.h"
+#include "visioncore/datawrappers/camera_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/stream_runner.h"
 

@@ -2,8 +2,8 @@
 
 #include "ui/adapters/local_path.h"
 
-#include "visioncore/io/json_text.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/json_text.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -3,8 +3,8 @@
 // an autosave to a recovery file at most 30 s after an edit, offered again after a crash.
 #pragma once
 
-#include "visioncore/colour_lut.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/colour_lut.h"
+#include "visioncore/basics/result.h"
 #include "visioncore/services/lut_editing.h"
 
 #include <QObject>

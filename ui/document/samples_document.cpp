@@ -3,8 +3,9 @@
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
 
+#include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_compare.h"
 
@@ -139,7 +140,7 @@ SamplesDocument::buildTable(const std::string& stream, const LutSamples& samples
     std::vector<LutSample> all;
     if (with_annotations) {
         const std::string truth = defaultTruthPath(stream);
-        auto annotations = Annotations::load(truth);
+        auto annotations = Annotations::load(truth, Pipeline::standard().perceptKinds());
         if (!annotations)
             return annotations.error();
         const StreamInfo& info = reader.value()->info();

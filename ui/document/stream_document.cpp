@@ -4,7 +4,7 @@
 #include "ui/document/lut_document.h"
 #include "ui/document/pipeline_settings.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 
@@ -79,7 +79,7 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
     const std::string truth_path = defaultTruthPath(local(spec));
     std::error_code ec;
     if (!truth_path.empty() && std::filesystem::exists(truth_path, ec)) {
-        auto annotations = Annotations::load(truth_path, pipeline);
+        auto annotations = Annotations::load(truth_path, pipeline.perceptKinds());
         if (annotations) {
             auto shared = std::make_shared<const Annotations>(std::move(annotations).value());
             opened->source->truth = shared->truthByStem();

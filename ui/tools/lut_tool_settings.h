@@ -3,7 +3,7 @@
 // and changes them; the tools read them.
 #pragma once
 
-#include "visioncore/colour.h"
+#include "visioncore/basics/colour.h"
 #include "visioncore/services/lut_editing.h"
 
 #include <QObject>

@@ -1,9 +1,9 @@
 // Parameter sets: JSON, settings, and the check against a pipeline's parameters.
 #include "visioncore/framework/param_set.h"
 
-#include "visioncore/io/json_text.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/framework/controller.h"
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 

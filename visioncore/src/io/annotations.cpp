@@ -1,10 +1,10 @@
 // Ground-truth annotation files (SPEC §5.2): strict reading, atomic writing.
 #include "visioncore/io/annotations.h"
 
-#include "visioncore/io/json_text.h"
-#include "io/json_format.h"
+#include "visioncore/basics/json_text.h"
+#include "basics/json_format.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,9 +19,9 @@ using OrderedJson = nlohmann::ordered_json;
 } // namespace
 
 Result<Annotations> Annotations::fromJson(const std::string& text, const std::string& source,
-                                          const Pipeline& pipeline)
+                                          const std::vector<const PerceptKind*>& kinds)
 {
-    auto parsed = io::parseFormattedJson(text, source, kFormat);
+    auto parsed = parseFormattedJson(text, source, kFormat);
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();
@@ -32,7 +32,6 @@ Result<Annotations> Annotations::fromJson(const std::string& text, const std::st
         return annotations;
     if (!frames->is_object())
         return Error{source + ": \"frames\" must be an object keyed by frame name"};
-    const std::vector<const PerceptKind*> kinds = pipeline.perceptKinds();
     for (const auto& [name, json] : frames->items()) {
         const std::string where = "frames[\"" + name + "\"]";
         if (!json.is_object())
@@ -50,17 +49,17 @@ Result<Annotations> Annotations::fromJson(const std::string& text, const std::st
     return annotations;
 }
 
-Result<Annotations> Annotations::load(const std::string& path, const Pipeline& pipeline)
+Result<Annotations> Annotations::load(const std::string& path,
+                                      const std::vector<const PerceptKind*>& kinds)
 {
     auto text = readWholeFile(path);
     if (!text)
         return text.error();
-    return fromJson(text.value(), path, pipeline);
+    return fromJson(text.value(), path, kinds);
 }
 
-std::string Annotations::toJson() const
+std::string Annotations::toJson(const std::vector<const PerceptKind*>& order) const
 {
-    const std::vector<const PerceptKind*> order = Pipeline::standard().perceptKinds();
     OrderedJson frames_json = OrderedJson::object();
     for (const auto& [name, frame] : frames) {
         OrderedJson out;
@@ -87,9 +86,10 @@ std::map<std::string, const PerceptSet*> Annotations::truthByStem() const
     return out;
 }
 
-Status Annotations::save(const std::string& path) const
+Status Annotations::save(const std::string& path,
+                         const std::vector<const PerceptKind*>& order) const
 {
-    return writeFileAtomically(path, toJson());
+    return writeFileAtomically(path, toJson(order));
 }
 
 } // namespace fieldsight

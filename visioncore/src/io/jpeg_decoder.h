@@ -2,7 +2,7 @@
 // messages ("Corrupt JPEG data: ...") become Fieldsight's one line instead of stderr lines.
 #pragma once
 
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <opencv2/core.hpp>
 

@@ -1,7 +1,7 @@
 // Importers for other teams' colour tables: B-Human .c64, rUNSWift .nnmc(.bz2), UPenn .raw.
 #include "visioncore/io/lut_import.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <bzlib.h>
 #include <sys/stat.h>

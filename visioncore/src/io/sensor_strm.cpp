@@ -1,7 +1,7 @@
 // Reads only the "Horizon" entries of an original NUSensorsData text stream.
 #include "io/sensor_strm.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,8 +1,8 @@
 // The kinematic horizon from an original sensor stream (sensor.strm, design note §4.2).
 #pragma once
 
-#include "visioncore/geometry.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/geometry.h"
+#include "visioncore/basics/result.h"
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
 // Video files and live cameras through OpenCV videoio, converted to Y, Cb, Cr like RGB folders.
 #include "io/stream_readers.h"
 
-#include "visioncore/ycbcr.h"
+#include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>

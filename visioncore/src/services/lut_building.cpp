@@ -2,10 +2,10 @@
 // their smoothing.
 #include "visioncore/services/lut_building.h"
 
-#include "visioncore/io/json_text.h"
-#include "io/json_format.h"
+#include "visioncore/basics/json_text.h"
+#include "basics/json_format.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/percepts/field_line.h"
@@ -215,7 +215,7 @@ std::string defaultLutSamplesPath(const std::string& stream)
 
 Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string& source)
 {
-    auto parsed = io::parseFormattedJson(text, source, kLutSamplesFormat);
+    auto parsed = parseFormattedJson(text, source, kLutSamplesFormat);
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();

@@ -1,7 +1,7 @@
 // fieldsight-results/1: built and read with the JSON library.
 #include "visioncore/services/results_json.h"
 
-#include "visioncore/io/json_text.h"
+#include "visioncore/basics/json_text.h"
 
 #include <nlohmann/json.hpp>
 

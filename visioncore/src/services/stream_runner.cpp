@@ -2,7 +2,7 @@
 #include "visioncore/services/stream_runner.h"
 
 #include "visioncore/framework/control_wrapper.h"
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/services/worker_pool.h"
 
 #include <algorithm>

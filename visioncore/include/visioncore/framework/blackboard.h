@@ -4,12 +4,12 @@
 // percepts are the frame's output.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/debug_drawing.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/green_horizon.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/segments.h"
+#include "visioncore/basics/segments.h"
 
 #include <opencv2/core/mat.hpp>
 

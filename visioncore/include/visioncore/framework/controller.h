@@ -5,7 +5,7 @@
 
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/framework/stage.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <functional>
 #include <memory>

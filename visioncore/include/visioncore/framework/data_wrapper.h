@@ -1,9 +1,9 @@
 // DataWrapper: the only door through which the vision core reads the outside world.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/debug_drawing.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <opencv2/core/mat.hpp>
 

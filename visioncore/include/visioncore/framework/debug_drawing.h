@@ -1,8 +1,8 @@
 // Qt-free debug drawings: shapes per layer, produced by stages only when that layer is requested.
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/geometry.h"
 
 #include <map>
 #include <set>

@@ -1,8 +1,8 @@
 // Stage parameters: each declared once, as a typed member of its stage, with what an editor needs.
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/result.h"
 
 #include <cstdint>
 #include <string>

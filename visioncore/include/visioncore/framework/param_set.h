@@ -2,7 +2,7 @@
 // from "STAGE.PARAM=VALUE" settings, and applied to a core in one call.
 #pragma once
 
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <map>
 #include <string>

@@ -26,10 +26,10 @@
 // in percepts/ (see percept_set.h).
 #pragma once
 
-#include "visioncore/colour.h"
+#include "visioncore/basics/colour.h"
 #include "visioncore/framework/param.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <string>
 #include <string_view>

@@ -1,12 +1,12 @@
 // Ground-truth annotations (SPEC §5.2, fieldsight-annotations/1): per frame, the true percepts.
 #pragma once
 
-#include "visioncore/framework/controller.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace fieldsight {
 
@@ -24,15 +24,19 @@ struct Annotations
 {
     std::map<std::string, FrameAnnotation> frames; ///< by frame name
 
-    /// Reads the percept kinds of `pipeline`; other keys of a frame are ignored.
+    /// Reads the lists of `kinds` (a pipeline's perceptKinds()); other keys of a frame are
+    /// ignored.
     static Result<Annotations> load(const std::string& path,
-                                    const Pipeline& pipeline = Pipeline::standard());
+                                    const std::vector<const PerceptKind*>& kinds);
     static Result<Annotations> fromJson(const std::string& text, const std::string& source,
-                                        const Pipeline& pipeline = Pipeline::standard());
-    std::string toJson() const;
+                                        const std::vector<const PerceptKind*>& kinds);
+    /// Each frame's lists of `order` (a pipeline's perceptKinds()) first, in that order, then
+    /// the rest, so the file does not depend on the order the lists were made in.
+    std::string toJson(const std::vector<const PerceptKind*>& order) const;
     /// The true percepts of every frame by frameStem(), to look frames of any stream up in.
     std::map<std::string, const PerceptSet*> truthByStem() const;
-    Status save(const std::string& path) const; ///< atomic
+    Status save(const std::string& path,
+                const std::vector<const PerceptKind*>& order) const; ///< atomic, as toJson
 };
 
 } // namespace fieldsight

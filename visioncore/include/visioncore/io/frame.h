@@ -1,7 +1,7 @@
 // One camera frame as the core sees it: YCbCr bytes plus what the source knows about it.
 #pragma once
 
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <opencv2/core/mat.hpp>
 

@@ -1,8 +1,8 @@
 // Colour tables of other RoboCup teams (SPEC §3), mapped onto Fieldsight's colour ids.
 #pragma once
 
-#include "visioncore/colour_lut.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/colour_lut.h"
+#include "visioncore/basics/result.h"
 
 #include <string>
 #include <string_view>

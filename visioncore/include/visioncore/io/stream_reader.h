@@ -3,7 +3,7 @@
 #pragma once
 
 #include "visioncore/io/frame.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <array>
 #include <cstddef>

@@ -2,7 +2,7 @@
 // annotated field boundary (the true one).
 #pragma once
 
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/percept_set.h"
 
 #include <vector>

@@ -1,7 +1,7 @@
 // The green horizon: the upper convex hull of where the field starts, as a polyline and per column.
 #pragma once
 
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 // truth) and evaluation all use this one type, with one JSON reader/writer and one drawing.
 #pragma once
 
-#include "visioncore/colour.h"
+#include "visioncore/basics/colour.h"
 #include "visioncore/framework/debug_drawing.h"
 
 #include <nlohmann/json_fwd.hpp>

@@ -4,7 +4,7 @@
 // pixels changed class keep their result without running the pipeline.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
 #include "visioncore/services/evaluation.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "visioncore/io/annotations.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"

@@ -6,7 +6,7 @@
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/debug_drawing.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <set>
 #include <string>

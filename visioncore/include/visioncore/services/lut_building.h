@@ -4,10 +4,10 @@
 // table can be rebuilt after the light changes. Shared by `fieldsight lut build` and the GUI.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/stream_reader.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <opencv2/core/types.hpp>
 

@@ -3,7 +3,7 @@
 // frame (the whole-stream effect of an edit, the UV view's selection shown in the image).
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/services/lut_editing.h"
 
 #include <opencv2/core/mat.hpp>

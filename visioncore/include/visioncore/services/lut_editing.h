@@ -3,7 +3,7 @@
 // edit itself (and its undo) is the caller's.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include <opencv2/core/mat.hpp>
 #include <opencv2/core/types.hpp>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "visioncore/framework/controller.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <string>

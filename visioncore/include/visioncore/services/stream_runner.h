@@ -3,13 +3,13 @@
 // the command line and the GUI both drive it.
 #pragma once
 
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/percepts/percept_set.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <atomic>
 #include <cstddef>

@@ -4,7 +4,7 @@
 
 #include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
-#include "visioncore/segments.h"
+#include "visioncore/basics/segments.h"
 
 #include <cstdint>
 #include <vector>

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "stages/common/ransac.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <vector>
 

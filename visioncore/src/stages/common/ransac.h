@@ -2,8 +2,8 @@
 // reproducible (the original used the unseeded global rand()).
 #pragma once
 
-#include "visioncore/geometry.h"
-#include "visioncore/splitmix.h"
+#include "visioncore/basics/geometry.h"
+#include "visioncore/basics/splitmix.h"
 
 #include <cmath>
 #include <cstdint>

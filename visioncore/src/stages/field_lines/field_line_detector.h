@@ -4,7 +4,7 @@
 
 #include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <cstdint>
 #include <utility>

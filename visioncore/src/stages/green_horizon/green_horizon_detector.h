@@ -3,7 +3,7 @@
 #pragma once
 
 #include "visioncore/framework/stage.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/geometry.h"
 
 #include <vector>
 

@@ -2,8 +2,8 @@
 // segments, then segments of the object colours become that object's "transitions".
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/segments.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/segments.h"
 #include "visioncore/framework/stage.h"
 
 #include <vector>

@@ -1,5 +1,5 @@
 // BGR <-> Y, Cb, Cr through OpenCV's YCrCb conversion and a channel swap.
-#include "visioncore/ycbcr.h"
+#include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/imgproc.hpp>
 

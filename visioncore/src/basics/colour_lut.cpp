@@ -1,7 +1,7 @@
 // The native .lut format (SPEC §3): 2,097,152 raw colour ids, validated on load, saved atomically.
-#include "visioncore/colour_lut.h"
+#include "visioncore/basics/colour_lut.h"
 
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <algorithm>
 #include <cstring>
@@ -30,6 +30,14 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
                             std::uint8_t* out) const
 {
     lookupRun(m_cells.data(), px, stride, count, out);
+}
+
+void ColourLut::classifyImage(const cv::Mat& ycbcr, cv::Mat& classes) const
+{
+    CV_Assert(ycbcr.type() == CV_8UC3);
+    classes.create(ycbcr.rows, ycbcr.cols, CV_8UC1);
+    for (int y = 0; y < ycbcr.rows; ++y)
+        classifyRun(ycbcr.ptr<std::uint8_t>(y), 3, ycbcr.cols, classes.ptr<std::uint8_t>(y));
 }
 
 Result<ColourLut> ColourLut::fromBytes(std::vector<std::uint8_t> bytes, const std::string& source)

@@ -6,7 +6,7 @@
 #include "visioncore/framework/data_wrapper.h"
 #include "visioncore/io/frame.h"
 #include "visioncore/io/stream_reader.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <chrono>
 #include <condition_variable>

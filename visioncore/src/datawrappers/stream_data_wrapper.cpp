@@ -1,5 +1,5 @@
 // StreamDataWrapper: the DataWrapper the CLI and tests use, fed frame by frame from a StreamReader.
-#include "visioncore/io/stream_data_wrapper.h"
+#include "visioncore/datawrappers/stream_data_wrapper.h"
 
 namespace fieldsight {
 

@@ -4,7 +4,7 @@
 // for text that is not JSON.
 #pragma once
 
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,4 +1,4 @@
-#include "visioncore/io/camera_data_wrapper.h"
+#include "visioncore/datawrappers/camera_data_wrapper.h"
 
 #include <utility>
 

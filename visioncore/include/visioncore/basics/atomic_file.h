@@ -2,7 +2,7 @@
 // half-written file.
 #pragma once
 
-#include "visioncore/result.h"
+#include "visioncore/basics/result.h"
 
 #include <cstddef>
 #include <functional>

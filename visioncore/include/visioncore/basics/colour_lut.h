@@ -1,8 +1,10 @@
 // The colour lookup table: 128^3 cells of colour ids, indexed by 7-bit Y, Cb, Cr (SPEC §3).
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/result.h"
+
+#include <opencv2/core/mat.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -32,6 +34,9 @@ public:
     /// so their times compare the same machine code.
     void classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int count,
                      std::uint8_t* out) const;
+    /// Every pixel of `ycbcr` (CV_8UC3, Y, Cb, Cr) through classifyRun into `classes`, made
+    /// CV_8UC1 of the same size, one colour id a pixel. The one whole-image classification.
+    void classifyImage(const cv::Mat& ycbcr, cv::Mat& classes) const;
     Colour cell(std::size_t i) const { return Colour(m_cells[i]); }
     void setCell(std::size_t i, Colour colour) { m_cells[i] = std::uint8_t(colour); }
     const std::uint8_t* data() const { return m_cells.data(); }

@@ -1,5 +1,5 @@
 // Atomic whole-file writes (temporary file + fsync + rename) and whole-file reads.
-#include "visioncore/io/atomic_file.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <atomic>
 #include <cerrno>

@@ -1,4 +1,4 @@
-#include "visioncore/io/json_text.h"
+#include "visioncore/basics/json_text.h"
 
 namespace fieldsight {
 

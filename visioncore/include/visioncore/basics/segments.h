@@ -1,8 +1,8 @@
 // Colour segments: runs of one colour class along a scan line, and the regions that hold them.
 #pragma once
 
-#include "visioncore/colour.h"
-#include "visioncore/geometry.h"
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/geometry.h"
 
 #include <array>
 #include <cstdint>

@@ -2,14 +2,14 @@
 // messages for every such file, each naming the file and the problem.
 #pragma once
 
-#include "visioncore/io/json_text.h"
-#include "visioncore/result.h"
+#include "visioncore/basics/json_text.h"
+#include "visioncore/basics/result.h"
 
 #include <nlohmann/json.hpp>
 
 #include <string>
 
-namespace fieldsight::io {
+namespace fieldsight {
 
 /// Parses `text` (from `source`, for messages) as a JSON object whose "format" is `format`.
 inline Result<nlohmann::json> parseFormattedJson(const std::string& text, const std::string& source,
@@ -30,4 +30,4 @@ inline Result<nlohmann::json> parseFormattedJson(const std::string& text, const 
     return root;
 }
 
-} // namespace fieldsight::io
+} // namespace fieldsight
