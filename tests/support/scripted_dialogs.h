@@ -14,8 +14,8 @@ namespace fieldsight::test {
 class ScriptedDialogs final : public ui::Dialogs
 {
 public:
-    ScriptedDialogs() { install(this); }
-    ~ScriptedDialogs() override { install(nullptr); }
+    ScriptedDialogs() : m_before(install(this)) {}
+    ~ScriptedDialogs() override { install(m_before); }
 
     std::deque<QString> paths;                       ///< openFile, saveFile, folder
     std::deque<QString> texts;                       ///< text
@@ -64,6 +64,8 @@ public:
     void information(QWidget*, const QString& title, const QString&) override { asked << title; }
 
 private:
+    Dialogs* m_before = nullptr;
+
     template <class Queue, class Answer>
     Answer next(Queue& queue, const QString& title, Answer none)
     {

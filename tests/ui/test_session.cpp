@@ -134,11 +134,22 @@ private slots:
         QTest::keyClick(&w, Qt::Key_C);
         QCOMPARE(w.tools().active().info().id, QStringLiteral("click"));
         const QByteArray lut_before = lutBytes(w);
+        const QImage classified_before = w.session().stream().current()->classified;
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QVERIFY(waitForFrame(w, 0));
+        const QImage classified_after = w.session().stream().current()->classified;
+        QVERIFY(classified_after != classified_before);
         const QByteArray lut_after = lutBytes(w);
         QVERIFY(lut_after != lut_before);
         QVERIFY(undoRedo(
             w, [&] { return lutBytes(w); }, lut_before, lut_after));
+        // The frame follows the table both ways (the worker observes the document).
+        menuAction(w, "edit.undo")->trigger();
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.session().stream().current()->classified, classified_before);
+        menuAction(w, "edit.redo")->trigger();
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.session().stream().current()->classified, classified_after);
 
         // The samples: a rectangle dragged with the Sample tool (saved beside the stream).
         QTest::keyClick(&w, Qt::Key_S);
@@ -235,6 +246,7 @@ private slots:
 
     void aToolAddedByOneLineGetsItsButtonMenuItemAndEvents()
     {
+        ScriptedDialogs dialogs; // a question nobody expects fails the test instead of hanging
         std::vector<ui::ToolFactory> tools = ui::standardTools();
         tools.push_back(ui::toolFactory<FakeTool>()); // the line tool_list.cpp would get
         MainWindow w(m_pipeline, tools);
@@ -283,6 +295,7 @@ private slots:
 
     void aStepToTheFramePreparedAheadIsAnsweredAtOnce()
     {
+        ScriptedDialogs dialogs;
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
@@ -292,8 +305,9 @@ private slots:
         w.navigator().step(1);
         // Answered on this thread, before any event is processed: nothing waits for the worker.
         QVERIFY(!w.session().stream().waiting());
-        QCOMPARE(w.session().stream().current()->index, std::size_t(1));
         const auto ahead = w.session().stream().current();
+        QCOMPARE(ahead->index, std::size_t(1));
+        QCOMPARE(QString::fromStdString(ahead->frame.name), w.session().stream().frameName(1));
         // The same answer the worker gives when asked directly.
         const QString prepared = detections(*ahead);
         QVERIFY(!prepared.isEmpty());
@@ -304,6 +318,30 @@ private slots:
         w.session().settings().undoStack().undo();
         QVERIFY(waitForFrame(w, 1));
         QCOMPARE(detections(*w.session().stream().current()), prepared);
+        QCOMPARE(w.session().stream().current()->raw, ahead->raw);
+        QVERIFY(dialogs.unanswered.isEmpty());
+
+        // A run still going when the next step comes: the step waits for the worker and what
+        // is shown at the end is the frame stepped to, not the older answer.
+        QTRY_COMPARE(w.session().stream().preparedAhead(), std::optional<std::size_t>(2));
+        w.session().stream().rerun();
+        w.navigator().step(1);
+        QVERIFY(waitForFrame(w, 2));
+        QTest::qWait(50);
+        QCOMPARE(w.session().stream().current()->index, std::size_t(2));
+        QCOMPARE(QString::fromStdString(w.session().stream().current()->frame.name),
+                 w.session().stream().frameName(2));
+
+        // A table edit: the frame prepared with the old table is not used.
+        QTRY_COMPARE(w.session().stream().preparedAhead(), std::optional<std::size_t>(3));
+        w.tools().activate(QStringLiteral("click"));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QVERIFY(waitForFrame(w, 2));
+        w.navigator().step(1);
+        QVERIFY(w.session().stream().waiting()); // asked of the worker, with the new table
+        QVERIFY(waitForFrame(w, 3));
     }
 
     void questionsGoThroughTheDialogsSeam()

@@ -42,24 +42,25 @@ bool isLutFile(const QString& path)
 FileCommands::FileCommands(MainWindow& window) : QObject(&window), m_window(window)
 {
     EditingSession& session = m_window.session();
-    connect(&session, &EditingSession::opened, this, [this](bool ok, const QString& error) {
-        if (m_progress) {
-            m_progress->reset();
-            m_progress->deleteLater();
-            m_progress = nullptr;
-        }
-        if (!ok) {
-            m_window.showMessage(error, !error.contains(tr("was cancelled")));
-            emit streamOpened(false);
-            return;
-        }
-        rememberRecent(m_window.session().stream().streamSpec());
-        if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
-            m_window.showMessage(warnings.join('\n'));
-        else
-            m_window.messageBar().hide();
-        emit streamOpened(true);
-    });
+    connect(&session, &EditingSession::opened, this,
+            [this](bool ok, bool cancelled, const QString& error) {
+                if (m_progress) {
+                    m_progress->reset();
+                    m_progress->deleteLater();
+                    m_progress = nullptr;
+                }
+                if (!ok) {
+                    m_window.showMessage(error, !cancelled);
+                    emit streamOpened(false);
+                    return;
+                }
+                rememberRecent(m_window.session().stream().streamSpec());
+                if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
+                    m_window.showMessage(warnings.join('\n'));
+                else
+                    m_window.messageBar().hide();
+                emit streamOpened(true);
+            });
 }
 
 void FileCommands::openStream(const QString& spec, const QString& lut)

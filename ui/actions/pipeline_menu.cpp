@@ -17,10 +17,8 @@ void addPipelineMenu(MainWindow& w)
     pipe->addAction(QObject::tr("Reset every parameter"), &w, [&session] {
         (void)session.settings().setParamChanges({}, QObject::tr("Reset every parameter"));
     });
-    pipe->addAction(QObject::tr("Reset the running means"), &w, [&session] {
-        session.stream().resetMeans();
-        session.stream().rerun();
-    });
+    pipe->addAction(QObject::tr("Reset the running means"), &session.stream(),
+                    &StreamDocument::resetMeans);
     pipe->addAction(QObject::tr("Save parameters…"), &w, [&w, &session] {
         const QString path = Dialogs::current().saveFile(&w, QObject::tr("Save parameters"),
                                                          QStringLiteral("params.json"),

@@ -3,6 +3,8 @@
 #include <QFileDialog>
 #include <QInputDialog>
 
+#include <utility>
+
 namespace fieldsight::ui {
 
 namespace {
@@ -62,9 +64,9 @@ Dialogs& Dialogs::current()
     return g_installed ? *g_installed : g_qt_dialogs;
 }
 
-void Dialogs::install(Dialogs* dialogs)
+Dialogs* Dialogs::install(Dialogs* dialogs)
 {
-    g_installed = dialogs;
+    return std::exchange(g_installed, dialogs);
 }
 
 } // namespace fieldsight::ui

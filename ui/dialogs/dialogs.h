@@ -19,8 +19,8 @@ public:
 
     /// The dialogs in use: Qt's own unless a test installed others.
     static Dialogs& current();
-    /// Installs `dialogs` (not owned; null restores Qt's own).
-    static void install(Dialogs* dialogs);
+    /// Installs `dialogs` (not owned; null restores Qt's own); returns the ones installed before.
+    static Dialogs* install(Dialogs* dialogs);
 
     /// An empty string when the user cancelled.
     virtual QString openFile(QWidget* parent, const QString& title, const QString& dir,

@@ -66,11 +66,11 @@ bool EditingSession::openStream(const QString& spec, const QString& lut)
         m_open_watcher->deleteLater();
         m_open_watcher = nullptr;
         if (!result.stream) {
-            emit opened(false, result.error);
+            emit opened(false, false, result.error);
             return;
         }
         adopt(result.stream);
-        emit opened(true, {});
+        emit opened(true, false, {});
     });
     const Pipeline& pipeline = m_pipeline;
     m_open_watcher->setFuture(QtConcurrent::run([spec, lut, &pipeline] {
@@ -93,7 +93,7 @@ void EditingSession::cancelOpening()
     m_open_watcher->disconnect(this);
     connect(m_open_watcher, &QFutureWatcherBase::finished, m_open_watcher, &QObject::deleteLater);
     m_open_watcher = nullptr;
-    emit opened(false, tr("Opening %1 was cancelled").arg(m_opening));
+    emit opened(false, true, tr("Opening %1 was cancelled").arg(m_opening));
 }
 
 Status EditingSession::open(const QString& spec, const QString& lut)
@@ -108,20 +108,25 @@ Status EditingSession::open(const QString& spec, const QString& lut)
 void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
 {
     m_effect->setStream({}, nullptr); // scanned again once its table is in
+    m_warnings = opened->warnings;
+    const QString spec = opened->spec;
+    const QString lut_path = opened->lut_path;
+    std::shared_ptr<const ColourLut> table = opened->lut;
+    // The stream first: the table's change then runs the new stream's frame, never the old one.
+    m_stream->adopt(std::move(opened));
     // Edits are never dropped silently: a table opened under unsaved edits (an open finishing
     // after a recovery) gives way to the edited one.
     if (!m_lut->modified())
-        m_lut->reset(opened->lut, opened->lut_path);
-    m_lut->setStream(opened->spec);
-    m_warnings = opened->warnings;
-    const QString spec = opened->spec;
-    m_stream->adopt(std::move(opened));
+        m_lut->reset(std::move(table), lut_path);
+    m_lut->setStream(spec);
     if (Status s = m_bookmarks->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     m_effect->setStream(spec, m_lut->version());
+    // The settings keep their history across streams; Undo starts on the new stream's table.
+    m_undo_group.setActiveStack(&m_lut->undoStack());
 }
 
 Status EditingSession::openLut(const QString& path)

@@ -67,8 +67,9 @@ public:
     Status openLut(const QString& path);
 
 signals:
-    /// A background open ended: the stream is in (ok), or `error` says why not (cancelled too).
-    void opened(bool ok, const QString& error);
+    /// A background open ended: the stream is in (ok), or `error` says why not (or that the
+    /// user cancelled it).
+    void opened(bool ok, bool cancelled, const QString& error);
     /// A document's problem that is not the failure of a call (a save in a command's redo).
     void problem(const QString& message);
     void notice(const QString& message);

@@ -4,6 +4,7 @@
 #include "visioncore/services/layers.h"
 
 #include <QMetaObject>
+#include <QTimer>
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +13,9 @@
 namespace fieldsight::ui {
 
 namespace {
+
+/// After a run of the same frame again, the look-ahead waits for this long without a request.
+constexpr int kIdleLookAheadMs = 60;
 
 LayerSet stageLayerIds(const Pipeline& pipeline)
 {
@@ -172,11 +176,32 @@ void FrameWorker::processPending()
         }
         emit frameDone(std::move(out));
     }
-    try {
-        lookAhead(request);
-    } catch (const std::exception&) {
-        m_prefetch_source.reset(); // the real read of that frame will report it
+    // At once after a step; after a run of the same frame again (a brush stroke, a parameter
+    // dragged), only once no other request came for a while: another would follow soon, and a
+    // look-ahead would only delay it.
+    const bool stepped = request.look_ahead_only || m_last_index != request.index;
+    m_last_index = request.index;
+    const std::uint64_t taken = ++m_taken;
+    const auto look = [this, request = std::move(request)] {
+        try {
+            lookAhead(request);
+        } catch (const std::exception&) {
+            m_prefetch_source.reset(); // the real read of that frame will report it
+        }
+    };
+    if (stepped) {
+        look();
+        return;
     }
+    try {
+        prefetch();
+    } catch (const std::exception&) {
+        m_prefetch_source.reset();
+    }
+    QTimer::singleShot(kIdleLookAheadMs, this, [this, taken, look] {
+        if (taken == m_taken) // nothing asked since
+            look();
+    });
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
@@ -189,10 +214,11 @@ std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
     return std::exchange(m_ahead, nullptr);
 }
 
-std::optional<std::size_t> FrameWorker::aheadIndex()
+std::optional<std::size_t> FrameWorker::aheadIndex(const std::shared_ptr<FrameSource>& source)
 {
     std::lock_guard lock(m_mutex);
-    return m_ahead ? std::optional<std::size_t>(m_ahead_for.index) : std::nullopt;
+    return m_ahead && m_ahead_for.source == source ? std::optional<std::size_t>(m_ahead_for.index)
+                                                   : std::nullopt;
 }
 
 void FrameWorker::swapPrefetch()

@@ -92,8 +92,8 @@ public:
     /// looks at a frame, the worker runs the next one with the same settings, so a step finds its
     /// answer ready on the GUI thread without waiting for a thread to wake.
     std::shared_ptr<FrameOutput> takeAhead(const FrameRequest& request);
-    /// Thread-safe. The frame prepared ahead, if any.
-    std::optional<std::size_t> aheadIndex();
+    /// Thread-safe. The frame of `source` prepared ahead, if any.
+    std::optional<std::size_t> aheadIndex(const std::shared_ptr<FrameSource>& source);
     /// Thread-safe. Lets go of a source no longer shown, on the worker thread (closing a camera
     /// waits for its capture thread; a reader may close files), after any run still using it.
     void release(std::shared_ptr<FrameSource> source);
@@ -159,6 +159,8 @@ private:
     bool m_scheduled = false;
     std::shared_ptr<FrameOutput> m_ahead; ///< under m_mutex: the answer to m_ahead_for
     FrameRequest m_ahead_for;
+    std::optional<std::size_t> m_last_index; ///< of the last request taken up
+    std::uint64_t m_taken = 0;               ///< requests taken up (worker thread only)
 };
 
 /// The percept items of one frame's detections.

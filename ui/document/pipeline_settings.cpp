@@ -4,6 +4,8 @@
 
 #include <QUndoCommand>
 
+#include <chrono>
+
 namespace fieldsight::ui {
 
 /// One settings change: the whole state before and after (a few numbers and names).
@@ -19,13 +21,18 @@ public:
     void redo() override { m_doc.store(m_after); }
     void undo() override { m_doc.store(m_before); }
     int id() const override { return m_merge_key.empty() ? -1 : 2; }
+    /// Changes of one parameter in a quick run (a spin box's arrows, typing a number) are one
+    /// step; one that comes back to where the run started leaves no step.
     bool mergeWith(const QUndoCommand* other) override
     {
         const auto* next = static_cast<const SettingsCommand*>(other);
-        if (next->m_merge_key != m_merge_key)
+        if (next->m_merge_key != m_merge_key || next->m_when - m_when > std::chrono::seconds(2))
             return false;
         m_after = next->m_after;
+        m_when = next->m_when;
         setText(next->text());
+        setObsolete(m_after.params->values == m_before.params->values &&
+                    m_after.skip == m_before.skip);
         return true;
     }
 
@@ -34,6 +41,7 @@ private:
     PipelineSettings::State m_before;
     PipelineSettings::State m_after;
     std::string m_merge_key;
+    std::chrono::steady_clock::time_point m_when = std::chrono::steady_clock::now();
 };
 
 PipelineSettings::PipelineSettings(const Pipeline& pipeline, QObject* parent)

@@ -8,11 +8,17 @@
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 
+#include <QTimer>
+
 #include <filesystem>
 
 namespace fieldsight::ui {
 
 namespace {
+
+/// After a step answered from the look-ahead, the worker starts on the next frame this much
+/// later, so decoding it does not compete with painting this one.
+constexpr int kLookAheadDelayMs = 12;
 
 std::string local(const QString& s)
 {
@@ -142,6 +148,7 @@ void StreamDocument::submit()
 {
     if (!m_stream)
         return;
+    const bool answered = !waiting(); // every request before this one
     FrameRequest request;
     request.serial = ++m_serial;
     request.index = m_index;
@@ -149,12 +156,16 @@ void StreamDocument::submit()
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
-    if (std::shared_ptr<FrameOutput> ready = m_worker->takeAhead(request)) {
-        // Prepared while the frame before was shown: answered here, no thread hop on the way;
-        // the worker moves on to the frame after it.
+    // Prepared while the frame before was shown (and nothing older is still running, whose
+    // answer would come after it): answered here, no thread hop on the way. The worker moves on
+    // to the frame after it once this one is painted.
+    if (std::shared_ptr<FrameOutput> ready = answered ? m_worker->takeAhead(request) : nullptr) {
         ready->serial = request.serial;
         request.look_ahead_only = true;
-        m_worker->submit(std::move(request));
+        QTimer::singleShot(kLookAheadDelayMs, this, [this, request = std::move(request)]() mutable {
+            if (request.serial == m_serial) // not superseded meanwhile
+                m_worker->submit(std::move(request));
+        });
         onFrameDone(std::move(ready));
         return;
     }
@@ -164,8 +175,9 @@ void StreamDocument::submit()
 void StreamDocument::onFrameDone(std::shared_ptr<const FrameOutput> output)
 {
     m_answered = std::max(m_answered, output->serial);
-    if (!m_stream || output->serial < m_first_serial)
-        return;
+    if (!m_stream || output->serial < m_first_serial ||
+        (m_current && output->serial < m_current->serial))
+        return; // the stream before, or older than what is shown
     m_current = std::move(output);
     if (m_current->error.isEmpty()) {
         for (const StageTiming& t : m_current->result.report.stages) {
@@ -185,6 +197,7 @@ void StreamDocument::resetMeans()
 {
     m_means.clear();
     m_total_mean = {};
+    emit meansReset();
 }
 
 } // namespace fieldsight::ui

@@ -70,7 +70,10 @@ public:
     const std::shared_ptr<const FrameOutput>& current() const { return m_current; }
     /// The frame the worker has run ahead with the current settings (a step there is answered at
     /// once), if any.
-    std::optional<std::size_t> preparedAhead() const { return m_worker->aheadIndex(); }
+    std::optional<std::size_t> preparedAhead() const
+    {
+        return m_stream ? m_worker->aheadIndex(m_stream->source) : std::nullopt;
+    }
     /// A request has not been answered yet.
     bool waiting() const { return m_answered < m_serial; }
     std::uint64_t lastSerial() const { return m_serial; }
@@ -91,6 +94,7 @@ signals:
     void streamChanged();
     void currentIndexChanged(std::size_t index);
     void frameReady();
+    void meansReset();
 
 private:
     void submit();

@@ -185,6 +185,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& setting
     connect(&m_settings, &PipelineSettings::changed, this, &PipelinePanel::refreshValues);
     connect(&m_doc, &StreamDocument::frameReady, this, &PipelinePanel::refreshTimes);
     connect(&m_doc, &StreamDocument::streamChanged, this, &PipelinePanel::refreshTimes);
+    connect(&m_doc, &StreamDocument::meansReset, this, &PipelinePanel::refreshTimes);
     refreshValues();
     refreshTimes();
 }

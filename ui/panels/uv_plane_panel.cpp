@@ -35,7 +35,10 @@ UvCanvas::UvCanvas(LutDocument& lut, StreamDocument& stream, ToolManager& tools,
     // The cells the image tool would change (or has, mid-stroke) are outlined here.
     connect(&tools, &ToolManager::previewChanged, this,
             [this] { setOutlinedCells(m_tools.preview().cells); });
-    connect(&tools, &ToolManager::activeChanged, this, qOverload<>(&QWidget::update));
+    connect(&tools, &ToolManager::activeChanged, this, [this] {
+        m_tool_down = false; // a stroke ends with its tool
+        update();
+    });
     refreshPlane();
 }
 
