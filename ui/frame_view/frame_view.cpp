@@ -369,19 +369,8 @@ void FrameView::mousePressEvent(QMouseEvent* event)
     if (const std::optional<QPoint> pixel = pixelAt(event->position())) {
         if (event->button() == Qt::LeftButton)
             m_tool_down = true;
-        m_tools->press(toolEvent(event, *pixel));
+        m_tools->press(ToolEvent::of(ToolSurface::Image, *event, *pixel));
     }
-}
-
-ToolEvent FrameView::toolEvent(const QMouseEvent* event, QPoint pixel) const
-{
-    ToolEvent e;
-    e.surface = ToolSurface::Image;
-    e.point = pixel;
-    e.button = event->button();
-    e.buttons = event->buttons();
-    e.modifiers = event->modifiers();
-    return e;
 }
 
 void FrameView::mouseMoveEvent(QMouseEvent* event)
@@ -397,7 +386,7 @@ void FrameView::mouseMoveEvent(QMouseEvent* event)
         update();
     }
     if (pixel && m_tool_down && m_tools)
-        m_tools->move(toolEvent(event, *pixel));
+        m_tools->move(ToolEvent::of(ToolSurface::Image, *event, *pixel));
     if (m_tools)
         m_tools->hover(pixel);
     if (pixel)
@@ -411,7 +400,7 @@ void FrameView::mouseReleaseEvent(QMouseEvent* event)
     if (m_tool_down && event->button() == Qt::LeftButton && m_tools) {
         m_tool_down = false;
         const std::optional<QPoint> pixel = pixelAt(event->position());
-        m_tools->release(toolEvent(event, pixel.value_or(QPoint(-1, -1))));
+        m_tools->release(ToolEvent::of(ToolSurface::Image, *event, pixel.value_or(QPoint(-1, -1))));
     }
     if (m_drag_from) {
         m_drag_from.reset();

@@ -99,7 +99,6 @@ private:
     bool toolPans() const;
     /// The active tool's brush outline (image px; < 0: none).
     int brushRadius() const;
-    ToolEvent toolEvent(const QMouseEvent* event, QPoint pixel) const;
 
     std::shared_ptr<const FrameOutput> m_output;
     LayerSet m_visible;

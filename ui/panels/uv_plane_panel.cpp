@@ -216,12 +216,7 @@ bool UvCanvas::toolPaints() const
 
 ToolEvent UvCanvas::toolEvent(const QMouseEvent* event, QPoint cell) const
 {
-    ToolEvent e;
-    e.surface = ToolSurface::UvPlane;
-    e.point = cell;
-    e.button = event->button();
-    e.buttons = event->buttons();
-    e.modifiers = event->modifiers();
+    ToolEvent e = ToolEvent::of(ToolSurface::UvPlane, *event, cell);
     e.y_lo = m_y_lo;
     e.y_hi = m_y_hi;
     return e;

@@ -36,9 +36,8 @@ PlannedEdit BrushTool::stroke(const std::vector<cv::Point>& pixels) const
 
 std::optional<PlannedEdit> BrushTool::plan(QPoint pixel) const
 {
-    const cv::Mat* image = frame();
-    if (!image || pixel.x() < 0 || pixel.y() < 0 || pixel.x() >= image->cols ||
-        pixel.y() >= image->rows)
+    const cv::Mat* image = frameAt(pixel);
+    if (!image)
         return std::nullopt;
     return stroke(
         brushPixels({pixel.x(), pixel.y()}, m_context.settings.brushRadius(), image->size()));

@@ -15,9 +15,8 @@ ToolInfo ClickTool::info() const
 
 std::optional<PlannedEdit> ClickTool::plan(QPoint pixel) const
 {
-    const cv::Mat* image = frame();
-    if (!image || pixel.x() < 0 || pixel.y() < 0 || pixel.x() >= image->cols ||
-        pixel.y() >= image->rows)
+    const cv::Mat* image = frameAt(pixel);
+    if (!image)
         return std::nullopt;
     const cv::Vec3b c = image->at<cv::Vec3b>(pixel.y(), pixel.x());
     const Tolerance t = m_context.settings.tolerance();

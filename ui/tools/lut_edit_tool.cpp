@@ -46,6 +46,15 @@ const cv::Mat* LutEditTool::frame() const
     return &out->frame.ycbcr;
 }
 
+const cv::Mat* LutEditTool::frameAt(QPoint pixel) const
+{
+    const cv::Mat* image = frame();
+    return image && pixel.x() >= 0 && pixel.y() >= 0 && pixel.x() < image->cols &&
+                   pixel.y() < image->rows
+               ? image
+               : nullptr;
+}
+
 Colour LutEditTool::target() const
 {
     return m_context.settings.colour();

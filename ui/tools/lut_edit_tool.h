@@ -41,6 +41,8 @@ protected:
 
     /// The current frame's Y, Cb, Cr pixels (null before the first frame).
     const cv::Mat* frame() const;
+    /// The same, when `pixel` is inside it (null otherwise).
+    const cv::Mat* frameAt(QPoint pixel) const;
     /// Applies `plan` as one undo step (merged into `stroke` when nonzero); remembers its cells.
     void apply(PlannedEdit plan, int stroke = 0);
     /// The changes setting `cells` to the target class makes with the shared settings.

@@ -20,6 +20,8 @@
 #include <optional>
 #include <vector>
 
+class QMouseEvent;
+
 namespace fieldsight::ui {
 
 class EditingSession;
@@ -40,6 +42,9 @@ struct ToolEvent
     Qt::KeyboardModifiers modifiers = Qt::NoModifier;
     int y_lo = 0; ///< the UV plane's Y cells, inclusive
     int y_hi = 127;
+
+    /// The event at `point` of `surface` with `mouse`'s buttons and modifiers.
+    static ToolEvent of(ToolSurface surface, const QMouseEvent& mouse, QPoint point);
 };
 
 /// What a tool would change at the cursor, or has changed in the stroke so far.

@@ -14,9 +14,8 @@ ToolInfo WandTool::info() const
 
 std::optional<PlannedEdit> WandTool::plan(QPoint pixel) const
 {
-    const cv::Mat* image = frame();
-    if (!image || pixel.x() < 0 || pixel.y() < 0 || pixel.x() >= image->cols ||
-        pixel.y() >= image->rows)
+    const cv::Mat* image = frameAt(pixel);
+    if (!image)
         return std::nullopt;
     const std::vector<cv::Point> pixels =
         wandPixels(*image, {pixel.x(), pixel.y()}, m_context.settings.tolerance());
