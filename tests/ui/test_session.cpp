@@ -12,6 +12,7 @@
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/stream_navigator/stream_navigator.h"
+#include "ui/widgets/message_bar.h"
 #include "visioncore/services/lut_building.h"
 
 #include <QComboBox>
@@ -105,6 +106,24 @@ class TestSession : public QObject
         return bytes() == after;
     }
 
+    /// Edits the table of `stream` in a window that then ends without closing (a crash), so
+    /// only the recovery file keeps them; returns the edited table.
+    ColourLut editAndCrash(const QString& stream)
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        if (!openAndWait(w, stream))
+            return {};
+        w.session().lut().setAutosaveDelay(50);
+        w.tools().activate(QStringLiteral("click"));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        if (!QTest::qWaitFor([&] { return w.session().lut().findRecovery().has_value(); }, 5000))
+            return {};
+        return w.session().lut().table();
+    }
+
 private slots:
     void initTestCase()
     {
@@ -117,7 +136,14 @@ private slots:
             QSKIP("the bundled sample streams are missing");
     }
 
-    void init() { QSettings().clear(); }
+    void init()
+    {
+        QSettings().clear();
+        // No recovery file of an earlier case is offered to this one.
+        const QDir app(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation));
+        for (const char* name : {"lut-recovery.lut", "lut-recovery.json"})
+            QFile::remove(app.filePath(QString::fromLatin1(name)));
+    }
 
     void everyDocumentsEditUndoesAndRedoesThroughTheEditMenu()
     {
@@ -342,6 +368,59 @@ private slots:
         w.navigator().step(1);
         QVERIFY(w.session().stream().waiting()); // asked of the worker, with the new table
         QVERIFY(waitForFrame(w, 3));
+    }
+
+    void recoveredEditsGoBackOnlyToTheStreamTheyCameFrom()
+    {
+        // The venue trial's case: edits of stream B, recovered while A is open.
+        ScriptedDialogs dialogs;
+        const QString a = copyStream("recover_a"), b = copyStream("recover_b");
+        const ColourLut edited = editAndCrash(b);
+        QVERIFY(!(edited == ColourLut()));
+        const QByteArray a_table = fileBytes(a + "/default.lut");
+        const QByteArray b_table = fileBytes(b + "/default.lut");
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, a));
+        QVERIFY(w.recoveryBar().isVisible());
+        QVERIFY2(w.recoveryBar().question().contains(b), qPrintable(w.recoveryBar().question()));
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QVERIFY(w.files().recoverLut());
+        QVERIFY(opened.wait(10000));
+        QVERIFY(opened.front().front().toBool());
+        // Recover opened B and put the edits on B's table, not on A's.
+        QCOMPARE(QFileInfo(w.session().stream().streamSpec()).canonicalFilePath(),
+                 QFileInfo(b).canonicalFilePath());
+        QVERIFY(w.session().lut().table() == edited);
+        QCOMPARE(QFileInfo(w.session().lut().path()).canonicalFilePath(),
+                 QFileInfo(b + "/default.lut").canonicalFilePath());
+        QCOMPARE(fileBytes(a + "/default.lut"), a_table);
+        QCOMPARE(fileBytes(b + "/default.lut"), b_table);
+        // Ctrl+S writes B's own table; A's is as it was.
+        QVERIFY(w.files().saveLut());
+        QVERIFY(fileBytes(b + "/default.lut") != b_table);
+        QCOMPARE(fileBytes(a + "/default.lut"), a_table);
+        QVERIFY(dialogs.unanswered.isEmpty());
+    }
+
+    void recoveredEditsOfAStreamThatIsGoneAreRefusedAndKept()
+    {
+        ScriptedDialogs dialogs;
+        const QString a = copyStream("gone_a"), c = copyStream("gone_c");
+        QVERIFY(!(editAndCrash(c) == ColourLut()));
+        QVERIFY(QDir(c).removeRecursively());
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, a));
+        const QByteArray a_before = lutBytes(w);
+        QVERIFY(!w.files().recoverLut());
+        QVERIFY2(w.lastMessage().contains(c) && w.lastMessage().contains("kept"),
+                 qPrintable(w.lastMessage()));
+        QCOMPARE(lutBytes(w), a_before); // nothing applied to A's table
+        QVERIFY(!w.session().lut().modified());
+        QVERIFY(w.session().lut().findRecovery().has_value()); // the edits are not lost
+        QCOMPARE(QFileInfo(w.session().stream().streamSpec()).canonicalFilePath(),
+                 QFileInfo(a).canonicalFilePath());
     }
 
     void questionsGoThroughTheDialogsSeam()

@@ -17,6 +17,8 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 
+#include <utility>
+
 namespace fieldsight::ui {
 
 namespace {
@@ -26,6 +28,17 @@ constexpr int kMaxRecent = 10;
 QString qs(const std::string& s)
 {
     return QString::fromStdString(s);
+}
+
+/// The same stream, wherever it was named from (links and relative paths resolved).
+bool sameStream(const QString& a, const QString& b)
+{
+    if (a.isEmpty() || b.isEmpty())
+        return false;
+    if (a == b)
+        return true;
+    const QString ca = QFileInfo(a).canonicalFilePath(), cb = QFileInfo(b).canonicalFilePath();
+    return !ca.isEmpty() && ca == cb;
 }
 
 bool isLutFile(const QString& path)
@@ -42,42 +55,52 @@ bool isLutFile(const QString& path)
 FileCommands::FileCommands(MainWindow& window) : QObject(&window), m_window(window)
 {
     EditingSession& session = m_window.session();
-    connect(&session, &EditingSession::opened, this,
-            [this](bool ok, bool cancelled, const QString& error) {
-                if (m_progress) {
-                    m_progress->reset();
-                    m_progress->deleteLater();
-                    m_progress = nullptr;
-                }
-                if (!ok) {
-                    m_window.showMessage(error, !cancelled);
-                    emit streamOpened(false);
-                    return;
-                }
-                rememberRecent(m_window.session().stream().streamSpec());
-                if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
-                    m_window.showMessage(warnings.join('\n'));
-                else
-                    m_window.messageBar().hide();
-                emit streamOpened(true);
-            });
+    connect(&session, &EditingSession::opened, this, &FileCommands::onOpened);
 }
 
-void FileCommands::openStream(const QString& spec, const QString& lut)
+void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
+{
+    if (m_progress) {
+        m_progress->reset();
+        m_progress->deleteLater();
+        m_progress = nullptr;
+    }
+    const std::optional<LutRecovery> recovery = std::exchange(m_recover_after_open, {});
+    if (!ok) {
+        m_window.showMessage(recovery ? tr("%1. The LUT edits recovered for it were not "
+                                           "applied; they are kept in %2")
+                                            .arg(error, recovery->lut_file)
+                                      : error,
+                             !cancelled);
+        emit streamOpened(false);
+        return;
+    }
+    rememberRecent(m_window.session().stream().streamSpec());
+    if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
+        m_window.showMessage(warnings.join('\n'));
+    else
+        m_window.messageBar().hide();
+    if (recovery)
+        applyRecovery(*recovery);
+    emit streamOpened(true);
+}
+
+bool FileCommands::openStream(const QString& spec, const QString& lut)
 {
     if (!confirmLutChanges())
-        return;
+        return false;
     EditingSession& session = m_window.session();
     if (!session.openStream(spec, lut)) {
         m_window.showMessage(
             tr("Still opening %1; wait or cancel it first").arg(session.openingSpec()));
-        return;
+        return false;
     }
     m_progress = new QProgressDialog(tr("Opening %1…").arg(spec), tr("Cancel"), 0, 0, &m_window);
     m_progress->setWindowTitle(tr("Opening stream"));
     m_progress->setMinimumDuration(400);
     m_progress->setWindowModality(Qt::WindowModal);
     connect(m_progress, &QProgressDialog::canceled, &session, &EditingSession::cancelOpening);
+    return true;
 }
 
 bool FileCommands::openLut(const QString& path)
@@ -210,23 +233,51 @@ void FileCommands::offerRecovery()
         return;
     }
     m_window.recoveryBar().offer(
-        tr("Unsaved LUT edits from %1 (%2) were recovered after the last session ended. "
-           "Recover them?")
-            .arg(r->saved_at, r->path.isEmpty() ? tr("a new table") : r->path));
+        tr("Unsaved edits of %1 on the stream %2 were kept when a session ended (%3). Recover "
+           "them? Recover opens that stream.")
+            .arg(r->path.isEmpty() ? tr("a new table") : r->path,
+                 r->stream.isEmpty() ? tr("(not named)") : r->stream, r->saved_at));
 }
 
 bool FileCommands::recoverLut()
 {
-    LutDocument& lut = m_window.session().lut();
-    const std::optional<LutRecovery> r = lut.findRecovery();
+    const std::optional<LutRecovery> r = m_window.session().lut().findRecovery();
     m_window.recoveryBar().hide();
     if (!r)
         return false;
-    if (Status s = lut.recover(*r); !s) {
+    // Edits go back only to the stream and table they were made on.
+    const QString current = m_window.session().stream().streamSpec();
+    if (sameStream(current, r->stream))
+        return applyRecovery(*r);
+    if (r->stream.isEmpty() || r->stream.startsWith(QLatin1String("camera:")) ||
+        !localPathExists(r->stream)) {
+        m_window.showMessage(
+            tr("The recovered LUT edits belong to the stream %1, which cannot be "
+               "opened here; they were not applied to this one and are kept "
+               "in %2")
+                .arg(r->stream.isEmpty() ? tr("(not named)") : r->stream, r->lut_file));
+        return false;
+    }
+    m_recover_after_open = *r;
+    if (!openStream(r->stream, localPathExists(r->path) ? r->path : QString())) {
+        m_recover_after_open.reset();
+        m_window.showMessage(tr("%1 was not opened: the recovered LUT edits for it are kept in %2")
+                                 .arg(r->stream, r->lut_file));
+        return false;
+    }
+    return true;
+}
+
+bool FileCommands::applyRecovery(const LutRecovery& recovery)
+{
+    if (Status s = m_window.session().lut().recover(recovery); !s) {
         m_window.showMessage(qs(s.error().message));
         return false;
     }
-    m_window.showMessage(tr("Recovered the LUT edits; save them with Ctrl+S"), false);
+    m_window.showMessage(
+        tr("Recovered the LUT edits of %1 on %2; save them with Ctrl+S")
+            .arg(recovery.path.isEmpty() ? tr("a new table") : recovery.path, recovery.stream),
+        false);
     return true;
 }
 

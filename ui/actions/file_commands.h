@@ -5,8 +5,12 @@
 // question goes through the Dialogs seam and every error to the window's message bar.
 #pragma once
 
+#include "ui/document/lut_document.h"
+
 #include <QObject>
 #include <QStringList>
+
+#include <optional>
 
 class QMenu;
 class QProgressDialog;
@@ -24,7 +28,8 @@ public:
 
     /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
     /// before); streamOpened() tells how it went. An error shows in the window.
-    void openStream(const QString& spec, const QString& lut = {});
+    /// False when it did not start (the user kept unsaved edits, or another open runs).
+    bool openStream(const QString& spec, const QString& lut = {});
     /// Opens the LUT in any importable format; an error shows in the window.
     bool openLut(const QString& path);
     /// A dropped or given path: a table by its suffix, else a stream.
@@ -47,7 +52,9 @@ public:
     bool confirmLutChanges();
     /// Shows the offer of a recovery file, if one was left.
     void offerRecovery();
-    /// Loads the recovery file of a session that ended with unsaved LUT edits.
+    /// Loads the recovery file of a session that ended with unsaved LUT edits onto the stream it
+    /// belongs to: at once when that stream is open, else after opening it; refused, saying why
+    /// and keeping the file, when it cannot be (never applied to another stream's table).
     bool recoverLut();
     void discardRecovery();
 
@@ -64,13 +71,17 @@ signals:
     void streamOpened(bool ok);
 
 private:
+    void onOpened(bool ok, bool cancelled, const QString& error);
     void rememberRecent(const QString& spec);
+    /// Applies `recovery` to the open stream's table (which must be the one it belongs to).
+    bool applyRecovery(const LutRecovery& recovery);
     void rebuildRecentMenu();
 
     MainWindow& m_window;
     QProgressDialog* m_progress = nullptr;
     QStringList m_recent;
     QMenu* m_recent_menu = nullptr;
+    std::optional<LutRecovery> m_recover_after_open; ///< applied once its stream is open
 };
 
 } // namespace fieldsight::ui

@@ -3,6 +3,7 @@
 #include "ui/adapters/local_path.h"
 #include "visioncore/io/lut_import.h"
 
+#include <QFileInfo>
 #include <QtConcurrent/QtConcurrentRun>
 
 namespace fieldsight::ui {
@@ -118,7 +119,9 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     // after a recovery) gives way to the edited one.
     if (!m_lut->modified())
         m_lut->reset(std::move(table), lut_path);
-    m_lut->setStream(spec);
+    // The recovery file names the stream its edits belong to, wherever the next session runs.
+    m_lut->setStream(
+        spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath());
     if (Status s = m_bookmarks->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)

@@ -77,6 +77,11 @@ OfferBar::OfferBar(const QString& accept, const QString& decline, QWidget* paren
     hide();
 }
 
+QString OfferBar::question() const
+{
+    return m_text->text();
+}
+
 void OfferBar::offer(const QString& question)
 {
     m_text->setText(question);

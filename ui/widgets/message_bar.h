@@ -29,6 +29,7 @@ class OfferBar : public QWidget
 public:
     OfferBar(const QString& accept, const QString& decline, QWidget* parent = nullptr);
     void offer(const QString& question);
+    QString question() const;
 
 signals:
     void accepted();
