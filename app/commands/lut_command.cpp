@@ -31,6 +31,8 @@ int convertCommand(const QStringList& args, const Context& ctx)
     const QStringList positional = parser.positionalArguments();
     const std::string in = toLocalPath(positional[1]);
     const std::string out = toLocalPath(positional[2]);
+    if (fieldsight::Status s = checkNotAnInput("lut convert", out, {in}); !s)
+        return badInput(ctx, s.error().message);
     auto lut = fieldsight::importLut(in);
     if (!lut) {
         return badInput(ctx, lut.error().message);
@@ -99,6 +101,10 @@ int buildCommand(const QStringList& args, const Context& ctx)
         if (!parser.isSet("out"))
             return badInput(ctx, "lut build: --out FILE is required");
         const std::string out = toLocalPath(parser.value("out"));
+        const std::vector<std::string> inputs{stream, toLocalPath(parser.value("samples"))};
+        for (const std::string& output : {out, toLocalPath(parser.value("save-samples"))})
+            if (Status s = checkNotAnInput("lut build", output, inputs); !s)
+                return badInput(ctx, s.error().message);
         QString error;
         const auto smoothing = intOption(parser, "smoothing", -1, 0, error);
         if (!smoothing || *smoothing > 8)

@@ -60,6 +60,14 @@ int runCommand(const QStringList& args, const Context& ctx)
             toLocalPath(parser.isSet("render") ? parser.value("render") : parser.value("overlays"));
         if (render_dir.empty() && (parser.isSet("layers") || parser.isSet("scale")))
             return badInput(ctx, "run: --layers and --scale need --render DIR");
+        // Neither output goes over what the run reads (a render into the stream's own folder
+        // would replace its frames).
+        const std::vector<std::string> inputs{stream, toLocalPath(parser.value("lut")),
+                                              toLocalPath(parser.value("params")),
+                                              defaultTruthPath(stream)};
+        for (const std::string& output : {out_path, render_dir})
+            if (Status s = checkNotAnInput("run", output, inputs); !s)
+                return badInput(ctx, s.error().message);
 
         std::vector<std::string> skip;
         for (const QString& list : parser.values("skip"))

@@ -161,6 +161,49 @@ private slots:
         QVERIFY(!QFileInfo::exists(path("x.json")));
     }
 
+    void noCommandWritesOverWhatItReads()
+    {
+        // The venue trial's cases (issue 21): each refused with exit 2 naming both paths, every
+        // input byte for byte as it was, through a link and `..` too.
+        const QString s = path("kept");
+        makeStream(s, true);
+        QFile truth(s + "/annotations.json");
+        QVERIFY(truth.open(QIODevice::WriteOnly));
+        truth.write("{\"format\": \"fieldsight-annotations/1\", \"frames\": {}}\n");
+        truth.close();
+        QVERIFY(QFile::link(s, path("kept_link")));
+        const auto bytes = [](const QString& file) {
+            QFile f(file);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        QStringList files = QDir(s).entryList(QDir::Files);
+        std::map<QString, QByteArray> before;
+        for (const QString& f : files)
+            before[f] = bytes(s + "/" + f);
+        const QList<QStringList> cases{
+            {"run", s, "--render", s},
+            {"run", s, "--render", path("kept_link")},
+            {"run", s, "--out", s + "/annotations.json"},
+            {"run", s, "--out", s + "/../kept/default.lut"},
+            {"eval", s, "--json", s + "/annotations.json"},
+            {"lut", "convert", s + "/default.lut", path("kept_link") + "/default.lut"},
+            {"lut", "build", s, "--out", s + "/frame_000000.png"},
+        };
+        for (const QStringList& args : cases) {
+            const Outcome o = fieldsight(args);
+            QVERIFY2(o.status == 2, qPrintable(args.join(' ') + ": exit " +
+                                               QString::number(o.status) + " " + o.err));
+            verifyOneLineError(o, "nothing was written");
+            QCOMPARE(QDir(s).entryList(QDir::Files), files);
+            for (const QString& f : files)
+                QVERIFY2(bytes(s + "/" + f) == before[f], qPrintable(args.join(' ') + ": " + f));
+        }
+        // A new file beside the frames is still fine.
+        const Outcome ok = fieldsight({"run", s, "--out", s + "/results.json"});
+        QCOMPARE(ok.status, 0);
+        QVERIFY(QFileInfo::exists(s + "/results.json"));
+    }
+
     void streamWithoutLutExitsTwo()
     {
         const QString bare = path("bare");
