@@ -63,6 +63,9 @@ int synthCommand(const QStringList& args, const Context& ctx)
     if (!options.write_png && !options.write_strm)
         return badInput(ctx, "synth: --no-png without --strm would write no frames");
 
+    // A folder that is someone's stream is refused before anything is written (bad input).
+    if (fieldsight::Status s = synth::clearEarlierOutput(options.out_dir); !s)
+        return badInput(ctx, s.error().message);
     if (fieldsight::Status s = synth::generateStream(options); !s) {
         printError(ctx.err, s.error().message);
         return kExitFailure;

@@ -198,6 +198,17 @@ private slots:
             for (const QString& f : files)
                 QVERIFY2(bytes(s + "/" + f) == before[f], qPrintable(args.join(' ') + ": " + f));
         }
+        // synth writes only into a new, empty or its own earlier folder, and replaces that whole.
+        const Outcome onto = fieldsight({"synth", "--frames", "2", "--out", s});
+        QCOMPARE(onto.status, 2);
+        verifyOneLineError(onto, "not an earlier synth output");
+        for (const QString& f : files)
+            QVERIFY2(bytes(s + "/" + f) == before[f], qPrintable(f));
+        const QString own = path("own_synth");
+        QCOMPARE(fieldsight({"synth", "--frames", "3", "--out", own}).status, 0);
+        QCOMPARE(fieldsight({"synth", "--frames", "2", "--out", own}).status, 0);
+        QCOMPARE(QDir(own).entryList({"frame_*.png"}, QDir::Files).size(), 2); // nothing mixed
+
         // A new file beside the frames is still fine.
         const Outcome ok = fieldsight({"run", s, "--out", s + "/results.json"});
         QCOMPARE(ok.status, 0);

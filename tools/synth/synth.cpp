@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <system_error>
 
 namespace fieldsight::synth {
@@ -74,6 +75,54 @@ int paperFrameCount(Scenario scenario)
     return 0;
 }
 
+namespace {
+
+/// The files synth writes into its folder.
+bool isSynthFile(const std::string& name)
+{
+    return name == "image.strm" || name == "default.lut" || name == "annotations.json" ||
+           name == "stream.json" ||
+           (name.rfind("frame_", 0) == 0 && name.size() > 10 &&
+            name.compare(name.size() - 4, 4, ".png") == 0);
+}
+
+/// A folder synth wrote before: its stream.json names the generator, or (frames only in
+/// image.strm) it holds exactly image.strm, annotations.json and default.lut.
+bool isEarlierSynthOutput(const std::filesystem::path& dir)
+{
+    std::error_code ec;
+    if (auto text = readWholeFile((dir / "stream.json").string()); text) {
+        const auto manifest = nlohmann::json::parse(text.value(), nullptr, false);
+        return manifest.is_object() && manifest.contains("generator");
+    }
+    std::set<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+        names.insert(entry.path().filename().string());
+    return !ec && names == std::set<std::string>{"annotations.json", "default.lut", "image.strm"};
+}
+
+} // namespace
+
+Status clearEarlierOutput(const std::string& folder)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(folder, ec))
+        return {};
+    if (!fs::is_directory(folder, ec))
+        return Error{folder + ": exists and is not a folder; nothing was written"};
+    if (fs::is_empty(folder, ec))
+        return {};
+    if (!isEarlierSynthOutput(folder))
+        return Error{folder + ": the folder is not empty and is not an earlier synth output; "
+                              "nothing was written (choose a new or empty folder)"};
+    // Its own earlier stream is replaced whole, never mixed with the new one.
+    for (const auto& entry : fs::directory_iterator(folder, ec))
+        if (entry.is_regular_file() && isSynthFile(entry.path().filename().string()))
+            fs::remove(entry.path(), ec);
+    return {};
+}
+
 Status generateStream(const SynthOptions& options)
 {
     namespace fs = std::filesystem;
@@ -85,6 +134,8 @@ Status generateStream(const SynthOptions& options)
     if (options.width < 16 || options.height < 16 || options.width > 4096 || options.height > 4096)
         return Error{options.out_dir + ": image size " + std::to_string(options.width) + "x" +
                      std::to_string(options.height) + " is out of range (16x16..4096x4096)"};
+    if (Status s = clearEarlierOutput(options.out_dir); !s)
+        return s;
     std::error_code ec;
     fs::create_directories(options.out_dir, ec);
     if (ec || !fs::is_directory(options.out_dir))

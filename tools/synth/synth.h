@@ -33,7 +33,11 @@ std::string scenarioName(Scenario scenario);
 /// Frame counts of the paper's streams: 5090 / 470 / 175 / 2640 / 625.
 int paperFrameCount(Scenario scenario);
 
-/// Renders the stream into options.out_dir (created if needed). Errors name the path.
+/// Renders the stream into options.out_dir (created if needed, or empty, or an earlier synth
+/// output, which is replaced whole; any other folder is refused). Errors name the path.
 Status generateStream(const SynthOptions& options);
+/// Makes `folder` ready for a new stream: nothing to do when it is missing or empty; an earlier
+/// synth output loses its files; anything else is an Error naming it (nothing is removed).
+Status clearEarlierOutput(const std::string& folder);
 
 } // namespace fieldsight::synth
