@@ -69,6 +69,14 @@ QString colourLabel(Colour colour)
     return QString::fromUtf8(name.data(), qsizetype(name.size()));
 }
 
+QString perceptNoun(const PerceptKind& kind)
+{
+    QString noun = QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size()));
+    if (noun.size() > 1 && noun.endsWith(QLatin1Char('s')))
+        noun.chop(1);
+    return noun;
+}
+
 QIcon colourSwatch(Colour colour)
 {
     QPixmap pixmap(16, 16);

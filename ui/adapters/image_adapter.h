@@ -3,6 +3,7 @@
 #pragma once
 
 #include "visioncore/basics/colour.h"
+#include "visioncore/percepts/percept_set.h"
 
 #include <QColor>
 #include <QIcon>
@@ -30,6 +31,9 @@ QImage bgrToQImage(const cv::Mat& bgr);
 QColor toQColor(Rgb colour);
 /// A colour class's name as shown ("pink_orange").
 QString colourLabel(Colour colour);
+/// What one detection of `kind` is called: its title's singular, from the percept registry (a
+/// new kind needs no words in the GUI).
+QString perceptNoun(const PerceptKind& kind);
 /// A 16 px square of the class's display colour (SPEC §1) with a grey border.
 QIcon colourSwatch(Colour colour);
 /// A highlight: `colour` where the CV_8U `mask` is nonzero, transparent elsewhere (null when the

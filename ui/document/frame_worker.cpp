@@ -25,15 +25,6 @@ LayerSet stageLayerIds(const Pipeline& pipeline)
     return ids;
 }
 
-/// "Balls" -> "Ball": a label names one detection.
-QString singular(std::string_view title)
-{
-    QString t = QString::fromUtf8(title.data(), qsizetype(title.size()));
-    if (t.size() > 1 && t.endsWith('s'))
-        t.chop(1);
-    return t;
-}
-
 std::optional<double> number(const nlohmann::ordered_json& object, const char* key)
 {
     const auto it = object.find(key);
@@ -93,7 +84,7 @@ std::vector<PerceptItem> perceptItems(const PerceptSet& percepts)
             const std::optional<QRectF> bounds = boundsOf(object);
             if (!bounds)
                 continue;
-            const QString label = singular(entry->kind().title) + ' ' + QString::number(i + 1);
+            const QString label = perceptNoun(entry->kind()) + ' ' + QString::number(i + 1);
             items.push_back({layer, *bounds, label, label + '\n' + fieldsText(object)});
         }
     }

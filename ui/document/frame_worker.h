@@ -54,9 +54,9 @@ struct FrameRequest
 /// A detection as the view shows it: where it is, for hovering, and its numbers.
 struct PerceptItem
 {
-    std::string layer; ///< the percept layer it is drawn on ("percepts.balls")
+    std::string layer; ///< the percept layer it is drawn on ("percepts.<kind key>")
     QRectF bounds;     ///< image px, pixel-centre coordinates
-    QString label;     ///< short, drawn beside it ("Ball 1")
+    QString label;     ///< short, drawn beside it (the kind's noun and a number)
     QString details;   ///< its fields, one per line
 };
 

@@ -189,7 +189,7 @@ const PerceptItem* FrameView::itemAt(QPointF pos) const
         const QRectF r = item.bounds.adjusted(-margin, -margin, margin, margin);
         if (r.contains(*p) &&
             (!best || r.width() * r.height() < best->bounds.width() * best->bounds.height()))
-            best = &item; // the smallest one under the cursor: a ball in front of a robot
+            best = &item; // the smallest one under the cursor: the one in front
     }
     return best;
 }

@@ -17,7 +17,7 @@ public:
     void showOutput(const FrameOutput* output);
     /// The serial of the output shown (0 for none).
     std::uint64_t shownSerial() const { return m_serial; }
-    /// The top-level rows' texts ("Balls (1)", "Diagnostics (0)"), for tests.
+    /// The top-level rows' texts (each kind's title and count, then "Diagnostics (0)"), for tests.
     QStringList topLevelTexts() const;
 
 signals:

@@ -1,5 +1,7 @@
 #include "ui/stream_navigator/effect_strip.h"
 
+#include "ui/adapters/image_adapter.h"
+
 #include <QHelpEvent>
 #include <QLocale>
 #include <QMouseEvent>
@@ -25,21 +27,12 @@ QString signedCount(int appeared, int vanished, const QString& what)
     return parts.isEmpty() ? QString() : parts.join(QLatin1Char(' ')) + QLatin1Char(' ') + what;
 }
 
-/// What a count of `kind` is called in a sentence: its title's singular in lower case ("Balls":
-/// "ball"), so a new kind needs no words here.
-QString kindNoun(const PerceptKind& kind)
-{
-    QString noun = QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size())).toLower();
-    if (noun.endsWith(QLatin1Char('s')))
-        noun.chop(1);
-    return noun;
-}
-
 QString deltaText(const DetectionDelta& d)
 {
     QStringList parts;
     for (const KindDelta& k : d.kinds)
-        if (const QString part = signedCount(k.appeared, k.vanished, kindNoun(*k.kind));
+        if (const QString part =
+                signedCount(k.appeared, k.vanished, perceptNoun(*k.kind).toLower());
             !part.isEmpty())
             parts << part;
     return parts.join(QStringLiteral(", "));
