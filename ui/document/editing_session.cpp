@@ -39,8 +39,6 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
 
 EditingSession::~EditingSession()
 {
-    if (m_open_watcher)
-        m_open_watcher->waitForFinished();
     for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>())
         watcher->waitForFinished();
 }

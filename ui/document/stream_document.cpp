@@ -4,7 +4,6 @@
 #include "ui/document/lut_document.h"
 #include "ui/document/pipeline_settings.h"
 
-#include "visioncore/basics/atomic_file.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 

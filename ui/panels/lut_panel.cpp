@@ -1,7 +1,6 @@
 #include "ui/panels/lut_panel.h"
 
 #include "ui/adapters/image_adapter.h"
-#include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 
 #include <QAction>

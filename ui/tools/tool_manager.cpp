@@ -9,7 +9,7 @@ namespace fieldsight::ui {
 
 ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>& tools,
                          QObject* parent)
-    : QObject(parent), m_session(session), m_context{session, m_settings}
+    : QObject(parent), m_context{session, m_settings}
 {
     m_actions = new QActionGroup(this);
     m_actions->setExclusive(true);
@@ -39,8 +39,8 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
         m_actions->actions().front()->setChecked(true);
     }
     // What a tool would change depends on the table, the frame and the shared settings.
-    connect(&m_session.lut(), &LutDocument::changed, this, &ToolManager::refreshPreview);
-    connect(&m_session.stream(), &StreamDocument::frameReady, this, &ToolManager::refreshPreview);
+    connect(&session.lut(), &LutDocument::changed, this, &ToolManager::refreshPreview);
+    connect(&session.stream(), &StreamDocument::frameReady, this, &ToolManager::refreshPreview);
     connect(&m_settings, &LutToolSettings::changed, this, &ToolManager::refreshPreview);
 }
 

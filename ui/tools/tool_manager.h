@@ -52,7 +52,6 @@ signals:
 private:
     void refreshPreview();
 
-    EditingSession& m_session;
     LutToolSettings m_settings;
     ToolContext m_context;
     std::vector<std::unique_ptr<Tool>> m_tools;
