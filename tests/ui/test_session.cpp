@@ -363,11 +363,20 @@ private slots:
         w.tools().activate(QStringLiteral("click"));
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
+        const ColourLut old_table = w.session().lut().table();
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
         QVERIFY(waitForFrame(w, 2));
         w.navigator().step(1);
-        QVERIFY(w.session().stream().waiting()); // asked of the worker, with the new table
         QVERIFY(waitForFrame(w, 3));
+        // Frame 3 as shown is classified with the edited table (whether the worker ran it on
+        // the step or ahead of it once the edit was in), not with the table it was prepared with.
+        const auto shown = w.session().stream().current();
+        cv::Mat classes;
+        const QImage with_new =
+            ui::classifyFrame(shown->frame.ycbcr, w.session().lut().table(), classes);
+        const QImage with_old = ui::classifyFrame(shown->frame.ycbcr, old_table, classes);
+        QVERIFY(with_new != with_old); // the edit shows on frame 3
+        QCOMPARE(shown->classified, with_new);
     }
 
     void recoveredEditsGoBackOnlyToTheStreamTheyCameFrom()

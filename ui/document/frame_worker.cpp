@@ -195,21 +195,23 @@ void FrameWorker::processPending()
     });
 }
 
+bool FrameWorker::aheadAnswers(const FrameRequest& request, bool any_frame) const
+{
+    const FrameRequest& k = m_ahead_for;
+    return m_ahead && k.source == request.source && (any_frame || k.index == request.index) &&
+           k.lut == request.lut && k.params == request.params && k.skip == request.skip;
+}
+
 std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
 {
     std::lock_guard lock(m_mutex);
-    const FrameRequest& k = m_ahead_for;
-    if (!m_ahead || k.source != request.source || k.index != request.index ||
-        k.lut != request.lut || k.params != request.params || k.skip != request.skip)
-        return nullptr;
-    return std::exchange(m_ahead, nullptr);
+    return aheadAnswers(request, false) ? std::exchange(m_ahead, nullptr) : nullptr;
 }
 
-std::optional<std::size_t> FrameWorker::aheadIndex(const std::shared_ptr<FrameSource>& source)
+std::optional<std::size_t> FrameWorker::aheadIndex(const FrameRequest& like)
 {
     std::lock_guard lock(m_mutex);
-    return m_ahead && m_ahead_for.source == source ? std::optional<std::size_t>(m_ahead_for.index)
-                                                   : std::nullopt;
+    return aheadAnswers(like, true) ? std::optional<std::size_t>(m_ahead_for.index) : std::nullopt;
 }
 
 void FrameWorker::swapPrefetch()
@@ -230,9 +232,7 @@ void FrameWorker::lookAhead(const FrameRequest& request)
         std::lock_guard lock(m_mutex);
         if (m_pending)
             return; // there is real work
-        const FrameRequest& k = m_ahead_for;
-        if (m_ahead && k.source == next.source && k.index == next.index && k.lut == next.lut &&
-            k.params == next.params && k.skip == next.skip)
+        if (aheadAnswers(next, false))
             return; // prepared already
     }
     if (!m_frame_valid || !m_prefetch_source || m_prefetch_source != request.source ||

@@ -92,8 +92,9 @@ public:
     /// looks at a frame, the worker runs the next one with the same settings, so a step finds its
     /// answer ready on the GUI thread without waiting for a thread to wake.
     std::shared_ptr<FrameOutput> takeAhead(const FrameRequest& request);
-    /// Thread-safe. The frame of `source` prepared ahead, if any.
-    std::optional<std::size_t> aheadIndex(const std::shared_ptr<FrameSource>& source);
+    /// Thread-safe. The frame prepared ahead with `like`'s source, table, parameters and
+    /// switches (the frame it asks for aside), if any: what a step there would be answered with.
+    std::optional<std::size_t> aheadIndex(const FrameRequest& like);
     /// Thread-safe. Lets go of a source no longer shown, on the worker thread (closing a camera
     /// waits for its capture thread; a reader may close files), after any run still using it.
     void release(std::shared_ptr<FrameSource> source);
@@ -110,6 +111,8 @@ private:
     /// After a request: decodes the next frame and runs it with the request's settings, kept
     /// for takeAhead(); the current frame stays loaded.
     void lookAhead(const FrameRequest& request);
+    /// Under m_mutex: the look-ahead's answer was made for `request` (any frame of it).
+    bool aheadAnswers(const FrameRequest& request, bool any_frame) const;
     /// Swaps the loaded frame with the prefetched one (pixels, display, and which they are).
     void swapPrefetch();
     /// Makes frame `index` of `source` current in m_data: kept from the last run (a parameter

@@ -143,18 +143,29 @@ void StreamDocument::rerun()
     submit();
 }
 
-void StreamDocument::submit()
+FrameRequest StreamDocument::request() const
 {
-    if (!m_stream)
-        return;
-    const bool answered = !waiting(); // every request before this one
     FrameRequest request;
-    request.serial = ++m_serial;
     request.index = m_index;
     request.source = m_stream->source;
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
+    return request;
+}
+
+std::optional<std::size_t> StreamDocument::preparedAhead() const
+{
+    return m_stream ? m_worker->aheadIndex(request()) : std::nullopt;
+}
+
+void StreamDocument::submit()
+{
+    if (!m_stream)
+        return;
+    const bool answered = !waiting(); // every request before this one
+    FrameRequest request = this->request();
+    request.serial = ++m_serial;
     // Prepared while the frame before was shown (and nothing older is still running, whose
     // answer would come after it): answered here, no thread hop on the way. The worker moves on
     // to the frame after it once this one is painted.

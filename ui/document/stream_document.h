@@ -70,10 +70,7 @@ public:
     const std::shared_ptr<const FrameOutput>& current() const { return m_current; }
     /// The frame the worker has run ahead with the current settings (a step there is answered at
     /// once), if any.
-    std::optional<std::size_t> preparedAhead() const
-    {
-        return m_stream ? m_worker->aheadIndex(m_stream->source) : std::nullopt;
-    }
+    std::optional<std::size_t> preparedAhead() const;
     /// A request has not been answered yet.
     bool waiting() const { return m_answered < m_serial; }
     std::uint64_t lastSerial() const { return m_serial; }
@@ -98,6 +95,8 @@ signals:
 
 private:
     void submit();
+    /// What the current frame with the current table and settings asks of the worker.
+    FrameRequest request() const;
     void onFrameDone(std::shared_ptr<const FrameOutput> output);
 
     const Pipeline& m_pipeline;
