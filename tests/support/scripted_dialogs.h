@@ -21,6 +21,8 @@ public:
     std::deque<QString> texts;                       ///< text
     std::deque<int> numbers;                         ///< number
     std::deque<QMessageBox::StandardButton> answers; ///< question
+    std::deque<int> choices;                         ///< choice (an option's index, -1 cancels)
+    QStringList texts_asked;                         ///< the text of every question and choice
     QStringList asked;                               ///< every title, in order
     QStringList unanswered;                          ///< titles asked with nothing queued
 
@@ -55,11 +57,18 @@ public:
             return next(numbers, title, std::optional<int>());
         return next(numbers, title, 0);
     }
-    QMessageBox::StandardButton question(QWidget*, const QString& title, const QString&,
+    QMessageBox::StandardButton question(QWidget*, const QString& title, const QString& text,
                                          QMessageBox::StandardButtons,
                                          QMessageBox::StandardButton) override
     {
+        texts_asked << text;
         return next(answers, title, QMessageBox::Cancel);
+    }
+    int choice(QWidget*, const QString& title, const QString& text, const QStringList&,
+               int) override
+    {
+        texts_asked << text;
+        return next(choices, title, -1);
     }
     void information(QWidget*, const QString& title, const QString&) override { asked << title; }
 

@@ -5,6 +5,7 @@
 #include "support/synthetic_frames.h"
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "support/scripted_dialogs.h"
 #include "ui/widgets/message_bar.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
@@ -680,22 +681,62 @@ private slots:
         QCOMPARE(loadLutSamples(sampler.path().toStdString()).value().samples.size(),
                  std::size_t(1));
 
-        // Built with the annotations, in the background, as one undoable edit.
+        // Built with the annotations, in the background; nothing changes until the user has
+        // seen what each way would change and chosen one: replace, only unclassified, cancel.
         auto expected = ui::SamplesDocument::buildTable(copy.toStdString(), sampler.samples(), true,
                                                         nullptr, nullptr, nullptr);
         QVERIFY(expected);
         const ColourLut before = w.session().lut().table();
         const int steps = w.session().lut().undoStack().count();
         w.findChild<QCheckBox*>("samples.annotations")->setChecked(true);
+        test::ScriptedDialogs dialogs;
         QSignalSpy built(&sampler, &ui::SamplesDocument::built);
+        QSignalSpy ready(&sampler, &ui::SamplesDocument::buildReady);
+
+        dialogs.choices = {-1};
+        w.lutPanel().buildFromSamples();
+        QVERIFY(ready.wait(20000));
+        QVERIFY(w.session().lut().table() == before);
+        QCOMPARE(w.session().lut().undoStack().count(), steps);
+        QVERIFY(!sampler.hasBuild());
+        QCOMPARE(dialogs.asked.count(QStringLiteral("Build from samples")), 1);
+        const QString shown = dialogs.texts_asked.back();
+        const LutDiff replace = diffLuts(before, expected.value().table);
+        QVERIFY2(shown.contains(QLocale().toString(qulonglong(replace.cells.size())) + " cells"),
+                 qPrintable(shown));
+        QVERIFY2(shown.contains("green +"), qPrintable(shown));
+        QVERIFY2(shown.contains("pixels change class"), qPrintable(shown));
+
+        dialogs.choices = {1};
         w.lutPanel().buildFromSamples();
         QVERIFY(built.wait(20000));
-        QVERIFY2(built.front().front().toBool(), qPrintable(built.front().back().toString()));
+        QVERIFY2(built.back().front().toBool(), qPrintable(built.back().back().toString()));
         QVERIFY(w.session().lut().table() == expected.value().table);
         QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         QCOMPARE(sampler.ambiguous().size(), expected.value().ambiguous.size());
         w.session().lut().undoStack().undo();
         QVERIFY(w.session().lut().table() == before);
+
+        // Only unclassified cells: every cell the table had keeps its class.
+        dialogs.choices = {0};
+        w.lutPanel().buildFromSamples();
+        QVERIFY(built.wait(20000));
+        const ColourLut& merged = w.session().lut().table();
+        std::size_t kept = 0;
+        std::size_t filled = 0;
+        for (std::size_t i = 0; i < ColourLut::kCells; ++i) {
+            if (before.data()[i] != 0) {
+                QCOMPARE(merged.data()[i], before.data()[i]);
+                ++kept;
+            } else {
+                QCOMPARE(merged.data()[i], expected.value().table.data()[i]);
+                filled += merged.data()[i] != 0;
+            }
+        }
+        QVERIFY(kept > 0);
+        QVERIFY(filled > 0);
+        QVERIFY(!(merged == expected.value().table));
+        w.session().lut().undoStack().undo();
 
         // A window opened later finds the samples again.
         MainWindow again;

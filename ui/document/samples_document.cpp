@@ -48,16 +48,46 @@ SamplesDocument::SamplesDocument(LutDocument& lut, QObject* parent) : QObject(pa
             return;
         }
         m_ambiguous = std::move(b.ambiguous);
-        const LutDiff diff = diffLuts(m_lut.table(), b.table);
-        m_lut.edit(tr("Build from %1 samples").arg(qulonglong(b.samples)), diff.cells);
-        emit built(true, tr("Built from %1 samples on %2 frames (%3 pixels): %4 cells changed, "
-                            "%5 claimed by two classes")
-                             .arg(qulonglong(b.samples))
-                             .arg(qulonglong(b.frames))
-                             .arg(qulonglong(b.pixels))
-                             .arg(qulonglong(diff.cells.size()))
-                             .arg(qulonglong(m_ambiguous.size())));
+        m_pending = std::move(b);
+        emit buildReady();
     });
+}
+
+std::vector<CellChange> SamplesDocument::buildChanges(BuildMode mode) const
+{
+    if (!m_pending)
+        return {};
+    if (mode == BuildMode::Replace)
+        return diffLuts(m_lut.table(), m_pending->table).cells;
+    std::vector<Colour> classes;
+    for (int c = 1; c < kColourCount; ++c)
+        classes.push_back(Colour(c));
+    return mergeChanges(m_lut.table(), m_pending->table, classes, /*keep_others=*/true);
+}
+
+void SamplesDocument::applyBuild(BuildMode mode)
+{
+    if (!m_pending)
+        return;
+    std::vector<CellChange> changes = buildChanges(mode);
+    const std::size_t cells = changes.size();
+    const Built b = *std::exchange(m_pending, std::nullopt);
+    m_lut.edit(mode == BuildMode::Replace
+                   ? tr("Build from %1 samples (replace)").arg(qulonglong(b.samples))
+                   : tr("Build from %1 samples (unclassified cells)").arg(qulonglong(b.samples)),
+               std::move(changes));
+    emit built(true, tr("Built from %1 samples on %2 frames (%3 pixels): %4 cells changed, "
+                        "%5 claimed by two classes")
+                         .arg(qulonglong(b.samples))
+                         .arg(qulonglong(b.frames))
+                         .arg(qulonglong(b.pixels))
+                         .arg(qulonglong(cells))
+                         .arg(qulonglong(m_ambiguous.size())));
+}
+
+void SamplesDocument::dropBuild()
+{
+    m_pending.reset();
 }
 
 SamplesDocument::~SamplesDocument()
@@ -73,6 +103,7 @@ Status SamplesDocument::setStream(const QString& spec)
     m_undo.clear();
     m_samples = {};
     m_ambiguous.clear();
+    m_pending.reset();
     m_path_unreadable = false;
     m_load_problem.clear();
     m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))

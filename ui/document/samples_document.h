@@ -14,6 +14,7 @@
 #include <QUndoStack>
 
 #include <atomic>
+#include <optional>
 
 namespace fieldsight::ui {
 
@@ -38,9 +39,21 @@ public:
     /// Replaces every sample (undoable; saved at once).
     void setSamples(std::vector<LutSample> samples, const QString& text);
 
-    /// Builds from the samples (and the stream's annotations as samples) on a worker thread; the
-    /// table then replaces the LUT as one undoable edit.
+    /// Builds from the samples (and the stream's annotations as samples) on a worker thread;
+    /// buildReady() then says a built table waits to be applied (or dropped).
     void build(bool with_annotations);
+    /// How a built table goes into the LUT.
+    enum class BuildMode {
+        OnlyUnclassified, ///< fills the cells the LUT leaves unclassified; others stay
+        Replace,          ///< the LUT becomes the built table
+    };
+    bool hasBuild() const { return m_pending.has_value(); }
+    /// What applying the waiting build in `mode` would change in the LUT.
+    std::vector<CellChange> buildChanges(BuildMode mode) const;
+    /// Applies the waiting build as one undoable LUT edit; built() reports it.
+    void applyBuild(BuildMode mode);
+    /// Drops the waiting build: the LUT is unchanged.
+    void dropBuild();
     bool building() const { return m_watcher.isRunning(); }
     void cancel() { m_cancel = true; }
     /// Frames read so far and frames to read, while building.
@@ -65,6 +78,8 @@ public:
 
 signals:
     void samplesChanged();
+    /// A build finished and waits for applyBuild() or dropBuild().
+    void buildReady();
     /// A build finished (`summary` says what it did), or failed (`summary` says why).
     void built(bool ok, const QString& summary);
     void problem(const QString& message);
@@ -85,6 +100,7 @@ private:
     std::atomic<std::size_t> m_done{0};
     std::atomic<std::size_t> m_total{0};
     std::vector<AmbiguousCell> m_ambiguous;
+    std::optional<Built> m_pending;
 };
 
 } // namespace fieldsight::ui

@@ -3,6 +3,8 @@
 #include "ui/adapters/image_adapter.h"
 #include "ui/dialogs/dialogs.h"
 
+#include "visioncore/services/lut_compare.h"
+
 #include <QAction>
 #include <QActionGroup>
 #include <QCheckBox>
@@ -11,6 +13,7 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -20,6 +23,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <array>
 #include <set>
 
 namespace fieldsight::ui {
@@ -38,6 +42,43 @@ QSpinBox* spinBox(QWidget* parent, const QString& name, int max)
     box->setObjectName(name);
     box->setRange(0, max);
     return box;
+}
+
+QString number(std::size_t n)
+{
+    return QLocale().toString(qulonglong(n));
+}
+
+/// What `changes` would do to `lut`: cells gained and lost per class, and the pixels of `frame`
+/// (if any) whose class changes.
+QString changeSummary(const ColourLut& lut, const std::vector<CellChange>& changes,
+                      const cv::Mat* frame)
+{
+    std::array<std::size_t, kColourCount> gained{};
+    std::array<std::size_t, kColourCount> lost{};
+    for (const CellChange& c : changes) {
+        ++gained[std::size_t(c.after)];
+        ++lost[std::size_t(c.before)];
+    }
+    QStringList classes;
+    for (int c = 1; c < kColourCount; ++c) {
+        QStringList parts;
+        if (gained[std::size_t(c)] > 0)
+            parts << QStringLiteral("+") + number(gained[std::size_t(c)]);
+        if (lost[std::size_t(c)] > 0)
+            parts << QStringLiteral("\u2212") + number(lost[std::size_t(c)]);
+        if (!parts.isEmpty())
+            classes << colourLabel(Colour(c)) + QLatin1Char(' ') + parts.join(QLatin1Char(' '));
+    }
+    QString text = LutPanel::tr("%1 cells").arg(number(changes.size()));
+    if (!classes.isEmpty())
+        text += QStringLiteral(" (") + classes.join(QStringLiteral(", ")) + QLatin1Char(')');
+    if (frame) {
+        const PixelTally tally = PixelTallier(lut, CellMask::of(changes))(*frame);
+        text += LutPanel::tr("; %1 of this frame's %2 pixels change class")
+                    .arg(number(tally.in_mask), number(tally.pixels));
+    }
+    return text;
 }
 
 } // namespace
@@ -171,6 +212,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     };
     connect(&m_samples, &SamplesDocument::samplesChanged, this, describe);
     describe();
+    connect(&m_samples, &SamplesDocument::buildReady, this, &LutPanel::askApplyBuild);
     connect(&m_samples, &SamplesDocument::built, this, [this](bool ok, const QString& summary) {
         m_samples_info->setText(summary);
         if (!ok)
@@ -250,6 +292,28 @@ void LutPanel::buildFromSamples()
             progress->close();
     });
     poll->start(100);
+}
+
+void LutPanel::askApplyBuild()
+{
+    using Mode = SamplesDocument::BuildMode;
+    const cv::Mat* frame = currentFrame(m_stream);
+    const QString text =
+        tr("The table built from the samples would change:\n\n"
+           "Only unclassified cells: %1.\n\nReplace the table: %2.\n\n"
+           "Either is one undo step.")
+            .arg(
+                changeSummary(m_lut.table(), m_samples.buildChanges(Mode::OnlyUnclassified), frame),
+                changeSummary(m_lut.table(), m_samples.buildChanges(Mode::Replace), frame));
+    const int answer =
+        Dialogs::current().choice(this, tr("Build from samples"), text,
+                                  {tr("Only unclassified cells"), tr("Replace the table")}, 0);
+    if (answer < 0) {
+        m_samples.dropBuild();
+        m_samples_info->setText(tr("Build not applied; the LUT is unchanged"));
+        return;
+    }
+    m_samples.applyBuild(answer == 0 ? Mode::OnlyUnclassified : Mode::Replace);
 }
 
 ColourShift LutPanel::estimateRetarget(std::size_t* samples) const

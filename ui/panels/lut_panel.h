@@ -36,7 +36,8 @@ public:
     bool retarget(const ColourShift& shift);
     /// Asks (showing the estimate and the cells it moves) and retargets.
     void askRetarget();
-    /// Builds from the samples in the background, with a progress dialog.
+    /// Builds from the samples in the background, with a progress dialog; then asks how the
+    /// built table goes in (only unclassified cells, or replace), showing what each changes.
     void buildFromSamples();
 
 signals:
@@ -45,6 +46,7 @@ signals:
     void cellsToOutline(const std::vector<std::uint32_t>& cells);
 
 private:
+    void askApplyBuild();
     /// The widgets show the shared settings.
     void showSettings();
     void refreshStats();
