@@ -17,6 +17,7 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 
+#include <algorithm>
 #include <utility>
 
 namespace fieldsight::ui {
@@ -76,10 +77,27 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
         return;
     }
     rememberRecent(m_window.session().stream().streamSpec());
-    if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
-        m_window.showMessage(warnings.join('\n'));
-    else
+    QObject::disconnect(m_until_classified);
+    if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty()) {
+        const QString shown = warnings.join('\n');
+        m_window.showMessage(shown);
+        if (m_window.session().stream().lutProblem()) {
+            // The warning that every pixel is unclassified goes once the table has a class.
+            LutDocument& lut = m_window.session().lut();
+            m_until_classified = connect(&lut, &LutDocument::changed, this, [this, shown] {
+                const ColourLut& table = m_window.session().lut().table();
+                const std::uint8_t* cells = table.data();
+                if (std::all_of(cells, cells + ColourLut::kCells,
+                                [](std::uint8_t c) { return c == 0; }))
+                    return;
+                QObject::disconnect(m_until_classified);
+                if (m_window.messageBar().isVisible() && m_window.messageBar().text() == shown)
+                    m_window.messageBar().hide();
+            });
+        }
+    } else {
         m_window.messageBar().hide();
+    }
     if (recovery)
         applyRecovery(*recovery);
     emit streamOpened(true);
@@ -182,6 +200,12 @@ bool FileCommands::saveLut()
     return true;
 }
 
+QString FileCommands::streamFolder() const
+{
+    const QFileInfo spec(m_window.session().stream().streamSpec());
+    return spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
+}
+
 bool FileCommands::saveLutAs(const QString& given)
 {
     LutDocument& lut = m_window.session().lut();
@@ -189,8 +213,7 @@ bool FileCommands::saveLutAs(const QString& given)
     if (path.isEmpty()) {
         QString suggestion = lut.path();
         if (suggestion.isEmpty() || !suggestion.endsWith(QLatin1String(".lut")))
-            suggestion =
-                QFileInfo(m_window.session().stream().streamSpec()).absolutePath() + "/venue.lut";
+            suggestion = streamFolder() + QStringLiteral("/venue.lut");
         path = Dialogs::current().saveFile(&m_window, tr("Save LUT as"), suggestion,
                                            tr("Fieldsight LUT (*.lut)"));
         if (path.isEmpty())

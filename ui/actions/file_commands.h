@@ -71,6 +71,8 @@ signals:
     void streamOpened(bool ok);
 
 private:
+    /// The open stream's folder (a file stream's: the folder it is in).
+    QString streamFolder() const;
     void onOpened(bool ok, bool cancelled, const QString& error);
     void rememberRecent(const QString& spec);
     /// Applies `recovery` to the open stream's table (which must be the one it belongs to).
@@ -79,6 +81,8 @@ private:
 
     MainWindow& m_window;
     QProgressDialog* m_progress = nullptr;
+    /// Hides the "no table" warning once the table has a classified cell.
+    QMetaObject::Connection m_until_classified;
     QStringList m_recent;
     QMenu* m_recent_menu = nullptr;
     std::optional<LutRecovery> m_recover_after_open; ///< applied once its stream is open

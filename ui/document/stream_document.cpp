@@ -69,11 +69,21 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
         opened->lut = std::make_shared<const ColourLut>();
         opened->warnings << spec + QStringLiteral(": no LUT given and none beside the stream; "
                                                   "every pixel is unclassified");
-    } else {
-        auto table = importLut(local(opened->lut_path));
-        if (!table)
-            return table.error();
+        opened->lut_problem = true;
+    } else if (auto table = importLut(local(opened->lut_path)); table) {
         opened->lut = std::make_shared<const ColourLut>(std::move(table).value());
+    } else if (lut.isEmpty()) {
+        // The stream's own table is damaged: the stream still opens, with an empty table that
+        // is not tied to the damaged file, so no save can write over it without asking.
+        opened->warnings << QString::fromStdString(table.error().message) +
+                                QStringLiteral("; the stream opened with an empty table, and that "
+                                               "file is left as it is (Save LUT As writes "
+                                               "another, or replaces it if you choose it)");
+        opened->lut_path.clear();
+        opened->lut = std::make_shared<const ColourLut>();
+        opened->lut_problem = true;
+    } else {
+        return table.error(); // a table the user chose: say why it cannot be used
     }
     // A live camera gets its own DataWrapper, capturing from here on; a file stream its reader.
     if (opened->info.kind == StreamKind::Camera)

@@ -24,7 +24,8 @@ struct OpenedStream
     QString lut_path;               ///< empty when no LUT was found
     std::shared_ptr<const ColourLut> lut;
     std::shared_ptr<FrameSource> source;
-    QStringList warnings; ///< what was not found or could not be read, the stream still opens
+    QStringList warnings;     ///< what was not found or could not be read, the stream still opens
+    bool lut_problem = false; ///< no table was found or it was damaged: an empty one is used
 };
 
 class LutDocument;
@@ -59,6 +60,8 @@ public:
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }
     QString frameName(std::size_t index) const;
     QStringList warnings() const { return m_stream ? m_stream->warnings : QStringList(); }
+    /// The stream opened with an empty table because its own was missing or damaged.
+    bool lutProblem() const { return m_stream && m_stream->lut_problem; }
 
     std::size_t currentIndex() const { return m_index; }
     /// Shows frame `index` (clamped to the stream); the newest request supersedes older ones.
