@@ -65,6 +65,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     connect(m_recorder, &FrameRecorder::problem, this, error);
     connect(m_pipeline, &PipelinePanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::problem, this, error);
+    connect(m_lut_panel, &LutPanel::notice, this, note);
     connect(m_recovery_bar, &OfferBar::accepted, m_files, &FileCommands::recoverLut);
     connect(m_recovery_bar, &OfferBar::declined, m_files, &FileCommands::discardRecovery);
     connect(m_view, &FrameView::painted, this, [this] {

@@ -2,6 +2,7 @@
 // parsing a command's own arguments, and the options several commands take.
 #pragma once
 
+#include "visioncore/basics/output_guard.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/basics/result.h"
 #include "visioncore/services/stream_runner.h"
@@ -50,13 +51,6 @@ inline int badInput(const Context& ctx, const char* message)
 {
     return badInput(ctx, std::string_view(message));
 }
-
-/// Refuses an output that is one of `inputs` (a file, or a folder such as a stream), or that would
-/// replace a file inside an input folder, after resolving links and `..`: an Error naming both
-/// paths, for the command to give before it writes anything. Empty inputs, "-" and cameras are
-/// skipped.
-Status checkNotAnInput(std::string_view command, const std::string& output,
-                       const std::vector<std::string>& inputs);
 
 /// Writes `text` to `path` atomically, or to `out` when `path` is "-".
 Status writeOutput(const std::string& path, const std::string& text, std::ostream& out);

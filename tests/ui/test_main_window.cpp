@@ -463,7 +463,7 @@ private slots:
                 *w.session().lut().version());
         // A folder that already holds a recording is not written over.
         const auto again = w.recorder().start(folder, *w.session().lut().version());
-        QVERIFY(!again && QString::fromStdString(again.error().message).contains("recording.strm"));
+        QVERIFY(!again && QString::fromStdString(again.error().message).contains("not empty"));
 
         // Another stream: the camera is closed (on the worker thread).
         QVERIFY(openAndWait(w, sampleStream()));

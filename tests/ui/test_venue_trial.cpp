@@ -4,7 +4,17 @@
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
+#include "ui/adapters/image_adapter.h"
+#include "ui/document/frame_recorder.h"
+#include "ui/panels/pipeline_panel.h"
 #include "ui/widgets/message_bar.h"
+
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSpinBox>
+#include <QWheelEvent>
+#include <QToolButton>
 
 #include <QSettings>
 #include <QStandardPaths>
@@ -125,6 +135,128 @@ private slots:
         std::vector<CellChange> two = {{101, Colour::Unclassified, Colour::White}};
         QVERIFY(w.session().lut().edit("edit", two));
         QVERIFY(w.messageBar().isVisible());
+    }
+
+    /// The window's own outputs follow the commands' rule: a snapshot never replaces a file of
+    /// the stream or the table in use, and a recording goes only into a new or empty folder.
+    void theWindowsOutputsNeverWriteOverInputs()
+    {
+        const QString stream = copyStream("outputs");
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndWait(w, stream));
+        const QString frame = stream + "/frame_000000.png";
+        const QByteArray frame_bytes = fileBytes(frame);
+        QVERIFY(!w.files().saveSnapshot(frame));
+        QCOMPARE(fileBytes(frame), frame_bytes);
+        QVERIFY2(w.messageBar().text().contains(frame), qPrintable(w.messageBar().text()));
+        const QString lut = stream + "/default.lut";
+        const QByteArray lut_bytes = fileBytes(lut);
+        QVERIFY(!w.files().saveSnapshot(lut));
+        QCOMPARE(fileBytes(lut), lut_bytes);
+        // A new file beside the frames is fine.
+        QVERIFY(w.files().saveSnapshot(stream + "/view.png"));
+        QVERIFY(QImage(stream + "/view.png").width() > 0);
+
+        // Recording into the stream's folder would replace its table: refused.
+        const auto into_stream = w.recorder().start(stream, w.session().lut().table());
+        QVERIFY(!into_stream);
+        QVERIFY(QString::fromStdString(into_stream.error().message).contains("not empty"));
+        QCOMPARE(fileBytes(lut), lut_bytes);
+        QVERIFY(!w.recorder().recording());
+    }
+
+    /// File > New LUT starts an empty untitled table (asking first about unsaved edits); one
+    /// class can be cleared from the whole table as one undo step; every class has a key,
+    /// shown on its button, and the buttons are in id order.
+    void newTableClearAClassAndAKeyForEveryClass()
+    {
+        const QString stream = copyStream("new_lut");
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndWait(w, stream));
+        const std::size_t had = classifiedCells(w);
+        QVERIFY(had > 0);
+
+        // Clear green: only green goes, one undo step brings it back.
+        const ColourLut before = w.session().lut().table();
+        const auto green = std::size_t(std::count(before.data(), before.data() + ColourLut::kCells,
+                                                  std::uint8_t(Colour::Green)));
+        QVERIFY(green > 0);
+        QTest::keyClick(&w, Qt::Key_2);
+        QCOMPARE(w.tools().settings().colour(), Colour::Green);
+        w.findChild<QPushButton*>("clear_class")->click();
+        QCOMPARE(classifiedCells(w), had - green);
+        QVERIFY(w.messageBar().text().contains("green"));
+        w.session().lut().undoStack().undo();
+        QVERIFY(w.session().lut().table() == before);
+
+        // Every class answers a key, in id order, and its button shows the key.
+        QStringList buttons;
+        for (int c = 0; c < kColourCount; ++c) {
+            const QKeySequence key = c <= 9 ? QKeySequence(Qt::Key_0 + c) : QKeySequence("-");
+            QTest::keyClick(&w, key[0].key());
+            QCOMPARE(int(w.tools().settings().colour()), c);
+            auto* button = w.findChild<QToolButton*>("colour_button." + ui::colourLabel(Colour(c)));
+            QVERIFY(button);
+            QVERIFY2(button->text().startsWith(key.toString(QKeySequence::NativeText)),
+                     qPrintable(button->text()));
+            buttons << button->text();
+        }
+        QCOMPARE(buttons.size(), 11);
+
+        // New LUT with an edit pending: Cancel keeps it, Discard gives an empty untitled table.
+        std::vector<CellChange> one = {{100, Colour::Unclassified, Colour::Green}};
+        QVERIFY(w.session().lut().edit("edit", one));
+        ScriptedDialogs dialogs;
+        QAction* new_lut = w.findChild<QAction*>("file.new_lut");
+        QVERIFY(new_lut);
+        dialogs.answers = {QMessageBox::Cancel};
+        new_lut->trigger();
+        QVERIFY(w.session().lut().modified());
+        QCOMPARE(w.session().lut().path(), stream + "/default.lut");
+        dialogs.answers = {QMessageBox::Discard};
+        new_lut->trigger();
+        QCOMPARE(classifiedCells(w), std::size_t(0));
+        QVERIFY(w.session().lut().path().isEmpty());
+        QVERIFY(!w.session().lut().modified());
+        QCOMPARE(fileBytes(stream + "/default.lut"),
+                 fileBytes(sampleStream() + "/default.lut")); // the file is untouched
+    }
+
+    /// The wheel over a parameter's spin box scrolls the panel unless the box has focus.
+    void theWheelScrollsThePanelUnlessTheBoxHasFocus()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, sampleStream()));
+        QWidget* panel = &w.pipelinePanel();
+        panel->parentWidget()->raise();
+        auto* scroll = panel->findChild<QScrollArea*>();
+        QVERIFY(scroll);
+        QTRY_VERIFY(scroll->verticalScrollBar()->maximum() > 0);
+        QSpinBox* box = nullptr;
+        for (QSpinBox* b : panel->findChildren<QSpinBox*>())
+            if (b->isVisible() && b->value() > b->minimum() && b->value() < b->maximum())
+                box = b;
+        QVERIFY(box);
+        const auto wheel = [box] {
+            const QPointF at(box->width() / 2.0, box->height() / 2.0);
+            QWheelEvent e(at, box->mapToGlobal(at), {}, QPoint(0, -120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(box, &e);
+        };
+        const int value = box->value();
+        const int scrolled = scroll->verticalScrollBar()->value();
+        wheel();
+        QCOMPARE(box->value(), value);
+        QVERIFY(scroll->verticalScrollBar()->value() != scrolled);
+        box->setFocus();
+        QTRY_VERIFY(box->hasFocus());
+        wheel();
+        QVERIFY(box->value() != value);
     }
 };
 

@@ -6,6 +6,7 @@
 #include "ui/panels/lut_compare_dialog.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/output_guard.h"
 #include "visioncore/io/lut_import.h"
 
 #include <QApplication>
@@ -186,6 +187,17 @@ void FileCommands::openLastSession(const QString& stream, const QString& lut)
     openStream(sample);
 }
 
+bool FileCommands::newLut()
+{
+    if (!confirmLutChanges())
+        return false;
+    m_window.session().lut().reset(std::make_shared<const ColourLut>(), {});
+    m_window.showMessage(tr("A new, empty table: every pixel is unclassified until you classify "
+                            "some (Save LUT As names it)"),
+                         false);
+    return true;
+}
+
 bool FileCommands::saveLut()
 {
     LutDocument& lut = m_window.session().lut();
@@ -312,6 +324,14 @@ void FileCommands::discardRecovery()
 
 bool FileCommands::saveSnapshot(const QString& path)
 {
+    // The same rule as the commands': never over a file of the stream or the table in use.
+    if (Status s = checkNotAnInput("Save view as PNG", toLocalPath(path),
+                                   {toLocalPath(m_window.session().stream().streamSpec()),
+                                    toLocalPath(m_window.session().lut().path())});
+        !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
     QByteArray png;
     QBuffer buffer(&png);
     buffer.open(QIODevice::WriteOnly);

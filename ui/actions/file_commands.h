@@ -43,6 +43,9 @@ public:
     /// the build tree and in the source tree; empty when not found.
     static QString bundledSampleStream();
 
+    /// Starts an empty, untitled table (after asking about unsaved edits); false when the user
+    /// kept them.
+    bool newLut();
     /// Saves the edited LUT to its file (Save As when it has no .lut file yet); false with a
     /// message in the window when it could not (the edits stay).
     bool saveLut();

@@ -2,6 +2,7 @@
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/dialogs/dialogs.h"
+#include "ui/widgets/wheel_guard.h"
 
 #include "visioncore/services/lut_compare.h"
 
@@ -91,21 +92,24 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     LutToolSettings& settings = m_tools.settings();
     auto* column = new QVBoxLayout(this);
 
-    // The palette: a button per class; keys 0-9 choose the first ten.
+    // The palette: a button per class in id order, each showing its key (0-9, then '-').
     auto* palette = new QGridLayout;
     m_colours = new QActionGroup(this);
     m_colours->setExclusive(true);
     for (int c = 0; c < kColourCount; ++c) {
-        auto* action = new QAction(colourSwatch(Colour(c)), colourLabel(Colour(c)), this);
-        action->setObjectName(QStringLiteral("colour.%1").arg(colourLabel(Colour(c))));
+        const QKeySequence key = c <= 9 ? QKeySequence(Qt::Key_0 + c) : QKeySequence(Qt::Key_Minus);
+        const QString name = colourLabel(Colour(c));
+        auto* action = new QAction(colourSwatch(Colour(c)), name, this);
+        action->setObjectName(QStringLiteral("colour.%1").arg(name));
         action->setCheckable(true);
         action->setData(c);
-        if (c <= 9) {
-            action->setShortcut(QKeySequence(Qt::Key_0 + c));
-            action->setToolTip(QStringLiteral("%1 (%2)").arg(colourLabel(Colour(c))).arg(c));
-        }
+        action->setShortcut(key);
+        action->setIconText(
+            QStringLiteral("%1  %2").arg(key.toString(QKeySequence::NativeText), name));
+        action->setToolTip(QStringLiteral("%1 (%2)").arg(name, key.toString()));
         m_colours->addAction(action);
         auto* button = new QToolButton(this);
+        button->setObjectName(QStringLiteral("colour_button.%1").arg(name));
         button->setDefaultAction(action);
         button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
         button->setAutoRaise(true);
@@ -226,6 +230,18 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     connect(retarget_button, &QPushButton::clicked, this, &LutPanel::askRetarget);
     column->addWidget(retarget_button);
 
+    auto* clear = new QPushButton(tr("Clear this class from the table"), this);
+    clear->setObjectName(QStringLiteral("clear_class"));
+    clear->setToolTip(tr("Every cell of the chosen class becomes unclassified (one undo step)"));
+    connect(clear, &QPushButton::clicked, this, [this] {
+        const Colour colour = m_tools.settings().colour();
+        const std::size_t cells = clearClass(colour);
+        emit notice(cells == 0 ? tr("The table has no %1 cells").arg(colourLabel(colour))
+                               : tr("Cleared %1 %2 cells (Ctrl+Z undoes it)")
+                                     .arg(number(cells), colourLabel(colour)));
+    });
+    column->addWidget(clear);
+
     m_preview_label = new QLabel(this);
     m_preview_label->setObjectName(QStringLiteral("lut_preview"));
     m_preview_label->setWordWrap(true);
@@ -243,6 +259,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     showSettings();
     connect(&m_lut, &LutDocument::changed, this, &LutPanel::refreshStats);
     refreshStats();
+    guardWheel(this);
 }
 
 void LutPanel::showSettings()
@@ -332,6 +349,20 @@ bool LutPanel::retarget(const ColourShift& shift)
 {
     return m_lut.edit(tr("Retarget by Y %1, Cb %2, Cr %3").arg(shift.y).arg(shift.cb).arg(shift.cr),
                       shiftChanges(m_lut.table(), shift));
+}
+
+std::size_t LutPanel::clearClass(Colour colour)
+{
+    if (colour == Colour::Unclassified)
+        return 0;
+    std::vector<CellChange> changes;
+    const std::uint8_t* cells = m_lut.table().data();
+    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
+        if (cells[i] == std::uint8_t(colour))
+            changes.push_back({std::uint32_t(i), colour, Colour::Unclassified});
+    const std::size_t n = changes.size();
+    m_lut.edit(tr("Clear %1").arg(colourLabel(colour)), std::move(changes));
+    return n;
 }
 
 void LutPanel::askRetarget()
