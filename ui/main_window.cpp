@@ -19,6 +19,7 @@
 
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QDir>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
@@ -131,11 +132,16 @@ void MainWindow::buildStatusBar()
     m_status_time = new QLabel(this);
     m_status_effect = new QLabel(this);
     m_status_effect->setObjectName(QStringLiteral("effect_summary"));
+    // Ignored width: a long summary is cut at the timing field, not pushed into it (the whole
+    // text is the tooltip).
+    m_status_effect->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(m_status_effect, 1);
     statusBar()->addPermanentWidget(m_status_time);
     statusBar()->addPermanentWidget(m_status_zoom);
-    connect(&m_session->effectScan(), &EditEffectScan::updated, this,
-            [this] { m_status_effect->setText(m_effect_strip->summary()); });
+    connect(&m_session->effectScan(), &EditEffectScan::updated, this, [this] {
+        m_status_effect->setText(m_effect_strip->summary());
+        m_status_effect->setToolTip(m_effect_strip->summary());
+    });
     connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
         m_status_zoom->setText(tr("zoom %1%").arg(zoom * 100, 0, 'f', 0));
     });
@@ -281,10 +287,13 @@ void MainWindow::updateTitle()
     const LutDocument& lut = m_session->lut();
     QString title = QStringLiteral("Fieldsight");
     if (stream.hasStream())
-        title =
-            QStringLiteral("%1 — %2[*] — Fieldsight")
-                .arg(QFileInfo(stream.streamSpec()).fileName(),
-                     lut.path().isEmpty() ? tr("unsaved LUT") : QFileInfo(lut.path()).fileName());
+        title = QStringLiteral("%1 — %2[*] — Fieldsight")
+                    .arg(QFileInfo(stream.streamSpec()).fileName(),
+                         lut.path().isEmpty()
+                             ? tr("new LUT")
+                             // Which default.lut: its folder too.
+                             : QFileInfo(lut.path()).dir().dirName() + QLatin1Char('/') +
+                                   QFileInfo(lut.path()).fileName());
     setWindowTitle(title);
     setWindowModified(lut.modified());
 }

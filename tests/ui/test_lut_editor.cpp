@@ -340,6 +340,37 @@ private slots:
                  qPrintable(strip.summary()));
     }
 
+    /// A stage switched off (a settings change, same table) shows on the strip as the detections
+    /// it made vanish, frame by frame (the trial: a parameter edit did not update the strip).
+    void theEffectStripFollowsAParameterChange()
+    {
+        MainWindow w;
+        QVERIFY(showAndOpen(w));
+        ui::EditEffectScan& scan = w.session().effectScan();
+        QVERIFY(waitForScan(scan));
+        // The last stage that can be switched off and finds something on this stream.
+        std::string stage;
+        for (const StageDescriptor& d : w.session().pipeline().descriptors())
+            if (d.info.skippable)
+                stage = d.info.id;
+        QVERIFY(!stage.empty());
+        QVERIFY(w.session().settings().setStageEnabled(stage, false));
+        QVERIFY(QTest::qWaitFor([&] { return scan.running() || scan.showsEdit(); }, 5000));
+        QVERIFY(waitForScan(scan));
+        QVERIFY(scan.showsEdit());
+        QVERIFY(scan.showsSettingsChange());
+        long long vanished = 0;
+        for (const FrameEffect& e : scan.effects())
+            for (const KindDelta& k : e.delta.kinds) {
+                vanished += k.vanished;
+                QCOMPARE(int(k.appeared), 0);
+            }
+        QVERIFY(vanished > 0);
+        const QString summary = w.effectStrip().summary();
+        QVERIFY2(summary.startsWith("Last parameter change"), qPrintable(summary));
+        QVERIFY2(summary.contains(QStringLiteral("\u2212")), qPrintable(summary));
+    }
+
     void theEffectStripCountsWhatAnEditChangedOnEveryFrame()
     {
         MainWindow w;

@@ -58,6 +58,8 @@ public:
     std::size_t changedCells() const { return m_changed_cells; }
     /// Whether the effects describe an edit (false after the first scan of a stream).
     bool showsEdit() const { return m_shows_edit; }
+    /// The scan shown includes a change of the parameters or stage switches.
+    bool showsSettingsChange() const { return m_shows_settings; }
     /// ms from the edit (or the settings change) to the scan's last frame (negative while none
     /// has finished).
     double lastScanMs() const { return m_last_scan_ms; }
@@ -93,6 +95,7 @@ private:
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> m_skip;
     bool m_settings_changed = false; ///< since the last job started
+    bool m_shows_settings = false;
 
     std::vector<FrameEffect> m_effects;
     std::size_t m_frames_done = 0;

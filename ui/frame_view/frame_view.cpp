@@ -7,9 +7,11 @@
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QCursor>
 #include <QToolTip>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -109,6 +111,7 @@ void FrameView::setZoom(double zoom, QPointF anchor)
     m_fit = false;
     emit zoomChanged(m_zoom);
     update();
+    followPointer();
 }
 
 void FrameView::zoomIn()
@@ -126,6 +129,7 @@ void FrameView::fitToWindow()
     m_fit = true;
     applyFit();
     update();
+    followPointer();
 }
 
 void FrameView::applyFit()
@@ -152,6 +156,22 @@ void FrameView::setImageOrigin(QPoint origin)
     m_origin = origin;
     m_fit = false;
     update();
+    followPointer();
+}
+
+void FrameView::followPointer()
+{
+    // The image moved under a still pointer (a zoom key, fit): the tool's preview and the
+    // brush outline follow the pixel now under it, or go when there is none.
+    const QPointF at = mapFromGlobal(QCursor::pos());
+    const std::optional<QPoint> pixel =
+        underMouse() && rect().contains(at.toPoint()) ? pixelAt(at) : std::nullopt;
+    if (pixel != m_cursor_pixel) {
+        m_cursor_pixel = pixel;
+        update();
+    }
+    if (m_tools)
+        m_tools->hover(pixel);
 }
 
 std::optional<QPointF> FrameView::imagePoint(QPointF pos) const
@@ -253,14 +273,28 @@ void FrameView::paintEvent(QPaintEvent*)
             QFont font = p.font();
             font.setPointSizeF(8);
             p.setFont(font);
+            // On a crowded frame a label that would cover another moves down a line, so every
+            // one stays readable.
+            std::vector<QRectF> placed;
             for (const PerceptItem& item : m_output->items) {
                 if (!m_visible.count(item.layer))
                     continue;
-                const QPointF at(panelX(0) + (item.bounds.left() + 0.5) * m_zoom,
-                                 m_origin.y() + (item.bounds.top() + 0.5) * m_zoom - 4);
-                const QRectF box =
-                    p.fontMetrics().boundingRect(item.label).translated(at.toPoint());
-                p.fillRect(box.adjusted(-2, 0, 2, 0), QColor(0, 0, 0, 160));
+                QPointF at(panelX(0) + (item.bounds.left() + 0.5) * m_zoom,
+                           m_origin.y() + (item.bounds.top() + 0.5) * m_zoom - 4);
+                QRectF box = p.fontMetrics()
+                                 .boundingRect(item.label)
+                                 .translated(at.toPoint())
+                                 .adjusted(-2, 0, 2, 0);
+                const auto covers = [&placed](const QRectF& r) {
+                    return std::any_of(placed.begin(), placed.end(),
+                                       [&r](const QRectF& q) { return q.intersects(r); });
+                };
+                for (int line = 0; line < 12 && covers(box); ++line) {
+                    box.translate(0, box.height() + 1);
+                    at.ry() += box.height() + 1;
+                }
+                placed.push_back(box);
+                p.fillRect(box, QColor(0, 0, 0, 160));
                 p.drawText(at, item.label);
             }
         }
@@ -423,7 +457,10 @@ bool FrameView::event(QEvent* event)
 {
     if (event->type() == QEvent::ToolTip) {
         const auto* help = static_cast<QHelpEvent*>(event);
-        if (const PerceptItem* item = itemAt(help->pos()))
+        // A detection's tip only while looking (the pan tool): over an editing tool it would
+        // cover the pixels being classified (its details are in the Detections dock).
+        const bool looking = !m_tools || m_tools->active().pans();
+        if (const PerceptItem* item = looking ? itemAt(help->pos()) : nullptr)
             QToolTip::showText(help->globalPos(), item->details, this);
         else
             QToolTip::hideText();

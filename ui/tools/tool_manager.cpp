@@ -96,6 +96,9 @@ void ToolManager::release(const ToolEvent& event)
 {
     if (m_active && m_active->accepts(event.surface))
         m_active->release(event);
+    // The edit is made: what it would change is no longer news until the pointer moves again.
+    m_hover.reset();
+    refreshPreview();
 }
 
 void ToolManager::hover(std::optional<QPoint> pixel)
