@@ -123,6 +123,29 @@ QCommandLineOption threadsOption(const QString& fallback)
             "N"};
 }
 
+QCommandLineOption orientationOption()
+{
+    return {"orientation",
+            "Degrees clockwise to turn the stored pictures upright: 0, 90, 180 or 270 (default: "
+            "the stream's own, its stream.json \"orientation\"). Results are in the turned frame.",
+            "DEG"};
+}
+
+Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser)
+{
+    StreamOptions options;
+    if (!parser.isSet("orientation"))
+        return options;
+    const QString text = parser.value("orientation");
+    bool ok = false;
+    const long long value = text.toLongLong(&ok);
+    options.orientation = ok ? orientationFromDegrees(value) : std::nullopt;
+    if (!options.orientation)
+        return Error{"--orientation: expected 0, 90, 180 or 270 (degrees clockwise), got '" +
+                     text.toStdString() + "'"};
+    return options;
+}
+
 Result<ParamSet> paramsFrom(const QCommandLineParser& parser)
 {
     ParamSet params;
@@ -144,7 +167,11 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
     auto params = paramsFrom(parser);
     if (!params)
         return params.error();
-    auto input = openStreamInput(stream, toLocalPath(parser.value("lut")), ctx.pipeline);
+    auto options = streamOptionsFrom(parser);
+    if (!options)
+        return options.error();
+    auto input =
+        openStreamInput(stream, toLocalPath(parser.value("lut")), ctx.pipeline, options.value());
     if (!input)
         return input.error();
     input.value().params = std::move(params).value();

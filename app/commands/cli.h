@@ -76,11 +76,17 @@ QCommandLineOption lutOption();
 QCommandLineOption setOption();
 QCommandLineOption paramsOption();
 QCommandLineOption threadsOption(const QString& fallback);
+QCommandLineOption orientationOption();
+
+/// --orientation DEG as stream options (none set: the stream's own orientation). A value other
+/// than 0, 90, 180 or 270 is an Error naming the option and the value.
+Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser);
 
 /// The parameter values of --params FILE and then every --set (which win).
 Result<ParamSet> paramsFrom(const QCommandLineParser& parser);
 
-/// Opens the stream and LUT and applies --params and --set, all checked against the pipeline.
+/// Opens the stream (turned by --orientation) and LUT and applies --params and --set, all
+/// checked against the pipeline.
 Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
                               const Context& ctx);
 

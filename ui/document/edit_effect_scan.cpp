@@ -23,13 +23,15 @@ EditEffectScan::~EditEffectScan()
         m_thread.join();
 }
 
-void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const ColourLut> lut)
+void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,
+                               StreamOptions options)
 {
     m_delay.stop();
     stop();
     clearResults(); // a collect the old scan queued cannot bring its stream's effects back
     m_spec = spec.startsWith(QLatin1String("camera:")) ? QString() : spec;
-    m_scanner.setStream(toLocalPath(m_spec));
+    m_options = options;
+    m_scanner.setStream(toLocalPath(m_spec), options);
     m_shows_edit = false;
     m_shows_settings = false;
     m_lut = std::move(lut);

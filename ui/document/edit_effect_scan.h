@@ -38,10 +38,12 @@ public:
     /// Quiet time after an edit before the scan starts, so a brush stroke scans once it pauses.
     void setDelay(int ms) { m_delay.setInterval(ms); }
 
-    /// The stream to scan: a file stream (a camera or an empty spec clears it). Starts a first
-    /// scan that records every frame's detections with `lut`, so the next edit has something to
-    /// compare with.
-    void setStream(const QString& spec, std::shared_ptr<const ColourLut> lut);
+    /// The stream to scan: a file stream (a camera or an empty spec clears it), opened with
+    /// `options` (turned as the window shows it). Starts a first scan that records every frame's
+    /// detections with `lut`, so the next edit has something to compare with.
+    void setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,
+                   StreamOptions options = {});
+    const StreamOptions& streamOptions() const { return m_options; }
     /// The pipeline settings the scans use; a change records every frame's detections again.
     void setSettings(std::shared_ptr<const ParamSet> params,
                      std::set<std::string, std::less<>> skip);
@@ -89,6 +91,7 @@ private:
     QTimer m_poll;
     std::thread m_thread; ///< runs m_scanner.run(); joined before the scanner is touched else
     QString m_spec;
+    StreamOptions m_options;
 
     std::optional<EditEffectJob> m_pending;
     std::shared_ptr<const ColourLut> m_lut; ///< the newest table

@@ -163,9 +163,10 @@ void SamplesDocument::setSamples(std::vector<LutSample> samples, const QString& 
 Result<SamplesDocument::Built>
 SamplesDocument::buildTable(const std::string& stream, const LutSamples& samples,
                             bool with_annotations, std::atomic<bool>* cancel,
-                            std::atomic<std::size_t>* done, std::atomic<std::size_t>* total)
+                            std::atomic<std::size_t>* done, std::atomic<std::size_t>* total,
+                            const StreamOptions& stream_options)
 {
-    auto reader = openStream(stream);
+    auto reader = openStream(stream, stream_options);
     if (!reader)
         return reader.error();
     std::vector<LutSample> all;
@@ -209,8 +210,8 @@ void SamplesDocument::build(bool with_annotations)
     m_done = 0;
     m_total = 0;
     m_watcher.setFuture(QtConcurrent::run(&SamplesDocument::buildTable, toLocalPath(m_stream),
-                                          m_samples, with_annotations, &m_cancel, &m_done,
-                                          &m_total));
+                                          m_samples, with_annotations, &m_cancel, &m_done, &m_total,
+                                          m_options));
 }
 
 } // namespace fieldsight::ui

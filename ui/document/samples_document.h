@@ -32,6 +32,9 @@ public:
     /// Why the stream's samples file could not be read (empty when it could, or there is none).
     QString loadProblem() const { return m_load_problem; }
     QString path() const { return m_path; }
+    /// How builds open the stream: turned as the window shows it, so the samples' rectangles
+    /// (drawn on the shown frames) cover the same pixels.
+    void setStreamOptions(StreamOptions options) { m_options = options; }
     const LutSamples& samples() const { return m_samples; }
     QUndoStack& undoStack() { return m_undo; }
     /// Adds a rectangle of frame `frame` whose pixels show `colour` (undoable; saved at once).
@@ -73,8 +76,8 @@ public:
     /// The build itself (any thread): reads the stream, votes, smooths.
     static Result<Built> buildTable(const std::string& stream, const LutSamples& samples,
                                     bool with_annotations, std::atomic<bool>* cancel,
-                                    std::atomic<std::size_t>* done,
-                                    std::atomic<std::size_t>* total);
+                                    std::atomic<std::size_t>* done, std::atomic<std::size_t>* total,
+                                    const StreamOptions& stream_options = {});
 
 signals:
     void samplesChanged();
@@ -90,6 +93,7 @@ private:
 
     LutDocument& m_lut;
     QString m_stream;
+    StreamOptions m_options;
     QString m_path;
     bool m_path_unreadable = false; ///< the file there was refused: set aside before a save
     QString m_load_problem;

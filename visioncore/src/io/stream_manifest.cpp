@@ -7,6 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <filesystem>
+#include <system_error>
+
+#include <unistd.h>
 
 namespace fieldsight::io {
 
@@ -18,6 +22,30 @@ std::optional<std::array<double, 2>> numberPair(const nlohmann::json& value)
     if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
         return std::nullopt;
     return std::array<double, 2>{value[0].get<double>(), value[1].get<double>()};
+}
+
+/// 0, 90, 180 or 270 as a JSON number (180.0 too).
+std::optional<Orientation> orientationOf(const nlohmann::json& value)
+{
+    if (value.is_number_integer())
+        return orientationFromDegrees(value.get<long long>());
+    if (value.is_number_float()) {
+        const double d = value.get<double>();
+        for (Orientation o : {Orientation::Upright, Orientation::Clockwise90, Orientation::Half,
+                              Orientation::Clockwise270})
+            if (d == double(degrees(o)))
+                return o;
+    }
+    return std::nullopt;
+}
+
+/// A JSON value as a message shows it, cut short.
+std::string shortText(const nlohmann::json& value)
+{
+    std::string text = jsonText(value);
+    if (text.size() > 40)
+        text = text.substr(0, 37) + "...";
+    return text;
 }
 
 } // namespace
@@ -52,10 +80,23 @@ Result<Manifest> parseManifest(const std::string& path)
         else
             return bad("\"pixel_format\" must be \"rgb\" or \"ycbcr\"");
     }
+    std::optional<Orientation> flipped;
     if (const auto it = root.find("flipped"); it != root.end()) {
         if (!it->is_boolean())
             return bad("\"flipped\" must be true or false");
-        manifest.flipped = it->get<bool>();
+        flipped = it->get<bool>() ? Orientation::Half : Orientation::Upright;
+        manifest.orientation = *flipped;
+    }
+    if (const auto it = root.find("orientation"); it != root.end()) {
+        const std::optional<Orientation> o = orientationOf(*it);
+        if (!o)
+            return bad("\"orientation\" must be 0, 90, 180 or 270 (degrees clockwise to turn "
+                       "the pictures upright), not " +
+                       shortText(*it));
+        if (flipped && *flipped != *o)
+            return bad("\"flipped\" (" + shortText(root["flipped"]) + ") and \"orientation\" (" +
+                       orientationText(*o) + ") disagree; \"flipped\": true is orientation 180");
+        manifest.orientation = *o;
     }
     if (const auto it = root.find("lut"); it != root.end()) {
         if (!it->is_string())
@@ -105,3 +146,58 @@ Result<Manifest> parseManifest(const std::string& path)
 }
 
 } // namespace fieldsight::io
+
+namespace fieldsight {
+
+namespace {
+
+/// No write permission for anyone, or none for this process (a read-only mount, another
+/// user's folder). A folder made read-only on purpose is respected even by root, who could
+/// write into it.
+bool readOnly(const std::filesystem::path& path)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::perms perms = fs::status(path, ec).permissions();
+    if (ec)
+        return false; // not there: the write itself says why
+    const fs::perms writable =
+        fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    return (perms & writable) == fs::perms::none || ::access(path.c_str(), W_OK) != 0;
+}
+
+} // namespace
+
+Status writeStreamOrientation(const std::string& folder, Orientation o)
+{
+    namespace fs = std::filesystem;
+    const fs::path path = fs::path(folder) / io::kManifestName;
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+        return Error{folder + ": not a folder of images; only an image folder has a " +
+                     io::kManifestName + " to keep its orientation in"};
+    if (readOnly(folder))
+        return Error{folder + ": the folder is read-only; the orientation was not saved"};
+    nlohmann::ordered_json root;
+    if (fs::exists(fs::symlink_status(path, ec))) {
+        // Only a manifest the stream opens with is rewritten: a damaged one stays as it is.
+        if (auto checked = io::parseManifest(path.string()); !checked)
+            return Error{checked.error().message + "; the orientation was not saved"};
+        if (readOnly(path))
+            return Error{path.string() + ": the file is read-only; the orientation was not saved"};
+        auto text = readWholeFile(path.string());
+        if (!text)
+            return text.error();
+        auto parsed = parseJson<nlohmann::ordered_json>(text.value(), path.string());
+        if (!parsed)
+            return parsed.error();
+        root = std::move(parsed).value();
+        root.erase("flipped");
+    } else {
+        root["format"] = io::kManifestFormat;
+    }
+    root["orientation"] = degrees(o);
+    return writeFileAtomically(path.string(), jsonText(root, 1) + "\n");
+}
+
+} // namespace fieldsight
