@@ -23,17 +23,21 @@ public:
     std::deque<QMessageBox::StandardButton> answers; ///< question
     QStringList asked;                               ///< every title, in order
     QStringList unanswered;                          ///< titles asked with nothing queued
+    QStringList suggested; ///< the path each file or folder question started from, in order
 
-    QString openFile(QWidget*, const QString& title, const QString&, const QString&) override
+    QString openFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
-    QString saveFile(QWidget*, const QString& title, const QString&, const QString&) override
+    QString saveFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
-    QString folder(QWidget*, const QString& title, const QString&) override
+    QString folder(QWidget*, const QString& title, const QString& start) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
     std::optional<QString> text(QWidget*, const QString& title, const QString&,
