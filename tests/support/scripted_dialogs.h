@@ -22,24 +22,24 @@ public:
     std::deque<int> numbers;                         ///< number
     std::deque<QMessageBox::StandardButton> answers; ///< question
     std::deque<int> choices;                         ///< choice (an option's index, -1 cancels)
-    QStringList texts_asked;
-    QStringList suggested;  ///< the path each saveFile suggested                         ///< the
-                            ///< text of every question and choice
-    QStringList asked;      ///< every title, in order
-    QStringList unanswered; ///< titles asked with nothing queued
+    QStringList texts_asked; ///< the text of every question and choice, in order
+    QStringList asked;       ///< every title, in order
+    QStringList unanswered;  ///< titles asked with nothing queued
+    QStringList suggested;   ///< the path each file or folder question started from, in order
 
-    QString openFile(QWidget*, const QString& title, const QString&, const QString&) override
+    QString openFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
-    QString saveFile(QWidget*, const QString& title, const QString& suggestion,
-                     const QString&) override
+    QString saveFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
-        suggested << suggestion;
+        suggested << start;
         return next(paths, title, QString());
     }
-    QString folder(QWidget*, const QString& title, const QString&) override
+    QString folder(QWidget*, const QString& title, const QString& start) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
     std::optional<QString> text(QWidget*, const QString& title, const QString&,

@@ -538,6 +538,8 @@ private slots:
 
         // Image -> UV: hovering with the click tool outlines the cells a click would change,
         // highlights the pixels, and counts the cells taken from another class.
+        const ColourLut before_preview = w.session().lut().table();
+        const int steps_before_preview = w.session().lut().undoStack().count();
         w.tools().settings().setColour(Colour::Pink);
         w.tools().activate(QStringLiteral("click"));
         w.tools().settings().setTolerance({6, 3, 3});
@@ -552,8 +554,11 @@ private slots:
         QVERIFY2(w.tools().preview().text.contains(QString::number(green) + " green"),
                  qPrintable(w.tools().preview().text));
         QVERIFY(qAlpha(w.view().highlight("preview").pixel(160, 220)) > 0);
-        const ColourLut unchanged = w.session().lut().table();
-        QVERIFY(unchanged == w.session().lut().table()); // a preview edits nothing
+        // A preview edits nothing: the table, its undo stack and its saved state are as they
+        // were before the mouse came, though the preview would take green cells.
+        QCOMPARE(differences(before_preview, w.session().lut().table()), std::set<std::uint32_t>());
+        QCOMPARE(w.session().lut().undoStack().count(), steps_before_preview);
+        QVERIFY(!w.session().lut().modified());
     }
 
     void comparingTwoKnownTablesListsTheRightCellsAndMergesByClass()
