@@ -258,6 +258,35 @@ private slots:
         wheel();
         QVERIFY(box->value() != value);
     }
+
+    /// Save LUT As starts in the stream's folder and offers to make the table the stream's own
+    /// (stream.json's "lut"), so the stream opens with it next time.
+    void saveAsOffersToBecomeTheStreamsTable()
+    {
+        const QString stream = copyStream("save_as");
+        const QByteArray own = fileBytes(stream + "/default.lut");
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(openAndWait(w, stream));
+            std::vector<CellChange> one = {{100, Colour::Unclassified, Colour::Green}};
+            QVERIFY(w.session().lut().edit("edit", one));
+            ScriptedDialogs dialogs;
+            dialogs.paths = {stream + "/venue.lut"};
+            dialogs.answers = {QMessageBox::Yes};
+            QTest::keyClick(&w, Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
+            QCOMPARE(QFileInfo(dialogs.suggested.front()).absolutePath(), stream);
+            QCOMPARE(dialogs.asked, (QStringList{"Save LUT as", "Use as this stream's table"}));
+            QVERIFY(QFileInfo::exists(stream + "/venue.lut"));
+            QCOMPARE(fileBytes(stream + "/default.lut"), own);
+            QVERIFY(fileBytes(stream + "/stream.json").contains("\"lut\": \"venue.lut\""));
+        }
+        MainWindow again;
+        again.show();
+        QVERIFY(openAndWait(again, stream));
+        QCOMPARE(again.session().lut().path(), stream + "/venue.lut");
+        QCOMPARE(again.session().lut().table().data()[100], std::uint8_t(Colour::Green));
+    }
 };
 
 QTEST_MAIN(TestVenueTrial)

@@ -76,6 +76,8 @@ signals:
 private:
     /// The open stream's folder (a file stream's: the folder it is in).
     QString streamFolder() const;
+    /// After Save As: offers to make `path` the table the open stream opens with.
+    void offerAsStreamTable(const QString& path);
     void onOpened(bool ok, bool cancelled, const QString& error);
     void rememberRecent(const QString& spec);
     /// Applies `recovery` to the open stream's table (which must be the one it belongs to).

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <system_error>
 
 #include <unistd.h>
@@ -168,23 +169,28 @@ bool readOnly(const std::filesystem::path& path)
 
 } // namespace
 
-Status writeStreamOrientation(const std::string& folder, Orientation o)
+namespace {
+
+/// Rewrites the folder's manifest with `change` applied (keeping every other key in its order),
+/// or makes one naming only the format; `what` names the setting in the errors.
+Status updateManifest(const std::string& folder, const std::string& what,
+                      const std::function<void(nlohmann::ordered_json&)>& change)
 {
     namespace fs = std::filesystem;
     const fs::path path = fs::path(folder) / io::kManifestName;
     std::error_code ec;
     if (!fs::is_directory(folder, ec))
         return Error{folder + ": not a folder of images; only an image folder has a " +
-                     io::kManifestName + " to keep its orientation in"};
+                     io::kManifestName + " to keep its " + what + " in"};
     if (readOnly(folder))
-        return Error{folder + ": the folder is read-only; the orientation was not saved"};
+        return Error{folder + ": the folder is read-only; the " + what + " was not saved"};
     nlohmann::ordered_json root;
     if (fs::exists(fs::symlink_status(path, ec))) {
         // Only a manifest the stream opens with is rewritten: a damaged one stays as it is.
         if (auto checked = io::parseManifest(path.string()); !checked)
-            return Error{checked.error().message + "; the orientation was not saved"};
+            return Error{checked.error().message + "; the " + what + " was not saved"};
         if (readOnly(path))
-            return Error{path.string() + ": the file is read-only; the orientation was not saved"};
+            return Error{path.string() + ": the file is read-only; the " + what + " was not saved"};
         auto text = readWholeFile(path.string());
         if (!text)
             return text.error();
@@ -192,12 +198,35 @@ Status writeStreamOrientation(const std::string& folder, Orientation o)
         if (!parsed)
             return parsed.error();
         root = std::move(parsed).value();
-        root.erase("flipped");
     } else {
         root["format"] = io::kManifestFormat;
     }
-    root["orientation"] = degrees(o);
+    change(root);
     return writeFileAtomically(path.string(), jsonText(root, 1) + "\n");
+}
+
+} // namespace
+
+Status writeStreamOrientation(const std::string& folder, Orientation o)
+{
+    return updateManifest(folder, "orientation", [o](nlohmann::ordered_json& root) {
+        root.erase("flipped");
+        root["orientation"] = degrees(o);
+    });
+}
+
+Status writeStreamLut(const std::string& folder, const std::string& lut)
+{
+    namespace fs = std::filesystem;
+    // Inside the folder: named relative to it, so the stream can move with its table.
+    std::error_code ec;
+    const fs::path base = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+    const fs::path table = fs::weakly_canonical(fs::absolute(lut, ec), ec);
+    fs::path named = table.lexically_relative(base);
+    if (named.empty() || *named.begin() == "..")
+        named = table;
+    return updateManifest(folder, "table",
+                          [&named](nlohmann::ordered_json& root) { root["lut"] = named.string(); });
 }
 
 } // namespace fieldsight

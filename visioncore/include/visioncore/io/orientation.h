@@ -39,4 +39,9 @@ std::optional<Horizon> orientHorizon(const Horizon& horizon, Orientation o, int 
 /// read is never written over. Errors name the file and the problem.
 Status writeStreamOrientation(const std::string& folder, Orientation o);
 
+/// Sets "lut" in the stream.json of the image folder `folder` to the table `lut` (named relative
+/// to the folder when it is inside it), so the stream opens with that table; the same rules as
+/// writeStreamOrientation.
+Status writeStreamLut(const std::string& folder, const std::string& lut);
+
 } // namespace fieldsight
