@@ -319,7 +319,9 @@ private slots:
         // Answered with a name without its suffix: written as .lut beside it.
         dialogs.unanswered.clear();
         dialogs.paths.push_back(a + "/venue");
+        dialogs.answers.push_back(QMessageBox::No); // not as the stream's own table
         QTest::keyClick(&w, Qt::Key_S, Qt::ControlModifier);
+        QCOMPARE(dialogs.asked.last(), QStringLiteral("Use as this stream's table"));
         QVERIFY(loadTable(a + "/venue.lut") == edited);
         QCOMPARE(fileBytes(foreign), bhumanTable());
         QCOMPARE(w.session().lut().path(), a + "/venue.lut");
@@ -336,8 +338,10 @@ private slots:
         QVERIFY(loadTable(a + "/venue.lut") == edited_again);
         QVERIFY(clickEdit(w, Colour::Blue));
         dialogs.paths.push_back(a + "/copy.lut");
+        dialogs.answers.push_back(QMessageBox::No);
         QTest::keyClick(&w, Qt::Key_S, Qt::ControlModifier | Qt::ShiftModifier);
-        QCOMPARE(dialogs.asked.last(), QStringLiteral("Save LUT as"));
+        QCOMPARE(dialogs.asked.mid(dialogs.asked.size() - 2),
+                 (QStringList{"Save LUT as", "Use as this stream's table"}));
         QVERIFY(loadTable(a + "/copy.lut") == w.session().lut().table());
         QVERIFY(loadTable(a + "/venue.lut") == edited_again);
         QCOMPARE(w.session().lut().path(), a + "/copy.lut");

@@ -240,7 +240,8 @@ bool FileCommands::saveLutAs(const QString& given)
         return false;
     }
     m_window.showMessage(tr("Saved %1").arg(path), false);
-    offerAsStreamTable(path);
+    if (given.isEmpty()) // chosen by the user in the dialog, not given by a caller
+        offerAsStreamTable(path);
     return true;
 }
 
