@@ -29,11 +29,16 @@ else()
                                 "executable and version)")
         endif()
     endforeach()
-    # The package's changelog names the same version (cmake/FieldsightPackaging.cmake: revision 1).
+    # The package's changelog (revision 1, cmake/FieldsightPackaging.cmake) and the manual page
+    # name the same version.
     file(STRINGS "${SOURCE_DIR}/resources/packaging/changelog" first LIMIT_COUNT 1)
     if(NOT first MATCHES "^fieldsight \\(${VERSION}-1\\) ")
         message(FATAL_ERROR "resources/packaging/changelog: the first entry is not version "
                             "${VERSION}-1: ${first}")
+    endif()
+    file(STRINGS "${SOURCE_DIR}/resources/packaging/fieldsight.1" title REGEX "^\\.TH ")
+    if(NOT title MATCHES "\"fieldsight ${VERSION}\"")
+        message(FATAL_ERROR "resources/packaging/fieldsight.1: not version ${VERSION}: ${title}")
     endif()
 endif()
 

@@ -23,7 +23,8 @@ set(expected
     share/fieldsight/sample_streams/lab1/annotations.json
     share/fieldsight/sample_streams/lab1/frame_000029.png
     share/doc/fieldsight/copyright
-    share/doc/fieldsight/changelog.Debian.gz)
+    share/doc/fieldsight/changelog.Debian.gz
+    share/man/man1/fieldsight.1.gz)
 foreach(f IN LISTS expected)
     if(NOT EXISTS "${PREFIX}/${f}")
         message(FATAL_ERROR "cmake --install did not put ${f} in ${PREFIX}")
