@@ -1,7 +1,8 @@
 // `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
 #include "commands/commands.h"
-#include "ui/adapters/local_path.h"
 #include "ui/actions/file_commands.h"
+#include "ui/adapters/local_path.h"
+#include "ui/application.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 
@@ -12,10 +13,8 @@ namespace fieldsight::cli {
 int guiCommand(int& argc, char** argv, const Context& ctx)
 {
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("Fieldsight"));
-    QApplication::setApplicationName(QStringLiteral("fieldsight"));
+    ui::identifyApplication();
     QApplication::setApplicationVersion(QStringLiteral(FIELDSIGHT_VERSION));
-    QApplication::setApplicationDisplayName(QStringLiteral("Fieldsight"));
 
     QStringList args = ui::argumentsOf(argc, argv); // exact bytes of paths (local_path.h)
     if (args.size() > 1 && args[1] == QLatin1String("gui"))

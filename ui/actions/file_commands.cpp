@@ -157,12 +157,12 @@ LutCompareDialog* FileCommands::compareLut(const QString& path)
     return dialog;
 }
 
-QString FileCommands::bundledSampleStream()
+QString FileCommands::bundledSampleStream(const QString& exe_dir)
 {
-    const QString app = QCoreApplication::applicationDirPath();
+    const QString app = exe_dir.isEmpty() ? QCoreApplication::applicationDirPath() : exe_dir;
     const QStringList candidates{
         qEnvironmentVariable("FIELDSIGHT_SAMPLE_STREAM"),
-        app + QStringLiteral("/../share/fieldsight/sample_streams/lab1"),
+        app + QStringLiteral("/" FIELDSIGHT_DATA_FROM_BIN "/sample_streams/lab1"),
         app + QStringLiteral("/../../sample_streams/lab1"),
         app + QStringLiteral("/../sample_streams/lab1"),
         QStringLiteral(FIELDSIGHT_SOURCE_SAMPLE_STREAMS "/lab1"),

@@ -39,9 +39,11 @@ public:
     LutCompareDialog* compareLut(const QString& path);
     /// Opens `stream` with `lut` if it still exists, else the bundled sample stream.
     void openLastSession(const QString& stream, const QString& lut);
-    /// The bundled sample stream (sample_streams/lab1), looked for beside the executable, in
-    /// the build tree and in the source tree; empty when not found.
-    static QString bundledSampleStream();
+    /// The bundled sample stream (sample_streams/lab1): $FIELDSIGHT_SAMPLE_STREAM, else where
+    /// `cmake --install` puts it as seen from the executable in `exe_dir`
+    /// (../share/fieldsight/sample_streams/lab1), else the build tree's source tree; empty when
+    /// not found. `exe_dir` defaults to the running executable's folder.
+    static QString bundledSampleStream(const QString& exe_dir = {});
 
     /// Starts an empty, untitled table (after asking about unsaved edits); false when the user
     /// kept them.

@@ -127,6 +127,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
         auto* button = new QToolButton(this);
         button->setObjectName(action->objectName());
         button->setDefaultAction(action);
+        button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
         button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
         tool_row->addWidget(button, at / 3, at % 3);
         ++at;

@@ -4,8 +4,20 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QFile>
 
 namespace fieldsight::ui {
+
+namespace {
+
+/// The icon compiled in for the tool `id` (resources/icons/tools/<id>.svg), or none.
+QIcon toolIcon(const QString& id)
+{
+    const QString path = QStringLiteral(":/icons/tools/%1.svg").arg(id);
+    return QFile::exists(path) ? QIcon(path) : QIcon();
+}
+
+} // namespace
 
 ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>& tools,
                          QObject* parent)
@@ -16,7 +28,7 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
     for (const ToolFactory& make : tools) {
         std::unique_ptr<Tool> tool = make(m_context);
         const ToolInfo info = tool->info();
-        auto* action = new QAction(info.name, this);
+        auto* action = new QAction(toolIcon(info.id), info.name, this);
         action->setObjectName(QStringLiteral("tool.%1").arg(info.id));
         action->setCheckable(true);
         action->setShortcut(info.shortcut);

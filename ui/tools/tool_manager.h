@@ -32,7 +32,8 @@ public:
     Tool& active() const { return *m_active; }
     /// Makes the tool `id` active (unknown ids are ignored); the first tool is active at first.
     void activate(const QString& id);
-    /// One checkable action per tool, in the tool list's order, with its shortcut.
+    /// One checkable action per tool, in the tool list's order, with its shortcut and the icon
+    /// named by its id in the resources (:/icons/tools/<id>.svg; none when there is no such file).
     QList<QAction*> actions() const;
 
     // From the views.
