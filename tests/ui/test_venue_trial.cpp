@@ -7,6 +7,8 @@
 #include "ui/adapters/image_adapter.h"
 #include "ui/document/frame_recorder.h"
 #include "ui/panels/pipeline_panel.h"
+#include "ui/tools/tool.h"
+#include "visioncore/services/lut_building.h"
 #include "ui/widgets/message_bar.h"
 
 #include <QPushButton>
@@ -286,6 +288,70 @@ private slots:
         QVERIFY(openAndWait(again, stream));
         QCOMPARE(again.session().lut().path(), stream + "/venue.lut");
         QCOMPARE(again.session().lut().table().data()[100], std::uint8_t(Colour::Green));
+    }
+
+    /// Sample regions are drawn while the Sample tool is active; a click selects one, a drag
+    /// moves it, Delete removes it, and each is one undo step of the samples document.
+    void sampleRegionsAreDrawnSelectedMovedAndDeleted()
+    {
+        const QString stream = copyStream("samples");
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, stream));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        QTest::keyClick(&w, Qt::Key_S);
+        QCOMPARE(w.tools().active().info().id, QStringLiteral("sample"));
+        const auto drag = [&w](QPoint from, QPoint to) {
+            QTest::mousePress(&w.view(), Qt::LeftButton, {}, from);
+            QTest::mouseMove(&w.view(), (from + to) / 2);
+            QTest::mouseMove(&w.view(), to);
+            QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, to);
+        };
+        QTest::keyClick(&w, Qt::Key_2);
+        drag({40, 180}, {80, 220});
+        QTest::keyClick(&w, Qt::Key_1);
+        drag({200, 40}, {230, 60});
+        ui::SamplesDocument& samples = w.session().samples();
+        QCOMPARE(samples.samples().samples.size(), std::size_t(2));
+
+        // Both drawn, in their class colours, over the image.
+        ui::ToolOutline outline = w.tools().active().outline();
+        QCOMPARE(outline.shapes.size(), std::size_t(2));
+        QCOMPARE(outline.shapes[0].polygon.boundingRect(), QRect(QPoint(40, 180), QPoint(80, 220)));
+        QCOMPARE(outline.shapes[0].colour, ui::toQColor(colourDisplayRgb(Colour::Green)));
+        const QImage shown = w.view().grab().toImage();
+        QCOMPARE(QColor(shown.pixel(60, 180)), ui::toQColor(colourDisplayRgb(Colour::Green)));
+
+        // A click inside the first selects it; a drag moves it by (10, -5), one undo step.
+        const std::vector<cv::Point> first = samples.samples().samples[0].polygon;
+        const int steps = samples.undoStack().count();
+        drag({50, 200}, {60, 195});
+        QVERIFY(w.tools().active().outline().shapes[0].selected);
+        QCOMPARE(samples.samples().samples.size(), std::size_t(2));
+        QCOMPARE(samples.undoStack().count(), steps + 1);
+        for (std::size_t i = 0; i < first.size(); ++i)
+            QCOMPARE(samples.samples().samples[0].polygon[i], first[i] + cv::Point(10, -5));
+        QVERIFY(loadLutSamples(samples.path().toStdString()).value().samples[0].polygon[0] ==
+                first[0] + cv::Point(10, -5));
+
+        // Delete removes the selected one; undo brings it back where it was moved to.
+        QTest::keyClick(&w, Qt::Key_Delete);
+        QCOMPARE(samples.samples().samples.size(), std::size_t(1));
+        QCOMPARE(samples.samples().samples[0].colour, Colour::White);
+        QCOMPARE(w.tools().active().outline().shapes.size(), std::size_t(1));
+        samples.undoStack().undo();
+        QCOMPARE(samples.samples().samples.size(), std::size_t(2));
+        QCOMPARE(samples.samples().samples[0].polygon[0], first[0] + cv::Point(10, -5));
+        // Nothing selected: Delete does nothing.
+        QTest::keyClick(&w, Qt::Key_Delete);
+        QCOMPARE(samples.samples().samples.size(), std::size_t(2));
+        // Another frame has none of them.
+        QTest::keyClick(&w, Qt::Key_Right);
+        QVERIFY(waitForFrame(w, 1));
+        QCOMPARE(w.tools().active().outline().shapes.size(), std::size_t(0));
     }
 };
 

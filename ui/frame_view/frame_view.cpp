@@ -299,6 +299,26 @@ void FrameView::paintEvent(QPaintEvent*)
             }
         }
     }
+    // The tool's shapes (sample regions): a dark edge under the class colour, so a region
+    // shows on any background; the selected one thicker, its corners marked.
+    if (m_tools && m_output) {
+        const ToolOutline outline = m_tools->active().outline();
+        for (const OutlineShape& shape : outline.shapes) {
+            QPolygonF at;
+            for (const QPoint& q : shape.polygon)
+                at << QPointF(panelX(0) + (q.x() + 0.5) * m_zoom,
+                              m_origin.y() + (q.y() + 0.5) * m_zoom);
+            const double width = shape.selected ? 3 : 1.5;
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(QColor(0, 0, 0, 200), width + 2));
+            p.drawPolygon(at);
+            p.setPen(QPen(shape.colour, width));
+            p.drawPolygon(at);
+            if (shape.selected)
+                for (const QPointF& corner : at)
+                    p.fillRect(QRectF(corner - QPointF(3, 3), QSizeF(7, 7)), Qt::white);
+        }
+    }
     // The brush under the cursor: a circle through the outer pixels' centres, in every panel.
     if (const int radius = brushRadius(); radius >= 0 && m_cursor_pixel) {
         p.setPen(QPen(Qt::white, 1, Qt::DashLine));
@@ -370,6 +390,7 @@ void FrameView::setTools(ToolManager* tools)
         update();
     };
     connect(tools, &ToolManager::activeChanged, this, follow);
+    connect(tools, &ToolManager::outlineChanged, this, qOverload<>(&QWidget::update));
     connect(&tools->settings(), &LutToolSettings::changed, this, qOverload<>(&QWidget::update));
     // What the tool would change, lit in the image (kept across frames until it changes).
     connect(tools, &ToolManager::previewChanged, this, [this] {

@@ -41,8 +41,10 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
         m_actions->addAction(action);
         connect(action, &QAction::triggered, this, [this, id = info.id] { activate(id); });
         connect(tool.get(), &Tool::previewChanged, this, [this, t = tool.get()] {
-            if (t == m_active)
-                refreshPreview();
+            if (t != m_active)
+                return;
+            refreshPreview();
+            emit outlineChanged();
         });
         m_tools.push_back(std::move(tool));
     }
@@ -84,6 +86,7 @@ void ToolManager::activate(const QString& id)
     for (QAction* a : m_actions->actions())
         a->setChecked(a->data().toString() == id);
     emit activeChanged();
+    emit outlineChanged();
     refreshPreview();
 }
 
