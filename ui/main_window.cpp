@@ -310,6 +310,7 @@ void MainWindow::saveSettings() const
     w.fps = m_navigator->speed();
     w.loop = m_navigator->loopAction()->isChecked();
     w.recent = m_files->recent();
+    w.recent_frames = m_files->recentFrames();
     const StreamDocument& stream = m_session->stream();
     if (stream.hasStream()) {
         w.stream = w.recent.value(0, stream.streamSpec());
@@ -346,6 +347,7 @@ void MainWindow::restoreSettings()
     m_navigator->setSpeed(w.fps);
     m_navigator->loopAction()->setChecked(w.loop);
     m_files->setRecent(w.recent);
+    m_files->setRecentFrames(w.recent_frames);
     LutToolSettings& tools = m_tools->settings();
     tools.setTolerance(w.tolerance);
     tools.setBrushRadius(w.brush_radius);

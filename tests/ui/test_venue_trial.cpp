@@ -353,6 +353,38 @@ private slots:
         QVERIFY(waitForFrame(w, 1));
         QCOMPARE(w.tools().active().outline().shapes.size(), std::size_t(0));
     }
+
+    /// A stream opened again, in this window or the next one, comes back on the frame it was
+    /// left on.
+    void reopeningAStreamRemembersItsFrame()
+    {
+        const QString a = copyStream("frames_a");
+        const QString b = copyStream("frames_b");
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(openAndWait(w, a));
+            w.session().stream().setCurrentIndex(3);
+            QVERIFY(waitForFrame(w, 3));
+            QVERIFY(openAndWait(w, b));
+            QCOMPARE(w.session().stream().currentIndex(), std::size_t(0));
+            QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+            w.files().openStream(a);
+            QVERIFY(opened.wait(10000));
+            QVERIFY(waitForFrame(w, 3));
+            w.session().stream().setCurrentIndex(5);
+            QVERIFY(waitForFrame(w, 5));
+            w.close(); // saves the settings
+        }
+        MainWindow again;
+        again.show();
+        const ui::WindowSettings last = ui::WindowSettings::load();
+        QCOMPARE(last.stream, a);
+        QSignalSpy opened(&again.files(), &ui::FileCommands::streamOpened);
+        again.files().openLastSession(last.stream, last.lut);
+        QVERIFY(opened.wait(10000));
+        QVERIFY(waitForFrame(again, 5));
+    }
 };
 
 QTEST_MAIN(TestVenueTrial)

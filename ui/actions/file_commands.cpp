@@ -79,6 +79,11 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
         return;
     }
     rememberRecent(m_window.session().stream().streamSpec());
+    // Back on the frame the stream was last left on.
+    StreamDocument& stream = m_window.session().stream();
+    if (const int frame = m_frames.value(recentKey(stream.streamSpec()), 0);
+        frame > 0 && std::size_t(frame) < stream.frameCount())
+        stream.setCurrentIndex(std::size_t(frame));
     QObject::disconnect(m_until_classified);
     if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty()) {
         const QString shown = warnings.join('\n');
@@ -109,6 +114,7 @@ bool FileCommands::openStream(const QString& spec, const QString& lut)
 {
     if (!confirmLutChanges())
         return false;
+    rememberFrame();
     EditingSession& session = m_window.session();
     if (!session.openStream(spec, lut)) {
         m_window.showMessage(
@@ -395,10 +401,37 @@ void FileCommands::setRecentMenu(QMenu* menu)
     rebuildRecentMenu();
 }
 
+QString FileCommands::recentKey(const QString& spec)
+{
+    return spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
+}
+
+void FileCommands::rememberFrame()
+{
+    const StreamDocument& stream = m_window.session().stream();
+    if (stream.hasStream())
+        m_frames[recentKey(stream.streamSpec())] = int(stream.currentIndex());
+}
+
+QList<int> FileCommands::recentFrames() const
+{
+    const StreamDocument& stream = m_window.session().stream();
+    const QString open = stream.hasStream() ? recentKey(stream.streamSpec()) : QString();
+    QList<int> frames;
+    for (const QString& path : m_recent)
+        frames << (path == open ? int(stream.currentIndex()) : m_frames.value(path, 0));
+    return frames;
+}
+
+void FileCommands::setRecentFrames(const QList<int>& frames)
+{
+    for (qsizetype i = 0; i < m_recent.size() && i < frames.size(); ++i)
+        m_frames[m_recent[i]] = frames[i];
+}
+
 void FileCommands::rememberRecent(const QString& spec)
 {
-    const QString path =
-        spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
+    const QString path = recentKey(spec);
     m_recent.removeAll(path);
     m_recent.prepend(path);
     while (m_recent.size() > kMaxRecent)

@@ -7,6 +7,7 @@
 
 #include "ui/document/lut_document.h"
 
+#include <QHash>
 #include <QObject>
 #include <QStringList>
 
@@ -69,6 +70,9 @@ public:
 
     QStringList recent() const { return m_recent; }
     void setRecent(const QStringList& recent);
+    /// The frame each recent stream was last on (the open one's now), one per recent() entry.
+    QList<int> recentFrames() const;
+    void setRecentFrames(const QList<int>& frames);
     /// The Recent streams menu, kept up to date.
     void setRecentMenu(QMenu* menu);
 
@@ -82,12 +86,16 @@ private:
     void offerAsStreamTable(const QString& path);
     void onOpened(bool ok, bool cancelled, const QString& error);
     void rememberRecent(const QString& spec);
+    /// Notes the open stream's frame, to go back to when it is opened again.
+    void rememberFrame();
+    static QString recentKey(const QString& spec);
     /// Applies `recovery` to the open stream's table (which must be the one it belongs to).
     bool applyRecovery(const LutRecovery& recovery);
     void rebuildRecentMenu();
 
     MainWindow& m_window;
     QProgressDialog* m_progress = nullptr;
+    QHash<QString, int> m_frames; ///< the frame a stream was last on, by its absolute path
     /// Hides the "no table" warning once the table has a classified cell.
     QMetaObject::Connection m_until_classified;
     QStringList m_recent;
