@@ -201,6 +201,9 @@ void MainWindow::buildDocks()
     detections->raise();
     resizeDocks({layers, pipeline}, {270, 340}, Qt::Horizontal);
     resizeDocks({layers, inspector}, {480, 200}, Qt::Vertical);
+    // The editing docks (pipeline, LUT editor) get the most height: every LUT control shows
+    // without scrolling at 1280x800.
+    resizeDocks({pipeline, detections}, {600, 160}, Qt::Vertical);
 
     m_docks_menu = new QMenu(tr("Panels"), this);
     for (QDockWidget* d : {layers, bookmarks, history, inspector, pipeline, lut, detections, uv})

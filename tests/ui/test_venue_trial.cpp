@@ -6,12 +6,15 @@
 #include "support/window_waits.h"
 #include "ui/adapters/image_adapter.h"
 #include "ui/document/frame_recorder.h"
+#include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/tools/tool.h"
 #include "visioncore/services/lut_building.h"
 #include "ui/widgets/message_bar.h"
 
+#include <QDockWidget>
 #include <QPushButton>
+#include <QSlider>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSpinBox>
@@ -384,6 +387,39 @@ private slots:
         again.files().openLastSession(last.stream, last.lut);
         QVERIFY(opened.wait(10000));
         QVERIFY(waitForFrame(again, 5));
+    }
+
+    /// At 1280x800 on a first start, every control of the LUT editor is in sight: no horizontal
+    /// scroll bar, nothing below the dock's visible part.
+    void everyLutControlShowsAt1280x800()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(openAndWait(w, sampleStream()));
+        auto* dock = w.findChild<QDockWidget*>("lut_dock");
+        QVERIFY(dock);
+        dock->raise();
+        QTRY_VERIFY(dock->isVisible() && w.lutPanel().isVisible());
+        auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+        QVERIFY(scroll);
+        QTRY_VERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                     qPrintable(QStringLiteral("panel needs %1, has %2")
+                                    .arg(w.lutPanel().minimumSizeHint().width())
+                                    .arg(scroll->viewport()->width())));
+        const QRect seen = scroll->viewport()->rect();
+        int controls = 0;
+        for (QWidget* c : w.lutPanel().findChildren<QWidget*>()) {
+            if (!qobject_cast<QAbstractButton*>(c) && !qobject_cast<QAbstractSpinBox*>(c) &&
+                !qobject_cast<QSlider*>(c))
+                continue;
+            const QRect at(c->mapTo(scroll->viewport(), QPoint(0, 0)), c->size());
+            QVERIFY2(seen.contains(at),
+                     qPrintable(c->objectName() + " " + c->metaObject()->className()));
+            ++controls;
+        }
+        QVERIFY(controls >= 25); // 11 classes, 6 tools, the settings, samples, table buttons
     }
 };
 

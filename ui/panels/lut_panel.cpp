@@ -152,11 +152,23 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
         settings.setTolerance({v, v, v});
     });
     connect(m_radius, &QSpinBox::valueChanged, &settings, &LutToolSettings::setBrushRadius);
-    form->addRow(tr("Tolerance Y"), m_tol_y);
-    form->addRow(tr("Tolerance Cb"), m_tol_cb);
-    form->addRow(tr("Tolerance Cr"), m_tol_cr);
-    form->addRow(tr("All channels"), m_tol_all);
-    form->addRow(tr("Brush radius (px)"), m_radius);
+    // Compact rows, so every control fits the dock at 1280x800 without scrolling.
+    auto* tolerances = new QHBoxLayout;
+    for (const auto& [label, box] : {std::pair{tr("Y"), m_tol_y}, std::pair{tr("Cb"), m_tol_cb},
+                                     std::pair{tr("Cr"), m_tol_cr}}) {
+        auto* name = new QLabel(label, this);
+        name->setBuddy(box);
+        tolerances->addWidget(name);
+        tolerances->addWidget(box, 1);
+    }
+    form->addRow(tr("Tolerance"), tolerances);
+    auto* all_row = new QHBoxLayout;
+    all_row->addWidget(m_tol_all, 2);
+    auto* brush_label = new QLabel(tr("Brush (px)"), this);
+    brush_label->setBuddy(m_radius);
+    all_row->addWidget(brush_label);
+    all_row->addWidget(m_radius, 1);
+    form->addRow(tr("All"), all_row);
     m_keep_others = new QCheckBox(tr("Only unclassified cells"), this);
     m_keep_others->setObjectName(QStringLiteral("keep_others"));
     m_keep_others->setToolTip(tr("Leave cells that already belong to another class as they are"));
@@ -224,14 +236,13 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
             emit problem(summary);
     });
 
-    auto* retarget_button = new QPushButton(tr("Retarget to this frame's field…"), this);
+    auto* retarget_button = new QPushButton(tr("Retarget to field…"), this);
     retarget_button->setObjectName(QStringLiteral("retarget"));
     retarget_button->setToolTip(tr("At a new venue: move the whole table by the shift between "
                                    "its green and the field at the bottom of this frame"));
     connect(retarget_button, &QPushButton::clicked, this, &LutPanel::askRetarget);
-    column->addWidget(retarget_button);
 
-    auto* clear = new QPushButton(tr("Clear this class from the table"), this);
+    auto* clear = new QPushButton(tr("Clear class"), this);
     clear->setObjectName(QStringLiteral("clear_class"));
     clear->setToolTip(tr("Every cell of the chosen class becomes unclassified (one undo step)"));
     connect(clear, &QPushButton::clicked, this, [this] {
@@ -241,7 +252,10 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
                                : tr("Cleared %1 %2 cells (Ctrl+Z undoes it)")
                                      .arg(number(cells), colourLabel(colour)));
     });
-    column->addWidget(clear);
+    auto* table_row = new QHBoxLayout;
+    table_row->addWidget(retarget_button);
+    table_row->addWidget(clear);
+    column->addLayout(table_row);
 
     m_preview_label = new QLabel(this);
     m_preview_label->setObjectName(QStringLiteral("lut_preview"));
