@@ -101,7 +101,10 @@ std::optional<long long> intOption(const QCommandLineParser& parser, const QStri
 
 QCommandLineOption lutOption()
 {
-    return {"lut", "Colour lookup table (default: the stream's default.lut).", "FILE"};
+    return {"lut",
+            "Colour lookup table (default: the one stream.json names, else the stream's "
+            "default.lut).",
+            "FILE"};
 }
 
 QCommandLineOption setOption()

@@ -227,6 +227,34 @@ private slots:
         QVERIFY(!w.session().lut().modified());
         QCOMPARE(fileBytes(stream + "/default.lut"),
                  fileBytes(sampleStream() + "/default.lut")); // the file is untouched
+        // Its notice goes with the first class (the trial saw it stay through 28 edits).
+        QVERIFY(w.messageBar().isVisible());
+        QVERIFY(w.session().lut().edit("edit", one));
+        QVERIFY(!w.messageBar().isVisible());
+    }
+
+    /// Return in a tolerance box gives the keys back: the next digit chooses a class instead of
+    /// typing into the box.
+    void returnInAToleranceBoxGivesTheKeysBack()
+    {
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, sampleStream()));
+        w.findChild<QDockWidget*>("lut_dock")->raise();
+        auto* box = w.findChild<QSpinBox*>("tolerance.y");
+        QVERIFY(box);
+        box->setFocus();
+        QTRY_VERIFY(box->hasFocus());
+        box->selectAll();
+        QTest::keyClicks(box, "24");
+        QTest::keyClick(box, Qt::Key_Return);
+        QCOMPARE(w.tools().settings().tolerance().y, 24);
+        QVERIFY(!box->hasFocus());
+        QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : &w, Qt::Key_2);
+        QCOMPARE(w.tools().settings().colour(), Colour::Green);
+        QCOMPARE(box->value(), 24);
     }
 
     /// The wheel over a parameter's spin box scrolls the panel unless the box has focus.

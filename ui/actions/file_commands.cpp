@@ -88,20 +88,8 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
     if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty()) {
         const QString shown = warnings.join('\n');
         m_window.showMessage(shown);
-        if (m_window.session().stream().lutProblem()) {
-            // The warning that every pixel is unclassified goes once the table has a class.
-            LutDocument& lut = m_window.session().lut();
-            m_until_classified = connect(&lut, &LutDocument::changed, this, [this, shown] {
-                const ColourLut& table = m_window.session().lut().table();
-                const std::uint8_t* cells = table.data();
-                if (std::all_of(cells, cells + ColourLut::kCells,
-                                [](std::uint8_t c) { return c == 0; }))
-                    return;
-                QObject::disconnect(m_until_classified);
-                if (m_window.messageBar().isVisible() && m_window.messageBar().text() == shown)
-                    m_window.messageBar().hide();
-            });
-        }
+        if (m_window.session().stream().lutProblem())
+            hideWhenClassified(shown);
     } else {
         m_window.messageBar().hide();
     }
@@ -199,10 +187,26 @@ bool FileCommands::newLut()
     if (!confirmLutChanges())
         return false;
     m_window.session().lut().reset(std::make_shared<const ColourLut>(), {});
-    m_window.showMessage(tr("A new, empty table: every pixel is unclassified until you classify "
-                            "some (Save LUT As names it)"),
-                         false);
+    const QString shown = tr("A new, empty table: every pixel is unclassified until you classify "
+                             "some (Save LUT As names it)");
+    m_window.showMessage(shown, false);
+    hideWhenClassified(shown);
     return true;
+}
+
+void FileCommands::hideWhenClassified(const QString& shown)
+{
+    QObject::disconnect(m_until_classified);
+    LutDocument& lut = m_window.session().lut();
+    m_until_classified = connect(&lut, &LutDocument::changed, this, [this, shown] {
+        const ColourLut& table = m_window.session().lut().table();
+        const std::uint8_t* cells = table.data();
+        if (std::all_of(cells, cells + ColourLut::kCells, [](std::uint8_t c) { return c == 0; }))
+            return;
+        QObject::disconnect(m_until_classified);
+        if (m_window.messageBar().isVisible() && m_window.messageBar().text() == shown)
+            m_window.messageBar().hide();
+    });
 }
 
 bool FileCommands::saveLut()

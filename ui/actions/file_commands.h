@@ -84,6 +84,8 @@ private:
     QString streamFolder() const;
     /// After Save As: offers to make `path` the table the open stream opens with.
     void offerAsStreamTable(const QString& path);
+    /// Hides the message `shown` (that every pixel is unclassified) once the table has a class.
+    void hideWhenClassified(const QString& shown);
     void onOpened(bool ok, bool cancelled, const QString& error);
     void rememberRecent(const QString& spec);
     /// Notes the open stream's frame, to go back to when it is opened again.

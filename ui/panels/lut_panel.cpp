@@ -148,6 +148,13 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     };
     for (QSpinBox* box : {m_tol_y, m_tol_cb, m_tol_cr})
         connect(box, &QSpinBox::valueChanged, this, tolerance);
+    // Return in a box hands the keys back to the window, so the next 2 or W chooses a class or
+    // a tool instead of typing into the box (a focus-out leaves the focus where it went).
+    for (QSpinBox* box : {m_tol_y, m_tol_cb, m_tol_cr, m_radius})
+        connect(box, &QSpinBox::editingFinished, this, [this, box] {
+            if (box->hasFocus())
+                window()->setFocus();
+        });
     connect(m_tol_all, &QSlider::valueChanged, this, [&settings](int v) {
         settings.setTolerance({v, v, v});
     });
