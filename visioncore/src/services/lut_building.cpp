@@ -4,6 +4,7 @@
 
 #include "visioncore/basics/json_text.h"
 #include "basics/json_format.h"
+#include "services/polygon_fill.h"
 
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/percepts/ball.h"
@@ -350,11 +351,8 @@ std::size_t LutVotes::addFrame(const cv::Mat& ycbcr, const std::vector<const Lut
         return 0;
     cv::Mat labels(ycbcr.size(), CV_8U, cv::Scalar(kNoVote));
     for (const LutSample* s : samples) {
-        const std::vector<std::vector<cv::Point>> polygons{s->polygon};
-        const std::uint8_t label = s->exclude ? kHole : std::uint8_t(s->colour);
         // Filled with its outline, so a box's corners at inclusive pixels cover the whole box.
-        cv::fillPoly(labels, polygons, cv::Scalar(label));
-        cv::polylines(labels, polygons, true, cv::Scalar(label));
+        fillPolygon(labels, s->polygon, s->exclude ? kHole : std::uint8_t(s->colour));
     }
     std::size_t voted = 0;
     for (int y = 0; y < ycbcr.rows; ++y) {
