@@ -20,11 +20,10 @@ std::optional<std::array<double, 2>> numberPair(const nlohmann::json& value)
     return std::array<double, 2>{value[0].get<double>(), value[1].get<double>()};
 }
 
-} // namespace
-
-Result<Manifest> parseManifest(const std::string& path)
+Result<Manifest> readManifest(const std::string& path, std::size_t frames)
 {
-    auto text = readWholeFile(path);
+    auto text = readWholeFile(path, maxManifestBytes(frames),
+                              "a stream.json of " + std::to_string(frames) + " frames");
     if (!text)
         return text.error();
     auto parsed = parseJson(text.value(), path);
@@ -102,6 +101,18 @@ Result<Manifest> parseManifest(const std::string& path)
         }
     }
     return manifest;
+}
+
+} // namespace
+
+std::size_t maxManifestBytes(std::size_t frames)
+{
+    return (std::size_t(1) << 20) + frames * 1024;
+}
+
+Result<Manifest> parseManifest(const std::string& path, std::size_t frames)
+{
+    return readingWithinMemory(path, [&] { return readManifest(path, frames); });
 }
 
 } // namespace fieldsight::io

@@ -241,12 +241,21 @@ Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string
     return out;
 }
 
-Result<LutSamples> loadLutSamples(const std::string& path)
+std::size_t maxLutSamplesBytes(std::size_t frames)
 {
-    auto text = readWholeFile(path);
-    if (!text)
-        return text.error();
-    return lutSamplesFromJson(text.value(), path);
+    return (std::size_t(16) << 20) + frames * 4096;
+}
+
+Result<LutSamples> loadLutSamples(const std::string& path, std::size_t frames)
+{
+    return readingWithinMemory(path, [&]() -> Result<LutSamples> {
+        auto text = readWholeFile(path, maxLutSamplesBytes(frames),
+                                  frames ? "LUT samples of " + std::to_string(frames) + " frames"
+                                         : std::string("LUT samples"));
+        if (!text)
+            return text.error();
+        return lutSamplesFromJson(text.value(), path);
+    });
 }
 
 std::string lutSamplesToJson(const LutSamples& samples)
