@@ -14,6 +14,7 @@
 #include <QStringList>
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <ostream>
@@ -43,6 +44,11 @@ double rounded(double value, int decimals);
 
 /// Prints "fieldsight: <message>" as exactly one line.
 void printError(std::ostream& err, std::string_view message);
+/// The end of a command an exception stopped: one line (running out of memory said in words,
+/// not as "std::bad_alloc"), and the exit status of a failure while running.
+int failure(const Context& ctx, std::string_view command, const std::exception& e);
+/// Prints what a stream's reader skipped, "fieldsight: warning: <what>" a line each.
+void printWarnings(std::ostream& err, const StreamInfo& info);
 /// printError, then the exit status for bad input.
 int badInput(const Context& ctx, std::string_view message);
 int badInput(const Context& ctx, const QString& message);
@@ -83,8 +89,9 @@ QCommandLineOption setOption();
 QCommandLineOption paramsOption();
 QCommandLineOption threadsOption(const QString& fallback);
 
-/// The parameter values of --params FILE and then every --set (which win).
-Result<ParamSet> paramsFrom(const QCommandLineParser& parser);
+/// The parameter values of --params FILE and then every --set (which win), checked against
+/// `pipeline`; an error names where the value came from (the file, or --set).
+Result<ParamSet> paramsFrom(const QCommandLineParser& parser, const Pipeline& pipeline);
 
 /// Opens the stream and LUT and applies --params and --set, all checked against the pipeline.
 Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
