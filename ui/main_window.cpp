@@ -19,6 +19,7 @@
 
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QDir>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
@@ -65,6 +66,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     connect(m_recorder, &FrameRecorder::problem, this, error);
     connect(m_pipeline, &PipelinePanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::problem, this, error);
+    connect(m_lut_panel, &LutPanel::notice, this, note);
     connect(m_recovery_bar, &OfferBar::accepted, m_files, &FileCommands::recoverLut);
     connect(m_recovery_bar, &OfferBar::declined, m_files, &FileCommands::discardRecovery);
     connect(m_view, &FrameView::painted, this, [this] {
@@ -130,11 +132,16 @@ void MainWindow::buildStatusBar()
     m_status_time = new QLabel(this);
     m_status_effect = new QLabel(this);
     m_status_effect->setObjectName(QStringLiteral("effect_summary"));
+    // Ignored width: a long summary is cut at the timing field, not pushed into it (the whole
+    // text is the tooltip).
+    m_status_effect->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(m_status_effect, 1);
     statusBar()->addPermanentWidget(m_status_time);
     statusBar()->addPermanentWidget(m_status_zoom);
-    connect(&m_session->effectScan(), &EditEffectScan::updated, this,
-            [this] { m_status_effect->setText(m_effect_strip->summary()); });
+    connect(&m_session->effectScan(), &EditEffectScan::updated, this, [this] {
+        m_status_effect->setText(m_effect_strip->summary());
+        m_status_effect->setToolTip(m_effect_strip->summary());
+    });
     connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
         m_status_zoom->setText(tr("zoom %1%").arg(zoom * 100, 0, 'f', 0));
     });
@@ -194,6 +201,9 @@ void MainWindow::buildDocks()
     detections->raise();
     resizeDocks({layers, pipeline}, {270, 340}, Qt::Horizontal);
     resizeDocks({layers, inspector}, {480, 200}, Qt::Vertical);
+    // The editing docks (pipeline, LUT editor) get the most height: every LUT control shows
+    // without scrolling at 1280x800.
+    resizeDocks({pipeline, detections}, {600, 160}, Qt::Vertical);
 
     m_docks_menu = new QMenu(tr("Panels"), this);
     for (QDockWidget* d : {layers, bookmarks, history, inspector, pipeline, lut, detections, uv})
@@ -288,10 +298,13 @@ void MainWindow::updateTitle()
     const LutDocument& lut = m_session->lut();
     QString title = QStringLiteral("Fieldsight");
     if (stream.hasStream())
-        title =
-            QStringLiteral("%1 — %2[*] — Fieldsight")
-                .arg(QFileInfo(stream.streamSpec()).fileName(),
-                     lut.path().isEmpty() ? tr("unsaved LUT") : QFileInfo(lut.path()).fileName());
+        title = QStringLiteral("%1 — %2[*] — Fieldsight")
+                    .arg(QFileInfo(stream.streamSpec()).fileName(),
+                         lut.path().isEmpty()
+                             ? tr("new LUT")
+                             // Which default.lut: its folder too.
+                             : QFileInfo(lut.path()).dir().dirName() + QLatin1Char('/') +
+                                   QFileInfo(lut.path()).fileName());
     setWindowTitle(title);
     setWindowModified(lut.modified());
 }
@@ -308,6 +321,7 @@ void MainWindow::saveSettings() const
     w.fps = m_navigator->speed();
     w.loop = m_navigator->loopAction()->isChecked();
     w.recent = m_files->recent();
+    w.recent_frames = m_files->recentFrames();
     const StreamDocument& stream = m_session->stream();
     if (stream.hasStream()) {
         w.stream = w.recent.value(0, stream.streamSpec());
@@ -348,6 +362,7 @@ void MainWindow::restoreSettings()
     m_navigator->setSpeed(w.fps);
     m_navigator->loopAction()->setChecked(w.loop);
     m_files->setRecent(w.recent);
+    m_files->setRecentFrames(w.recent_frames);
     LutToolSettings& tools = m_tools->settings();
     tools.setTolerance(w.tolerance);
     tools.setBrushRadius(w.brush_radius);

@@ -51,60 +51,6 @@ int badInput(const Context& ctx, const QString& message)
     return badInput(ctx, message.toStdString());
 }
 
-namespace {
-
-/// `path` made absolute, with links and `..` resolved as far as it exists.
-std::filesystem::path resolvedPath(const std::string& path)
-{
-    std::error_code ec;
-    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-    if (ec)
-        return std::filesystem::path(path).lexically_normal();
-    const std::filesystem::path resolved = std::filesystem::weakly_canonical(absolute, ec);
-    return ec ? absolute.lexically_normal() : resolved;
-}
-
-/// `path` is `folder` or inside it.
-bool isWithin(const std::filesystem::path& path, const std::filesystem::path& folder)
-{
-    auto p = path.begin();
-    for (const auto& part : folder) {
-        if (part.empty())
-            continue; // a trailing separator
-        if (p == path.end() || *p != part)
-            return false;
-        ++p;
-    }
-    return true;
-}
-
-} // namespace
-
-Status checkNotAnInput(std::string_view command, const std::string& output,
-                       const std::vector<std::string>& inputs)
-{
-    if (output.empty() || output == "-")
-        return {};
-    const std::filesystem::path out = resolvedPath(output);
-    for (const std::string& input : inputs) {
-        if (input.empty() || input == "-" || input.rfind("camera:", 0) == 0)
-            continue;
-        const std::filesystem::path in = resolvedPath(input);
-        std::error_code ec;
-        const bool same = out == in;
-        // A new file beside a stream's frames is fine (results, samples, a table); replacing
-        // one of its files is not.
-        const bool replaces = std::filesystem::is_directory(in, ec) && isWithin(out, in) &&
-                              std::filesystem::exists(out, ec) &&
-                              !std::filesystem::is_directory(out, ec);
-        if (same || replaces)
-            return Error{std::string(command) + ": the output " + output + " (" + out.string() +
-                         (same ? ") is the input " : ") would replace a file of the input ") +
-                         input + " (" + in.string() + "); nothing was written"};
-    }
-    return {};
-}
-
 Status writeOutput(const std::string& path, const std::string& text, std::ostream& out)
 {
     if (path == "-") {
@@ -193,6 +139,29 @@ QCommandLineOption threadsOption(const QString& fallback)
             "N"};
 }
 
+QCommandLineOption orientationOption()
+{
+    return {"orientation",
+            "Degrees clockwise to turn the stored pictures upright: 0, 90, 180 or 270 (default: "
+            "the stream's own, its stream.json \"orientation\"). Results are in the turned frame.",
+            "DEG"};
+}
+
+Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser)
+{
+    StreamOptions options;
+    if (!parser.isSet("orientation"))
+        return options;
+    const QString text = parser.value("orientation");
+    bool ok = false;
+    const long long value = text.toLongLong(&ok);
+    options.orientation = ok ? orientationFromDegrees(value) : std::nullopt;
+    if (!options.orientation)
+        return Error{"--orientation: expected 0, 90, 180 or 270 (degrees clockwise), got '" +
+                     text.toStdString() + "'"};
+    return options;
+}
+
 Result<ParamSet> paramsFrom(const QCommandLineParser& parser, const Pipeline& pipeline)
 {
     ParamSet params;
@@ -223,7 +192,11 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
     auto params = paramsFrom(parser, ctx.pipeline);
     if (!params)
         return params.error();
-    auto input = openStreamInput(stream, toLocalPath(parser.value("lut")), ctx.pipeline);
+    auto options = streamOptionsFrom(parser);
+    if (!options)
+        return options.error();
+    auto input =
+        openStreamInput(stream, toLocalPath(parser.value("lut")), ctx.pipeline, options.value());
     if (!input)
         return input.error();
     printWarnings(ctx.err, input.value().info());

@@ -2,6 +2,7 @@
 // parsing a command's own arguments, and the options several commands take.
 #pragma once
 
+#include "visioncore/basics/output_guard.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/basics/result.h"
 #include "visioncore/services/stream_runner.h"
@@ -57,13 +58,6 @@ inline int badInput(const Context& ctx, const char* message)
     return badInput(ctx, std::string_view(message));
 }
 
-/// Refuses an output that is one of `inputs` (a file, or a folder such as a stream), or that would
-/// replace a file inside an input folder, after resolving links and `..`: an Error naming both
-/// paths, for the command to give before it writes anything. Empty inputs, "-" and cameras are
-/// skipped.
-Status checkNotAnInput(std::string_view command, const std::string& output,
-                       const std::vector<std::string>& inputs);
-
 /// Writes `text` to `path` atomically, or to `out` when `path` is "-".
 Status writeOutput(const std::string& path, const std::string& text, std::ostream& out);
 
@@ -88,12 +82,18 @@ QCommandLineOption lutOption();
 QCommandLineOption setOption();
 QCommandLineOption paramsOption();
 QCommandLineOption threadsOption(const QString& fallback);
+QCommandLineOption orientationOption();
+
+/// --orientation DEG as stream options (none set: the stream's own orientation). A value other
+/// than 0, 90, 180 or 270 is an Error naming the option and the value.
+Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser);
 
 /// The parameter values of --params FILE and then every --set (which win), checked against
 /// `pipeline`; an error names where the value came from (the file, or --set).
 Result<ParamSet> paramsFrom(const QCommandLineParser& parser, const Pipeline& pipeline);
 
-/// Opens the stream and LUT and applies --params and --set, all checked against the pipeline.
+/// Opens the stream (turned by --orientation) and LUT and applies --params and --set, all
+/// checked against the pipeline.
 Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
                               const Context& ctx);
 

@@ -1,7 +1,8 @@
 // `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
 #include "commands/commands.h"
-#include "ui/adapters/local_path.h"
 #include "ui/actions/file_commands.h"
+#include "ui/adapters/local_path.h"
+#include "ui/application.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 
@@ -64,7 +65,7 @@ int guiCommand(int& argc, char** argv, const Context& ctx)
                              "(the window then draws into memory only)");
 #endif
     QApplication app(argc, argv);
-    QApplication::setApplicationDisplayName(QStringLiteral("Fieldsight"));
+    ui::identifyApplication();
 
     ui::MainWindow window(ctx.pipeline);
     window.session().settings().reset(params); // checked above

@@ -92,6 +92,7 @@ int buildCommand(const QStringList& args, const Context& ctx)
     parser.addOption({"soft", "Soft classes pink_orange and yellow_orange where orange and "
                               "pink or yellow samples meet."});
     parser.addOption({"goal-colour", "Class of the annotated goalposts (default yellow).", "NAME"});
+    parser.addOption(orientationOption());
     if (auto done = parseCommand(parser, "lut build", args, 2, 2, ctx))
         return *done;
 
@@ -121,7 +122,11 @@ int buildCommand(const QStringList& args, const Context& ctx)
             rules.goal_colour = *colour;
         }
 
-        auto reader = openStream(stream);
+        // Samples and annotations are in the frame the stream is shown in, turned upright.
+        const auto stream_options = streamOptionsFrom(parser);
+        if (!stream_options)
+            return badInput(ctx, "lut build: " + stream_options.error().message);
+        auto reader = openStream(stream, stream_options.value());
         if (!reader)
             return badInput(ctx, reader.error().message);
         const StreamInfo& info = reader.value()->info();

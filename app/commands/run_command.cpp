@@ -23,6 +23,7 @@ int runCommand(const QStringList& args, const Context& ctx)
     parser.addOption(lutOption());
     parser.addOption(setOption());
     parser.addOption(paramsOption());
+    parser.addOption(orientationOption());
     parser.addOption({"out",
                       "Output file, or - for standard output (default "
                       "fieldsight-results.json).",

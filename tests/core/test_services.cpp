@@ -3,6 +3,7 @@
 #include "support/synthetic_frames.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/obstacle.h"
+#include "visioncore/services/layers.h"
 #include "visioncore/services/results_json.h"
 #include "visioncore/services/stream_runner.h"
 #include "visioncore/services/worker_pool.h"
@@ -36,6 +37,27 @@ class TestServices : public QObject
 {
     Q_OBJECT
 private slots:
+    /// A stage's debug layer never takes a percept's colour (the trial found the green horizon's
+    /// scan points and the field boundary both magenta): with both shown, a user can tell them
+    /// apart.
+    void noStageLayerSharesAPerceptsColour()
+    {
+        const std::vector<LayerInfo> layers = allLayers(Pipeline::standard());
+        std::vector<const LayerInfo*> percepts;
+        for (const LayerInfo& l : layers)
+            if (l.id.rfind("percepts.", 0) == 0)
+                percepts.push_back(&l);
+        QVERIFY(percepts.size() >= 5);
+        for (const LayerInfo& l : layers) {
+            if (l.by_colour_class || l.id.rfind("percepts.", 0) == 0 ||
+                l.id.rfind("truth.", 0) == 0)
+                continue;
+            for (const LayerInfo* p : percepts)
+                QVERIFY2(!(l.colour == p->colour),
+                         qPrintable(QString::fromStdString(l.id + " has the colour of " + p->id)));
+        }
+    }
+
     void everyWorkerRunsExactlyOnce()
     {
         std::mutex mutex;

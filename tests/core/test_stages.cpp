@@ -417,11 +417,23 @@ private slots:
         ControlWrapper core(data);
         run(core);
         const std::vector<FieldLine> first = core.blackboard().percepts.list<FieldLine>();
+        // Both drawn lines are found, so the comparison below compares something.
+        QCOMPARE(first.size(), std::size_t(2));
+        // The same core again, and a second core on the same frame (no state carried over).
+        MemoryDataWrapper other_data(f, test::testLut());
+        ControlWrapper other(other_data);
+        run(other);
         run(core);
-        const auto& second = core.blackboard().percepts.list<FieldLine>();
-        QCOMPARE(second.size(), first.size());
-        for (std::size_t i = 0; i < first.size(); ++i)
-            QCOMPARE(second[i].x1, first[i].x1);
+        for (const ControlWrapper* c : {&core, &other}) {
+            const auto& again = c->blackboard().percepts.list<FieldLine>();
+            QCOMPARE(again.size(), first.size());
+            for (std::size_t i = 0; i < first.size(); ++i) {
+                QCOMPARE(again[i].x1, first[i].x1);
+                QCOMPARE(again[i].y1, first[i].y1);
+                QCOMPARE(again[i].x2, first[i].x2);
+                QCOMPARE(again[i].y2, first[i].y2);
+            }
+        }
     }
 };
 

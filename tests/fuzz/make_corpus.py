@@ -91,6 +91,8 @@ def main():
         "frames": [{"file": "frame_0.png", "horizon": [4, 6], "timestamp_ms": 0},
                    {"file": "frame_1.png", "timestamp_ms": 33.3}], "lut": "none.lut"}))
     put("stream_manifest", "bare", '{"format": "fieldsight-stream/1", "frames": ["frame_1.png"]}')
+    put("stream_manifest", "orientation", json.dumps({"format": "fieldsight-stream/1", "orientation": 180,
+        "frames": [{"file": "frame_0.png", "horizon": [4, 6]}]}))
     put("image_png", "green", png(12, 8, (60, 160, 40)))
     put("image_bmp", "green", bmp(12, 8, (40, 160, 60)))
     jpg = os.path.join(OUT, "image_jpg", "green")

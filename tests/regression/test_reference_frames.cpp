@@ -221,15 +221,19 @@ private slots:
             QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
         const FrameResult* f = findFrame(m_bhuman_blue, "f070.png");
         QVERIFY(f);
-        // The ball fills the middle of the frame: centre about (166, 135), radius about 40 px
-        // (preview/f070_rgb.png), resting on a field line.
+        // The ball fills the middle of the frame, resting on a field line. Its orange pixels in
+        // preview/f070_rgb.png (R > 150, R - G > 50, R - B > 80; rows 0-199, above the robot's
+        // red foot) span x 128-205 and y 96-174: centre (166.5, 135), radius 39 px by the span,
+        // 39.1 by the area (4797 px).
         QVERIFY2(f->percepts.list<Ball>().size() == 1,
                  qPrintable(QString("f070: %1 balls, expected the large one")
                                 .arg(f->percepts.list<Ball>().size())));
         const Ball& ball = f->percepts.list<Ball>().front();
-        QVERIFY2(ball.x >= 0 && ball.x < kBhumanWidth && ball.y >= 0 && ball.y < kBhumanHeight,
-                 qPrintable(QString("ball at %1, %2").arg(ball.x).arg(ball.y)));
-        QVERIFY2(ball.radius >= 10, qPrintable(QString("radius %1").arg(ball.radius)));
+        const QString found =
+            QString("ball at %1, %2, radius %3").arg(ball.x).arg(ball.y).arg(ball.radius);
+        // Measured: (165.8, 134.4), radius 39.8.
+        QVERIFY2(std::abs(ball.x - 166.5) <= 3 && std::abs(ball.y - 135) <= 3, qPrintable(found));
+        QVERIFY2(std::abs(ball.radius - 39) <= 3, qPrintable(found));
     }
 
     void bhumanNoBallAboveTheGreenHorizon()

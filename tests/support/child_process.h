@@ -1,5 +1,5 @@
 // Running the fieldsight executable in a child process as a user would: arguments as bytes (no
-// shell, no Qt decoding), killed after 30 s, its exit status, output, time and peak memory.
+// shell, no Qt decoding), killed after a time, its exit status, output, time and peak memory.
 #pragma once
 
 #include <chrono>
@@ -46,12 +46,12 @@ inline bool amRoot()
 inline constexpr uid_t kNobody = 65534;
 inline constexpr int kCannotBeNobody = 125; ///< the child could not become nobody
 
-/// Runs `exe` with `args` in `cwd`, killing it after 30 s. Peak memory from wait4(). With
+/// Runs `exe` with `args` in `cwd`, killing it after `seconds`. Peak memory from wait4(). With
 /// `as_nobody`, a root test runs the command as user and group nobody, so that permission bits
-/// bind it.
+/// bind it; `env` adds to its environment ("NAME=value").
 inline Outcome runChild(const std::string& exe, const std::vector<std::string>& args,
                         const std::string& cwd, rlim_t file_size_limit = RLIM_INFINITY,
-                        bool as_nobody = false)
+                        bool as_nobody = false, int seconds = 30, std::vector<std::string> env = {})
 {
     std::vector<std::string> all{exe};
     all.insert(all.end(), args.begin(), args.end());
@@ -59,6 +59,12 @@ inline Outcome runChild(const std::string& exe, const std::vector<std::string>& 
     for (std::string& a : all)
         argv.push_back(a.data());
     argv.push_back(nullptr);
+    for (char** e = environ; *e; ++e)
+        env.emplace_back(*e); // after the additions: the first of a name wins
+    std::vector<char*> envp;
+    for (std::string& e : env)
+        envp.push_back(e.data());
+    envp.push_back(nullptr);
     const std::string out_path = cwd + "/.stdout", err_path = cwd + "/.stderr";
 
     const auto start = std::chrono::steady_clock::now();
@@ -77,17 +83,17 @@ inline Outcome runChild(const std::string& exe, const std::vector<std::string>& 
         if (as_nobody && amRoot() &&
             (::setgroups(0, nullptr) != 0 || ::setgid(kNobody) != 0 || ::setuid(kNobody) != 0))
             ::_exit(kCannotBeNobody);
-        ::execv(argv[0], argv.data());
+        ::execve(argv[0], argv.data(), envp.data());
         ::_exit(127);
     }
     Outcome o;
     int status = 0;
     rusage usage{};
     while (::wait4(pid, &status, WNOHANG, &usage) == 0) {
-        if (std::chrono::steady_clock::now() - start > std::chrono::seconds(30)) {
+        if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds)) {
             ::kill(pid, SIGKILL);
             ::wait4(pid, &status, 0, &usage);
-            o.err = "(killed after 30 s)";
+            o.err = "(killed after " + std::to_string(seconds) + " s)";
             return o;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));

@@ -49,7 +49,7 @@ public:
         p.text = QStringLiteral("Fake at %1,%2").arg(pixel->x()).arg(pixel->y());
         return p;
     }
-    ui::ToolOutline outline() const override { return {3}; }
+    ui::ToolOutline outline() const override { return {3, {}}; }
 };
 
 } // namespace fieldsight::test

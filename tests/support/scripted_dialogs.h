@@ -21,19 +21,25 @@ public:
     std::deque<QString> texts;                       ///< text
     std::deque<int> numbers;                         ///< number
     std::deque<QMessageBox::StandardButton> answers; ///< question
-    QStringList asked;                               ///< every title, in order
-    QStringList unanswered;                          ///< titles asked with nothing queued
+    std::deque<int> choices;                         ///< choice (an option's index, -1 cancels)
+    QStringList texts_asked; ///< the text of every question and choice, in order
+    QStringList asked;       ///< every title, in order
+    QStringList unanswered;  ///< titles asked with nothing queued
+    QStringList suggested;   ///< the path each file or folder question started from, in order
 
-    QString openFile(QWidget*, const QString& title, const QString&, const QString&) override
+    QString openFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
-    QString saveFile(QWidget*, const QString& title, const QString&, const QString&) override
+    QString saveFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
-    QString folder(QWidget*, const QString& title, const QString&) override
+    QString folder(QWidget*, const QString& title, const QString& start) override
     {
+        suggested << start;
         return next(paths, title, QString());
     }
     std::optional<QString> text(QWidget*, const QString& title, const QString&,
@@ -55,11 +61,18 @@ public:
             return next(numbers, title, std::optional<int>());
         return next(numbers, title, 0);
     }
-    QMessageBox::StandardButton question(QWidget*, const QString& title, const QString&,
+    QMessageBox::StandardButton question(QWidget*, const QString& title, const QString& text,
                                          QMessageBox::StandardButtons,
                                          QMessageBox::StandardButton) override
     {
+        texts_asked << text;
         return next(answers, title, QMessageBox::Cancel);
+    }
+    int choice(QWidget*, const QString& title, const QString& text, const QStringList&,
+               int) override
+    {
+        texts_asked << text;
+        return next(choices, title, -1);
     }
     void information(QWidget*, const QString& title, const QString&) override { asked << title; }
 

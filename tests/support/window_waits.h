@@ -38,7 +38,8 @@ inline bool openAndWait(MainWindow& w, const QString& stream)
     w.files().openStream(stream);
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;
-    return waitForFrame(w, 0);
+    // The frame the stream was last left on in this window (0 the first time).
+    return waitForFrame(w, w.session().stream().currentIndex());
 }
 
 } // namespace fieldsight::test

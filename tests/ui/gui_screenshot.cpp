@@ -5,8 +5,10 @@
 //                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]...
 //                  [--colour NAME] [--tool click|brush|erase|wand] [--click X,Y]...
 //                  [--preview X,Y] [--uv-select CB0,CR0,CB1,CR1] [--y-range LO,HI]
+//                  [--orientation 0|90|180|270]
 // --click edits the LUT with the tool at image pixel X,Y; --preview hovers the tool there (both at
-// zoom 1 unless --zoom); the whole-stream scan is waited for before the shot.
+// zoom 1 unless --zoom); the whole-stream scan is waited for before the shot. --orientation turns
+// the stream's pictures as View > Orientation does, before anything else.
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
@@ -33,8 +35,9 @@ int main(int argc, char** argv)
     QCommandLineParser p;
     p.addPositionalArgument("out", "PNG to write");
     p.addPositionalArgument("stream", "stream");
-    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock",
-                          "colour", "tool", "click", "preview", "uv-select", "y-range"})
+    for (const char* o :
+         {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock", "colour",
+          "tool", "click", "preview", "uv-select", "y-range", "orientation"})
         p.addOption({o, o, "value"});
     p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
@@ -70,6 +73,16 @@ int main(int argc, char** argv)
         QApplication::processEvents();
     };
     waitFrame();
+    if (p.isSet("orientation")) {
+        const auto o = orientationFromDegrees(p.value("orientation").toLongLong());
+        Status turned = o ? w.session().stream().setOrientation(*o)
+                          : Status(Error{"--orientation: expected 0, 90, 180 or 270"});
+        if (!turned) {
+            std::cerr << turned.error().message << "\n";
+            return 2;
+        }
+        waitFrame();
+    }
     if (p.isSet("frame")) {
         w.session().stream().setCurrentIndex(p.value("frame").toULongLong());
         waitFrame();

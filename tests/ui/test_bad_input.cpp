@@ -43,15 +43,19 @@ struct Case
     std::string gui_lut;
     std::size_t gui_frame = 0;
     rlim_t file_size_limit = RLIM_INFINITY; ///< bytes a write may reach (ulimit -f)
-    /// Permission bits do not bind root: as root the command runs as nobody (the window's part,
-    /// in this process, is skipped).
+    /// Permission bits do not bind root: as root the command, and the window's part, run as
+    /// nobody (permissionBitsBindTheCommand, theWindowMeetsPermissionBits).
     bool needs_permissions = false;
 };
 
+/// Runs fieldsight (or `program`) with `args` in `cwd` (tests/support/child_process.h), killing
+/// it after `seconds`; `env` adds to its environment ("NAME=value").
 Outcome runFieldsight(const std::vector<std::string>& args, const std::string& cwd,
-                      rlim_t file_size_limit, bool as_nobody = false)
+                      rlim_t file_size_limit, bool as_nobody = false,
+                      const std::string& program = FIELDSIGHT_EXE, int seconds = 30,
+                      std::vector<std::string> env = {})
 {
-    return runChild(FIELDSIGHT_EXE, args, cwd, file_size_limit, as_nobody);
+    return runChild(program, args, cwd, file_size_limit, as_nobody, seconds, std::move(env));
 }
 
 /// A .strm record (version 1) of a width x height frame.
@@ -124,6 +128,77 @@ class TestBadInput : public QObject
         c.gui_lut = std::move(gui_lut);
         c.gui_frame = gui_frame;
         return m_cases.emplace_back(std::move(c));
+    }
+
+    /// Prints the outcome of case `c` and adds what is wrong with it to `failures`.
+    static void check(const Case& c, const Outcome& o, QStringList& failures)
+    {
+        std::string line = o.err;
+        if (!line.empty() && line.back() == '\n')
+            line.pop_back();
+        qInfo("%-50s %6d %8.2f %8.1f  %s", c.name.c_str(), o.status, o.seconds,
+              double(o.peak_kb) / 1024, line.c_str());
+        QStringList problems;
+        if (o.status != c.status)
+            problems << QString("exit %1, expected %2").arg(o.status).arg(c.status);
+        if (line.find('\n') != std::string::npos || !line.starts_with("fieldsight: "))
+            problems << "not exactly one line from fieldsight";
+        for (const std::string& needle : c.needles)
+            if (line.find(needle) == std::string::npos)
+                problems << QString("no \"%1\"").arg(ui::fromLocalPath(needle));
+        if (o.seconds > 10)
+            problems << QString("took %1 s").arg(o.seconds);
+        if (o.peak_kb > 1536 * 1024)
+            problems << QString("peak memory %1 MB").arg(o.peak_kb / 1024);
+        if (!problems.isEmpty())
+            failures << QString::fromStdString(c.name) + ": " + problems.join("; ");
+    }
+
+    /// Opens case `c` in the window, adds what is wrong to `failures`, then checks the window
+    /// goes on with the good stream; true when the case was shown.
+    bool windowCase(ui::MainWindow& w, const Case& c, QStringList& failures)
+    {
+        const QString name = QString::fromStdString(c.name);
+        const QString stream =
+            ui::fromLocalPath(c.gui_stream.starts_with("/") ? c.gui_stream : at(c.gui_stream));
+        QString message;
+        if (c.gui_frame == 0) {
+            QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+            if (!c.gui_lut.empty())
+                w.files().openLut(ui::fromLocalPath(c.gui_lut));
+            else
+                w.files().openStream(stream);
+            if (c.gui_lut.empty() && !opened.wait(10000)) {
+                failures << name + ": no answer";
+                return false;
+            }
+            message = w.lastMessage();
+        } else {
+            if (!openAndWait(w, stream)) {
+                failures << name + ": did not open";
+                return false;
+            }
+            w.session().stream().setCurrentIndex(c.gui_frame);
+            if (!waitForFrame(w, c.gui_frame)) {
+                failures << name + ": frame not shown";
+                return false;
+            }
+            message = w.session().stream().current()->error;
+            (void)w.view().grab(); // the error is painted, not a crash
+        }
+        for (const std::string& needle : c.needles)
+            if (!message.contains(ui::fromLocalPath(needle)))
+                failures << name + ": the window said \"" + message + "\", without \"" +
+                                ui::fromLocalPath(needle) + "\"";
+        // And the window goes on: the good stream opens and steps.
+        if (!openAndWait(w, QString::fromStdString(m_good))) {
+            failures << name + ": the good stream no longer opens";
+            return true;
+        }
+        w.session().stream().setCurrentIndex(2);
+        if (!waitForFrame(w, 2))
+            failures << name + ": cannot step afterwards";
+        return true;
     }
 
 private slots:
@@ -407,40 +482,39 @@ private slots:
         long worst_kb = 0;
         std::string worst;
         for (const Case& c : m_cases) {
-            const Outcome o = runFieldsight(c.args, m_dir, c.file_size_limit, c.needs_permissions);
-            if (c.needs_permissions && amRoot() &&
-                (o.status == kCannotBeNobody || o.status == 127)) {
-                qInfo("%-50s skipped: root here cannot run the command as nobody (exit %d)",
-                      c.name.c_str(), o.status);
-                continue;
-            }
-            std::string line = o.err;
-            if (!line.empty() && line.back() == '\n')
-                line.pop_back();
-            qInfo("%-50s %6d %8.2f %8.1f  %s", c.name.c_str(), o.status, o.seconds,
-                  double(o.peak_kb) / 1024, line.c_str());
+            if (c.needs_permissions)
+                continue; // permissionBitsBindTheCommand
+            const Outcome o = runFieldsight(c.args, m_dir, c.file_size_limit);
             if (o.peak_kb > worst_kb)
                 worst_kb = o.peak_kb, worst = c.name;
-            QStringList problems;
-            if (o.status != c.status)
-                problems << QString("exit %1, expected %2").arg(o.status).arg(c.status);
-            if (line.find('\n') != std::string::npos || !line.starts_with("fieldsight: "))
-                problems << "not exactly one line from fieldsight";
-            for (const std::string& needle : c.needles)
-                if (line.find(needle) == std::string::npos)
-                    problems << QString("no \"%1\"").arg(ui::fromLocalPath(needle));
-            if (o.seconds > 10)
-                problems << QString("took %1 s").arg(o.seconds);
-            if (o.peak_kb > 1536 * 1024)
-                problems << QString("peak memory %1 MB").arg(o.peak_kb / 1024);
-            if (!problems.isEmpty())
-                failures << QString::fromStdString(c.name) + ": " + problems.join("; ");
+            check(c, o, failures);
         }
         qInfo("worst peak memory: %.1f MB (%s)", double(worst_kb) / 1024, worst.c_str());
         QVERIFY2(m_cases.size() >= 30, "the catalogue has at least 30 kinds");
         QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
         // The save that failed left the old file as it was.
         QCOMPARE(readAll(at("kept.lut")), std::string("the old table"));
+    }
+
+    /// The cases that need permission bits to bind: as root the command runs as nobody, and a
+    /// machine where root cannot become nobody skips them, saying so.
+    void permissionBitsBindTheCommand()
+    {
+        QStringList failures;
+        int run = 0;
+        for (const Case& c : m_cases) {
+            if (!c.needs_permissions)
+                continue;
+            const Outcome o = runFieldsight(c.args, m_dir, c.file_size_limit, true);
+            if (amRoot() && (o.status == kCannotBeNobody || o.status == 127))
+                QSKIP(qPrintable(QString("root here cannot run the command as nobody (exit %1), "
+                                         "so permission bits cannot be tested")
+                                     .arg(o.status)));
+            check(c, o, failures);
+            ++run;
+        }
+        QCOMPARE(run, 2);
+        QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
     }
 
     void aPathThatIsNotUtf8ReachesTheCommandUnchanged()
@@ -463,52 +537,51 @@ private slots:
         QVERIFY(openAndWait(w, QString::fromStdString(m_good)));
         QStringList failures;
         int shown = 0;
-        for (const Case& c : m_cases) {
-            if (c.gui_stream.empty() || (c.needs_permissions && amRoot()))
-                continue;
-            const QString stream =
-                ui::fromLocalPath(c.gui_stream.starts_with("/") ? c.gui_stream : at(c.gui_stream));
-            QString message;
-            if (c.gui_frame == 0) {
-                QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
-                if (!c.gui_lut.empty())
-                    w.files().openLut(ui::fromLocalPath(c.gui_lut));
-                else
-                    w.files().openStream(stream);
-                if (c.gui_lut.empty() && !opened.wait(10000)) {
-                    failures << QString::fromStdString(c.name) + ": no answer";
-                    continue;
-                }
-                message = w.lastMessage();
-            } else {
-                if (!openAndWait(w, stream)) {
-                    failures << QString::fromStdString(c.name) + ": did not open";
-                    continue;
-                }
-                w.session().stream().setCurrentIndex(c.gui_frame);
-                if (!waitForFrame(w, c.gui_frame)) {
-                    failures << QString::fromStdString(c.name) + ": frame not shown";
-                    continue;
-                }
-                message = w.session().stream().current()->error;
-                (void)w.view().grab(); // the error is painted, not a crash
-            }
-            for (const std::string& needle : c.needles)
-                if (!message.contains(ui::fromLocalPath(needle)))
-                    failures << QString::fromStdString(c.name) + ": the window said \"" + message +
-                                    "\", without \"" + ui::fromLocalPath(needle) + "\"";
-            ++shown;
-            // And the window goes on: the good stream opens and steps.
-            if (!openAndWait(w, QString::fromStdString(m_good))) {
-                failures << QString::fromStdString(c.name) + ": the good stream no longer opens";
-                continue;
-            }
-            w.session().stream().setCurrentIndex(2);
-            if (!waitForFrame(w, 2))
-                failures << QString::fromStdString(c.name) + ": cannot step afterwards";
-        }
+        for (const Case& c : m_cases)
+            if (!c.gui_stream.empty() && !c.needs_permissions) // theWindowMeetsPermissionBits
+                shown += windowCase(w, c, failures);
         qInfo("%d bad inputs opened in the window", shown);
         QVERIFY(shown >= 25);
+        QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
+    }
+
+    /// The permission cases in the window. Permission bits do not bind root, so as root this
+    /// test runs itself again as nobody (this function alone, in a child process), and a machine
+    /// where root cannot become nobody skips it, saying so.
+    void theWindowMeetsPermissionBits()
+    {
+        if (amRoot()) {
+            const std::string home = at("nobody_home");
+            fs::create_directories(home);
+            fs::permissions(home, fs::perms::owner_all);
+            QCOMPARE(::chown(home.c_str(), kNobody, kNobody), 0);
+            const Outcome o =
+                runFieldsight({"theWindowMeetsPermissionBits"}, m_dir, RLIM_INFINITY, true,
+                              QCoreApplication::applicationFilePath().toStdString(), 120,
+                              {"HOME=" + home, "XDG_RUNTIME_DIR=" + home});
+            if (o.status == kCannotBeNobody || o.status == 127)
+                QSKIP(qPrintable(QString("root here cannot run this test as nobody (exit %1), "
+                                         "so permission bits cannot be tested in the window")
+                                     .arg(o.status)));
+            if (const auto skip = o.out.find("SKIP   : "); skip != std::string::npos)
+                QSKIP(qPrintable("as nobody: " + QString::fromStdString(o.out.substr(
+                                                     skip, o.out.find('\n', skip) - skip))));
+            QVERIFY2(o.status == 0 &&
+                         o.out.find("PASS   : TestBadInput::theWindowMeetsPermissionBits") !=
+                             std::string::npos,
+                     (o.out + o.err).c_str());
+            return;
+        }
+        ui::MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openAndWait(w, QString::fromStdString(m_good)));
+        QStringList failures;
+        int shown = 0;
+        for (const Case& c : m_cases)
+            if (!c.gui_stream.empty() && c.needs_permissions)
+                shown += windowCase(w, c, failures);
+        QCOMPARE(shown, 1);
         QVERIFY2(failures.isEmpty(), qPrintable(failures.join("\n")));
     }
 

@@ -5,6 +5,7 @@
 #include "support/synthetic_frames.h"
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
+#include "support/scripted_dialogs.h"
 #include "ui/widgets/message_bar.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
@@ -339,6 +340,37 @@ private slots:
                  qPrintable(strip.summary()));
     }
 
+    /// A stage switched off (a settings change, same table) shows on the strip as the detections
+    /// it made vanish, frame by frame (the trial: a parameter edit did not update the strip).
+    void theEffectStripFollowsAParameterChange()
+    {
+        MainWindow w;
+        QVERIFY(showAndOpen(w));
+        ui::EditEffectScan& scan = w.session().effectScan();
+        QVERIFY(waitForScan(scan));
+        // The last stage that can be switched off and finds something on this stream.
+        std::string stage;
+        for (const StageDescriptor& d : w.session().pipeline().descriptors())
+            if (d.info.skippable)
+                stage = d.info.id;
+        QVERIFY(!stage.empty());
+        QVERIFY(w.session().settings().setStageEnabled(stage, false));
+        QVERIFY(QTest::qWaitFor([&] { return scan.running() || scan.showsEdit(); }, 5000));
+        QVERIFY(waitForScan(scan));
+        QVERIFY(scan.showsEdit());
+        QVERIFY(scan.showsSettingsChange());
+        long long vanished = 0;
+        for (const FrameEffect& e : scan.effects())
+            for (const KindDelta& k : e.delta.kinds) {
+                vanished += k.vanished;
+                QCOMPARE(int(k.appeared), 0);
+            }
+        QVERIFY(vanished > 0);
+        const QString summary = w.effectStrip().summary();
+        QVERIFY2(summary.startsWith("Last parameter change"), qPrintable(summary));
+        QVERIFY2(summary.contains(QStringLiteral("\u2212")), qPrintable(summary));
+    }
+
     void theEffectStripCountsWhatAnEditChangedOnEveryFrame()
     {
         MainWindow w;
@@ -506,6 +538,8 @@ private slots:
 
         // Image -> UV: hovering with the click tool outlines the cells a click would change,
         // highlights the pixels, and counts the cells taken from another class.
+        const ColourLut before_preview = w.session().lut().table();
+        const int steps_before_preview = w.session().lut().undoStack().count();
         w.tools().settings().setColour(Colour::Pink);
         w.tools().activate(QStringLiteral("click"));
         w.tools().settings().setTolerance({6, 3, 3});
@@ -520,8 +554,11 @@ private slots:
         QVERIFY2(w.tools().preview().text.contains(QString::number(green) + " green"),
                  qPrintable(w.tools().preview().text));
         QVERIFY(qAlpha(w.view().highlight("preview").pixel(160, 220)) > 0);
-        const ColourLut unchanged = w.session().lut().table();
-        QVERIFY(unchanged == w.session().lut().table()); // a preview edits nothing
+        // A preview edits nothing: the table, its undo stack and its saved state are as they
+        // were before the mouse came, though the preview would take green cells.
+        QCOMPARE(differences(before_preview, w.session().lut().table()), std::set<std::uint32_t>());
+        QCOMPARE(w.session().lut().undoStack().count(), steps_before_preview);
+        QVERIFY(!w.session().lut().modified());
     }
 
     void comparingTwoKnownTablesListsTheRightCellsAndMergesByClass()
@@ -680,22 +717,62 @@ private slots:
         QCOMPARE(loadLutSamples(sampler.path().toStdString()).value().samples.size(),
                  std::size_t(1));
 
-        // Built with the annotations, in the background, as one undoable edit.
+        // Built with the annotations, in the background; nothing changes until the user has
+        // seen what each way would change and chosen one: replace, only unclassified, cancel.
         auto expected = ui::SamplesDocument::buildTable(copy.toStdString(), sampler.samples(), true,
                                                         nullptr, nullptr, nullptr);
         QVERIFY(expected);
         const ColourLut before = w.session().lut().table();
         const int steps = w.session().lut().undoStack().count();
         w.findChild<QCheckBox*>("samples.annotations")->setChecked(true);
+        test::ScriptedDialogs dialogs;
         QSignalSpy built(&sampler, &ui::SamplesDocument::built);
+        QSignalSpy ready(&sampler, &ui::SamplesDocument::buildReady);
+
+        dialogs.choices = {-1};
+        w.lutPanel().buildFromSamples();
+        QVERIFY(ready.wait(20000));
+        QVERIFY(w.session().lut().table() == before);
+        QCOMPARE(w.session().lut().undoStack().count(), steps);
+        QVERIFY(!sampler.hasBuild());
+        QCOMPARE(dialogs.asked.count(QStringLiteral("Build from samples")), 1);
+        const QString shown = dialogs.texts_asked.back();
+        const LutDiff replace = diffLuts(before, expected.value().table);
+        QVERIFY2(shown.contains(QLocale().toString(qulonglong(replace.cells.size())) + " cells"),
+                 qPrintable(shown));
+        QVERIFY2(shown.contains("green +"), qPrintable(shown));
+        QVERIFY2(shown.contains("pixels change class"), qPrintable(shown));
+
+        dialogs.choices = {1};
         w.lutPanel().buildFromSamples();
         QVERIFY(built.wait(20000));
-        QVERIFY2(built.front().front().toBool(), qPrintable(built.front().back().toString()));
+        QVERIFY2(built.back().front().toBool(), qPrintable(built.back().back().toString()));
         QVERIFY(w.session().lut().table() == expected.value().table);
         QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         QCOMPARE(sampler.ambiguous().size(), expected.value().ambiguous.size());
         w.session().lut().undoStack().undo();
         QVERIFY(w.session().lut().table() == before);
+
+        // Only unclassified cells: every cell the table had keeps its class.
+        dialogs.choices = {0};
+        w.lutPanel().buildFromSamples();
+        QVERIFY(built.wait(20000));
+        const ColourLut& merged = w.session().lut().table();
+        std::size_t kept = 0;
+        std::size_t filled = 0;
+        for (std::size_t i = 0; i < ColourLut::kCells; ++i) {
+            if (before.data()[i] != 0) {
+                QCOMPARE(merged.data()[i], before.data()[i]);
+                ++kept;
+            } else {
+                QCOMPARE(merged.data()[i], expected.value().table.data()[i]);
+                filled += merged.data()[i] != 0;
+            }
+        }
+        QVERIFY(kept > 0);
+        QVERIFY(filled > 0);
+        QVERIFY(!(merged == expected.value().table));
+        w.session().lut().undoStack().undo();
 
         // A window opened later finds the samples again.
         MainWindow again;

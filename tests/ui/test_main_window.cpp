@@ -35,6 +35,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QToolButton>
@@ -163,15 +164,64 @@ private slots:
     void theFakeStageAppearsWithoutUiChanges()
     {
         MainWindow w(m_pipeline);
-        QVERIFY(w.layersPanel().layerItem("fake.box"));
-        QVERIFY(w.layersPanel().layerItem("percepts.fake_marks"));
-        QVERIFY(w.pipelinePanel().stageBox("fake"));
-        QVERIFY(w.pipelinePanel().stageBox("fake")->isCheckable());
+        // Its layer, under its own name and colour, off until chosen; its detections on.
+        QTreeWidgetItem* box = w.layersPanel().layerItem("fake.box");
+        QVERIFY(box);
+        QCOMPARE(box->text(0), QStringLiteral("Fake box"));
+        QVERIFY(box->parent());
+        QCOMPARE(box->parent()->text(0), QStringLiteral("Fake"));
+        QCOMPARE(box->checkState(0), Qt::Unchecked);
+        QCOMPARE(box->icon(0).pixmap(16, 16).toImage().pixelColor(8, 8),
+                 QColor(kFakeLayerColour.r, kFakeLayerColour.g, kFakeLayerColour.b));
+        QTreeWidgetItem* marks = w.layersPanel().layerItem("percepts.fake_marks");
+        QVERIFY(marks);
+        QCOMPARE(marks->text(0), QStringLiteral("Fake marks"));
+        QCOMPARE(marks->checkState(0), Qt::Checked);
+
+        // Its switch, parameters (range, step, unit, description) and time in the pipeline panel.
+        QGroupBox* stage = w.pipelinePanel().stageBox("fake");
+        QVERIFY(stage);
+        QCOMPARE(stage->title(), QStringLiteral("Fake"));
+        QVERIFY(stage->isCheckable());
+        QVERIFY(stage->isChecked());
+        QCOMPARE(stage->toolTip(),
+                 QStringLiteral("A test stage: marks one point and fills one box."));
         auto* level = qobject_cast<QDoubleSpinBox*>(w.pipelinePanel().editor("fake.level"));
         QVERIFY(level);
         QCOMPARE(level->value(), 1.5);
+        QCOMPARE(level->minimum(), 0.0);
         QCOMPARE(level->maximum(), 10.0);
-        QVERIFY(w.pipelinePanel().findChild<QLabel*>("fake.time"));
+        QCOMPARE(level->singleStep(), 0.5);
+        QVERIFY2(level->toolTip().startsWith("Written into every mark.") &&
+                     level->toolTip().contains("Range 0 to 10, default 1.5"),
+                 qPrintable(level->toolTip()));
+        auto* every = qobject_cast<QSpinBox*>(w.pipelinePanel().editor("fake.every"));
+        QVERIFY(every);
+        QCOMPARE(every->value(), 1);
+        QCOMPARE(every->suffix(), QStringLiteral(" frames"));
+        QCOMPARE(every->maximum(), 100);
+        auto* time = w.pipelinePanel().findChild<QLabel*>("fake.time");
+        QVERIFY(time);
+
+        // Once a frame is shown: the stage's time as the core measured it, its mark's value in
+        // the detections.
+        w.show();
+        QVERIFY(openAndWait(w, sampleStream()));
+        const auto& out = w.session().stream().current();
+        double ms = -1;
+        for (const StageTiming& t : out->result.report.stages)
+            if (t.stage == "fake" && t.ran)
+                ms = t.ms;
+        QVERIFY(ms >= 0);
+        QVERIFY2(time->text().startsWith(QString::number(ms, 'f', 3) + " ms (mean "),
+                 qPrintable(time->text()));
+        QTreeWidgetItem* row = nullptr;
+        for (int i = 0; i < w.detectionsPanel().topLevelItemCount(); ++i)
+            if (w.detectionsPanel().topLevelItem(i)->text(0) == "Fake marks (1)")
+                row = w.detectionsPanel().topLevelItem(i);
+        QVERIFY2(row, qPrintable(w.detectionsPanel().topLevelTexts().join(" | ")));
+        QCOMPARE(row->childCount(), 1);
+        QCOMPARE(row->child(0)->text(0), QStringLiteral("x: 40.0, y: 30.0, value: 1.5"));
     }
 
     void opensStepsAndJumpsFrameAccurately()
@@ -463,7 +513,7 @@ private slots:
                 *w.session().lut().version());
         // A folder that already holds a recording is not written over.
         const auto again = w.recorder().start(folder, *w.session().lut().version());
-        QVERIFY(!again && QString::fromStdString(again.error().message).contains("recording.strm"));
+        QVERIFY(!again && QString::fromStdString(again.error().message).contains("not empty"));
 
         // Another stream: the camera is closed (on the worker thread).
         QVERIFY(openAndWait(w, sampleStream()));

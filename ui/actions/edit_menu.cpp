@@ -27,6 +27,10 @@ void addEditMenu(MainWindow& w)
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
+    QAction* remove = edit->addAction(QObject::tr("Delete selected"));
+    remove->setObjectName(QStringLiteral("edit.delete"));
+    remove->setShortcut(QKeySequence::Delete);
+    QObject::connect(remove, &QAction::triggered, &w, [&w] { w.tools().deleteSelection(); });
     QMenu* classes = edit->addMenu(QObject::tr("Colour class"));
     classes->addActions(w.lutPanel().colourActions());
     QMenu* tools = edit->addMenu(QObject::tr("Tool"));

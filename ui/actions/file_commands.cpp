@@ -6,7 +6,9 @@
 #include "ui/panels/lut_compare_dialog.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/output_guard.h"
 #include "visioncore/io/lut_import.h"
+#include "visioncore/io/orientation.h"
 
 #include <QApplication>
 #include <QBuffer>
@@ -20,6 +22,7 @@
 #include <QProgressDialog>
 #include <QStatusBar>
 
+#include <algorithm>
 #include <utility>
 
 namespace fieldsight::ui {
@@ -79,10 +82,32 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
         return;
     }
     rememberRecent(m_window.session().stream().streamSpec());
-    if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty())
-        m_window.showMessage(warnings.join('\n'));
-    else
+    // Back on the frame the stream was last left on.
+    StreamDocument& stream = m_window.session().stream();
+    if (const int frame = m_frames.value(recentKey(stream.streamSpec()), 0);
+        frame > 0 && std::size_t(frame) < stream.frameCount())
+        stream.setCurrentIndex(std::size_t(frame));
+    QObject::disconnect(m_until_classified);
+    if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty()) {
+        const QString shown = warnings.join('\n');
+        m_window.showMessage(shown);
+        if (m_window.session().stream().lutProblem()) {
+            // The warning that every pixel is unclassified goes once the table has a class.
+            LutDocument& lut = m_window.session().lut();
+            m_until_classified = connect(&lut, &LutDocument::changed, this, [this, shown] {
+                const ColourLut& table = m_window.session().lut().table();
+                const std::uint8_t* cells = table.data();
+                if (std::all_of(cells, cells + ColourLut::kCells,
+                                [](std::uint8_t c) { return c == 0; }))
+                    return;
+                QObject::disconnect(m_until_classified);
+                if (m_window.messageBar().isVisible() && m_window.messageBar().text() == shown)
+                    m_window.clearMessage();
+            });
+        }
+    } else {
         m_window.clearMessage();
+    }
     if (recovery)
         applyRecovery(*recovery);
     emit streamOpened(true);
@@ -92,6 +117,7 @@ bool FileCommands::openStream(const QString& spec, const QString& lut)
 {
     if (!confirmLutChanges())
         return false;
+    rememberFrame();
     EditingSession& session = m_window.session();
     if (!session.openStream(spec, lut)) {
         m_window.showMessage(
@@ -140,12 +166,12 @@ LutCompareDialog* FileCommands::compareLut(const QString& path)
     return dialog;
 }
 
-QString FileCommands::bundledSampleStream()
+QString FileCommands::bundledSampleStream(const QString& exe_dir)
 {
-    const QString app = QCoreApplication::applicationDirPath();
+    const QString app = exe_dir.isEmpty() ? QCoreApplication::applicationDirPath() : exe_dir;
     const QStringList candidates{
         qEnvironmentVariable("FIELDSIGHT_SAMPLE_STREAM"),
-        app + QStringLiteral("/../share/fieldsight/sample_streams/lab1"),
+        app + QStringLiteral("/" FIELDSIGHT_DATA_FROM_BIN "/sample_streams/lab1"),
         app + QStringLiteral("/../../sample_streams/lab1"),
         app + QStringLiteral("/../sample_streams/lab1"),
         QStringLiteral(FIELDSIGHT_SOURCE_SAMPLE_STREAMS "/lab1"),
@@ -171,6 +197,17 @@ void FileCommands::openLastSession(const QString& stream, const QString& lut)
     openStream(sample);
 }
 
+bool FileCommands::newLut()
+{
+    if (!confirmLutChanges())
+        return false;
+    m_window.session().lut().reset(std::make_shared<const ColourLut>(), {});
+    m_window.showMessage(tr("A new, empty table: every pixel is unclassified until you classify "
+                            "some (Save LUT As names it)"),
+                         false);
+    return true;
+}
+
 bool FileCommands::saveLut()
 {
     LutDocument& lut = m_window.session().lut();
@@ -185,6 +222,12 @@ bool FileCommands::saveLut()
     return true;
 }
 
+QString FileCommands::streamFolder() const
+{
+    const QFileInfo spec(m_window.session().stream().streamSpec());
+    return spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
+}
+
 bool FileCommands::saveLutAs(const QString& given)
 {
     LutDocument& lut = m_window.session().lut();
@@ -192,8 +235,7 @@ bool FileCommands::saveLutAs(const QString& given)
     if (path.isEmpty()) {
         QString suggestion = lut.path();
         if (suggestion.isEmpty() || !suggestion.endsWith(QLatin1String(".lut")))
-            suggestion =
-                QFileInfo(m_window.session().stream().streamSpec()).absolutePath() + "/venue.lut";
+            suggestion = streamFolder() + QStringLiteral("/venue.lut");
         path = Dialogs::current().saveFile(&m_window, tr("Save LUT as"), suggestion,
                                            tr("Fieldsight LUT (*.lut)"));
         if (path.isEmpty())
@@ -207,7 +249,35 @@ bool FileCommands::saveLutAs(const QString& given)
         return false;
     }
     m_window.showMessage(tr("Saved %1").arg(path), false);
+    if (given.isEmpty()) // chosen by the user in the dialog, not given by a caller
+        offerAsStreamTable(path);
     return true;
+}
+
+void FileCommands::offerAsStreamTable(const QString& path)
+{
+    // A table saved under another name is not what the stream opens with next time, unless
+    // its manifest names it: offer that.
+    const StreamDocument& stream = m_window.session().stream();
+    if (!stream.hasStream() || !QFileInfo(stream.streamSpec()).isDir())
+        return;
+    const QString own = fromLocalPath(stream.info().default_lut);
+    if (!own.isEmpty() && QFileInfo(own).absoluteFilePath() == QFileInfo(path).absoluteFilePath())
+        return;
+    const auto answer = Dialogs::current().question(
+        &m_window, tr("Use as this stream's table"),
+        tr("Use %1 as the table of the stream %2? Its stream.json then names it, and the stream "
+           "opens with it next time (in the window and on the command line).")
+            .arg(QFileInfo(path).fileName(), stream.streamSpec()),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
+    if (answer != QMessageBox::Yes)
+        return;
+    if (Status s = writeStreamLut(toLocalPath(streamFolder()), toLocalPath(path)); !s) {
+        m_window.showMessage(qs(s.error().message));
+        return;
+    }
+    m_window.showMessage(
+        tr("Saved %1; the stream %2 now opens with it").arg(path, stream.streamSpec()), false);
 }
 
 bool FileCommands::confirmLutChanges()
@@ -302,6 +372,14 @@ void FileCommands::discardRecovery()
 
 bool FileCommands::saveSnapshot(const QString& path)
 {
+    // The same rule as the commands': never over a file of the stream or the table in use.
+    if (Status s = checkNotAnInput("Save view as PNG", toLocalPath(path),
+                                   {toLocalPath(m_window.session().stream().streamSpec()),
+                                    toLocalPath(m_window.session().lut().path())});
+        !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
     QByteArray png;
     QBuffer buffer(&png);
     buffer.open(QIODevice::WriteOnly);
@@ -336,10 +414,37 @@ void FileCommands::setRecentMenu(QMenu* menu)
     rebuildRecentMenu();
 }
 
+QString FileCommands::recentKey(const QString& spec)
+{
+    return spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
+}
+
+void FileCommands::rememberFrame()
+{
+    const StreamDocument& stream = m_window.session().stream();
+    if (stream.hasStream())
+        m_frames[recentKey(stream.streamSpec())] = int(stream.currentIndex());
+}
+
+QList<int> FileCommands::recentFrames() const
+{
+    const StreamDocument& stream = m_window.session().stream();
+    const QString open = stream.hasStream() ? recentKey(stream.streamSpec()) : QString();
+    QList<int> frames;
+    for (const QString& path : m_recent)
+        frames << (path == open ? int(stream.currentIndex()) : m_frames.value(path, 0));
+    return frames;
+}
+
+void FileCommands::setRecentFrames(const QList<int>& frames)
+{
+    for (qsizetype i = 0; i < m_recent.size() && i < frames.size(); ++i)
+        m_frames[m_recent[i]] = frames[i];
+}
+
 void FileCommands::rememberRecent(const QString& spec)
 {
-    const QString path =
-        spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
+    const QString path = recentKey(spec);
     m_recent.removeAll(path);
     m_recent.prepend(path);
     while (m_recent.size() > kMaxRecent)

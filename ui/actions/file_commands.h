@@ -7,6 +7,7 @@
 
 #include "ui/document/lut_document.h"
 
+#include <QHash>
 #include <QObject>
 #include <QStringList>
 
@@ -39,10 +40,15 @@ public:
     LutCompareDialog* compareLut(const QString& path);
     /// Opens `stream` with `lut` if it still exists, else the bundled sample stream.
     void openLastSession(const QString& stream, const QString& lut);
-    /// The bundled sample stream (sample_streams/lab1), looked for beside the executable, in
-    /// the build tree and in the source tree; empty when not found.
-    static QString bundledSampleStream();
+    /// The bundled sample stream (sample_streams/lab1): $FIELDSIGHT_SAMPLE_STREAM, else where
+    /// `cmake --install` puts it as seen from the executable in `exe_dir`
+    /// (../share/fieldsight/sample_streams/lab1), else the build tree's source tree; empty when
+    /// not found. `exe_dir` defaults to the running executable's folder.
+    static QString bundledSampleStream(const QString& exe_dir = {});
 
+    /// Starts an empty, untitled table (after asking about unsaved edits); false when the user
+    /// kept them.
+    bool newLut();
     /// Saves the edited LUT to its file (Save As when it has no .lut file yet); false with a
     /// message in the window when it could not (the edits stay).
     bool saveLut();
@@ -64,6 +70,9 @@ public:
 
     QStringList recent() const { return m_recent; }
     void setRecent(const QStringList& recent);
+    /// The frame each recent stream was last on (the open one's now), one per recent() entry.
+    QList<int> recentFrames() const;
+    void setRecentFrames(const QList<int>& frames);
     /// The Recent streams menu, kept up to date.
     void setRecentMenu(QMenu* menu);
 
@@ -71,14 +80,24 @@ signals:
     void streamOpened(bool ok);
 
 private:
+    /// The open stream's folder (a file stream's: the folder it is in).
+    QString streamFolder() const;
+    /// After Save As: offers to make `path` the table the open stream opens with.
+    void offerAsStreamTable(const QString& path);
     void onOpened(bool ok, bool cancelled, const QString& error);
     void rememberRecent(const QString& spec);
+    /// Notes the open stream's frame, to go back to when it is opened again.
+    void rememberFrame();
+    static QString recentKey(const QString& spec);
     /// Applies `recovery` to the open stream's table (which must be the one it belongs to).
     bool applyRecovery(const LutRecovery& recovery);
     void rebuildRecentMenu();
 
     MainWindow& m_window;
     QProgressDialog* m_progress = nullptr;
+    QHash<QString, int> m_frames; ///< the frame a stream was last on, by its absolute path
+    /// Hides the "no table" warning once the table has a classified cell.
+    QMetaObject::Connection m_until_classified;
     QStringList m_recent;
     QMenu* m_recent_menu = nullptr;
     std::optional<LutRecovery> m_recover_after_open; ///< applied once its stream is open

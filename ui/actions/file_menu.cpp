@@ -85,6 +85,9 @@ void addFileMenu(MainWindow& w)
             files.openStream(QStringLiteral("camera:%1").arg(*n));
     });
     addRecordItem(w, file);
+    addMenuItem(file, QObject::tr("New LUT"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_N), &w,
+                [&] { (void)files.newLut(); })
+        ->setObjectName(QStringLiteral("file.new_lut"));
     addMenuItem(file, QObject::tr("Open LUT…"), QKeySequence(Qt::CTRL | Qt::Key_L), &w, [&] {
         const QString path = Dialogs::current().openFile(
             &w, QObject::tr("Open LUT"), QFileInfo(session.lut().path()).absolutePath(),

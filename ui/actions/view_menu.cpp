@@ -1,11 +1,70 @@
-// View: the view mode, zoom, detection labels and the panels.
+// View: the view mode, zoom, detection labels, the stream's orientation and the panels.
 #include "ui/actions/menus.h"
 #include "ui/main_window.h"
 
 #include <QActionGroup>
+#include <QDir>
 #include <QMenuBar>
 
 namespace fieldsight::ui {
+
+namespace {
+
+/// Which way the open stream's pictures are turned upright (an undoable edit of the stream), and
+/// keeping that in its stream.json, only when asked.
+void addOrientationMenu(MainWindow& w, QMenu& menu)
+{
+    StreamDocument& stream = w.session().stream();
+    menu.setObjectName(QStringLiteral("view.orientation"));
+    auto* turns = new QActionGroup(&w);
+    const std::pair<QString, Orientation> turn_list[] = {
+        {QObject::tr("As stored"), Orientation::Upright},
+        {QObject::tr("Turn 90° clockwise"), Orientation::Clockwise90},
+        {QObject::tr("Turn 180°"), Orientation::Half},
+        {QObject::tr("Turn 90° anticlockwise"), Orientation::Clockwise270}};
+    for (const auto& [text, o] : turn_list) {
+        QAction* a = menu.addAction(text, &w, [&w, &stream, o = o] {
+            if (Status s = stream.setOrientation(o); !s) {
+                w.showMessage(QString::fromStdString(s.error().message));
+                return;
+            }
+            if (stream.orientationUnsaved() && stream.canSaveOrientation())
+                w.showMessage(QObject::tr("Orientation %1° for this session; View > Orientation > "
+                                          "Save to stream keeps it in the stream's stream.json.")
+                                  .arg(degrees(o)),
+                              false);
+        });
+        a->setObjectName(QStringLiteral("view.orientation.%1").arg(degrees(o)));
+        a->setCheckable(true);
+        turns->addAction(a);
+    }
+    menu.addSeparator();
+    QAction* save = menu.addAction(QObject::tr("Save to stream"), &w, [&w, &stream] {
+        if (Status s = stream.saveOrientation(); !s)
+            w.showMessage(QString::fromStdString(s.error().message));
+        else
+            w.showMessage(QObject::tr("Saved orientation %1 to %2")
+                              .arg(degrees(stream.orientation()))
+                              .arg(QDir(stream.streamSpec()).filePath("stream.json")),
+                          false);
+    });
+    save->setObjectName(QStringLiteral("view.orientation.save"));
+    save->setToolTip(QObject::tr("Write the orientation into the stream's stream.json"));
+    // The checks follow the document (an undo turns it back too).
+    const auto follow = [turns, save, &stream] {
+        const int deg = degrees(stream.orientation());
+        for (QAction* a : turns->actions())
+            a->setChecked(a->objectName().endsWith(QLatin1Char('.') + QString::number(deg)));
+        for (QAction* a : turns->actions())
+            a->setEnabled(stream.hasStream() && !stream.live());
+        save->setEnabled(stream.orientationUnsaved() && stream.canSaveOrientation());
+    };
+    QObject::connect(&stream, &StreamDocument::orientationChanged, &w, follow);
+    QObject::connect(&stream, &StreamDocument::streamChanged, &w, follow);
+    follow();
+}
+
+} // namespace
 
 void addViewMenu(MainWindow& w)
 {
@@ -39,6 +98,7 @@ void addViewMenu(MainWindow& w)
     labels->setObjectName(QStringLiteral("view.labels"));
     labels->setCheckable(true);
     labels->setChecked(true);
+    addOrientationMenu(w, *view->addMenu(QObject::tr("&Orientation")));
     view->addSeparator();
     view->addMenu(&w.docksMenu());
 }

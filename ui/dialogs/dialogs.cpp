@@ -2,6 +2,10 @@
 
 #include <QFileDialog>
 #include <QInputDialog>
+#include <QPushButton>
+
+#include <algorithm>
+#include <vector>
 
 #include <utility>
 
@@ -51,6 +55,22 @@ public:
     void information(QWidget* parent, const QString& title, const QString& text) override
     {
         QMessageBox::information(parent, title, text);
+    }
+    int choice(QWidget* parent, const QString& title, const QString& text,
+               const QStringList& options, int preferred) override
+    {
+        QMessageBox box(QMessageBox::Question, title, text, QMessageBox::NoButton, parent);
+        std::vector<QAbstractButton*> buttons;
+        for (int i = 0; i < options.size(); ++i) {
+            QPushButton* b = box.addButton(options[i], QMessageBox::AcceptRole);
+            buttons.push_back(b);
+            if (i == preferred)
+                box.setDefaultButton(b);
+        }
+        box.addButton(QMessageBox::Cancel);
+        box.exec();
+        const auto it = std::find(buttons.begin(), buttons.end(), box.clickedButton());
+        return it == buttons.end() ? -1 : int(it - buttons.begin());
     }
 };
 

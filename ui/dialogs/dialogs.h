@@ -5,6 +5,7 @@
 
 #include <QMessageBox>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 
@@ -39,6 +40,9 @@ public:
                                                  QMessageBox::StandardButtons buttons,
                                                  QMessageBox::StandardButton preferred) = 0;
     virtual void information(QWidget* parent, const QString& title, const QString& text) = 0;
+    /// One of `options` (its index), or -1 when the user cancelled; `preferred` is the default.
+    virtual int choice(QWidget* parent, const QString& title, const QString& text,
+                       const QStringList& options, int preferred) = 0;
 };
 
 } // namespace fieldsight::ui

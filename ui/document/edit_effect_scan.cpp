@@ -23,14 +23,17 @@ EditEffectScan::~EditEffectScan()
         m_thread.join();
 }
 
-void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const ColourLut> lut)
+void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,
+                               StreamOptions options)
 {
     m_delay.stop();
     stop();
     clearResults(); // a collect the old scan queued cannot bring its stream's effects back
     m_spec = spec.startsWith(QLatin1String("camera:")) ? QString() : spec;
-    m_scanner.setStream(toLocalPath(m_spec));
+    m_options = options;
+    m_scanner.setStream(toLocalPath(m_spec), options);
     m_shows_edit = false;
+    m_shows_settings = false;
     m_lut = std::move(lut);
     m_pending.reset();
     if (m_spec.isEmpty() || !m_lut)
@@ -48,9 +51,14 @@ void EditEffectScan::setSettings(std::shared_ptr<const ParamSet> params,
     m_settings_changed = true;
     if (m_spec.isEmpty() || !m_lut)
         return;
-    if (!m_pending)
+    // Compared with each frame's result before the change (the same table), so the strip shows
+    // the detections a parameter or a stage switch made appear or vanish.
+    std::shared_ptr<const ColourLut> before = m_lut;
+    if (m_pending && m_pending->before)
+        before = m_pending->before;
+    else if (!m_pending)
         m_requested = std::chrono::steady_clock::now();
-    m_pending = EditEffectJob{nullptr, m_lut, m_params, m_skip};
+    m_pending = EditEffectJob{std::move(before), m_lut, m_params, m_skip};
     m_delay.start();
 }
 
@@ -90,6 +98,7 @@ void EditEffectScan::start()
     EditEffectJob job = std::move(*m_pending);
     m_pending.reset();
     job.rerun_all = m_settings_changed;
+    m_shows_settings = m_settings_changed;
     m_settings_changed = false;
     m_shows_edit = job.before != nullptr;
     clearResults(); // and forgets the cancel that stopped the last scan

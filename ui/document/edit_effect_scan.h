@@ -38,10 +38,12 @@ public:
     /// Quiet time after an edit before the scan starts, so a brush stroke scans once it pauses.
     void setDelay(int ms) { m_delay.setInterval(ms); }
 
-    /// The stream to scan: a file stream (a camera or an empty spec clears it). Starts a first
-    /// scan that records every frame's detections with `lut`, so the next edit has something to
-    /// compare with.
-    void setStream(const QString& spec, std::shared_ptr<const ColourLut> lut);
+    /// The stream to scan: a file stream (a camera or an empty spec clears it), opened with
+    /// `options` (turned as the window shows it). Starts a first scan that records every frame's
+    /// detections with `lut`, so the next edit has something to compare with.
+    void setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,
+                   StreamOptions options = {});
+    const StreamOptions& streamOptions() const { return m_options; }
     /// The pipeline settings the scans use; a change records every frame's detections again.
     void setSettings(std::shared_ptr<const ParamSet> params,
                      std::set<std::string, std::less<>> skip);
@@ -58,6 +60,8 @@ public:
     std::size_t changedCells() const { return m_changed_cells; }
     /// Whether the effects describe an edit (false after the first scan of a stream).
     bool showsEdit() const { return m_shows_edit; }
+    /// The scan shown includes a change of the parameters or stage switches.
+    bool showsSettingsChange() const { return m_shows_settings; }
     /// ms from the edit (or the settings change) to the scan's last frame (negative while none
     /// has finished).
     double lastScanMs() const { return m_last_scan_ms; }
@@ -87,12 +91,14 @@ private:
     QTimer m_poll;
     std::thread m_thread; ///< runs m_scanner.run(); joined before the scanner is touched else
     QString m_spec;
+    StreamOptions m_options;
 
     std::optional<EditEffectJob> m_pending;
     std::shared_ptr<const ColourLut> m_lut; ///< the newest table
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> m_skip;
     bool m_settings_changed = false; ///< since the last job started
+    bool m_shows_settings = false;
 
     std::vector<FrameEffect> m_effects;
     std::size_t m_frames_done = 0;

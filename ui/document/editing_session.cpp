@@ -37,6 +37,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     addUndoDocument(tr("LUT samples"), m_samples->undoStack());
     addUndoDocument(tr("Pipeline settings"), m_settings->undoStack());
     addUndoDocument(tr("Bookmarks"), m_bookmarks->undoStack());
+    addUndoDocument(tr("Stream orientation"), m_stream->undoStack());
     m_undo_group.setActiveStack(&m_lut->undoStack());
 
     // The whole-stream scan observes the table and the settings.
@@ -46,6 +47,17 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
         m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     });
 
+    // Whatever reads the stream's frames reads them turned as the window shows them.
+    connect(m_stream, &StreamDocument::orientationChanged, this, [this] {
+        const StreamOptions options{m_stream->orientation()};
+        m_samples->setStreamOptions(options);
+        if (m_effect->stream().isEmpty() ||
+            m_effect->streamOptions().orientation == options.orientation)
+            return; // saved, not turned
+        m_effect->setStream(m_stream->streamSpec(), m_lut->version(), options);
+    });
+
+    connect(m_stream, &StreamDocument::problem, this, &EditingSession::problem);
     connect(m_lut, &LutDocument::problem, this, &EditingSession::problem);
     connect(m_samples, &SamplesDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::problem, this, &EditingSession::problem);
@@ -171,8 +183,10 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
+    const StreamOptions options{m_stream->orientation()};
+    m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
-    m_effect->setStream(spec, m_lut->version());
+    m_effect->setStream(spec, m_lut->version(), options);
     // The settings keep their history across streams; Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
 }

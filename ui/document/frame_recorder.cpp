@@ -1,6 +1,7 @@
 #include "ui/document/frame_recorder.h"
 
 #include "ui/adapters/local_path.h"
+#include "visioncore/basics/output_guard.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -26,6 +27,9 @@ Status FrameRecorder::start(const QString& folder, const ColourLut& lut)
 {
     if (recording())
         return Error{toLocalPath(m_path) + ": already recording"};
+    // A recording writes a stream of its own (frames and table): only into a new or empty folder.
+    if (Status s = checkNewOrEmptyFolder("Record camera", toLocalPath(folder)); !s)
+        return s;
     if (!makeLocalFolder(folder))
         return Error{toLocalPath(folder) + ": cannot make the folder"};
     const QString path = QDir(folder).filePath(QStringLiteral("recording.strm"));

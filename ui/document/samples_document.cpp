@@ -48,16 +48,46 @@ SamplesDocument::SamplesDocument(LutDocument& lut, QObject* parent) : QObject(pa
             return;
         }
         m_ambiguous = std::move(b.ambiguous);
-        const LutDiff diff = diffLuts(m_lut.table(), b.table);
-        m_lut.edit(tr("Build from %1 samples").arg(qulonglong(b.samples)), diff.cells);
-        emit built(true, tr("Built from %1 samples on %2 frames (%3 pixels): %4 cells changed, "
-                            "%5 claimed by two classes")
-                             .arg(qulonglong(b.samples))
-                             .arg(qulonglong(b.frames))
-                             .arg(qulonglong(b.pixels))
-                             .arg(qulonglong(diff.cells.size()))
-                             .arg(qulonglong(m_ambiguous.size())));
+        m_pending = std::move(b);
+        emit buildReady();
     });
+}
+
+std::vector<CellChange> SamplesDocument::buildChanges(BuildMode mode) const
+{
+    if (!m_pending)
+        return {};
+    if (mode == BuildMode::Replace)
+        return diffLuts(m_lut.table(), m_pending->table).cells;
+    std::vector<Colour> classes;
+    for (int c = 1; c < kColourCount; ++c)
+        classes.push_back(Colour(c));
+    return mergeChanges(m_lut.table(), m_pending->table, classes, /*keep_others=*/true);
+}
+
+void SamplesDocument::applyBuild(BuildMode mode)
+{
+    if (!m_pending)
+        return;
+    std::vector<CellChange> changes = buildChanges(mode);
+    const std::size_t cells = changes.size();
+    const Built b = *std::exchange(m_pending, std::nullopt);
+    m_lut.edit(mode == BuildMode::Replace
+                   ? tr("Build from %1 samples (replace)").arg(qulonglong(b.samples))
+                   : tr("Build from %1 samples (unclassified cells)").arg(qulonglong(b.samples)),
+               std::move(changes));
+    emit built(true, tr("Built from %1 samples on %2 frames (%3 pixels): %4 cells changed, "
+                        "%5 claimed by two classes")
+                         .arg(qulonglong(b.samples))
+                         .arg(qulonglong(b.frames))
+                         .arg(qulonglong(b.pixels))
+                         .arg(qulonglong(cells))
+                         .arg(qulonglong(m_ambiguous.size())));
+}
+
+void SamplesDocument::dropBuild()
+{
+    m_pending.reset();
 }
 
 SamplesDocument::~SamplesDocument()
@@ -73,6 +103,7 @@ Status SamplesDocument::setStream(const QString& spec)
     m_undo.clear();
     m_samples = {};
     m_ambiguous.clear();
+    m_pending.reset();
     m_path_unreadable = false;
     m_load_problem.clear();
     m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
@@ -132,9 +163,10 @@ void SamplesDocument::setSamples(std::vector<LutSample> samples, const QString& 
 Result<SamplesDocument::Built>
 SamplesDocument::buildTable(const std::string& stream, const LutSamples& samples,
                             bool with_annotations, std::atomic<bool>* cancel,
-                            std::atomic<std::size_t>* done, std::atomic<std::size_t>* total)
+                            std::atomic<std::size_t>* done, std::atomic<std::size_t>* total,
+                            const StreamOptions& stream_options)
 {
-    auto reader = openStream(stream);
+    auto reader = openStream(stream, stream_options);
     if (!reader)
         return reader.error();
     std::vector<LutSample> all;
@@ -179,8 +211,8 @@ void SamplesDocument::build(bool with_annotations)
     m_done = 0;
     m_total = 0;
     m_watcher.setFuture(QtConcurrent::run(&SamplesDocument::buildTable, toLocalPath(m_stream),
-                                          m_samples, with_annotations, &m_cancel, &m_done,
-                                          &m_total));
+                                          m_samples, with_annotations, &m_cancel, &m_done, &m_total,
+                                          m_options));
 }
 
 } // namespace fieldsight::ui

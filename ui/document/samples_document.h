@@ -14,6 +14,7 @@
 #include <QUndoStack>
 
 #include <atomic>
+#include <optional>
 
 namespace fieldsight::ui {
 
@@ -31,6 +32,9 @@ public:
     /// Why the stream's samples file could not be read (empty when it could, or there is none).
     QString loadProblem() const { return m_load_problem; }
     QString path() const { return m_path; }
+    /// How builds open the stream: turned as the window shows it, so the samples' rectangles
+    /// (drawn on the shown frames) cover the same pixels.
+    void setStreamOptions(StreamOptions options) { m_options = options; }
     const LutSamples& samples() const { return m_samples; }
     QUndoStack& undoStack() { return m_undo; }
     /// Adds a rectangle of frame `frame` whose pixels show `colour` (undoable; saved at once).
@@ -38,9 +42,21 @@ public:
     /// Replaces every sample (undoable; saved at once).
     void setSamples(std::vector<LutSample> samples, const QString& text);
 
-    /// Builds from the samples (and the stream's annotations as samples) on a worker thread; the
-    /// table then replaces the LUT as one undoable edit.
+    /// Builds from the samples (and the stream's annotations as samples) on a worker thread;
+    /// buildReady() then says a built table waits to be applied (or dropped).
     void build(bool with_annotations);
+    /// How a built table goes into the LUT.
+    enum class BuildMode {
+        OnlyUnclassified, ///< fills the cells the LUT leaves unclassified; others stay
+        Replace,          ///< the LUT becomes the built table
+    };
+    bool hasBuild() const { return m_pending.has_value(); }
+    /// What applying the waiting build in `mode` would change in the LUT.
+    std::vector<CellChange> buildChanges(BuildMode mode) const;
+    /// Applies the waiting build as one undoable LUT edit; built() reports it.
+    void applyBuild(BuildMode mode);
+    /// Drops the waiting build: the LUT is unchanged.
+    void dropBuild();
     bool building() const { return m_watcher.isRunning(); }
     void cancel() { m_cancel = true; }
     /// Frames read so far and frames to read, while building.
@@ -60,11 +76,13 @@ public:
     /// The build itself (any thread): reads the stream, votes, smooths.
     static Result<Built> buildTable(const std::string& stream, const LutSamples& samples,
                                     bool with_annotations, std::atomic<bool>* cancel,
-                                    std::atomic<std::size_t>* done,
-                                    std::atomic<std::size_t>* total);
+                                    std::atomic<std::size_t>* done, std::atomic<std::size_t>* total,
+                                    const StreamOptions& stream_options = {});
 
 signals:
     void samplesChanged();
+    /// A build finished and waits for applyBuild() or dropBuild().
+    void buildReady();
     /// A build finished (`summary` says what it did), or failed (`summary` says why).
     void built(bool ok, const QString& summary);
     void problem(const QString& message);
@@ -75,6 +93,7 @@ private:
 
     LutDocument& m_lut;
     QString m_stream;
+    StreamOptions m_options;
     QString m_path;
     bool m_path_unreadable = false; ///< the file there was refused: set aside before a save
     QString m_load_problem;
@@ -85,6 +104,7 @@ private:
     std::atomic<std::size_t> m_done{0};
     std::atomic<std::size_t> m_total{0};
     std::vector<AmbiguousCell> m_ambiguous;
+    std::optional<Built> m_pending;
 };
 
 } // namespace fieldsight::ui

@@ -24,7 +24,48 @@ std::string local(const QString& s)
     return toLocalPath(s);
 }
 
+QString orientationName(Orientation o)
+{
+    switch (o) {
+    case Orientation::Upright:
+        return QObject::tr("as stored");
+    case Orientation::Clockwise90:
+        return QObject::tr("90° clockwise");
+    case Orientation::Half:
+        return QObject::tr("180°");
+    case Orientation::Clockwise270:
+        return QObject::tr("90° anticlockwise");
+    }
+    return {};
+}
+
 } // namespace
+
+/// Turning the open stream's pictures: redo and undo open it turned the other way.
+class OrientationCommand : public QUndoCommand
+{
+public:
+    OrientationCommand(StreamDocument& doc, Orientation from, Orientation to,
+                       std::unique_ptr<StreamReader> opened)
+        : QUndoCommand(QObject::tr("Orientation: %1").arg(orientationName(to))), m_doc(doc),
+          m_from(from), m_to(to), m_opened(std::move(opened))
+    {
+    }
+    void redo() override { turn(m_to); }
+    void undo() override { turn(m_from); }
+
+private:
+    void turn(Orientation o)
+    {
+        // The first redo uses the reader opened (and checked) before the command was pushed.
+        if (Status s = m_doc.applyOrientation(o, std::move(m_opened)); !s)
+            emit m_doc.problem(QString::fromStdString(s.error().message));
+    }
+
+    StreamDocument& m_doc;
+    Orientation m_from, m_to;
+    std::unique_ptr<StreamReader> m_opened;
+};
 
 StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
                                PipelineSettings& settings, QObject* parent)
@@ -47,10 +88,12 @@ StreamDocument::~StreamDocument()
     delete m_worker;
 }
 
-Result<std::shared_ptr<OpenedStream>>
-StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeline& pipeline)
+Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& spec,
+                                                                 const QString& lut,
+                                                                 const Pipeline& pipeline,
+                                                                 const StreamOptions& options)
 {
-    auto reader = openStream(local(spec));
+    auto reader = openStream(local(spec), options);
     if (!reader)
         return reader.error();
     auto opened = std::make_shared<OpenedStream>();
@@ -71,11 +114,21 @@ StreamDocument::openSource(const QString& spec, const QString& lut, const Pipeli
         opened->lut = std::make_shared<const ColourLut>();
         opened->warnings << spec + QStringLiteral(": no LUT given and none beside the stream; "
                                                   "every pixel is unclassified");
-    } else {
-        auto table = importLut(local(opened->lut_path));
-        if (!table)
-            return table.error();
+        opened->lut_problem = true;
+    } else if (auto table = importLut(local(opened->lut_path)); table) {
         opened->lut = std::make_shared<const ColourLut>(std::move(table).value());
+    } else if (lut.isEmpty()) {
+        // The stream's own table is damaged: the stream still opens, with an empty table that
+        // is not tied to the damaged file, so no save can write over it without asking.
+        opened->warnings << QString::fromStdString(table.error().message) +
+                                QStringLiteral("; the stream opened with an empty table, and that "
+                                               "file is left as it is (Save LUT As writes "
+                                               "another, or replaces it if you choose it)");
+        opened->lut_path.clear();
+        opened->lut = std::make_shared<const ColourLut>();
+        opened->lut_problem = true;
+    } else {
+        return table.error(); // a table the user chose: say why it cannot be used
     }
     // A live camera gets its own DataWrapper, capturing from here on; a file stream its reader.
     if (opened->info.kind == StreamKind::Camera)
@@ -105,6 +158,7 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
         m_worker->release(std::move(m_stream->source)); // closed on the worker thread
     m_stream = std::move(opened);
     m_stream->lut.reset(); // the LUT document's now
+    m_undo.clear();        // the orientations of the stream before
     m_index = 0;
     m_current.reset();
     m_answered = m_serial;
@@ -126,6 +180,74 @@ QString StreamDocument::frameName(std::size_t index) const
     if (!m_stream || index >= m_stream->names.size())
         return QString();
     return fromLocalPath(m_stream->names[index]);
+}
+
+Status StreamDocument::setOrientation(Orientation o)
+{
+    if (!m_stream)
+        return Error{"no stream is open to turn"};
+    if (live())
+        return Error{local(m_stream->spec) + ": a live camera's frames cannot be turned"};
+    if (o == orientation())
+        return {};
+    // Opened first, so a stream that can no longer be read leaves no command behind.
+    auto reader = openStream(local(m_stream->spec), StreamOptions{o});
+    if (!reader)
+        return reader.error();
+    m_undo.push(new OrientationCommand(*this, orientation(), o, std::move(reader).value()));
+    return {};
+}
+
+Status StreamDocument::applyOrientation(Orientation o, std::unique_ptr<StreamReader> reader)
+{
+    if (!m_stream || live())
+        return Error{"no stream is open to turn"};
+    if (!reader) {
+        auto opened = openStream(local(m_stream->spec), StreamOptions{o});
+        if (!opened)
+            return opened.error();
+        reader = std::move(opened).value();
+    }
+    // The frames, bookmarks and the navigator keep their indices only over the same frames.
+    if (reader->info().frame_count != m_stream->info.frame_count)
+        return Error{local(m_stream->spec) + ": the stream has changed since it was opened (" +
+                     std::to_string(reader->info().frame_count) + " frames, was " +
+                     std::to_string(m_stream->info.frame_count) + "); open it again to turn it"};
+    // A new source: what the worker prepared or keeps for the old one is never shown again.
+    auto stream = std::make_shared<OpenedStream>(*m_stream);
+    stream->source = std::make_shared<FrameSource>();
+    stream->source->annotations = m_stream->source->annotations;
+    stream->source->truth = m_stream->source->truth;
+    stream->info = reader->info();
+    stream->names.clear();
+    for (std::size_t i = 0; i < stream->info.frame_count; ++i)
+        stream->names.push_back(reader->frameName(i));
+    stream->source->reader = std::move(reader);
+    m_worker->release(std::move(m_stream->source));
+    m_stream = std::move(stream);
+    m_first_serial = m_serial + 1; // answers for the old source are dropped
+    emit orientationChanged();
+    submit();
+    return {};
+}
+
+bool StreamDocument::canSaveOrientation() const
+{
+    return hasStream() && info().kind == StreamKind::ImageFolder &&
+           std::filesystem::is_directory(local(m_stream->spec));
+}
+
+Status StreamDocument::saveOrientation()
+{
+    if (!canSaveOrientation())
+        return Error{(m_stream ? local(m_stream->spec) : std::string("no stream")) +
+                     ": only a folder of images has a stream.json to keep the orientation in; "
+                     "give --orientation to the commands instead"};
+    if (Status s = writeStreamOrientation(local(m_stream->spec), orientation()); !s)
+        return s;
+    m_stream->info.stream_orientation = orientation();
+    emit orientationChanged();
+    return {};
 }
 
 void StreamDocument::setCurrentIndex(std::size_t index)

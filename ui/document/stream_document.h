@@ -1,6 +1,7 @@
 // The stream document: the open stream, the frame shown and its results. It hands each run to the
 // FrameWorker as a request with the immutable versions the LUT and settings documents hold (it
-// owns neither), and the newest result comes back by signal.
+// owns neither), and the newest result comes back by signal. Turning the stream's pictures
+// upright (its orientation) is a command on its own undo stack.
 #pragma once
 
 #include "ui/document/frame_worker.h"
@@ -9,6 +10,7 @@
 #include <QString>
 #include <QStringList>
 #include <QThread>
+#include <QUndoStack>
 
 #include <map>
 #include <memory>
@@ -24,7 +26,8 @@ struct OpenedStream
     QString lut_path;               ///< empty when no LUT was found
     std::shared_ptr<const ColourLut> lut;
     std::shared_ptr<FrameSource> source;
-    QStringList warnings; ///< what was not found or could not be read, the stream still opens
+    QStringList warnings;     ///< what was not found or could not be read, the stream still opens
+    bool lut_problem = false; ///< no table was found or it was damaged: an empty one is used
 };
 
 class LutDocument;
@@ -46,7 +49,8 @@ public:
     /// with a warning) and its annotations, if it has any. Safe on any thread; errors name the
     /// file and the problem.
     static Result<std::shared_ptr<OpenedStream>> openSource(const QString& spec, const QString& lut,
-                                                            const Pipeline& pipeline);
+                                                            const Pipeline& pipeline,
+                                                            const StreamOptions& options = {});
     /// Makes `opened` the document's stream and runs its first frame (the table it was opened
     /// with is the LUT document's to take: EditingSession::adopt).
     void adopt(std::shared_ptr<OpenedStream> opened);
@@ -59,6 +63,28 @@ public:
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }
     QString frameName(std::size_t index) const;
     QStringList warnings() const { return m_stream ? m_stream->warnings : QStringList(); }
+    /// The stream opened with an empty table because its own was missing or damaged.
+    bool lutProblem() const { return m_stream && m_stream->lut_problem; }
+
+    /// How far the stream's stored pictures are turned clockwise before anything sees them (the
+    /// frames, results, tools and scans are all in that upright frame).
+    Orientation orientation() const { return info().orientation; }
+    /// Turns the stream's pictures by `o` instead (an undoable command): the current frame is
+    /// run again, upright. Not for a live camera; an Error names the stream and the problem (the
+    /// orientation is then as it was).
+    Status setOrientation(Orientation o);
+    /// The stream's manifest (stream.json) can keep its orientation: an image folder.
+    bool canSaveOrientation() const;
+    /// Writes the orientation in use into the stream's stream.json (atomically, other keys kept),
+    /// so it opens that way next time; a read-only folder or a manifest that cannot be read is
+    /// refused with the reason, nothing written.
+    Status saveOrientation();
+    /// The orientation in use is not the one the stream's manifest says.
+    bool orientationUnsaved() const
+    {
+        return hasStream() && info().orientation != info().stream_orientation;
+    }
+    QUndoStack& undoStack() { return m_undo; }
 
     std::size_t currentIndex() const { return m_index; }
     /// Shows frame `index` (clamped to the stream); the newest request supersedes older ones.
@@ -89,11 +115,19 @@ public:
 
 signals:
     void streamChanged();
+    /// The pictures are turned another way (or the orientation was saved); a frame follows.
+    void orientationChanged();
+    /// An undo or redo could not reopen the stream (it stays as it was).
+    void problem(const QString& message);
     void currentIndexChanged(std::size_t index);
     void frameReady();
     void meansReset();
 
 private:
+    friend class OrientationCommand;
+    /// Makes `reader` (the stream opened turned another way; null: open it here with `o`) the
+    /// one frames are read from, keeping the frame shown.
+    Status applyOrientation(Orientation o, std::unique_ptr<StreamReader> reader = nullptr);
     void submit();
     /// What the current frame with the current table and settings asks of the worker.
     FrameRequest request() const;
@@ -107,6 +141,7 @@ private:
 
     std::shared_ptr<OpenedStream> m_stream;
     std::size_t m_index = 0;
+    QUndoStack m_undo; ///< orientation changes of the open stream
 
     std::uint64_t m_serial = 0;
     std::uint64_t m_answered = 0;

@@ -7,9 +7,11 @@
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QCursor>
 #include <QToolTip>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -109,6 +111,7 @@ void FrameView::setZoom(double zoom, QPointF anchor)
     m_fit = false;
     emit zoomChanged(m_zoom);
     update();
+    followPointer();
 }
 
 void FrameView::zoomIn()
@@ -126,6 +129,7 @@ void FrameView::fitToWindow()
     m_fit = true;
     applyFit();
     update();
+    followPointer();
 }
 
 void FrameView::applyFit()
@@ -152,6 +156,22 @@ void FrameView::setImageOrigin(QPoint origin)
     m_origin = origin;
     m_fit = false;
     update();
+    followPointer();
+}
+
+void FrameView::followPointer()
+{
+    // The image moved under a still pointer (a zoom key, fit): the tool's preview and the
+    // brush outline follow the pixel now under it, or go when there is none.
+    const QPointF at = mapFromGlobal(QCursor::pos());
+    const std::optional<QPoint> pixel =
+        underMouse() && rect().contains(at.toPoint()) ? pixelAt(at) : std::nullopt;
+    if (pixel != m_cursor_pixel) {
+        m_cursor_pixel = pixel;
+        update();
+    }
+    if (m_tools)
+        m_tools->hover(pixel);
 }
 
 std::optional<QPointF> FrameView::imagePoint(QPointF pos) const
@@ -253,16 +273,50 @@ void FrameView::paintEvent(QPaintEvent*)
             QFont font = p.font();
             font.setPointSizeF(8);
             p.setFont(font);
+            // On a crowded frame a label that would cover another moves down a line, so every
+            // one stays readable.
+            std::vector<QRectF> placed;
             for (const PerceptItem& item : m_output->items) {
                 if (!m_visible.count(item.layer))
                     continue;
-                const QPointF at(panelX(0) + (item.bounds.left() + 0.5) * m_zoom,
-                                 m_origin.y() + (item.bounds.top() + 0.5) * m_zoom - 4);
-                const QRectF box =
-                    p.fontMetrics().boundingRect(item.label).translated(at.toPoint());
-                p.fillRect(box.adjusted(-2, 0, 2, 0), QColor(0, 0, 0, 160));
+                QPointF at(panelX(0) + (item.bounds.left() + 0.5) * m_zoom,
+                           m_origin.y() + (item.bounds.top() + 0.5) * m_zoom - 4);
+                QRectF box = p.fontMetrics()
+                                 .boundingRect(item.label)
+                                 .translated(at.toPoint())
+                                 .adjusted(-2, 0, 2, 0);
+                const auto covers = [&placed](const QRectF& r) {
+                    return std::any_of(placed.begin(), placed.end(),
+                                       [&r](const QRectF& q) { return q.intersects(r); });
+                };
+                for (int line = 0; line < 12 && covers(box); ++line) {
+                    box.translate(0, box.height() + 1);
+                    at.ry() += box.height() + 1;
+                }
+                placed.push_back(box);
+                p.fillRect(box, QColor(0, 0, 0, 160));
                 p.drawText(at, item.label);
             }
+        }
+    }
+    // The tool's shapes (sample regions): a dark edge under the class colour, so a region
+    // shows on any background; the selected one thicker, its corners marked.
+    if (m_tools && m_output) {
+        const ToolOutline outline = m_tools->active().outline();
+        for (const OutlineShape& shape : outline.shapes) {
+            QPolygonF at;
+            for (const QPoint& q : shape.polygon)
+                at << QPointF(panelX(0) + (q.x() + 0.5) * m_zoom,
+                              m_origin.y() + (q.y() + 0.5) * m_zoom);
+            const double width = shape.selected ? 3 : 1.5;
+            p.setBrush(Qt::NoBrush);
+            p.setPen(QPen(QColor(0, 0, 0, 200), width + 2));
+            p.drawPolygon(at);
+            p.setPen(QPen(shape.colour, width));
+            p.drawPolygon(at);
+            if (shape.selected)
+                for (const QPointF& corner : at)
+                    p.fillRect(QRectF(corner - QPointF(3, 3), QSizeF(7, 7)), Qt::white);
         }
     }
     // The brush under the cursor: a circle through the outer pixels' centres, in every panel.
@@ -336,6 +390,7 @@ void FrameView::setTools(ToolManager* tools)
         update();
     };
     connect(tools, &ToolManager::activeChanged, this, follow);
+    connect(tools, &ToolManager::outlineChanged, this, qOverload<>(&QWidget::update));
     connect(&tools->settings(), &LutToolSettings::changed, this, qOverload<>(&QWidget::update));
     // What the tool would change, lit in the image (kept across frames until it changes).
     connect(tools, &ToolManager::previewChanged, this, [this] {
@@ -423,7 +478,10 @@ bool FrameView::event(QEvent* event)
 {
     if (event->type() == QEvent::ToolTip) {
         const auto* help = static_cast<QHelpEvent*>(event);
-        if (const PerceptItem* item = itemAt(help->pos()))
+        // A detection's tip only while looking (the pan tool): over an editing tool it would
+        // cover the pixels being classified (its details are in the Detections dock).
+        const bool looking = !m_tools || m_tools->active().pans();
+        if (const PerceptItem* item = looking ? itemAt(help->pos()) : nullptr)
             QToolTip::showText(help->globalPos(), item->details, this);
         else
             QToolTip::hideText();

@@ -89,6 +89,7 @@ protected:
     bool event(QEvent* event) override;
 
 private:
+    void followPointer();
     QSize imageSize() const;
     int panelCount() const { return m_mode == ViewMode::SideBySide ? 2 : 1; }
     /// Widget x of panel `panel`'s image origin.

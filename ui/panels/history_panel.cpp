@@ -22,6 +22,9 @@ HistoryPanel::HistoryPanel(EditingSession& session, QWidget* parent)
     view->setObjectName(QStringLiteral("history.view"));
     view->setEmptyLabel(tr("<as opened>"));
     column->addWidget(view, 1);
+    // The newest edit stays in sight, however long the history grows.
+    connect(&session.undoGroup(), &QUndoGroup::indexChanged, view,
+            [view] { view->scrollTo(view->currentIndex()); });
 
     connect(m_documents, &QComboBox::activated, this, [this](int i) {
         m_session.undoGroup().setActiveStack(m_session.undoDocuments()[std::size_t(i)].stack);

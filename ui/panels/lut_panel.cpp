@@ -2,6 +2,9 @@
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/dialogs/dialogs.h"
+#include "ui/widgets/wheel_guard.h"
+
+#include "visioncore/services/lut_compare.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -11,6 +14,7 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -20,6 +24,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <array>
 #include <set>
 
 namespace fieldsight::ui {
@@ -40,6 +45,43 @@ QSpinBox* spinBox(QWidget* parent, const QString& name, int max)
     return box;
 }
 
+QString number(std::size_t n)
+{
+    return QLocale().toString(qulonglong(n));
+}
+
+/// What `changes` would do to `lut`: cells gained and lost per class, and the pixels of `frame`
+/// (if any) whose class changes.
+QString changeSummary(const ColourLut& lut, const std::vector<CellChange>& changes,
+                      const cv::Mat* frame)
+{
+    std::array<std::size_t, kColourCount> gained{};
+    std::array<std::size_t, kColourCount> lost{};
+    for (const CellChange& c : changes) {
+        ++gained[std::size_t(c.after)];
+        ++lost[std::size_t(c.before)];
+    }
+    QStringList classes;
+    for (int c = 1; c < kColourCount; ++c) {
+        QStringList parts;
+        if (gained[std::size_t(c)] > 0)
+            parts << QStringLiteral("+") + number(gained[std::size_t(c)]);
+        if (lost[std::size_t(c)] > 0)
+            parts << QStringLiteral("\u2212") + number(lost[std::size_t(c)]);
+        if (!parts.isEmpty())
+            classes << colourLabel(Colour(c)) + QLatin1Char(' ') + parts.join(QLatin1Char(' '));
+    }
+    QString text = LutPanel::tr("%1 cells").arg(number(changes.size()));
+    if (!classes.isEmpty())
+        text += QStringLiteral(" (") + classes.join(QStringLiteral(", ")) + QLatin1Char(')');
+    if (frame) {
+        const PixelTally tally = PixelTallier(lut, CellMask::of(changes))(*frame);
+        text += LutPanel::tr("; %1 of this frame's %2 pixels change class")
+                    .arg(number(tally.in_mask), number(tally.pixels));
+    }
+    return text;
+}
+
 } // namespace
 
 LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& samples,
@@ -50,21 +92,24 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     LutToolSettings& settings = m_tools.settings();
     auto* column = new QVBoxLayout(this);
 
-    // The palette: a button per class; keys 0-9 choose the first ten.
+    // The palette: a button per class in id order, each showing its key (0-9, then '-').
     auto* palette = new QGridLayout;
     m_colours = new QActionGroup(this);
     m_colours->setExclusive(true);
     for (int c = 0; c < kColourCount; ++c) {
-        auto* action = new QAction(colourSwatch(Colour(c)), colourLabel(Colour(c)), this);
-        action->setObjectName(QStringLiteral("colour.%1").arg(colourLabel(Colour(c))));
+        const QKeySequence key = c <= 9 ? QKeySequence(Qt::Key_0 + c) : QKeySequence(Qt::Key_Minus);
+        const QString name = colourLabel(Colour(c));
+        auto* action = new QAction(colourSwatch(Colour(c)), name, this);
+        action->setObjectName(QStringLiteral("colour.%1").arg(name));
         action->setCheckable(true);
         action->setData(c);
-        if (c <= 9) {
-            action->setShortcut(QKeySequence(Qt::Key_0 + c));
-            action->setToolTip(QStringLiteral("%1 (%2)").arg(colourLabel(Colour(c))).arg(c));
-        }
+        action->setShortcut(key);
+        action->setIconText(
+            QStringLiteral("%1  %2").arg(key.toString(QKeySequence::NativeText), name));
+        action->setToolTip(QStringLiteral("%1 (%2)").arg(name, key.toString()));
         m_colours->addAction(action);
         auto* button = new QToolButton(this);
+        button->setObjectName(QStringLiteral("colour_button.%1").arg(name));
         button->setDefaultAction(action);
         button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
         button->setAutoRaise(true);
@@ -82,6 +127,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
         auto* button = new QToolButton(this);
         button->setObjectName(action->objectName());
         button->setDefaultAction(action);
+        button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
         button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
         tool_row->addWidget(button, at / 3, at % 3);
         ++at;
@@ -106,11 +152,23 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
         settings.setTolerance({v, v, v});
     });
     connect(m_radius, &QSpinBox::valueChanged, &settings, &LutToolSettings::setBrushRadius);
-    form->addRow(tr("Tolerance Y"), m_tol_y);
-    form->addRow(tr("Tolerance Cb"), m_tol_cb);
-    form->addRow(tr("Tolerance Cr"), m_tol_cr);
-    form->addRow(tr("All channels"), m_tol_all);
-    form->addRow(tr("Brush radius (px)"), m_radius);
+    // Compact rows, so every control fits the dock at 1280x800 without scrolling.
+    auto* tolerances = new QHBoxLayout;
+    for (const auto& [label, box] : {std::pair{tr("Y"), m_tol_y}, std::pair{tr("Cb"), m_tol_cb},
+                                     std::pair{tr("Cr"), m_tol_cr}}) {
+        auto* name = new QLabel(label, this);
+        name->setBuddy(box);
+        tolerances->addWidget(name);
+        tolerances->addWidget(box, 1);
+    }
+    form->addRow(tr("Tolerance"), tolerances);
+    auto* all_row = new QHBoxLayout;
+    all_row->addWidget(m_tol_all, 2);
+    auto* brush_label = new QLabel(tr("Brush (px)"), this);
+    brush_label->setBuddy(m_radius);
+    all_row->addWidget(brush_label);
+    all_row->addWidget(m_radius, 1);
+    form->addRow(tr("All"), all_row);
     m_keep_others = new QCheckBox(tr("Only unclassified cells"), this);
     m_keep_others->setObjectName(QStringLiteral("keep_others"));
     m_keep_others->setToolTip(tr("Leave cells that already belong to another class as they are"));
@@ -171,18 +229,33 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     };
     connect(&m_samples, &SamplesDocument::samplesChanged, this, describe);
     describe();
+    connect(&m_samples, &SamplesDocument::buildReady, this, &LutPanel::askApplyBuild);
     connect(&m_samples, &SamplesDocument::built, this, [this](bool ok, const QString& summary) {
         m_samples_info->setText(summary);
         if (!ok)
             emit problem(summary);
     });
 
-    auto* retarget_button = new QPushButton(tr("Retarget to this frame's field…"), this);
+    auto* retarget_button = new QPushButton(tr("Retarget to field…"), this);
     retarget_button->setObjectName(QStringLiteral("retarget"));
     retarget_button->setToolTip(tr("At a new venue: move the whole table by the shift between "
                                    "its green and the field at the bottom of this frame"));
     connect(retarget_button, &QPushButton::clicked, this, &LutPanel::askRetarget);
-    column->addWidget(retarget_button);
+
+    auto* clear = new QPushButton(tr("Clear class"), this);
+    clear->setObjectName(QStringLiteral("clear_class"));
+    clear->setToolTip(tr("Every cell of the chosen class becomes unclassified (one undo step)"));
+    connect(clear, &QPushButton::clicked, this, [this] {
+        const Colour colour = m_tools.settings().colour();
+        const std::size_t cells = clearClass(colour);
+        emit notice(cells == 0 ? tr("The table has no %1 cells").arg(colourLabel(colour))
+                               : tr("Cleared %1 %2 cells (Ctrl+Z undoes it)")
+                                     .arg(number(cells), colourLabel(colour)));
+    });
+    auto* table_row = new QHBoxLayout;
+    table_row->addWidget(retarget_button);
+    table_row->addWidget(clear);
+    column->addLayout(table_row);
 
     m_preview_label = new QLabel(this);
     m_preview_label->setObjectName(QStringLiteral("lut_preview"));
@@ -201,6 +274,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     showSettings();
     connect(&m_lut, &LutDocument::changed, this, &LutPanel::refreshStats);
     refreshStats();
+    guardWheel(this);
 }
 
 void LutPanel::showSettings()
@@ -252,6 +326,28 @@ void LutPanel::buildFromSamples()
     poll->start(100);
 }
 
+void LutPanel::askApplyBuild()
+{
+    using Mode = SamplesDocument::BuildMode;
+    const cv::Mat* frame = currentFrame(m_stream);
+    const QString text =
+        tr("The table built from the samples would change:\n\n"
+           "Only unclassified cells: %1.\n\nReplace the table: %2.\n\n"
+           "Either is one undo step.")
+            .arg(
+                changeSummary(m_lut.table(), m_samples.buildChanges(Mode::OnlyUnclassified), frame),
+                changeSummary(m_lut.table(), m_samples.buildChanges(Mode::Replace), frame));
+    const int answer =
+        Dialogs::current().choice(this, tr("Build from samples"), text,
+                                  {tr("Only unclassified cells"), tr("Replace the table")}, 0);
+    if (answer < 0) {
+        m_samples.dropBuild();
+        m_samples_info->setText(tr("Build not applied; the LUT is unchanged"));
+        return;
+    }
+    m_samples.applyBuild(answer == 0 ? Mode::OnlyUnclassified : Mode::Replace);
+}
+
 ColourShift LutPanel::estimateRetarget(std::size_t* samples) const
 {
     std::vector<cv::Vec3b> field;
@@ -268,6 +364,20 @@ bool LutPanel::retarget(const ColourShift& shift)
 {
     return m_lut.edit(tr("Retarget by Y %1, Cb %2, Cr %3").arg(shift.y).arg(shift.cb).arg(shift.cr),
                       shiftChanges(m_lut.table(), shift));
+}
+
+std::size_t LutPanel::clearClass(Colour colour)
+{
+    if (colour == Colour::Unclassified)
+        return 0;
+    std::vector<CellChange> changes;
+    const std::uint8_t* cells = m_lut.table().data();
+    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
+        if (cells[i] == std::uint8_t(colour))
+            changes.push_back({std::uint32_t(i), colour, Colour::Unclassified});
+    const std::size_t n = changes.size();
+    m_lut.edit(tr("Clear %1").arg(colourLabel(colour)), std::move(changes));
+    return n;
 }
 
 void LutPanel::askRetarget()

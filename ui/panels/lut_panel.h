@@ -1,8 +1,8 @@
-// The LUT editor's dock: the class palette (keys 0-9), a button per tool (from the tool list),
-// the shared tool settings (tolerance per channel and for all, brush size, keep other classes,
-// soft classes, preview), what the tool would change under the cursor, the samples and the build
-// from them, retargeting to a venue's light, and the cells per class. It edits nothing itself:
-// the tools and the documents' commands do.
+// The LUT editor's dock: the class palette (keys 0-9 and -), a button per tool (from the tool
+// list), the shared tool settings (tolerance per channel and for all, brush size, keep other
+// classes, soft classes, preview), what the tool would change under the cursor, the samples and the
+// build from them, retargeting to a venue's light, and the cells per class. It edits nothing
+// itself: the tools and the documents' commands do.
 #pragma once
 
 #include "ui/document/lut_document.h"
@@ -27,24 +27,30 @@ public:
     LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& samples, ToolManager& tools,
              QWidget* parent = nullptr);
 
-    /// The palette's actions (one per class, keys 0-9), for the window's menu.
+    /// The palette's actions (one per class, keys 0-9 and -), for the window's menu.
     QList<QAction*> colourActions() const;
     /// Retargeting to a venue: the shift that moves the table's green onto the current frame's
     /// field, taken as the bottom third of the frame (`samples`: how many pixels that was).
     ColourShift estimateRetarget(std::size_t* samples = nullptr) const;
     /// Moves the whole table by `shift` as one undoable edit; false when nothing changes.
     bool retarget(const ColourShift& shift);
+    /// Makes every cell of `colour` unclassified, as one undoable edit; the cells it cleared.
+    std::size_t clearClass(Colour colour);
     /// Asks (showing the estimate and the cells it moves) and retargets.
     void askRetarget();
-    /// Builds from the samples in the background, with a progress dialog.
+    /// Builds from the samples in the background, with a progress dialog; then asks how the
+    /// built table goes in (only unclassified cells, or replace), showing what each changes.
     void buildFromSamples();
 
 signals:
     void problem(const QString& message);
+    /// What an action did, for the window's message bar.
+    void notice(const QString& message);
     /// Cells to outline in the UV plane (the last build's ambiguous cells).
     void cellsToOutline(const std::vector<std::uint32_t>& cells);
 
 private:
+    void askApplyBuild();
     /// The widgets show the shared settings.
     void showSettings();
     void refreshStats();

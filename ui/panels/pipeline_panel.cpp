@@ -1,5 +1,7 @@
 #include "ui/panels/pipeline_panel.h"
 
+#include "ui/widgets/wheel_guard.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -181,6 +183,7 @@ PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& setting
     column->addStretch(1);
     scroll->setWidget(inner);
     outer->addWidget(scroll, 1);
+    guardWheel(inner);
 
     connect(&m_settings, &PipelineSettings::changed, this, &PipelinePanel::refreshValues);
     connect(&m_doc, &StreamDocument::frameReady, this, &PipelinePanel::refreshTimes);

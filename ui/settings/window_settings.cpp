@@ -81,6 +81,8 @@ WindowSettings WindowSettings::load()
     w.loop = s.value(QStringLiteral("play/loop"), false).toBool();
     for (const QVariant& path : s.value(QStringLiteral("recent/streams")).toList())
         w.recent << pathFromSetting(path);
+    for (const QVariant& frame : s.value(QStringLiteral("recent/frames")).toList())
+        w.recent_frames << std::max(0, frame.toInt());
     w.stream = pathFromSetting(s.value(QStringLiteral("session/stream")));
     w.lut = pathFromSetting(s.value(QStringLiteral("session/lut")));
     w.tool = s.value(QStringLiteral("tools/active")).toString();
@@ -115,6 +117,10 @@ void WindowSettings::save() const
     for (const QString& path : recent)
         paths << pathSetting(path);
     s.setValue(QStringLiteral("recent/streams"), paths);
+    QVariantList frames;
+    for (int frame : recent_frames)
+        frames << frame;
+    s.setValue(QStringLiteral("recent/frames"), frames);
     if (!stream.isEmpty()) {
         s.setValue(QStringLiteral("session/stream"), pathSetting(stream));
         s.setValue(QStringLiteral("session/lut"), pathSetting(lut));

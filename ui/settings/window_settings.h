@@ -23,10 +23,11 @@ struct WindowSettings
     bool labels = true;
     int fps = 30;
     bool loop = false;
-    QStringList recent; ///< newest first
-    QString stream;     ///< the last session's stream (empty: none)
-    QString lut;        ///< and its table (empty: the stream's own)
-    QString tool;       ///< the active tool's id
+    QStringList recent;       ///< newest first
+    QList<int> recent_frames; ///< the frame each recent stream was last on
+    QString stream;           ///< the last session's stream (empty: none)
+    QString lut;              ///< and its table (empty: the stream's own)
+    QString tool;             ///< the active tool's id
     Tolerance tolerance{8, 4, 4};
     int brush_radius = 2;
     bool keep_others = false;

@@ -88,7 +88,12 @@ QString EffectStrip::summary() const
     }
     const QLocale locale;
     QString text;
-    if (m_scan.showsEdit()) {
+    if (m_scan.showsEdit() && m_scan.showsSettingsChange() && m_scan.changedCells() == 0) {
+        const QString detections = deltaText(total);
+        text = tr("Last parameter change, over %1 frames: %2")
+                   .arg(locale.toString(qulonglong(effects.size())),
+                        detections.isEmpty() ? tr("no detection changed") : detections);
+    } else if (m_scan.showsEdit()) {
         text = tr("Last edit (%1 cells): %2 pixels changed class in %3 of %4 frames")
                    .arg(locale.toString(qulonglong(m_scan.changedCells())),
                         locale.toString(qulonglong(pixels)),
@@ -208,7 +213,12 @@ bool EffectStrip::event(QEvent* event)
         }
         text = line + QLatin1Char('\n') + text;
     }
-    QToolTip::showText(help->globalPos(), text, this);
+    // Rich text, so Qt wraps a long summary instead of running it off the screen.
+    QToolTip::showText(help->globalPos(),
+                       QStringLiteral("<p>") +
+                           text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")) +
+                           QStringLiteral("</p>"),
+                       this);
     return true;
 }
 

@@ -175,7 +175,9 @@ ToolPreview LutEditTool::preview(std::optional<QPoint> pixel) const
 
 ToolOutline LutEditTool::outline() const
 {
-    return {brushOutline() ? m_context.settings.brushRadius() : -1};
+    ToolOutline outline;
+    outline.brush_radius = brushOutline() ? m_context.settings.brushRadius() : -1;
+    return outline;
 }
 
 } // namespace fieldsight::ui

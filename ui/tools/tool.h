@@ -7,7 +7,9 @@
 
 #include "visioncore/services/lut_editing.h"
 
+#include <QColor>
 #include <QCursor>
+#include <QPolygon>
 #include <QKeySequence>
 #include <QObject>
 #include <QPoint>
@@ -57,9 +59,18 @@ struct ToolPreview
 };
 
 /// Drawn around the cursor.
+/// A shape a tool shows over the image (a sample region, later an annotation).
+struct OutlineShape
+{
+    QPolygon polygon; ///< image px, corner pixels inclusive
+    QColor colour;
+    bool selected = false; ///< drawn thicker, with its corners marked
+};
+
 struct ToolOutline
 {
     int brush_radius = -1; ///< image px (UV plane: cells); < 0: no brush outline
+    std::vector<OutlineShape> shapes;
 };
 
 /// What the window shows of a tool: its button, menu item and shortcut.
@@ -103,6 +114,9 @@ public:
         return {};
     }
     virtual QCursor cursor() const { return Qt::CrossCursor; }
+    /// Edit > Delete: removes what the tool has selected (as an undoable edit); false when
+    /// nothing was selected.
+    virtual bool deleteSelection() { return false; }
     virtual ToolOutline outline() const { return {}; }
 
 signals:

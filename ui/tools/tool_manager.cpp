@@ -4,8 +4,20 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QFile>
 
 namespace fieldsight::ui {
+
+namespace {
+
+/// The icon compiled in for the tool `id` (resources/icons/tools/<id>.svg), or none.
+QIcon toolIcon(const QString& id)
+{
+    const QString path = QStringLiteral(":/icons/tools/%1.svg").arg(id);
+    return QFile::exists(path) ? QIcon(path) : QIcon();
+}
+
+} // namespace
 
 ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>& tools,
                          QObject* parent)
@@ -16,7 +28,7 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
     for (const ToolFactory& make : tools) {
         std::unique_ptr<Tool> tool = make(m_context);
         const ToolInfo info = tool->info();
-        auto* action = new QAction(info.name, this);
+        auto* action = new QAction(toolIcon(info.id), info.name, this);
         action->setObjectName(QStringLiteral("tool.%1").arg(info.id));
         action->setCheckable(true);
         action->setShortcut(info.shortcut);
@@ -29,8 +41,10 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
         m_actions->addAction(action);
         connect(action, &QAction::triggered, this, [this, id = info.id] { activate(id); });
         connect(tool.get(), &Tool::previewChanged, this, [this, t = tool.get()] {
-            if (t == m_active)
-                refreshPreview();
+            if (t != m_active)
+                return;
+            refreshPreview();
+            emit outlineChanged();
         });
         m_tools.push_back(std::move(tool));
     }
@@ -72,6 +86,7 @@ void ToolManager::activate(const QString& id)
     for (QAction* a : m_actions->actions())
         a->setChecked(a->data().toString() == id);
     emit activeChanged();
+    emit outlineChanged();
     refreshPreview();
 }
 
@@ -96,6 +111,9 @@ void ToolManager::release(const ToolEvent& event)
 {
     if (m_active && m_active->accepts(event.surface))
         m_active->release(event);
+    // The edit is made: what it would change is no longer news until the pointer moves again.
+    m_hover.reset();
+    refreshPreview();
 }
 
 void ToolManager::hover(std::optional<QPoint> pixel)

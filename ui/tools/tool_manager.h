@@ -30,9 +30,12 @@ public:
     const std::vector<std::unique_ptr<Tool>>& tools() const { return m_tools; }
     Tool* find(const QString& id) const;
     Tool& active() const { return *m_active; }
+    /// Edit > Delete: the active tool's selection; false when there was none.
+    bool deleteSelection() { return m_active && m_active->deleteSelection(); }
     /// Makes the tool `id` active (unknown ids are ignored); the first tool is active at first.
     void activate(const QString& id);
-    /// One checkable action per tool, in the tool list's order, with its shortcut.
+    /// One checkable action per tool, in the tool list's order, with its shortcut and the icon
+    /// named by its id in the resources (:/icons/tools/<id>.svg; none when there is no such file).
     QList<QAction*> actions() const;
 
     // From the views.
@@ -46,6 +49,8 @@ public:
     const ToolPreview& preview() const { return m_preview; }
 
 signals:
+    /// The active tool's outline (its shapes) changed.
+    void outlineChanged();
     void activeChanged();
     void previewChanged();
 

@@ -72,9 +72,9 @@ class ImageFolderReader final : public StreamReader
 {
 public:
     ImageFolderReader(StreamInfo info, fs::path folder, std::vector<std::string> files,
-                      std::vector<FrameMeta> meta, PixelFormat format, bool flipped)
+                      std::vector<FrameMeta> meta, PixelFormat format)
         : m_info(std::move(info)), m_folder(std::move(folder)), m_files(std::move(files)),
-          m_meta(std::move(meta)), m_format(format), m_flipped(flipped)
+          m_meta(std::move(meta)), m_format(format)
     {
     }
 
@@ -113,8 +113,6 @@ public:
         if (!isSaneFrameSize(bgr.cols, bgr.rows))
             return Error{path + ": absurd frame size " + std::to_string(bgr.cols) + "x" +
                          std::to_string(bgr.rows)};
-        if (m_flipped)
-            cv::flip(bgr, bgr, -1);
         Frame frame;
         if (m_format == PixelFormat::YCbCr) {
             // The PNG's R, G, B hold Y, Cb, Cr; imread delivers them as B, G, R.
@@ -141,7 +139,6 @@ private:
     std::vector<std::string> m_files;
     std::vector<FrameMeta> m_meta;
     PixelFormat m_format;
-    bool m_flipped = false;
 };
 
 } // namespace
@@ -202,6 +199,7 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     info.fov_deg = manifest.fov_deg;
     std::sort(skipped.begin(), skipped.end(), naturalLess);
     info.warnings = reported(std::move(skipped));
+    info.stream_orientation = manifest.orientation; // openStream turns the frames
     if (manifest.lut) {
         // Named by the manifest: keep it even if missing, so loading it reports the bad name.
         const fs::path lut(*manifest.lut);
@@ -211,8 +209,7 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     }
 
     auto reader = std::make_unique<ImageFolderReader>(std::move(info), folder, std::move(files),
-                                                      std::move(meta), manifest.pixel_format,
-                                                      manifest.flipped);
+                                                      std::move(meta), manifest.pixel_format);
     // The first frame fixes the stream's size; decoding it now also reports a bad file early.
     auto first = reader->decode(0);
     if (!first)

@@ -7,6 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <system_error>
+
+#include <unistd.h>
 
 namespace fieldsight::io {
 
@@ -18,6 +23,30 @@ std::optional<std::array<double, 2>> numberPair(const nlohmann::json& value)
     if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
         return std::nullopt;
     return std::array<double, 2>{value[0].get<double>(), value[1].get<double>()};
+}
+
+/// 0, 90, 180 or 270 as a JSON number (180.0 too).
+std::optional<Orientation> orientationOf(const nlohmann::json& value)
+{
+    if (value.is_number_integer())
+        return orientationFromDegrees(value.get<long long>());
+    if (value.is_number_float()) {
+        const double d = value.get<double>();
+        for (Orientation o : {Orientation::Upright, Orientation::Clockwise90, Orientation::Half,
+                              Orientation::Clockwise270})
+            if (d == double(degrees(o)))
+                return o;
+    }
+    return std::nullopt;
+}
+
+/// A JSON value as a message shows it, cut short.
+std::string shortText(const nlohmann::json& value)
+{
+    std::string text = jsonText(value);
+    if (text.size() > 40)
+        text = text.substr(0, 37) + "...";
+    return text;
 }
 
 Result<Manifest> readManifest(const std::string& path, std::size_t frames)
@@ -51,10 +80,23 @@ Result<Manifest> readManifest(const std::string& path, std::size_t frames)
         else
             return bad("\"pixel_format\" must be \"rgb\" or \"ycbcr\"");
     }
+    std::optional<Orientation> flipped;
     if (const auto it = root.find("flipped"); it != root.end()) {
         if (!it->is_boolean())
             return bad("\"flipped\" must be true or false");
-        manifest.flipped = it->get<bool>();
+        flipped = it->get<bool>() ? Orientation::Half : Orientation::Upright;
+        manifest.orientation = *flipped;
+    }
+    if (const auto it = root.find("orientation"); it != root.end()) {
+        const std::optional<Orientation> o = orientationOf(*it);
+        if (!o)
+            return bad("\"orientation\" must be 0, 90, 180 or 270 (degrees clockwise to turn "
+                       "the pictures upright), not " +
+                       shortText(*it));
+        if (flipped && *flipped != *o)
+            return bad("\"flipped\" (" + shortText(root["flipped"]) + ") and \"orientation\" (" +
+                       orientationText(*o) + ") disagree; \"flipped\": true is orientation 180");
+        manifest.orientation = *o;
     }
     if (const auto it = root.find("lut"); it != root.end()) {
         if (!it->is_string())
@@ -116,3 +158,90 @@ Result<Manifest> parseManifest(const std::string& path, std::size_t frames)
 }
 
 } // namespace fieldsight::io
+
+namespace fieldsight {
+
+namespace {
+
+/// No write permission for anyone, or none for this process (a read-only mount, another
+/// user's folder). A folder made read-only on purpose is respected even by root, who could
+/// write into it.
+bool readOnly(const std::filesystem::path& path)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::perms perms = fs::status(path, ec).permissions();
+    if (ec)
+        return false; // not there: the write itself says why
+    const fs::perms writable =
+        fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    return (perms & writable) == fs::perms::none || ::access(path.c_str(), W_OK) != 0;
+}
+
+} // namespace
+
+namespace {
+
+/// Rewrites the folder's manifest with `change` applied (keeping every other key in its order),
+/// or makes one naming only the format; `what` names the setting in the errors.
+Status updateManifest(const std::string& folder, const std::string& what,
+                      const std::function<void(nlohmann::ordered_json&)>& change)
+{
+    namespace fs = std::filesystem;
+    const fs::path path = fs::path(folder) / io::kManifestName;
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec))
+        return Error{folder + ": not a folder of images; only an image folder has a " +
+                     io::kManifestName + " to keep its " + what + " in"};
+    if (readOnly(folder))
+        return Error{folder + ": the folder is read-only; the " + what + " was not saved"};
+    nlohmann::ordered_json root;
+    if (fs::exists(fs::symlink_status(path, ec))) {
+        // Only a manifest the stream opens with is rewritten: a damaged one stays as it is.
+        std::size_t entries = 0; // at least the frames: the stream's own cap, or more
+        for (fs::directory_iterator it(folder, ec); !ec && it != fs::directory_iterator();
+             it.increment(ec))
+            ++entries;
+        if (auto checked = io::parseManifest(path.string(), entries); !checked)
+            return Error{checked.error().message + "; the " + what + " was not saved"};
+        if (readOnly(path))
+            return Error{path.string() + ": the file is read-only; the " + what + " was not saved"};
+        auto text = readWholeFile(path.string());
+        if (!text)
+            return text.error();
+        auto parsed = parseJson<nlohmann::ordered_json>(text.value(), path.string());
+        if (!parsed)
+            return parsed.error();
+        root = std::move(parsed).value();
+    } else {
+        root["format"] = io::kManifestFormat;
+    }
+    change(root);
+    return writeFileAtomically(path.string(), jsonText(root, 1) + "\n");
+}
+
+} // namespace
+
+Status writeStreamOrientation(const std::string& folder, Orientation o)
+{
+    return updateManifest(folder, "orientation", [o](nlohmann::ordered_json& root) {
+        root.erase("flipped");
+        root["orientation"] = degrees(o);
+    });
+}
+
+Status writeStreamLut(const std::string& folder, const std::string& lut)
+{
+    namespace fs = std::filesystem;
+    // Inside the folder: named relative to it, so the stream can move with its table.
+    std::error_code ec;
+    const fs::path base = fs::weakly_canonical(fs::absolute(folder, ec), ec);
+    const fs::path table = fs::weakly_canonical(fs::absolute(lut, ec), ec);
+    fs::path named = table.lexically_relative(base);
+    if (named.empty() || *named.begin() == "..")
+        named = table;
+    return updateManifest(folder, "table",
+                          [&named](nlohmann::ordered_json& root) { root["lut"] = named.string(); });
+}
+
+} // namespace fieldsight

@@ -4,6 +4,7 @@
 
 #include "visioncore/basics/geometry.h"
 #include "visioncore/basics/result.h"
+#include "visioncore/io/orientation.h"
 
 #include <array>
 #include <cstddef>
@@ -27,7 +28,9 @@ struct FrameMeta
 struct Manifest
 {
     PixelFormat pixel_format = PixelFormat::Rgb;
-    bool flipped = false; ///< images are stored rotated 180 degrees (as .strm's flipped)
+    /// Degrees clockwise the stored pictures are turned to be upright ("orientation"; the older
+    /// "flipped": true is 180, as .strm's flipped).
+    Orientation orientation = Orientation::Upright;
     std::optional<std::string> lut;
     std::optional<std::array<double, 2>> fov_deg;
     std::map<std::string, FrameMeta> frames; ///< by file name

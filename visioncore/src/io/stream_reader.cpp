@@ -38,7 +38,7 @@ std::string besideStream(const std::string& stream, const std::string& name)
 
 Result<std::unique_ptr<StreamReader>> StreamReader::reopen() const
 {
-    return openStream(info().path);
+    return io::openStored(info().path);
 }
 
 namespace io {
@@ -73,7 +73,22 @@ std::string lowercase(std::string s)
 
 } // namespace
 
-Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec)
+Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec,
+                                                 const StreamOptions& options)
+{
+    auto stored = io::openStored(spec);
+    if (!stored)
+        return stored;
+    std::unique_ptr<StreamReader> reader = std::move(stored).value();
+    const Orientation orientation = options.orientation.value_or(reader->info().stream_orientation);
+    if (orientation == Orientation::Upright)
+        return reader;
+    return io::orientReader(std::move(reader), orientation);
+}
+
+namespace io {
+
+ReaderResult openStored(const std::string& spec)
 {
     // OpenCV's own ceiling on decoded pixels (1 Gpx by default) down to what a frame may be
     // (8192 x 8192), for images whose header this reader cannot read first; a user's setting
@@ -122,5 +137,7 @@ Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec)
         return io::openStrm(spec, spec);
     return io::openVideo(spec, spec);
 }
+
+} // namespace io
 
 } // namespace fieldsight

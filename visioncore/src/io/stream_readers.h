@@ -19,6 +19,14 @@ ReaderResult openVideo(const std::string& path, const std::string& spec);
 /// A live camera, read sequentially.
 ReaderResult openCamera(int device, const std::string& spec);
 
+/// `spec` as stored: the pictures as they are in the files, unturned (openStream without the
+/// orientation).
+ReaderResult openStored(const std::string& spec);
+/// `stored` serving its frames, and their horizons, turned by `orientation` (its info says so,
+/// with the size turned).
+std::unique_ptr<StreamReader> orientReader(std::unique_ptr<StreamReader> stored,
+                                           Orientation orientation);
+
 /// Largest accepted frame side, px. Bigger (or zero) sizes mean a corrupt or wrong file.
 inline constexpr int kMaxFrameSide = 8192;
 inline bool isSaneFrameSize(long long width, long long height)

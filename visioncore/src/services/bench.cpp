@@ -239,7 +239,7 @@ void benchBlock(StreamInput& input, Block block, int t, int threads, std::size_t
         block.end = count * std::size_t(t + 1) / std::size_t(threads);
         std::unique_ptr<StreamReader> own;
         if (t > 0) {
-            auto opened = openStream(input.stream);
+            auto opened = input.reader->reopen(); // the same frames, turned alike
             if (!opened) {
                 problems.report(opened.error().message, false);
                 return;

@@ -33,9 +33,10 @@ void lowerThreadPriority()
 
 EditEffectScanner::EditEffectScanner(const Pipeline& pipeline) : m_pipeline(pipeline) {}
 
-void EditEffectScanner::setStream(std::string path)
+void EditEffectScanner::setStream(std::string path, StreamOptions options)
 {
     m_path = std::move(path);
+    m_options = options;
     m_input.reset();
     m_previous.clear();
     m_previous_lut.clear();
@@ -70,7 +71,7 @@ void EditEffectScanner::run(const EditEffectJob& job)
 {
     try {
         if (!m_input) {
-            auto reader = openStream(m_path);
+            auto reader = openStream(m_path, m_options);
             if (!reader)
                 return fail(reader.error().message);
             StreamInput input;

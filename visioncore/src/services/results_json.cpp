@@ -84,7 +84,8 @@ OrderedJson summaryJson(const std::vector<FrameResult>& frames,
 
 ResultsHeader resultsHeader(const StreamInput& input)
 {
-    return {input.stream, input.lut_path, input.info().width, input.info().height, input.skip};
+    return {input.stream,        input.lut_path, input.info().width,
+            input.info().height, input.skip,     degrees(input.info().orientation)};
 }
 
 std::string resultsJson(const ResultsHeader& header, const std::vector<FrameResult>& frames,
@@ -96,6 +97,8 @@ std::string resultsJson(const ResultsHeader& header, const std::vector<FrameResu
     doc["lut"] = header.lut;
     doc["width"] = header.width;
     doc["height"] = header.height;
+    if (header.orientation != 0) // the coordinates are in the turned frame
+        doc["orientation"] = header.orientation;
     if (!header.skipped_stages.empty())
         doc["skipped_stages"] = header.skipped_stages;
     OrderedJson& list = doc["frames"] = OrderedJson::array();
@@ -124,7 +127,7 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
         const auto it = root.find(key);
         return it != root.end() && it->is_number_integer() ? it->get<int>() : 0;
     };
-    file.header = {str("stream"), str("lut"), num("width"), num("height"), {}};
+    file.header = {str("stream"), str("lut"), num("width"), num("height"), {}, num("orientation")};
     if (const auto it = root.find("skipped_stages"); it != root.end() && it->is_array())
         for (const OrderedJson& id : *it)
             if (id.is_string())

@@ -14,9 +14,9 @@
 namespace fieldsight {
 
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
-                                    const Pipeline& pipeline)
+                                    const Pipeline& pipeline, const StreamOptions& options)
 {
-    auto reader = openStream(stream);
+    auto reader = openStream(stream, options);
     if (!reader)
         return reader.error();
     StreamInput input;

@@ -1,4 +1,5 @@
-// The file-stream DataWrapper: serves frames of a StreamReader with a LUT to the core.
+// The file-stream DataWrapper: serves frames of a StreamReader with a LUT to the core, upright
+// (the reader turns them by the stream's orientation, or the one it was opened with).
 #pragma once
 
 #include "visioncore/framework/data_wrapper.h"
@@ -24,6 +25,8 @@ public:
     const Frame& frame() const { return m_frame; }
     std::size_t frameIndex() const { return m_index; }
     StreamReader& reader() { return *m_reader; }
+    /// How far the stored pictures are turned before the core sees them.
+    Orientation orientation() const { return m_reader->info().orientation; }
     void setLut(std::shared_ptr<const ColourLut> lut) { m_lut = std::move(lut); }
     void setDebugSink(DebugSink* sink) { m_sink = sink; }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "visioncore/io/frame.h"
+#include "visioncore/io/orientation.h"
 #include "visioncore/basics/result.h"
 
 #include <array>
@@ -20,7 +21,7 @@ struct StreamInfo
 {
     std::string path; ///< as given by the user
     StreamKind kind = StreamKind::ImageFolder;
-    int width = 0;  ///< px, of the first frame
+    int width = 0;  ///< px, of the first frame as served (upright)
     int height = 0; ///< px
     std::size_t frame_count = 0;
     std::string default_lut; ///< the manifest's lut or <folder>/default.lut; empty if none exists
@@ -29,6 +30,18 @@ struct StreamInfo
     /// a link loop, a FIFO): the stream opened without it. Commands print these, the window
     /// shows them.
     std::vector<std::string> warnings;
+    /// How far the stored pictures are turned clockwise as they are read: the stream's own
+    /// orientation, or the one asked for when it was opened.
+    Orientation orientation = Orientation::Upright;
+    /// What the stream itself says (its manifest's "orientation"; upright for other kinds).
+    Orientation stream_orientation = Orientation::Upright;
+};
+
+/// How a stream is opened.
+struct StreamOptions
+{
+    /// Turn the stored pictures by this instead of the stream's own orientation.
+    std::optional<Orientation> orientation;
 };
 
 class StreamReader
@@ -44,8 +57,9 @@ public:
     virtual Status readInto(std::size_t index, Frame& frame);
     /// The frame's display name without decoding it.
     virtual std::string frameName(std::size_t index) const = 0;
-    /// Another reader of the same stream, for another thread. The default opens the stream
-    /// again; readers with an index share it instead of building it twice.
+    /// Another reader of the same stream, for another thread, serving the same frames (in the
+    /// same orientation). The default opens the stream again; readers with an index share it
+    /// instead of building it twice.
     virtual Result<std::unique_ptr<StreamReader>> reopen() const;
 };
 
@@ -54,8 +68,11 @@ public:
 std::string besideStream(const std::string& stream, const std::string& name);
 
 /// Opens a folder, a .strm file, a video file or "camera:N". Bad input (missing, empty folder,
-/// truncated .strm, bad manifest) gives an Error naming the file and the problem.
-Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec);
+/// truncated .strm, bad manifest) gives an Error naming the file and the problem. Frames are
+/// served turned upright by the stream's orientation, or by `options.orientation` when given
+/// (docs/formats.md): pixels, size and horizon alike.
+Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec,
+                                                 const StreamOptions& options = {});
 
 /// Writes original NUbots image streams (.strm), for tests, the generator and conversions.
 class StrmWriter

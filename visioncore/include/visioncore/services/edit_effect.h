@@ -67,9 +67,9 @@ public:
 
     /// Worker threads of a scan (0: one per core).
     void setThreads(int threads) { m_threads = threads; }
-    /// The stream to scan (a local path; empty: none). Forgets every frame's result, so the
-    /// next job only records.
-    void setStream(std::string path);
+    /// The stream to scan (a local path; empty: none), opened with `options` (its orientation,
+    /// as the window shows it). Forgets every frame's result, so the next job only records.
+    void setStream(std::string path, StreamOptions options = {});
     const std::string& stream() const { return m_path; }
 
     /// Empties the results and forgets an earlier cancel(): called before each run().
@@ -97,6 +97,7 @@ private:
 
     // Touched only by run() (or, between runs, setStream()).
     std::string m_path;
+    StreamOptions m_options;
     std::optional<StreamInput> m_input;
     std::vector<std::optional<PerceptSet>> m_previous;            ///< each frame's last result
     std::vector<std::shared_ptr<const ColourLut>> m_previous_lut; ///< the table it was run with

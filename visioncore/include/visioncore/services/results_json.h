@@ -17,6 +17,7 @@ struct ResultsHeader
     int width = 0;  ///< px
     int height = 0; ///< px
     std::vector<std::string> skipped_stages;
+    int orientation = 0; ///< deg the stored pictures were turned (written when not 0)
 };
 
 /// The header of a run over `input`.

@@ -40,10 +40,11 @@ struct StreamInput
 /// Every id names a stage of `pipeline` that can be skipped.
 Status checkSkip(const Pipeline& pipeline, const std::vector<std::string>& skip);
 
-/// Opens `stream` and the LUT `lut_path`, or the stream's default LUT when `lut_path` is empty.
-/// Errors name the file and the problem.
+/// Opens `stream` (with `options`: its orientation) and the LUT `lut_path`, or the stream's
+/// default LUT when `lut_path` is empty. Errors name the file and the problem.
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
-                                    const Pipeline& pipeline = Pipeline::standard());
+                                    const Pipeline& pipeline = Pipeline::standard(),
+                                    const StreamOptions& options = {});
 
 /// What the pipeline produced for one frame.
 struct FrameResult

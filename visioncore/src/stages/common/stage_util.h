@@ -18,6 +18,8 @@ inline constexpr Rgb kGrey{128, 128, 128};
 inline constexpr Rgb kWhite{255, 255, 255};
 inline constexpr Rgb kSkyBlue{40, 140, 255};
 inline constexpr Rgb kPurple{170, 60, 255};
+inline constexpr Rgb kLime{170, 255, 0};
+inline constexpr Rgb kPink{255, 150, 200};
 } // namespace debug_colour
 
 /// The seed parameter of every stage that samples with RANSAC (default 1).

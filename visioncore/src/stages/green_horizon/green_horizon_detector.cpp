@@ -60,8 +60,8 @@ const StageInfo& GreenHorizonDetector::info() const
         {"green_horizon"},
         {&perceptKind<FieldBoundary>()},
         {{"green_horizon.kinematic_horizon", "Kinematic horizon", debug_colour::kBlue},
-         {"green_horizon.scan_points", "Scan points", debug_colour::kMagenta},
-         {"green_horizon.thrown_points", "Thrown points", debug_colour::kRed}}};
+         {"green_horizon.scan_points", "Scan points", debug_colour::kLime},
+         {"green_horizon.thrown_points", "Thrown points", debug_colour::kGrey}}};
     return info;
 }
 
@@ -110,7 +110,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         d->add(lineShape({0, bb.kinematic_horizon.y_left},
                          {double(w - 1), bb.kinematic_horizon.y_right}, debug_colour::kBlue));
     if (auto* d = bb.debug.layer("green_horizon.scan_points"))
-        d->add(pointsShape(points, debug_colour::kMagenta, 3));
+        d->add(pointsShape(points, debug_colour::kLime, 3)); // not the boundary's magenta
 
     if (points.size() < 2) {
         // No field in view: the horizon is the bottom row (original behaviour; unlike the original
@@ -159,7 +159,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
     bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 
     if (auto* d = bb.debug.layer("green_horizon.thrown_points"))
-        d->add(pointsShape(bb.gh_thrown_points, debug_colour::kRed, 3));
+        d->add(pointsShape(bb.gh_thrown_points, debug_colour::kGrey, 3));
 }
 
 } // namespace fieldsight

@@ -42,7 +42,7 @@ const StageInfo& ObstacleDetector::info() const
         {"filtered_segments", "transitions", "scan_lines", "green_horizon", "goalposts"},
         {"obstacle_points"},
         {&perceptKind<Obstacle>()},
-        {{"obstacles.points", "Obstacle feet", debug_colour::kPurple}}};
+        {{"obstacles.points", "Obstacle feet", debug_colour::kPink}}};
     return info;
 }
 
@@ -136,7 +136,7 @@ void ObstacleDetector::run(Blackboard& bb)
         }
     }
     if (auto* d = bb.debug.layer("obstacles.points"))
-        d->add(pointsShape(bb.obstacle_points, debug_colour::kPurple, 3));
+        d->add(pointsShape(bb.obstacle_points, debug_colour::kPink, 3));
 
     // Group runs on neighbouring scan lines that overlap vertically.
     const int max_step = spacing * (1 + m_max_column_gap);
