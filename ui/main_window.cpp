@@ -224,6 +224,14 @@ void MainWindow::showMessage(const QString& text, bool error)
     statusBar()->showMessage(text, 8000);
 }
 
+void MainWindow::clearMessage()
+{
+    if (m_standing_problem.isEmpty())
+        m_message_bar->hide();
+    else
+        showMessage(m_standing_problem);
+}
+
 QImage MainWindow::snapshot()
 {
     return m_view->grab().toImage();
@@ -333,6 +341,10 @@ void MainWindow::saveSettings() const
 void MainWindow::restoreSettings()
 {
     const WindowSettings w = WindowSettings::load();
+    if (!w.problem.isEmpty()) {
+        m_standing_problem = w.problem;
+        showMessage(w.problem);
+    }
     if (!restoreGeometry(w.geometry)) {
         // First run: 1280 x 800, or most of a smaller screen.
         QSize size(1280, 800);

@@ -64,6 +64,9 @@ public:
     void showMessage(const QString& text, bool error = true);
     /// The message shown last in the window's message bar (errors and notes).
     QString lastMessage() const { return m_last_message; }
+    /// Hides the message bar, unless a problem that lasts the session (the settings could not
+    /// be read) is to be seen: then that is shown again.
+    void clearMessage();
     void setMode(ViewMode mode);
     /// The frame view as shown.
     QImage snapshot();
@@ -116,7 +119,8 @@ private:
     std::optional<CellMask> m_compare_cells; ///< the compare dialog's chosen row, if any
     std::optional<QPoint> m_hover;
     QString m_last_message;
-    QString m_preview_shown; ///< the tool's preview line in the status bar, if any
+    QString m_standing_problem; ///< what clearMessage() shows again (settings not read)
+    QString m_preview_shown;    ///< the tool's preview line in the status bar, if any
 };
 
 } // namespace fieldsight::ui

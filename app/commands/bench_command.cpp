@@ -315,8 +315,7 @@ int benchCommand(const QStringList& args, const Context& ctx)
         }
         return finishReport(ctx, table, json_path, json);
     } catch (const std::exception& e) {
-        printError(ctx.err, e.what());
-        return kExitFailure;
+        return failure(ctx, "bench", e);
     }
 }
 

@@ -4,6 +4,7 @@
 #include "visioncore/basics/atomic_file.h"
 
 #include <filesystem>
+#include <new>
 
 namespace fieldsight::cli {
 
@@ -22,6 +23,21 @@ void printError(std::ostream& err, std::string_view message)
     for (char c : message)
         line += (c == '\n' || c == '\r') ? ' ' : c;
     err << line << '\n' << std::flush;
+}
+
+int failure(const Context& ctx, std::string_view command, const std::exception& e)
+{
+    if (dynamic_cast<const std::bad_alloc*>(&e))
+        printError(ctx.err, std::string(command) + ": out of memory");
+    else
+        printError(ctx.err, e.what());
+    return kExitFailure;
+}
+
+void printWarnings(std::ostream& err, const StreamInfo& info)
+{
+    for (const std::string& warning : info.warnings)
+        printError(err, "warning: " + warning);
 }
 
 int badInput(const Context& ctx, std::string_view message)
@@ -149,25 +165,34 @@ Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser)
     return options;
 }
 
-Result<ParamSet> paramsFrom(const QCommandLineParser& parser)
+Result<ParamSet> paramsFrom(const QCommandLineParser& parser, const Pipeline& pipeline)
 {
     ParamSet params;
+    const std::string file = toLocalPath(parser.value("params"));
     if (parser.isSet("params")) {
-        auto loaded = ParamSet::load(toLocalPath(parser.value("params")));
+        auto loaded = ParamSet::load(file);
         if (!loaded)
             return loaded.error();
         params = std::move(loaded).value();
     }
+    const ParamSet from_file = params;
     for (const QString& setting : parser.values("set"))
         if (Status s = params.parseSetting(setting.toStdString()); !s)
             return Error{"--set " + s.error().message};
+    if (Status s = params.check(pipeline); !s) {
+        // A value --set gave wins over the file's, so the file is named only when its own
+        // values are wrong.
+        if (Status f = from_file.check(pipeline); !f && parser.isSet("params"))
+            return Error{"--params " + file + ": " + f.error().message};
+        return Error{"--set: " + s.error().message};
+    }
     return params;
 }
 
 Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
                               const Context& ctx)
 {
-    auto params = paramsFrom(parser);
+    auto params = paramsFrom(parser, ctx.pipeline);
     if (!params)
         return params.error();
     auto options = streamOptionsFrom(parser);
@@ -177,12 +202,8 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
         openStreamInput(stream, toLocalPath(parser.value("lut")), ctx.pipeline, options.value());
     if (!input)
         return input.error();
+    printWarnings(ctx.err, input.value().info());
     input.value().params = std::move(params).value();
-    if (Status s = input.value().params.check(ctx.pipeline); !s)
-        return Error{(parser.isSet("params")
-                          ? "--params " + toLocalPath(parser.value("params")) + " or --set: "
-                          : std::string("--set: ")) +
-                     s.error().message};
     return input;
 }
 

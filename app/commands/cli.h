@@ -15,6 +15,7 @@
 #include <QStringList>
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <ostream>
@@ -44,6 +45,11 @@ double rounded(double value, int decimals);
 
 /// Prints "fieldsight: <message>" as exactly one line.
 void printError(std::ostream& err, std::string_view message);
+/// The end of a command an exception stopped: one line (running out of memory said in words,
+/// not as "std::bad_alloc"), and the exit status of a failure while running.
+int failure(const Context& ctx, std::string_view command, const std::exception& e);
+/// Prints what a stream's reader skipped, "fieldsight: warning: <what>" a line each.
+void printWarnings(std::ostream& err, const StreamInfo& info);
 /// printError, then the exit status for bad input.
 int badInput(const Context& ctx, std::string_view message);
 int badInput(const Context& ctx, const QString& message);
@@ -82,8 +88,9 @@ QCommandLineOption orientationOption();
 /// than 0, 90, 180 or 270 is an Error naming the option and the value.
 Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser);
 
-/// The parameter values of --params FILE and then every --set (which win).
-Result<ParamSet> paramsFrom(const QCommandLineParser& parser);
+/// The parameter values of --params FILE and then every --set (which win), checked against
+/// `pipeline`; an error names where the value came from (the file, or --set).
+Result<ParamSet> paramsFrom(const QCommandLineParser& parser, const Pipeline& pipeline);
 
 /// Opens the stream (turned by --orientation) and LUT and applies --params and --set, all
 /// checked against the pipeline.

@@ -118,7 +118,8 @@ int evalCommand(const QStringList& args, const Context& ctx)
                                         toLocalPath(parser.value("params"))});
             !s)
             return badInput(ctx, s.error().message);
-        auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
+        auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds(),
+                                       input.value().info().frame_count);
         if (!truth)
             return badInput(ctx, truth.error().message);
         // Precision and recall of nothing would print as a perfect 1.000.
@@ -133,8 +134,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
         return finishReport(ctx, evalTable(report.value()), toLocalPath(parser.value("json")),
                             evalJson(report.value()));
     } catch (const std::exception& e) {
-        printError(ctx.err, e.what());
-        return kExitFailure;
+        return failure(ctx, "eval", e);
     }
 }
 

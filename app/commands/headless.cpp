@@ -1,6 +1,8 @@
 // The command overview and the dispatch from a command word to its command.
 #include "commands/commands.h"
 
+#include <new>
+
 namespace fieldsight::cli {
 
 std::string usageText(const Pipeline& pipeline)
@@ -35,7 +37,9 @@ std::string usageText(const Pipeline& pipeline)
            "'fieldsight COMMAND --help' describes one command.\n";
 }
 
-int runHeadless(const QString& command, const QStringList& args, const Context& ctx)
+namespace {
+
+int runCommandWord(const QString& command, const QStringList& args, const Context& ctx)
 {
     if (command == "run")
         return runCommand(args, ctx);
@@ -52,6 +56,20 @@ int runHeadless(const QString& command, const QStringList& args, const Context& 
         return kExitOk;
     }
     return badInput(ctx, "unknown command '" + command + "'; try 'fieldsight help'");
+}
+
+} // namespace
+
+int runHeadless(const QString& command, const QStringList& args, const Context& ctx)
+{
+    // The readers turn running out of memory into an error naming their file; what is left
+    // (the pipeline, a results list) ends the command with one line, not an abort.
+    try {
+        return runCommandWord(command, args, ctx);
+    } catch (const std::bad_alloc&) {
+        printError(ctx.err, "out of memory while running '" + command.toStdString() + "'");
+        return kExitFailure;
+    }
 }
 
 } // namespace fieldsight::cli

@@ -130,10 +130,11 @@ int buildCommand(const QStringList& args, const Context& ctx)
         if (!reader)
             return badInput(ctx, reader.error().message);
         const StreamInfo& info = reader.value()->info();
+        printWarnings(ctx.err, info);
 
         LutSamples samples;
         if (parser.isSet("samples")) {
-            auto loaded = loadLutSamples(toLocalPath(parser.value("samples")));
+            auto loaded = loadLutSamples(toLocalPath(parser.value("samples")), info.frame_count);
             if (!loaded)
                 return badInput(ctx, loaded.error().message);
             samples = std::move(loaded).value();
@@ -141,7 +142,8 @@ int buildCommand(const QStringList& args, const Context& ctx)
             const std::string truth_path = parser.isSet("truth")
                                                ? toLocalPath(parser.value("truth"))
                                                : defaultTruthPath(stream);
-            auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
+            auto truth =
+                Annotations::load(truth_path, ctx.pipeline.perceptKinds(), info.frame_count);
             if (!truth)
                 return badInput(ctx, truth.error().message);
             samples.samples =
@@ -178,8 +180,7 @@ int buildCommand(const QStringList& args, const Context& ctx)
                 << time << ")\n";
         return kExitOk;
     } catch (const std::exception& e) {
-        printError(ctx.err, e.what());
-        return kExitFailure;
+        return failure(ctx, "lut build", e);
     }
 }
 

@@ -94,7 +94,8 @@ int runCommand(const QStringList& args, const Context& ctx)
             // The stream's annotations, if any, are the truth layers.
             const std::string truth_path = defaultTruthPath(stream);
             if (std::filesystem::is_regular_file(truth_path)) {
-                auto loaded = Annotations::load(truth_path, ctx.pipeline.perceptKinds());
+                auto loaded = Annotations::load(truth_path, ctx.pipeline.perceptKinds(),
+                                                input.value().info().frame_count);
                 if (!loaded)
                     return badInput(ctx, loaded.error().message);
                 truth = std::move(loaded).value();
@@ -140,8 +141,7 @@ int runCommand(const QStringList& args, const Context& ctx)
         }
         return kExitOk;
     } catch (const std::exception& e) {
-        printError(ctx.err, e.what());
-        return kExitFailure;
+        return failure(ctx, "run", e);
     }
 }
 

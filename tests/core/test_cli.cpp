@@ -733,6 +733,32 @@ private slots:
         verifyOneLineError(bad_png, frame);
     }
 
+    void withoutADisplayTheWindowSaysHowToRunIt()
+    {
+        // Qt used to abort with four lines about platform plugins (and a core dump).
+        for (const QStringList& args : {QStringList{"gui", m_stream}, QStringList{}}) {
+            const Outcome o = fieldsight(args, true);
+            QCOMPARE(o.status, 2);
+            verifyOneLineError(o, "no display");
+            QVERIFY2(o.err.contains("xvfb-run") && o.err.contains("QT_QPA_PLATFORM=offscreen"),
+                     o.err.constData());
+        }
+    }
+
+    void brokenFrameEntriesAreWarnedOfOnStderr()
+    {
+        // A dangling link named as a frame used to be skipped without a word.
+        const QString folder = path("with_broken_entry");
+        makeStream(folder, true, 2);
+        QVERIFY(QFile::link(folder + "/gone.png", folder + "/frame_000005.png"));
+        const Outcome o = fieldsight({"run", folder, "--out", path("broken.json")});
+        QCOMPARE(o.status, 0);
+        QCOMPARE(QString::fromLocal8Bit(o.err).trimmed(),
+                 "fieldsight: warning: " + folder +
+                     "/frame_000005.png: skipped, a link to a file that does not exist");
+        QCOMPARE(readObject(path("broken.json")).value("frames").toArray().size(), 2);
+    }
+
     void aFrameNameThatIsNotUtf8IsWrittenNotThrown()
     {
         // A frame file named in Latin-1 ("caf\xe9.png"): the results JSON is still written,

@@ -1,4 +1,5 @@
 // Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
+#include "support/stderr_capture.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
@@ -20,6 +21,7 @@
 #include <unistd.h>
 
 using namespace fieldsight;
+using fieldsight::test::stderrOf;
 
 namespace {
 
@@ -53,28 +55,6 @@ std::string openError(const QTemporaryDir& dir)
 {
     auto opened = openStream(dir.path().toStdString());
     return opened.ok() ? std::string("(opened)") : opened.error().message;
-}
-
-/// What `run` writes on file descriptor 2, where libraries print their own lines (libjpeg with
-/// fprintf, OpenCV's decoders through std::cerr).
-template <class Run> std::string stderrOf(Run run)
-{
-    std::cerr.flush();
-    std::fflush(stderr);
-    FILE* capture = std::tmpfile();
-    const int saved = ::dup(2);
-    ::dup2(::fileno(capture), 2);
-    run();
-    std::cerr.flush();
-    std::fflush(stderr);
-    ::dup2(saved, 2);
-    ::close(saved);
-    std::string text;
-    std::rewind(capture);
-    for (int c = std::fgetc(capture); c != EOF; c = std::fgetc(capture))
-        text += char(c);
-    std::fclose(capture);
-    return text;
 }
 
 /// The encoding of a 32x24 frame (green, an orange disc) in `ext`'s format.

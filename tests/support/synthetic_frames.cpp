@@ -87,19 +87,28 @@ std::string sampleStreamsDir()
     return FIELDSIGHT_SAMPLE_STREAMS_DIR;
 }
 
-std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height)
+std::string bigEndian32(std::uint32_t v)
 {
-    auto big = [](std::uint32_t v) {
-        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
-    };
-    std::string ihdr = "IHDR" + big(width) + big(height) + std::string("\x08\x02\x00\x00\x00", 5);
+    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+std::string pngChunk(const std::string& type, const std::string& data)
+{
+    const std::string body = type + data;
     std::uint32_t crc = 0xFFFFFFFFu;
-    for (unsigned char b : ihdr) {
+    for (unsigned char b : body) {
         crc ^= b;
         for (int k = 0; k < 8; ++k)
             crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
     }
-    return std::string("\x89PNG\r\n\x1a\n", 8) + big(13) + ihdr + big(crc ^ 0xFFFFFFFFu);
+    return bigEndian32(std::uint32_t(data.size())) + body + bigEndian32(crc ^ 0xFFFFFFFFu);
+}
+
+std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height)
+{
+    return std::string("\x89PNG\r\n\x1a\n", 8) +
+           pngChunk("IHDR", bigEndian32(width) + bigEndian32(height) +
+                                std::string("\x08\x02\x00\x00\x00", 5));
 }
 
 } // namespace fieldsight::test

@@ -32,5 +32,10 @@ std::string sampleStreamsDir();
 /// A PNG signature and an IHDR chunk (with a correct checksum) claiming width x height, and no
 /// pixel data: a small file promising a huge image.
 std::string pngHeaderClaiming(std::uint32_t width, std::uint32_t height);
+/// A PNG chunk: its length, `type`, `data` and a correct checksum (to build damaged PNGs that
+/// only a decoder can tell are damaged).
+std::string pngChunk(const std::string& type, const std::string& data);
+/// `v` as 4 big-endian bytes, as PNG stores numbers.
+std::string bigEndian32(std::uint32_t v);
 
 } // namespace fieldsight::test

@@ -3,6 +3,7 @@
 // bad input (1 for an output failure) with exactly one line naming the file and the problem,
 // within seconds and bounded memory; the same inputs opened in the window give a message there,
 // and the window goes on working.
+#include "support/child_process.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
 #include "ui/adapters/local_path.h"
@@ -20,17 +21,9 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-#include <chrono>
 #include <cstdio>
-#include <fcntl.h>
-#include <grp.h>
 #include <filesystem>
-#include <fstream>
-#include <sys/resource.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <thread>
-#include <unistd.h>
 
 using namespace fieldsight;
 using namespace fieldsight::test;
@@ -55,94 +48,14 @@ struct Case
     bool needs_permissions = false;
 };
 
-struct Outcome
-{
-    int status = -1;
-    std::string out;
-    std::string err;
-    double seconds = 0;
-    long peak_kb = 0; ///< the child's peak resident memory
-};
-
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
-void writeBytes(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
-bool amRoot()
-{
-    return ::geteuid() == 0;
-}
-
-constexpr uid_t kNobody = 65534;
-constexpr int kCannotBeNobody = 125; ///< the child could not become nobody (a user namespace)
-
-/// Runs fieldsight (or `program`) with `args` in `cwd` (arguments as bytes, no shell, no Qt
-/// decoding), killing it after `seconds`. Peak memory from wait4(). With `as_nobody`, a root test
-/// runs the command as user and group nobody, so that permission bits bind it; `env` adds to its
-/// environment ("NAME=value").
+/// Runs fieldsight (or `program`) with `args` in `cwd` (tests/support/child_process.h), killing
+/// it after `seconds`; `env` adds to its environment ("NAME=value").
 Outcome runFieldsight(const std::vector<std::string>& args, const std::string& cwd,
                       rlim_t file_size_limit, bool as_nobody = false,
                       const std::string& program = FIELDSIGHT_EXE, int seconds = 30,
                       std::vector<std::string> env = {})
 {
-    std::vector<std::string> all{program};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& a : all)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
-    for (char** e = environ; *e; ++e)
-        env.emplace_back(*e); // after the additions: the first of a name wins
-    std::vector<char*> envp;
-    for (std::string& e : env)
-        envp.push_back(e.data());
-    envp.push_back(nullptr);
-    const std::string out_path = cwd + "/.stdout", err_path = cwd + "/.stderr";
-
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        if (::chdir(cwd.c_str()) != 0)
-            ::_exit(127);
-        const int in = ::open("/dev/null", O_RDONLY);
-        const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        ::dup2(in, 0);
-        ::dup2(out, 1);
-        ::dup2(err, 2);
-        const rlimit limit{file_size_limit, file_size_limit};
-        ::setrlimit(RLIMIT_FSIZE, &limit);
-        if (as_nobody && amRoot() &&
-            (::setgroups(0, nullptr) != 0 || ::setgid(kNobody) != 0 || ::setuid(kNobody) != 0))
-            ::_exit(kCannotBeNobody);
-        ::execve(argv[0], argv.data(), envp.data());
-        ::_exit(127);
-    }
-    Outcome o;
-    int status = 0;
-    rusage usage{};
-    while (::wait4(pid, &status, WNOHANG, &usage) == 0) {
-        if (std::chrono::steady_clock::now() - start > std::chrono::seconds(seconds)) {
-            ::kill(pid, SIGKILL);
-            ::wait4(pid, &status, 0, &usage);
-            o.err = "(killed after " + std::to_string(seconds) + " s)";
-            return o;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    o.peak_kb = usage.ru_maxrss;
-    o.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    o.out = readAll(out_path);
-    o.err = readAll(err_path);
-    return o;
+    return runChild(program, args, cwd, file_size_limit, as_nobody, seconds, std::move(env));
 }
 
 /// A .strm record (version 1) of a width x height frame.
@@ -406,6 +319,49 @@ private slots:
         }
         add(".strm claiming a 2147483647 px wide frame", {"run", "s_size.strm"}, 2,
             {"s_size.strm", "absurd frame size 2147483647x24"}, "s_size.strm");
+        // Paths that are no file to read, or that the system refuses (issue 21).
+        QCOMPARE(::mkfifo(at("fifo.strm").c_str(), 0644), 0);
+        add(".strm that is a FIFO", {"run", "fifo.strm"}, 2,
+            {"fifo.strm", "a FIFO, not a regular file"}, "fifo.strm");
+        QCOMPARE(::mkfifo(at("fifo.avi").c_str(), 0644), 0);
+        add("video that is a FIFO", {"run", "fifo.avi"}, 2,
+            {"fifo.avi", "a FIFO, not a regular file"}, "fifo.avi");
+        add("stream that is a device (/dev/zero)", {"run", "/dev/zero"}, 2,
+            {"/dev/zero", "a character device, not a regular file"}, "/dev/zero");
+        fs::create_symlink("loop_b", at("loop_a"));
+        fs::create_symlink("loop_a", at("loop_b"));
+        add("stream path that is a link loop", {"run", "loop_a"}, 2,
+            {"loop_a", "Too many levels of symbolic links"}, "loop_a");
+        const std::string long_name(300, 'n');
+        add("stream name longer than the system allows", {"run", long_name}, 2,
+            {long_name, "File name too long"}, long_name);
+        goodStream("e_broken");
+        fs::create_symlink("nowhere.png", at("e_broken/frame_000009.png"));
+        add("frame entry that is a dangling link (a warning)",
+            {"run", "e_broken", "--out", "e.json"}, 0,
+            {"e_broken/frame_000009.png", "skipped", "does not exist"}, "e_broken");
+        // JSON past what a real file needs: refused unread, not parsed into gigabytes.
+        const auto huge = [](const std::string& head, const std::string& tail) {
+            std::string text = head + "[";
+            text.reserve(50u << 20);
+            while (text.size() < (50u << 20))
+                text += "0,";
+            return text + "0]" + tail;
+        };
+        goodStream("m_huge");
+        writeBytes(at("m_huge/stream.json"),
+                   huge(R"({"format": "fieldsight-stream/1", "camera": {"notes": )", "}}"));
+        add("stream.json of 50 MB", {"run", "m_huge"}, 2,
+            {"m_huge/stream.json", "too large", "for a stream.json of 3 frames"}, "m_huge");
+        writeBytes(at("truth_50mb.json"),
+                   huge(R"({"format": "fieldsight-annotations/1", "notes": )", "}"));
+        add("annotations of 50 MB", {"eval", "good", "--truth", "truth_50mb.json"}, 2,
+            {"truth_50mb.json", "too large"});
+        writeBytes(at("samples_50mb.json"),
+                   huge(R"({"format": "fieldsight-lut-samples/1", "notes": )", "}"));
+        add("LUT samples of 50 MB",
+            {"lut", "build", "good", "--samples", "samples_50mb.json", "--out", "built.lut"}, 2,
+            {"samples_50mb.json", "too large"});
         writeBytes(at("garbage.avi"), std::string(4096, '\x5a'));
         add("video file of garbage", {"run", "garbage.avi"}, 2, {"garbage.avi", "not a stream"},
             "garbage.avi");
@@ -483,6 +439,10 @@ private slots:
         add("parameter out of range",
             {"run", "good", "--params", "p_range.json", "--out", "o.json"}, 2,
             {"p_range.json", "ball.min_radius", "outside"});
+        add("gui --params naming an unknown stage", {"gui", "--params", "p_stage.json"}, 2,
+            {"--params p_stage.json", "unknown stage 'nope'"});
+        add("gui --set out of range", {"gui", "--set", "ball.min_radius=1e9"}, 2,
+            {"--set", "ball.min_radius", "outside"});
         add("whole-number option past 2^32", {"synth", "--width", "4294967312", "--out", "x"}, 2,
             {"--width", "4294967312"});
 

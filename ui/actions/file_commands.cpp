@@ -13,8 +13,11 @@
 #include <QApplication>
 #include <QBuffer>
 #include <QClipboard>
+#include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+#include <QFontMetrics>
+#include <QLocale>
 #include <QMenu>
 #include <QProgressDialog>
 #include <QStatusBar>
@@ -91,7 +94,7 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
         if (m_window.session().stream().lutProblem())
             hideWhenClassified(shown);
     } else {
-        m_window.messageBar().hide();
+        m_window.clearMessage();
     }
     if (recovery)
         applyRecovery(*recovery);
@@ -205,7 +208,7 @@ void FileCommands::hideWhenClassified(const QString& shown)
             return;
         QObject::disconnect(m_until_classified);
         if (m_window.messageBar().isVisible() && m_window.messageBar().text() == shown)
-            m_window.messageBar().hide();
+            m_window.clearMessage();
     });
 }
 
@@ -306,11 +309,21 @@ void FileCommands::offerRecovery()
         m_window.recoveryBar().hide();
         return;
     }
+    // Paths shortened in the middle (the whole in the tooltip), the time in the user's format.
+    const QFontMetrics metrics(m_window.recoveryBar().font());
+    const auto shown = [&metrics](const QString& path) {
+        return metrics.elidedText(path, Qt::ElideMiddle, metrics.averageCharWidth() * 48);
+    };
+    const QString table = r->path.isEmpty() ? tr("a new table") : r->path;
+    const QString stream = r->stream.isEmpty() ? tr("(not named)") : r->stream;
+    const QDateTime saved = QDateTime::fromString(r->saved_at, Qt::ISODate);
+    const QString when = saved.isValid() ? QLocale().toString(saved, QLocale::ShortFormat)
+                                         : tr("at a time not recorded");
     m_window.recoveryBar().offer(
         tr("Unsaved edits of %1 on the stream %2 were kept when a session ended (%3). Recover "
            "them? Recover opens that stream.")
-            .arg(r->path.isEmpty() ? tr("a new table") : r->path,
-                 r->stream.isEmpty() ? tr("(not named)") : r->stream, r->saved_at));
+            .arg(shown(table), shown(stream), when),
+        tr("Table: %1\nStream: %2\nKept: %3").arg(table, stream, when));
 }
 
 bool FileCommands::recoverLut()

@@ -31,11 +31,15 @@ Result<Bookmarks> Bookmarks::load(const std::string& path)
     std::error_code ec;
     if (!std::filesystem::exists(path, ec))
         return Bookmarks{};
-    // The kind and size checks of every read: a FIFO sidecar must not hang the window.
-    auto text = readWholeFile(path);
-    if (!text)
-        return text.error();
-    return fromJson(text.value(), path);
+    // The kind and size checks of every read: a FIFO sidecar must not hang the window. A
+    // bookmark and its note take under 100 bytes: 4 MiB is tens of thousands of them.
+    constexpr std::size_t kMaxBytes = std::size_t(4) << 20;
+    return readingWithinMemory(path, [&]() -> Result<Bookmarks> {
+        auto text = readWholeFile(path, kMaxBytes, "a bookmarks file");
+        if (!text)
+            return text.error();
+        return fromJson(text.value(), path);
+    });
 }
 
 Result<Bookmarks> Bookmarks::fromJson(const std::string& text, const std::string& source)

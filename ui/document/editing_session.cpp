@@ -4,9 +4,24 @@
 #include "visioncore/io/lut_import.h"
 
 #include <QFileInfo>
-#include <QtConcurrent/QtConcurrentRun>
+#include <QFutureWatcherBase>
+
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <new>
+#include <thread>
 
 namespace fieldsight::ui {
+
+struct EditingSession::OpenJob
+{
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+    EditingSession* session = nullptr;
+};
 
 EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     : QObject(parent), m_pipeline(pipeline)
@@ -51,6 +66,12 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
 
 EditingSession::~EditingSession()
 {
+    if (m_job) {
+        std::unique_lock lock(m_job->mutex);
+        m_job->session = nullptr;
+        m_job->finished.wait_for(lock, std::chrono::milliseconds(kOpenWaitOnCloseMs),
+                                 [this] { return m_job->done; });
+    }
     for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>())
         watcher->waitForFinished();
 }
@@ -68,42 +89,68 @@ void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
 
 bool EditingSession::openStream(const QString& spec, const QString& lut)
 {
-    if (m_open_watcher)
+    if (m_job)
         return false;
     m_opening = spec;
-    m_open_watcher = new QFutureWatcher<Opening>(this);
-    connect(m_open_watcher, &QFutureWatcherBase::finished, this, [this] {
-        const Opening result = m_open_watcher->result();
-        m_open_watcher->deleteLater();
-        m_open_watcher = nullptr;
-        if (!result.stream) {
-            emit opened(false, false, result.error);
-            return;
-        }
-        adopt(result.stream);
-        emit opened(true, false, {});
-    });
-    const Pipeline& pipeline = m_pipeline;
-    m_open_watcher->setFuture(QtConcurrent::run([spec, lut, &pipeline] {
+    auto job = std::make_shared<OpenJob>();
+    job->session = this;
+    m_job = job;
+    SourceOpener opener = m_opener;
+    if (!opener) {
+        const Pipeline* pipeline = &m_pipeline;
+        opener = [pipeline](const QString& s, const QString& l) {
+            return StreamDocument::openSource(s, l, *pipeline);
+        };
+    }
+    // A thread of its own, not the global pool: the application waits for the pool's threads
+    // when it ends, and an open can be stuck in the system for good.
+    std::thread([job, opener = std::move(opener), spec, lut] {
         Opening o;
-        auto stream = StreamDocument::openSource(spec, lut, pipeline);
-        if (stream)
-            o.stream = std::move(stream).value();
-        else
-            o.error = QString::fromStdString(stream.error().message);
-        return o;
-    }));
+        try {
+            auto stream = opener(spec, lut);
+            if (stream)
+                o.stream = std::move(stream).value();
+            else
+                o.error = QString::fromStdString(stream.error().message);
+        } catch (const std::bad_alloc&) {
+            o.error = tr("%1: not enough memory to open it").arg(spec);
+        } catch (const std::exception& e) {
+            o.error = spec + QStringLiteral(": ") + QString::fromLocal8Bit(e.what());
+        }
+        const std::lock_guard lock(job->mutex);
+        job->done = true;
+        if (EditingSession* session = job->session) // alive while the lock is held
+            QMetaObject::invokeMethod(
+                session, [session, job, o] { session->finishOpening(job, o); },
+                Qt::QueuedConnection);
+        job->finished.notify_all();
+    }).detach();
     return true;
+}
+
+void EditingSession::finishOpening(const std::shared_ptr<OpenJob>& job, const Opening& result)
+{
+    if (job != m_job) // cancelled after it ended
+        return;
+    m_job.reset();
+    if (!result.stream) {
+        emit opened(false, false, result.error);
+        return;
+    }
+    adopt(result.stream);
+    emit opened(true, false, {});
 }
 
 void EditingSession::cancelOpening()
 {
-    if (!m_open_watcher)
+    if (!m_job)
         return;
-    // The open runs to its end in the background and is dropped.
-    m_open_watcher->disconnect(this);
-    connect(m_open_watcher, &QFutureWatcherBase::finished, m_open_watcher, &QObject::deleteLater);
-    m_open_watcher = nullptr;
+    // The open runs to its end in the background and is dropped there.
+    {
+        const std::lock_guard lock(m_job->mutex);
+        m_job->session = nullptr;
+    }
+    m_job.reset();
     emit opened(false, true, tr("Opening %1 was cancelled").arg(m_opening));
 }
 

@@ -13,10 +13,11 @@
 #include "ui/document/pipeline_settings.h"
 #include "ui/document/stream_document.h"
 
-#include <QFutureWatcher>
 #include <QObject>
 #include <QUndoGroup>
 
+#include <functional>
+#include <memory>
 #include <vector>
 
 namespace fieldsight::ui {
@@ -34,8 +35,17 @@ class EditingSession : public QObject
 public:
     explicit EditingSession(const Pipeline& pipeline = Pipeline::standard(),
                             QObject* parent = nullptr);
-    /// Lets a background open finish first (it reads the pipeline).
+    /// Lets a background open finish first (it reads the pipeline), but waits for it at most
+    /// kOpenWaitOnClose: an open stuck in the system (a file system that does not answer) is
+    /// left to end with the process, never keeping it alive.
     ~EditingSession() override;
+
+    /// What a background open runs: StreamDocument::openSource with the session's pipeline,
+    /// unless replaced (a test gives one that blocks).
+    using SourceOpener = std::function<Result<std::shared_ptr<OpenedStream>>(const QString& spec,
+                                                                             const QString& lut)>;
+    void setSourceOpener(SourceOpener opener) { m_opener = std::move(opener); }
+    static constexpr int kOpenWaitOnCloseMs = 2000;
 
     const Pipeline& pipeline() const { return m_pipeline; }
     StreamDocument& stream() { return *m_stream; }
@@ -56,7 +66,7 @@ public:
     Status open(const QString& spec, const QString& lut = {});
     /// Drops the running open: the stream before stays (the open ends unseen).
     void cancelOpening();
-    bool opening() const { return m_open_watcher != nullptr; }
+    bool opening() const { return m_job != nullptr; }
     QString openingSpec() const { return m_opening; }
     /// Makes an opened stream the session's: every document follows it.
     void adopt(std::shared_ptr<OpenedStream> opened);
@@ -82,6 +92,10 @@ private:
         std::shared_ptr<OpenedStream> stream;
         QString error;
     };
+    /// One background open, shared with the thread that runs it; `session` is who gets its
+    /// result, cleared when the open is dropped (cancelled, or the session destroyed).
+    struct OpenJob;
+    void finishOpening(const std::shared_ptr<OpenJob>& job, const Opening& result);
 
     const Pipeline& m_pipeline;
     LutDocument* m_lut = nullptr;
@@ -93,7 +107,8 @@ private:
     QUndoGroup m_undo_group;
     std::vector<UndoDocument> m_undo_documents;
     QStringList m_warnings;
-    QFutureWatcher<Opening>* m_open_watcher = nullptr;
+    std::shared_ptr<OpenJob> m_job;
+    SourceOpener m_opener;
     QString m_opening;
 };
 

@@ -202,7 +202,8 @@ std::optional<LutRecovery> LutDocument::findRecovery() const
     const QString base = recoveryBase();
     if (!localPathExists(base + ".lut") || !localPathExists(base + ".json"))
         return std::nullopt;
-    const Result<std::string> text = readWholeFile(toLocalPath(base + ".json"));
+    // Two paths and a time: a megabyte is a damaged or foreign file, not read.
+    const Result<std::string> text = readWholeFile(toLocalPath(base + ".json"), 1 << 20);
     if (!text)
         return std::nullopt;
     const auto meta = nlohmann::json::parse(text.value(), nullptr, false);

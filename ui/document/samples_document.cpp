@@ -172,10 +172,11 @@ SamplesDocument::buildTable(const std::string& stream, const LutSamples& samples
     std::vector<LutSample> all;
     if (with_annotations) {
         const std::string truth = defaultTruthPath(stream);
-        auto annotations = Annotations::load(truth, Pipeline::standard().perceptKinds());
+        const StreamInfo& info = reader.value()->info();
+        auto annotations =
+            Annotations::load(truth, Pipeline::standard().perceptKinds(), info.frame_count);
         if (!annotations)
             return annotations.error();
-        const StreamInfo& info = reader.value()->info();
         all = samplesFromAnnotations(annotations.value(), cv::Size(info.width, info.height));
     }
     all.insert(all.end(), samples.samples.begin(), samples.samples.end());

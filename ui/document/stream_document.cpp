@@ -101,6 +101,8 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
     opened->source = std::make_shared<FrameSource>();
     std::unique_ptr<StreamReader> r = std::move(reader).value();
     opened->info = r->info();
+    for (const std::string& warning : opened->info.warnings)
+        opened->warnings << QString::fromStdString(warning);
     if (opened->info.kind != StreamKind::Camera) {
         opened->names.reserve(opened->info.frame_count);
         for (std::size_t i = 0; i < opened->info.frame_count; ++i)
@@ -137,7 +139,8 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
     const std::string truth_path = defaultTruthPath(local(spec));
     std::error_code ec;
     if (!truth_path.empty() && std::filesystem::exists(truth_path, ec)) {
-        auto annotations = Annotations::load(truth_path, pipeline.perceptKinds());
+        auto annotations =
+            Annotations::load(truth_path, pipeline.perceptKinds(), opened->info.frame_count);
         if (annotations) {
             auto shared = std::make_shared<const Annotations>(std::move(annotations).value());
             opened->source->truth = shared->truthByStem();

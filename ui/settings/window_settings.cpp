@@ -1,10 +1,15 @@
 #include "ui/settings/window_settings.h"
 
 #include "ui/adapters/local_path.h"
+#include "visioncore/basics/atomic_file.h"
 
+#include <QCoreApplication>
 #include <QSettings>
+#include <QStandardPaths>
 
 #include <algorithm>
+
+#include <sys/stat.h>
 
 namespace fieldsight::ui {
 
@@ -26,10 +31,42 @@ QString pathFromSetting(const QVariant& value)
 
 } // namespace
 
+QString WindowSettings::unusableFile()
+{
+    // The files QSettings reads for this application, user's and system's, as
+    // QSettings::NativeFormat names them on Unix (<config>/<organisation>/<application>.conf and
+    // <config>/<organisation>.conf): checked before QSettings opens one, since opening a FIFO
+    // waits for a writer.
+    const QString organisation = QCoreApplication::organizationName();
+    const QString application = QCoreApplication::applicationName();
+    QStringList names{organisation + QStringLiteral(".conf")};
+    if (!application.isEmpty())
+        names.prepend(organisation + QLatin1Char('/') + application + QStringLiteral(".conf"));
+    for (const QString& folder :
+         QStandardPaths::standardLocations(QStandardPaths::GenericConfigLocation)) {
+        for (const QString& name : names) {
+            const QString path = folder + QLatin1Char('/') + name;
+            struct stat st
+            {
+            };
+            if (::stat(toLocalPath(path).c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+                return QCoreApplication::translate("WindowSettings",
+                                                   "The settings file %1 is %2, not a regular "
+                                                   "file; the window starts with its defaults "
+                                                   "and does not save its settings")
+                    .arg(path, QString::fromStdString(fileKindName(st.st_mode)));
+        }
+    }
+    return {};
+}
+
 WindowSettings WindowSettings::load()
 {
-    const QSettings s;
     WindowSettings w;
+    w.problem = unusableFile();
+    if (!w.problem.isEmpty())
+        return w;
+    const QSettings s;
     w.geometry = s.value(QStringLiteral("window/geometry")).toByteArray();
     w.state = s.value(QStringLiteral("window/state")).toByteArray();
     if (s.contains(QStringLiteral("view/layers"))) {
@@ -61,6 +98,8 @@ WindowSettings WindowSettings::load()
 
 void WindowSettings::save() const
 {
+    if (!unusableFile().isEmpty())
+        return;
     QSettings s;
     s.setValue(QStringLiteral("window/geometry"), geometry);
     s.setValue(QStringLiteral("window/state"), state);

@@ -33,9 +33,16 @@ struct WindowSettings
     bool keep_others = false;
     bool soft_classes = false;
     bool preview = true;
+    /// Why the settings were not read (the window then starts with its defaults), or empty.
+    QString problem;
 
+    /// Never waits: a settings file that is a FIFO or a device (which reading would wait on,
+    /// keeping the window from ever appearing) is left alone, and `problem` says so.
     static WindowSettings load();
+    /// Not when the settings file is not a regular file (nothing is written over it).
     void save() const;
+    /// Why the settings file (or one QSettings would also read) cannot be used, or empty.
+    static QString unusableFile();
 };
 
 } // namespace fieldsight::ui

@@ -58,7 +58,11 @@ OfferBar::OfferBar(const QString& accept, const QString& decline, QWidget* paren
     auto* row = new QHBoxLayout(this);
     row->setContentsMargins(8, 4, 4, 4);
     m_text = new QLabel(this);
+    m_text->setTextFormat(Qt::PlainText);
     m_text->setWordWrap(true);
+    // A long unbreakable word (a path) must not widen the bar past the window.
+    m_text->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_text->setMinimumWidth(0);
     row->addWidget(m_text, 1);
     auto* yes = new QPushButton(accept, this);
     yes->setObjectName(QStringLiteral("accept"));
@@ -82,9 +86,10 @@ QString OfferBar::question() const
     return m_text->text();
 }
 
-void OfferBar::offer(const QString& question)
+void OfferBar::offer(const QString& question, const QString& details)
 {
     m_text->setText(question);
+    m_text->setToolTip(details);
     show();
 }
 

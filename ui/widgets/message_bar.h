@@ -22,13 +22,15 @@ private:
 };
 
 /// The bar offering what a session that ended without saving left (unsaved edits): a question
-/// and two answers.
+/// and two answers. The question is plain text (never read as HTML), wraps, and gives way to the
+/// buttons: they stay in the bar however long it is.
 class OfferBar : public QWidget
 {
     Q_OBJECT
 public:
     OfferBar(const QString& accept, const QString& decline, QWidget* parent = nullptr);
-    void offer(const QString& question);
+    /// Shows `question`, with `details` (the full paths the question shortens) as its tooltip.
+    void offer(const QString& question, const QString& details = {});
     QString question() const;
 
 signals:

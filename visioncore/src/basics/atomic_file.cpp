@@ -267,7 +267,7 @@ Error notARegularFile(const std::string& path, unsigned mode)
     return Error{"cannot read " + path + ": " + fileKindName(mode) + ", not a regular file"};
 }
 
-Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes)
+Result<int> openRegularFile(const std::string& path)
 {
     // Non-blocking, so opening a FIFO cannot wait for a writer; refused below anyway.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
@@ -285,10 +285,45 @@ Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes
         ::close(fd);
         return notARegularFile(path, st.st_mode);
     }
+    const int flags = ::fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    return fd;
+}
+
+Status checkRegularFile(const std::string& path)
+{
+    struct stat st
+    {
+    };
+    if (::stat(path.c_str(), &st) != 0)
+        return errnoError("read", path, errno);
+    if (!S_ISREG(st.st_mode))
+        return notARegularFile(path, st.st_mode);
+    return {};
+}
+
+Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes,
+                                  const std::string& cap_for)
+{
+    const std::string cap =
+        std::to_string(max_bytes) + " bytes" + (cap_for.empty() ? "" : " for " + cap_for);
+    auto opened = openRegularFile(path);
+    if (!opened)
+        return opened.error();
+    const int fd = opened.value();
+    struct stat st
+    {
+    };
+    if (::fstat(fd, &st) != 0) {
+        const int error = errno;
+        ::close(fd);
+        return errnoError("read", path, error);
+    }
     if (std::uint64_t(st.st_size) > max_bytes) {
         ::close(fd);
         return Error{"cannot read " + path + ": too large (" + std::to_string(st.st_size) +
-                     " bytes; at most " + std::to_string(max_bytes) + ")"};
+                     " bytes; at most " + cap + ")"};
     }
     std::string text;
     if (st.st_size > 0)
@@ -308,8 +343,7 @@ Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes
         text.append(chunk, std::size_t(n));
         if (text.size() > max_bytes) { // it grew while being read
             ::close(fd);
-            return Error{"cannot read " + path + ": too large (more than " +
-                         std::to_string(max_bytes) + " bytes)"};
+            return Error{"cannot read " + path + ": too large (more than " + cap + ")"};
         }
     }
     ::close(fd);

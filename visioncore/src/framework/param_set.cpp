@@ -126,10 +126,14 @@ Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& 
 
 Result<ParamSet> ParamSet::load(const std::string& path)
 {
-    auto text = readWholeFile(path);
-    if (!text)
-        return text.error();
-    return fromJson(text.value(), path);
+    // Every parameter of every stage takes a few kilobytes.
+    constexpr std::size_t kMaxBytes = std::size_t(1) << 20;
+    return readingWithinMemory(path, [&]() -> Result<ParamSet> {
+        auto text = readWholeFile(path, kMaxBytes, "a parameters file");
+        if (!text)
+            return text.error();
+        return fromJson(text.value(), path);
+    });
 }
 
 Status ParamSet::save(const std::string& path) const

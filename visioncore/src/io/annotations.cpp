@@ -49,13 +49,23 @@ Result<Annotations> Annotations::fromJson(const std::string& text, const std::st
     return annotations;
 }
 
-Result<Annotations> Annotations::load(const std::string& path,
-                                      const std::vector<const PerceptKind*>& kinds)
+std::size_t maxAnnotationsBytes(std::size_t frames)
 {
-    auto text = readWholeFile(path);
-    if (!text)
-        return text.error();
-    return fromJson(text.value(), path, kinds);
+    return (std::size_t(16) << 20) + frames * 4096;
+}
+
+Result<Annotations> Annotations::load(const std::string& path,
+                                      const std::vector<const PerceptKind*>& kinds,
+                                      std::size_t frames)
+{
+    return readingWithinMemory(path, [&]() -> Result<Annotations> {
+        auto text = readWholeFile(path, maxAnnotationsBytes(frames),
+                                  frames ? "annotations of " + std::to_string(frames) + " frames"
+                                         : std::string("annotations"));
+        if (!text)
+            return text.error();
+        return fromJson(text.value(), path, kinds);
+    });
 }
 
 std::string Annotations::toJson(const std::vector<const PerceptKind*>& order) const

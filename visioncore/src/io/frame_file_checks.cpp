@@ -1,8 +1,9 @@
 // The checks of a frame file before decoding (PNG chunk CRCs, BMP layout, header sizes) and the
-// decoding itself, with libjpeg for JPEG and OpenCV for PNG and BMP.
+// decoding itself, with libjpeg for JPEG, libpng for PNG and OpenCV for BMP.
 #include "io/frame_file_checks.h"
 
 #include "io/jpeg_decoder.h"
+#include "io/png_decoder.h"
 #include "io/stream_readers.h"
 #include "visioncore/basics/atomic_file.h"
 
@@ -226,6 +227,8 @@ Result<cv::Mat> decodeImageFile(const std::string& path, std::optional<HeaderSiz
         return Error{"cannot read " + path + ": " + *damage};
     if (jpeg) // libjpeg's reading of the header is checked too: fill bytes may hide it above
         return decodeJpeg(path, h, n, checkSize);
+    if (png) // libpng's own lines on a damaged header or image data become this one
+        return decodePng(path, h, n, checkSize);
     cv::Mat bgr;
     try {
         bgr = cv::imdecode(cv::Mat(1, int(n), CV_8U, const_cast<unsigned char*>(h)),

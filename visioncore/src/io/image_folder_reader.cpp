@@ -5,17 +5,23 @@
 #include "io/frame_file_checks.h"
 #include "io/nuview_folder.h"
 #include "io/stream_manifest.h"
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <system_error>
+#include <unordered_map>
 #include <vector>
+
+#include <sys/stat.h>
 
 namespace fieldsight::io {
 
@@ -27,6 +33,39 @@ bool isImageFile(const fs::path& path)
 {
     const std::string ext = lowercase(path.extension().string());
     return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp";
+}
+
+/// Why the folder entry `path`, named as a frame, is not one, or nullopt when it is a regular
+/// file (after links): a dangling link, a link loop, a FIFO or a folder is skipped and reported.
+std::optional<std::string> brokenFrameEntry(const std::string& path)
+{
+    struct stat st
+    {
+    };
+    if (::stat(path.c_str(), &st) == 0)
+        return S_ISREG(st.st_mode)
+                   ? std::nullopt
+                   : std::optional<std::string>(path + ": skipped, " + fileKindName(st.st_mode) +
+                                                ", not a frame file");
+    const int error = errno;
+    if (error == ENOENT) // the entry is there, so it is a link whose target is not
+        return path + ": skipped, a link to a file that does not exist";
+    if (error == ELOOP)
+        return path + ": skipped, a link loop (" + std::strerror(error) + ")";
+    return path + ": skipped, " + std::strerror(error);
+}
+
+/// The reported entries, at most kMaxReported lines: a folder of thousands of broken links is
+/// one message, not thousands.
+std::vector<std::string> reported(std::vector<std::string> skipped)
+{
+    constexpr std::size_t kMaxReported = 10;
+    if (skipped.size() > kMaxReported) {
+        const std::size_t more = skipped.size() - (kMaxReported - 1);
+        skipped.resize(kMaxReported - 1);
+        skipped.push_back("and " + std::to_string(more) + " more entries skipped");
+    }
+    return skipped;
 }
 
 class ImageFolderReader final : public StreamReader
@@ -108,21 +147,27 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
 {
     const fs::path folder(folder_arg);
     std::vector<std::string> files;
+    std::vector<std::string> skipped;
     std::error_code ec;
     fs::directory_iterator it(folder, ec);
     if (ec)
         return Error{"cannot read " + folder_arg + ": " + ec.message()};
-    for (const auto& entry : it) {
-        std::error_code type_ec;
-        if (entry.is_regular_file(type_ec) && isImageFile(entry.path()))
-            files.push_back(entry.path().filename().string());
+    for (; it != fs::directory_iterator(); it.increment(ec)) {
+        if (!isImageFile(it->path()))
+            continue;
+        if (auto problem = brokenFrameEntry(it->path().string()))
+            skipped.push_back(std::move(*problem));
+        else
+            files.push_back(it->path().filename().string());
     }
+    if (ec)
+        return Error{"cannot read " + folder_arg + ": " + ec.message()};
 
     const fs::path manifest_path = folder / kManifestName;
     Manifest manifest;
     const bool has_manifest = fs::exists(manifest_path, ec);
     if (has_manifest) {
-        auto parsed = parseManifest(manifest_path.string());
+        auto parsed = parseManifest(manifest_path.string(), files.size());
         if (!parsed)
             return parsed.error();
         manifest = std::move(parsed).value();
@@ -136,12 +181,15 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     std::sort(files.begin(), files.end(), naturalLess);
 
     std::vector<FrameMeta> meta(files.size());
+    std::unordered_map<std::string, std::size_t> index_of;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        index_of.emplace(files[i], i);
     for (const auto& [file, entry] : manifest.frames) {
-        const auto pos = std::find(files.begin(), files.end(), file);
-        if (pos == files.end())
+        const auto pos = index_of.find(file);
+        if (pos == index_of.end())
             return Error{manifest_path.string() + ": frame \"" + file +
                          "\" is not an image in the folder"};
-        meta[std::size_t(pos - files.begin())] = entry;
+        meta[pos->second] = entry;
     }
 
     StreamInfo info;
@@ -149,6 +197,8 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     info.kind = StreamKind::ImageFolder;
     info.frame_count = files.size();
     info.fov_deg = manifest.fov_deg;
+    std::sort(skipped.begin(), skipped.end(), naturalLess);
+    info.warnings = reported(std::move(skipped));
     info.stream_orientation = manifest.orientation; // openStream turns the frames
     if (manifest.lut) {
         // Named by the manifest: keep it even if missing, so loading it reports the bad name.

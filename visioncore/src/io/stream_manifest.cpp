@@ -49,11 +49,10 @@ std::string shortText(const nlohmann::json& value)
     return text;
 }
 
-} // namespace
-
-Result<Manifest> parseManifest(const std::string& path)
+Result<Manifest> readManifest(const std::string& path, std::size_t frames)
 {
-    auto text = readWholeFile(path);
+    auto text = readWholeFile(path, maxManifestBytes(frames),
+                              "a stream.json of " + std::to_string(frames) + " frames");
     if (!text)
         return text.error();
     auto parsed = parseJson(text.value(), path);
@@ -146,6 +145,18 @@ Result<Manifest> parseManifest(const std::string& path)
     return manifest;
 }
 
+} // namespace
+
+std::size_t maxManifestBytes(std::size_t frames)
+{
+    return (std::size_t(1) << 20) + frames * 1024;
+}
+
+Result<Manifest> parseManifest(const std::string& path, std::size_t frames)
+{
+    return readingWithinMemory(path, [&] { return readManifest(path, frames); });
+}
+
 } // namespace fieldsight::io
 
 namespace fieldsight {
@@ -187,7 +198,11 @@ Status updateManifest(const std::string& folder, const std::string& what,
     nlohmann::ordered_json root;
     if (fs::exists(fs::symlink_status(path, ec))) {
         // Only a manifest the stream opens with is rewritten: a damaged one stays as it is.
-        if (auto checked = io::parseManifest(path.string()); !checked)
+        std::size_t entries = 0; // at least the frames: the stream's own cap, or more
+        for (fs::directory_iterator it(folder, ec); !ec && it != fs::directory_iterator();
+             it.increment(ec))
+            ++entries;
+        if (auto checked = io::parseManifest(path.string(), entries); !checked)
             return Error{checked.error().message + "; the " + what + " was not saved"};
         if (readOnly(path))
             return Error{path.string() + ": the file is read-only; the " + what + " was not saved"};

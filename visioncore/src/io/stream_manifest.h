@@ -7,6 +7,7 @@
 #include "visioncore/io/orientation.h"
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -35,7 +36,14 @@ struct Manifest
     std::map<std::string, FrameMeta> frames; ///< by file name
 };
 
-/// Reads and checks the manifest at `path`; errors name the file and the problem.
-Result<Manifest> parseManifest(const std::string& path);
+/// The largest stream.json read for a folder of `frames` frame files: 1 MiB for what does not
+/// grow with the stream, and 1 KiB a frame (an entry with a 255-byte file name, a timestamp and
+/// a horizon is under 400 bytes; the sample streams' are 117). Parsed, JSON takes 15 to 25 times
+/// its size in memory: an unbounded stream.json could take the machine's.
+std::size_t maxManifestBytes(std::size_t frames);
+
+/// Reads and checks the manifest at `path` of a folder of `frames` frame files, refused unread
+/// when larger than maxManifestBytes(frames); errors name the file and the problem.
+Result<Manifest> parseManifest(const std::string& path, std::size_t frames);
 
 } // namespace fieldsight::io

@@ -2,15 +2,19 @@
 #include "visioncore/io/stream_reader.h"
 
 #include "io/stream_readers.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <opencv2/core/utils/logger.hpp>
 
 #include <algorithm>
 #include <cstdlib>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <filesystem>
-#include <system_error>
+
+#include <sys/stat.h>
 
 namespace fieldsight {
 
@@ -113,12 +117,22 @@ ReaderResult openStored(const std::string& spec)
         return io::openCamera(device, spec);
     }
 
-    std::error_code ec;
-    const fs::file_status status = fs::status(spec, ec);
-    if (ec || !fs::exists(status))
-        return Error{spec + ": no such file or folder"};
-    if (fs::is_directory(status))
+    // What the path names, by stat: a link loop, a name longer than the system allows or a
+    // folder without permission is reported as what it is, not as a missing file; a FIFO or a
+    // device is refused before anything opens it (opening a FIFO would wait for a writer).
+    struct stat st
+    {
+    };
+    if (::stat(spec.c_str(), &st) != 0) {
+        const int error = errno;
+        if (error == ENOENT || error == ENOTDIR)
+            return Error{spec + ": no such file or folder"};
+        return Error{"cannot open " + spec + ": " + std::strerror(error)};
+    }
+    if (S_ISDIR(st.st_mode))
         return io::openImageFolder(spec, spec);
+    if (!S_ISREG(st.st_mode))
+        return notARegularFile(spec, st.st_mode);
     if (lowercase(fs::path(spec).extension().string()) == ".strm")
         return io::openStrm(spec, spec);
     return io::openVideo(spec, spec);

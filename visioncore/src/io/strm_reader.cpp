@@ -3,6 +3,7 @@
 #include "io/sensor_strm.h"
 #include "io/strm_format.h"
 #include "io/stream_readers.h"
+#include "visioncore/basics/atomic_file.h"
 
 #include <cerrno>
 #include <cmath>
@@ -10,7 +11,6 @@
 #include <filesystem>
 #include <system_error>
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -112,9 +112,11 @@ private:
 
 ReaderResult openStrm(const std::string& path, const std::string& spec)
 {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        return Error{"cannot read " + path + ": " + std::strerror(errno)};
+    // A FIFO or a device is refused, never waited on.
+    auto opened = openRegularFile(path);
+    if (!opened)
+        return opened.error();
+    const int fd = opened.value();
     struct stat st
     {
     };

@@ -1,6 +1,7 @@
 // Video files and live cameras through OpenCV videoio, converted to Y, Cb, Cr like RGB folders.
 #include "io/stream_readers.h"
 
+#include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/imgproc.hpp>
@@ -93,6 +94,9 @@ bool openCapture(cv::VideoCapture& capture, const std::string& path, int device)
 
 ReaderResult openVideo(const std::string& path, const std::string& spec)
 {
+    // The back ends open the file by name and would wait on a FIFO for a writer.
+    if (Status s = checkRegularFile(path); !s)
+        return s.error();
     cv::VideoCapture capture;
     if (!openCapture(capture, path, 0))
         return Error{path + ": not a stream (no image folder, .strm, or video OpenCV can open)"};

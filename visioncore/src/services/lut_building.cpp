@@ -4,6 +4,7 @@
 
 #include "visioncore/basics/json_text.h"
 #include "basics/json_format.h"
+#include "services/polygon_fill.h"
 
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/percepts/ball.h"
@@ -240,12 +241,21 @@ Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string
     return out;
 }
 
-Result<LutSamples> loadLutSamples(const std::string& path)
+std::size_t maxLutSamplesBytes(std::size_t frames)
 {
-    auto text = readWholeFile(path);
-    if (!text)
-        return text.error();
-    return lutSamplesFromJson(text.value(), path);
+    return (std::size_t(16) << 20) + frames * 4096;
+}
+
+Result<LutSamples> loadLutSamples(const std::string& path, std::size_t frames)
+{
+    return readingWithinMemory(path, [&]() -> Result<LutSamples> {
+        auto text = readWholeFile(path, maxLutSamplesBytes(frames),
+                                  frames ? "LUT samples of " + std::to_string(frames) + " frames"
+                                         : std::string("LUT samples"));
+        if (!text)
+            return text.error();
+        return lutSamplesFromJson(text.value(), path);
+    });
 }
 
 std::string lutSamplesToJson(const LutSamples& samples)
@@ -350,11 +360,8 @@ std::size_t LutVotes::addFrame(const cv::Mat& ycbcr, const std::vector<const Lut
         return 0;
     cv::Mat labels(ycbcr.size(), CV_8U, cv::Scalar(kNoVote));
     for (const LutSample* s : samples) {
-        const std::vector<std::vector<cv::Point>> polygons{s->polygon};
-        const std::uint8_t label = s->exclude ? kHole : std::uint8_t(s->colour);
         // Filled with its outline, so a box's corners at inclusive pixels cover the whole box.
-        cv::fillPoly(labels, polygons, cv::Scalar(label));
-        cv::polylines(labels, polygons, true, cv::Scalar(label));
+        fillPolygon(labels, s->polygon, s->exclude ? kHole : std::uint8_t(s->colour));
     }
     std::size_t voted = 0;
     for (int y = 0; y < ycbcr.rows; ++y) {

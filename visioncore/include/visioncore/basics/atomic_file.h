@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <new>
 #include <string>
 #include <string_view>
 
@@ -42,8 +43,33 @@ inline constexpr std::size_t kMaxReadBytes = std::size_t(256) << 20;
 
 /// Reads a whole regular file of at most `max_bytes`; the error names the file and the problem
 /// (a folder, a FIFO or a device is refused before reading, so /dev/zero or a pipe cannot grow
-/// memory without bound or block).
-Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes = kMaxReadBytes);
+/// memory without bound or block; a file over the cap is refused unread, saying the cap and,
+/// when given, what it is for: "... at most 1079296 bytes for a stream.json of 30 frames").
+Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes = kMaxReadBytes,
+                                  const std::string& cap_for = {});
+
+/// Opens `path` for reading as a regular file: without waiting (a FIFO with no writer does not
+/// block the caller), then refused unless it is a regular file. The descriptor (blocking, to be
+/// closed by the caller) or the Error of every read ("cannot read <path>: a FIFO, not a regular
+/// file", or the system's reason: a link loop, a name too long, no permission).
+Result<int> openRegularFile(const std::string& path);
+
+/// The same check for a reader that opens `path` by name itself (OpenCV's video back ends): an
+/// Error unless `path` is, after links, a regular file. Nothing is opened, so nothing can wait.
+Status checkRegularFile(const std::string& path);
+
+/// Runs `read` (the reading of the file `path`, returning a Result), with running out of memory
+/// while reading or parsing it an Error naming the file instead of a std::bad_alloc: a file
+/// within its size cap can still need more memory than is left.
+template <class Read>
+auto readingWithinMemory(const std::string& path, Read&& read) -> decltype(read())
+{
+    try {
+        return read();
+    } catch (const std::bad_alloc&) {
+        return Error{"cannot read " + path + ": not enough memory to read it"};
+    }
+}
 
 /// What kind of thing `mode` (a stat st_mode) is, for messages: "a folder", "a FIFO", ...
 std::string fileKindName(unsigned mode);

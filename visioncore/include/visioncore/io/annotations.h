@@ -4,6 +4,7 @@
 #include "visioncore/percepts/percept_set.h"
 #include "visioncore/basics/result.h"
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,14 +21,22 @@ struct FrameAnnotation
 /// where a .strm of the same frames names them "frame_000000"; the two match by stem.
 std::string frameStem(const std::string& name);
 
+/// The largest annotations file read for a stream of `frames` frames (0: not known): 16 MiB and
+/// 4 KiB a frame. The sample streams' take 0.8 to 1.4 KB a frame (a field boundary of a few dozen
+/// points, posts, lines, a ball), so 16 MiB alone holds twice the paper's longest stream; parsed,
+/// JSON takes 15 to 25 times its size in memory.
+std::size_t maxAnnotationsBytes(std::size_t frames);
+
 struct Annotations
 {
     std::map<std::string, FrameAnnotation> frames; ///< by frame name
 
     /// Reads the lists of `kinds` (a pipeline's perceptKinds()); other keys of a frame are
-    /// ignored.
+    /// ignored. A file over maxAnnotationsBytes(`frames`) is refused unread, and running out
+    /// of memory is an Error naming the file.
     static Result<Annotations> load(const std::string& path,
-                                    const std::vector<const PerceptKind*>& kinds);
+                                    const std::vector<const PerceptKind*>& kinds,
+                                    std::size_t frames = 0);
     static Result<Annotations> fromJson(const std::string& text, const std::string& source,
                                         const std::vector<const PerceptKind*>& kinds);
     /// Each frame's lists of `order` (a pipeline's perceptKinds()) first, in that order, then

@@ -26,6 +26,10 @@ struct StreamInfo
     std::size_t frame_count = 0;
     std::string default_lut; ///< the manifest's lut or <folder>/default.lut; empty if none exists
     std::optional<std::array<double, 2>> fov_deg; ///< deg, horizontal and vertical
+    /// What the reader skipped, one line each naming it (a frame entry that is a dangling link,
+    /// a link loop, a FIFO): the stream opened without it. Commands print these, the window
+    /// shows them.
+    std::vector<std::string> warnings;
     /// How far the stored pictures are turned clockwise as they are read: the stream's own
     /// orientation, or the one asked for when it was opened.
     Orientation orientation = Orientation::Upright;

@@ -53,7 +53,13 @@ std::string defaultLutSamplesPath(const std::string& stream);
 ///
 /// Errors name `source` and the problem (the sample's index and field).
 Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string& source);
-Result<LutSamples> loadLutSamples(const std::string& path);
+/// The largest samples file read for a stream of `frames` frames (0: not known): 16 MiB and
+/// 4 KiB a frame. A sample drawn by hand is a few points; those made from a frame's annotations
+/// take 1 to 3 KB.
+std::size_t maxLutSamplesBytes(std::size_t frames);
+/// Reads a samples file; one over maxLutSamplesBytes(`frames`) is refused unread, and running
+/// out of memory is an Error naming the file.
+Result<LutSamples> loadLutSamples(const std::string& path, std::size_t frames = 0);
 std::string lutSamplesToJson(const LutSamples& samples);
 Status saveLutSamples(const std::string& path, const LutSamples& samples); ///< atomic
 
