@@ -2,6 +2,7 @@
 // brush stroke change exactly the expected cells, undo restores the bytes and redo re-applies,
 // the frame is reclassified, save then load gives the same bytes, and unsaved edits left by a
 // crashed session are offered and restored.
+#include "support/test_files.h"
 #include "support/synthetic_frames.h"
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
@@ -30,13 +31,9 @@
 
 using namespace fieldsight;
 using fieldsight::ui::MainWindow;
+using test::sampleStream;
 
 namespace {
-
-QString sampleStream()
-{
-    return QString::fromStdString(test::sampleStreamsDir() + "/lab1");
-}
 
 bool waitForLut(MainWindow& w, const std::shared_ptr<const ColourLut>& lut)
 {

@@ -3,6 +3,7 @@
 // frame. The pipeline has an eighth, fake stage added by this test alone: the window shows its
 // layer, its parameter and its timing without any UI change.
 #include "commands/commands.h"
+#include "support/test_files.h"
 #include "support/fake_stage.h"
 #include "support/window_waits.h"
 #include "support/synthetic_frames.h"
@@ -52,11 +53,6 @@ using namespace fieldsight::test;
 using fieldsight::ui::MainWindow;
 
 namespace {
-
-QString sampleStream()
-{
-    return QString::fromStdString(sampleStreamsDir() + "/lab1");
-}
 
 /// The view's image region at zoom 1 with the image at the view's top-left corner.
 QImage viewImage(MainWindow& w)

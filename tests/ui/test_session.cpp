@@ -4,6 +4,7 @@
 // history dock follows the document edited last; a tool added by this test alone (FakeTool, one
 // registration line) gets its button, menu item and shortcut and receives the view's mouse events;
 // every question goes through the dialogs seam.
+#include "support/test_files.h"
 #include "support/fake_stage.h"
 #include "support/fake_tool.h"
 #include "support/scripted_dialogs.h"
@@ -31,17 +32,6 @@ using namespace fieldsight::test;
 using fieldsight::ui::MainWindow;
 
 namespace {
-
-QString sampleStream()
-{
-    return QString::fromStdString(sampleStreamsDir() + "/lab1");
-}
-
-QByteArray fileBytes(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 QByteArray lutBytes(MainWindow& w)
 {

@@ -1,6 +1,7 @@
 // What the venue trial of issue 21 found in the window, each as the user met it: a damaged table
 // beside a stream, a warning that outlived its cause, Save LUT As starting in the wrong folder,
 // classes without keys, the wheel changing a parameter while the panel scrolls, stale previews.
+#include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -31,17 +32,6 @@ using namespace fieldsight::test;
 using fieldsight::ui::MainWindow;
 
 namespace {
-
-QString sampleStream()
-{
-    return QString::fromStdString(sampleStreamsDir() + "/lab1");
-}
-
-QByteArray fileBytes(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 bool writeBytes(const QString& path, const QByteArray& bytes)
 {

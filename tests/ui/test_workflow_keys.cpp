@@ -3,6 +3,7 @@
 // and next bookmark; Ctrl+E saves the view as PNG and Ctrl+Shift+C copies it; Alt+1..4 show the
 // frame raw, classified, side by side and blended. Each checks what the user sees or what lands
 // on disk.
+#include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -24,11 +25,6 @@ using namespace fieldsight::test;
 using fieldsight::ui::MainWindow;
 
 namespace {
-
-QString sampleStream()
-{
-    return QString::fromStdString(sampleStreamsDir() + "/lab1");
-}
 
 /// The view's pixels in `area` (widget px).
 QImage viewPixels(MainWindow& w, const QRect& area)

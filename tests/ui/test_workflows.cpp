@@ -4,6 +4,7 @@
 // the recovery bar's Recover and Discard, Ctrl+S and Save As of a table imported from another
 // team's format, opening a table (good, foreign, damaged), dropping a stream folder or a table on
 // the window, and the recent streams menu.
+#include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -26,12 +27,6 @@ using namespace fieldsight::test;
 using fieldsight::ui::MainWindow;
 
 namespace {
-
-QByteArray fileBytes(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 bool writeFile(const QString& path, const QByteArray& bytes)
 {
