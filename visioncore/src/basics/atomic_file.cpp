@@ -267,7 +267,7 @@ Error notARegularFile(const std::string& path, unsigned mode)
     return Error{"cannot read " + path + ": " + fileKindName(mode) + ", not a regular file"};
 }
 
-Result<int> openRegularFile(const std::string& path)
+Result<OpenedFile> openRegularFile(const std::string& path)
 {
     // Non-blocking, so opening a FIFO cannot wait for a writer; refused below anyway.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
@@ -288,7 +288,7 @@ Result<int> openRegularFile(const std::string& path)
     const int flags = ::fcntl(fd, F_GETFL);
     if (flags >= 0)
         ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
-    return fd;
+    return OpenedFile{fd, std::uint64_t(st.st_size)};
 }
 
 Status checkRegularFile(const std::string& path)
@@ -311,23 +311,15 @@ Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes
     auto opened = openRegularFile(path);
     if (!opened)
         return opened.error();
-    const int fd = opened.value();
-    struct stat st
-    {
-    };
-    if (::fstat(fd, &st) != 0) {
-        const int error = errno;
+    const auto [fd, size] = opened.value();
+    if (size > max_bytes) {
         ::close(fd);
-        return errnoError("read", path, error);
-    }
-    if (std::uint64_t(st.st_size) > max_bytes) {
-        ::close(fd);
-        return Error{"cannot read " + path + ": too large (" + std::to_string(st.st_size) +
+        return Error{"cannot read " + path + ": too large (" + std::to_string(size) +
                      " bytes; at most " + cap + ")"};
     }
     std::string text;
-    if (st.st_size > 0)
-        text.reserve(std::size_t(st.st_size));
+    if (size > 0)
+        text.reserve(std::size_t(size));
     char chunk[65536];
     for (;;) {
         const ssize_t n = ::read(fd, chunk, sizeof chunk);

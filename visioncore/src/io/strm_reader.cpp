@@ -116,16 +116,9 @@ ReaderResult openStrm(const std::string& path, const std::string& spec)
     auto opened = openRegularFile(path);
     if (!opened)
         return opened.error();
-    const int fd = opened.value();
-    struct stat st
-    {
-    };
-    if (::fstat(fd, &st) != 0) {
-        const int error = errno;
-        ::close(fd);
-        return Error{"cannot read " + path + ": " + std::strerror(error)};
-    }
-    const auto file_size = std::uint64_t(st.st_size);
+    // Plain names, not a structured binding: the lambdas below capture them (clang 14).
+    const int fd = opened.value().fd;
+    const std::uint64_t file_size = opened.value().size;
     auto fail = [&](std::size_t record, std::uint64_t offset, const std::string& problem) {
         ::close(fd);
         return Error{path + ": record " + std::to_string(record) + " at byte offset " +

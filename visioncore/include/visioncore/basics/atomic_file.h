@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <new>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -52,7 +53,13 @@ Result<std::string> readWholeFile(const std::string& path, std::size_t max_bytes
 /// block the caller), then refused unless it is a regular file. The descriptor (blocking, to be
 /// closed by the caller) or the Error of every read ("cannot read <path>: a FIFO, not a regular
 /// file", or the system's reason: a link loop, a name too long, no permission).
-Result<int> openRegularFile(const std::string& path);
+/// An open regular file: its descriptor (the caller closes it) and its size when opened.
+struct OpenedFile
+{
+    int fd = -1;
+    std::uint64_t size = 0; ///< bytes
+};
+Result<OpenedFile> openRegularFile(const std::string& path);
 
 /// The same check for a reader that opens `path` by name itself (OpenCV's video back ends): an
 /// Error unless `path` is, after links, a regular file. Nothing is opened, so nothing can wait.
