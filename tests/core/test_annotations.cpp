@@ -208,6 +208,92 @@ private slots:
             not_json.error().message.c_str());
     }
 
+    void flagsAndReviewedKindsRoundTripAndOldReadersSeeTheSameTruth()
+    {
+        // An object's flags are optional fields of the object, "reviewed" an optional list of
+        // the frame: a file without them reads as before, one with them keeps them.
+        const char* text = R"({"format": "fieldsight-annotations/1", "frames": {
+            "f1.png": {"done": false, "reviewed": ["goalposts"],
+                       "balls": [{"x": 10, "y": 20, "radius": 5, "concealed": true, "track": 7,
+                                  "keyframe": true, "interpolate": false},
+                                 {"x": 40, "y": 50, "radius": 3, "interpolated": true}],
+                       "goalposts": []}}})";
+        auto parsed = Annotations::fromJson(text, "a.json", kinds());
+        QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
+        const FrameAnnotation& f = parsed.value().frames.at("f1.png");
+        QVERIFY(f.complete("goalposts"));
+        QVERIFY(!f.complete("balls"));
+        QCOMPARE(f.truth.list<Ball>().size(), std::size_t(2));
+        const ObjectFlags first = f.flagsOf("balls", 0);
+        QVERIFY(first.concealed && first.keyframe && !first.interpolate && !first.interpolated);
+        QCOMPARE(first.track, 7);
+        QVERIFY(f.flagsOf("balls", 1).interpolated);
+        QVERIFY(f.flagsOf("balls", 5).isDefault());
+
+        const std::string json = parsed.value().toJson(kinds());
+        auto again = Annotations::fromJson(json, "b.json", kinds());
+        QVERIFY(again.ok());
+        QVERIFY(again.value().frames.at("f1.png") == f);
+        QCOMPARE(again.value().toJson(kinds()), json);
+
+        FrameAnnotation changed = f;
+        changed.setFlags("balls", 1, {});
+        QVERIFY(!(changed == f));
+        changed.eraseFlags("balls", 0);
+        QVERIFY(changed.flagsOf("balls", 0).isDefault());
+    }
+
+    void badFlagsAndNewerFormatsAreRefusedByName()
+    {
+        auto bad = Annotations::fromJson(
+            R"({"format": "fieldsight-annotations/1", "frames": {"f.png": {"balls":
+                [{"x": 1, "y": 2, "radius": 3, "concealed": "yes"}]}}})",
+            "ann.json", kinds());
+        QVERIFY(!bad.ok());
+        QVERIFY2(bad.error().message.find("ann.json") != std::string::npos &&
+                     bad.error().message.find("balls[0].concealed") != std::string::npos,
+                 bad.error().message.c_str());
+        auto newer = Annotations::fromJson(
+            R"({"format": "fieldsight-annotations/2", "frames": {}})", "new.json", kinds());
+        QVERIFY(!newer.ok());
+        QVERIFY2(newer.error().message.find("new.json") != std::string::npos &&
+                     newer.error().message.find("newer") != std::string::npos,
+                 newer.error().message.c_str());
+    }
+
+    void everyDrawnKindRoundTripsThroughItsEditShape()
+    {
+        for (const PerceptKind* kind : kinds()) {
+            if (kind->form == ShapeForm::None)
+                continue;
+            EditShape shape;
+            switch (kind->form) {
+            case ShapeForm::Circle:
+                shape = {{{12.5, 30}}, 6};
+                break;
+            case ShapeForm::Box:
+                shape = {{{10, 20}, {30, 60}}, 0};
+                break;
+            case ShapeForm::Polyline:
+                shape = {{{0, 50}, {100, 40}, {319, 55}}, 0};
+                break;
+            case ShapeForm::Segment:
+                shape = {{{5, 6}, {70, 80}}, 0};
+                break;
+            case ShapeForm::None:
+                break;
+            }
+            auto entry = kind->make();
+            entry->setShapes({shape});
+            QCOMPARE(entry->size(), std::size_t(1));
+            QVERIFY2(entry->shapes().front() == shape, std::string(kind->key).c_str());
+        }
+        // A box drawn from its bottom-right corner is the same box.
+        auto box = perceptKind<Obstacle>().make();
+        box->setShapes({{{{30, 60}, {10, 20}}, 0}});
+        QVERIFY((box->shapes().front() == EditShape{{{10, 20}, {30, 60}}, 0}));
+    }
+
     void loadingAMissingFileNamesIt()
     {
         auto loaded = Annotations::load("/nonexistent/annotations.json", kinds());

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
+
 #include <string>
 
 namespace fieldsight {
@@ -24,9 +26,18 @@ inline Result<nlohmann::json> parseFormattedJson(const std::string& text, const 
     const auto found = root.find("format");
     if (found == root.end() || !found->is_string())
         return Error{source + ": missing \"format\": \"" + format + "\""};
-    if (found->get<std::string>() != format)
-        return Error{source + ": unsupported format \"" + found->get<std::string>() +
-                     "\" (expected \"" + format + "\")"};
+    const std::string given = found->get<std::string>();
+    if (given != format) {
+        const auto slash = format.rfind('/');
+        const bool newer =
+            slash != std::string::npos && given.size() > slash + 1 &&
+            given.compare(0, slash + 1, format, 0, slash + 1) == 0 &&
+            std::atof(given.c_str() + slash + 1) > std::atof(format.c_str() + slash + 1);
+        return Error{
+            source + ": unsupported format \"" + given + "\" (expected \"" + format + "\")" +
+            (newer ? ": a newer Fieldsight wrote it; this one reads only \"" + format + "\""
+                   : std::string())};
+    }
     return root;
 }
 

@@ -31,3 +31,18 @@ void PerceptTraits<Ball>::draw(const std::vector<Ball>& balls, Rgb ink, double w
 }
 
 } // namespace fieldsight
+
+namespace fieldsight {
+
+EditShape PerceptTraits<Ball>::shapeOf(const Ball& b)
+{
+    return {{{b.x, b.y}}, b.radius};
+}
+
+Ball PerceptTraits<Ball>::fromShape(const EditShape& s)
+{
+    const PointF c = s.points.empty() ? PointF{} : s.points.front();
+    return {c.x, c.y, std::max(0.0, s.radius)};
+}
+
+} // namespace fieldsight

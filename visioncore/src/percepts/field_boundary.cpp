@@ -3,6 +3,8 @@
 
 #include "percepts/percept_json.h"
 
+#include <algorithm>
+
 namespace fieldsight {
 
 using namespace percept_json;
@@ -49,6 +51,23 @@ const std::vector<PointF>& boundaryOf(const PerceptSet& set)
     static const std::vector<PointF> none;
     const auto& list = set.list<FieldBoundary>();
     return list.empty() ? none : list.front().points;
+}
+
+} // namespace fieldsight
+
+namespace fieldsight {
+
+EditShape PerceptTraits<FieldBoundary>::shapeOf(const FieldBoundary& b)
+{
+    return {b.points, 0};
+}
+
+FieldBoundary PerceptTraits<FieldBoundary>::fromShape(const EditShape& s)
+{
+    FieldBoundary b{s.points};
+    std::stable_sort(b.points.begin(), b.points.end(),
+                     [](const PointF& a, const PointF& c) { return a.x < c.x; });
+    return b;
 }
 
 } // namespace fieldsight

@@ -32,3 +32,19 @@ void PerceptTraits<FieldLine>::draw(const std::vector<FieldLine>& lines, Rgb ink
 }
 
 } // namespace fieldsight
+
+namespace fieldsight {
+
+EditShape PerceptTraits<FieldLine>::shapeOf(const FieldLine& l)
+{
+    return {{{l.x1, l.y1}, {l.x2, l.y2}}, 0};
+}
+
+FieldLine PerceptTraits<FieldLine>::fromShape(const EditShape& s)
+{
+    const PointF a = s.points.size() > 0 ? s.points[0] : PointF{};
+    const PointF b = s.points.size() > 1 ? s.points[1] : a;
+    return {a.x, a.y, b.x, b.y};
+}
+
+} // namespace fieldsight

@@ -53,3 +53,21 @@ void PerceptTraits<Goalpost>::draw(const std::vector<Goalpost>& posts, Rgb ink, 
 }
 
 } // namespace fieldsight
+
+namespace fieldsight {
+
+EditShape PerceptTraits<Goalpost>::shapeOf(const Goalpost& p)
+{
+    return {{{double(p.left), double(p.top)}, {double(p.right), double(p.bottom)}}, 0};
+}
+
+Goalpost PerceptTraits<Goalpost>::fromShape(const EditShape& s)
+{
+    const Box box = boxOfShape(s);
+    Goalpost post{box.left, box.right, box.top, box.bottom};
+    post.base_x = (post.left + post.right) / 2.0;
+    post.base_y = post.bottom;
+    return post;
+}
+
+} // namespace fieldsight

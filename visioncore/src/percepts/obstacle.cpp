@@ -38,3 +38,18 @@ void PerceptTraits<Obstacle>::draw(const std::vector<Obstacle>& obstacles, Rgb i
 }
 
 } // namespace fieldsight
+
+namespace fieldsight {
+
+EditShape PerceptTraits<Obstacle>::shapeOf(const Obstacle& o)
+{
+    return {{{double(o.left), double(o.top)}, {double(o.right), double(o.bottom)}}, 0};
+}
+
+Obstacle PerceptTraits<Obstacle>::fromShape(const EditShape& s)
+{
+    const Box box = boxOfShape(s);
+    return {box.left, box.right, box.top, box.bottom};
+}
+
+} // namespace fieldsight

@@ -3,9 +3,11 @@
 #pragma once
 
 #include "visioncore/framework/debug_drawing.h"
+#include "visioncore/percepts/percept_set.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -108,3 +110,26 @@ void writeList(const std::vector<P>& items, OrderedJson& value, Each each)
 }
 
 } // namespace fieldsight::percept_json
+
+namespace fieldsight {
+
+/// A box's inclusive pixel rows and columns.
+struct Box
+{
+    int left = 0;
+    int right = 0;
+    int top = 0;
+    int bottom = 0;
+};
+
+/// The box a Box EditShape's two corners span, in either order, rounded to pixels.
+inline Box boxOfShape(const EditShape& shape)
+{
+    const PointF a = shape.points.size() > 0 ? shape.points[0] : PointF{};
+    const PointF b = shape.points.size() > 1 ? shape.points[1] : a;
+    const auto lo = [](double u, double v) { return int(std::lround(std::min(u, v))); };
+    const auto hi = [](double u, double v) { return int(std::lround(std::max(u, v))); };
+    return {lo(a.x, b.x), hi(a.x, b.x), lo(a.y, b.y), hi(a.y, b.y)};
+}
+
+} // namespace fieldsight

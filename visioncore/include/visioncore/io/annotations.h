@@ -6,15 +6,51 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fieldsight {
+
+/// What an annotator says about one true object beyond its geometry (optional fields of the
+/// object in SPEC §5.2; only those that differ from the defaults are written).
+struct ObjectFlags
+{
+    bool concealed = false;    ///< partly hidden or blurred: scored apart, a miss is no plain miss
+    int track = 0;             ///< the same object over frames (0: none)
+    bool keyframe = false;     ///< placed by hand as a keyframe of its track
+    bool interpolate = true;   ///< (keyframes) the frames since the track's previous keyframe are
+                               ///< interpolated
+    bool interpolated = false; ///< made by interpolating between two keyframes of its track
+
+    bool isDefault() const { return *this == ObjectFlags{}; }
+    friend bool operator==(const ObjectFlags&, const ObjectFlags&) = default;
+};
 
 struct FrameAnnotation
 {
     bool done = false; ///< fully annotated: what is absent is truly absent
     PerceptSet truth;  ///< read and written with the percepts' truth keys ("field_boundary")
+    /// By truth key, parallel to that kind's list in `truth` (a shorter list: the rest default).
+    std::map<std::string, std::vector<ObjectFlags>, std::less<>> flags;
+    /// Truth keys whose list is complete on this frame although the frame is not done: reviewed,
+    /// and (when the list is empty) "nothing here".
+    std::set<std::string, std::less<>> reviewed;
+
+    ObjectFlags flagsOf(std::string_view truth_key, std::size_t index) const;
+    /// Sets the flags of object `index` of kind `truth_key` (the list grows with defaults).
+    void setFlags(std::string_view truth_key, std::size_t index, const ObjectFlags& f);
+    /// Removes object `index`'s flags (the object was removed): later objects' move up.
+    void eraseFlags(std::string_view truth_key, std::size_t index);
+    /// The list of kind `truth_key` holds every true object: the frame is done or the kind
+    /// reviewed.
+    bool complete(std::string_view truth_key) const
+    {
+        return done || reviewed.find(truth_key) != reviewed.end();
+    }
+    /// The same truth (compared as JSON), flags (defaults trimmed) and marks.
+    friend bool operator==(const FrameAnnotation& a, const FrameAnnotation& b);
 };
 
 /// A frame's name without its extension: annotations name frames by file ("frame_000000.png")

@@ -22,6 +22,9 @@ template <> struct PerceptTraits<Ball>
                        nlohmann::ordered_json& value);
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where, std::vector<Ball>& out);
+    static constexpr ShapeForm form = ShapeForm::Circle;
+    static EditShape shapeOf(const Ball& object);
+    static Ball fromShape(const EditShape& shape);
     static void draw(const std::vector<Ball>& balls, Rgb ink, double width, DebugDrawing& out);
 };
 

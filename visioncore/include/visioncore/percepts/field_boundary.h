@@ -26,6 +26,9 @@ template <> struct PerceptTraits<FieldBoundary>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<FieldBoundary>& out);
+    static constexpr ShapeForm form = ShapeForm::Polyline;
+    static EditShape shapeOf(const FieldBoundary& object);
+    static FieldBoundary fromShape(const EditShape& shape);
     static void draw(const std::vector<FieldBoundary>& boundary, Rgb ink, double width,
                      DebugDrawing& out);
 };

@@ -24,6 +24,9 @@ template <> struct PerceptTraits<FieldLine>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<FieldLine>& out);
+    static constexpr ShapeForm form = ShapeForm::Segment;
+    static EditShape shapeOf(const FieldLine& object);
+    static FieldLine fromShape(const EditShape& shape);
     static void draw(const std::vector<FieldLine>& lines, Rgb ink, double width, DebugDrawing& out);
 };
 

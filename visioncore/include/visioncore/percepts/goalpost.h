@@ -30,6 +30,9 @@ template <> struct PerceptTraits<Goalpost>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<Goalpost>& out);
+    static constexpr ShapeForm form = ShapeForm::Box;
+    static EditShape shapeOf(const Goalpost& object);
+    static Goalpost fromShape(const EditShape& shape);
     static void draw(const std::vector<Goalpost>& posts, Rgb ink, double width, DebugDrawing& out);
 };
 

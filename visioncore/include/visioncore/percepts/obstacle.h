@@ -24,6 +24,9 @@ template <> struct PerceptTraits<Obstacle>
     static std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                const std::string& where,
                                                std::vector<Obstacle>& out);
+    static constexpr ShapeForm form = ShapeForm::Box;
+    static EditShape shapeOf(const Obstacle& object);
+    static Obstacle fromShape(const EditShape& shape);
     static void draw(const std::vector<Obstacle>& obstacles, Rgb ink, double width,
                      DebugDrawing& out);
 };

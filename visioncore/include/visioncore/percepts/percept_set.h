@@ -43,6 +43,28 @@ template <class P> struct PerceptTraits;
 
 class PerceptEntry;
 
+/// How an annotator draws a kind's objects: the annotation tools follow this, naming no kind.
+/// A kind says so in its traits (optional):
+///
+///     static constexpr ShapeForm form = ShapeForm::Circle;
+///     static EditShape shapeOf(const P&);
+///     static P fromShape(const EditShape&);
+enum class ShapeForm {
+    None,     ///< not drawn by hand
+    Circle,   ///< points {centre}, radius
+    Box,      ///< points {top-left, bottom-right}, inclusive pixels
+    Polyline, ///< its points, left to right; at most one a frame
+    Segment,  ///< points {one end, the other}
+};
+
+/// One object as editable geometry, px (see ShapeForm).
+struct EditShape
+{
+    std::vector<PointF> points;
+    double radius = 0;
+    friend bool operator==(const EditShape&, const EditShape&) = default;
+};
+
 /// A percept type at run time: its names, its colour, and how to make an empty list of it.
 struct PerceptKind
 {
@@ -51,6 +73,7 @@ struct PerceptKind
     std::string_view title;
     Rgb colour;
     std::unique_ptr<PerceptEntry> (*make)();
+    ShapeForm form = ShapeForm::None;
 };
 
 template <class P> const PerceptKind& perceptKind();
@@ -70,6 +93,10 @@ public:
     virtual std::optional<std::string> fromJson(const nlohmann::json& value, PerceptNames names,
                                                 const std::string& where) = 0;
     virtual void draw(Rgb colour, double width, DebugDrawing& out) const = 0;
+    /// The objects as editable geometry (none when the kind's form is None).
+    virtual std::vector<EditShape> shapes() const = 0;
+    /// Replaces the objects by `shapes` (nothing when the kind's form is None).
+    virtual void setShapes(const std::vector<EditShape>& shapes) = 0;
 
     bool present() const { return m_present; }
 
@@ -104,6 +131,22 @@ public:
     {
         Traits::draw(items, colour, width, out);
     }
+    std::vector<EditShape> shapes() const override
+    {
+        std::vector<EditShape> out;
+        if constexpr (requires { Traits::shapeOf(items.front()); })
+            for (const P& item : items)
+                out.push_back(Traits::shapeOf(item));
+        return out;
+    }
+    void setShapes(const std::vector<EditShape>& shapes) override
+    {
+        if constexpr (requires(const EditShape& s) { Traits::fromShape(s); }) {
+            items.clear();
+            for (const EditShape& shape : shapes)
+                items.push_back(Traits::fromShape(shape));
+        }
+    }
 
     std::vector<P> items;
 };
@@ -112,8 +155,17 @@ template <class P> const PerceptKind& perceptKind()
 {
     using T = PerceptTraits<P>;
     static const PerceptKind kind{
-        T::key, T::truth_key, T::title, T::colour,
-        []() -> std::unique_ptr<PerceptEntry> { return std::make_unique<PerceptList<P>>(); }};
+        T::key,
+        T::truth_key,
+        T::title,
+        T::colour,
+        []() -> std::unique_ptr<PerceptEntry> { return std::make_unique<PerceptList<P>>(); },
+        [] {
+            if constexpr (requires { T::form; })
+                return T::form;
+            else
+                return ShapeForm::None;
+        }()};
     return kind;
 }
 
