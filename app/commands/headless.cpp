@@ -30,6 +30,10 @@ std::string usageText(const Pipeline& pipeline)
            "  fieldsight lut build STREAM --out FILE [--samples FILE] [--smoothing N] [--soft]\n"
            "                          [--goal-colour NAME] [--truth FILE] [--save-samples FILE]\n"
            "                          [--orientation DEG]\n"
+           "  fieldsight annotations export STREAM --coco FILE [--annotations FILE] "
+           "[--orientation DEG]\n"
+           "  fieldsight annotations import-dnt LABELS --stream STREAM [--out FILE] "
+           "[--post-width PX]\n"
            "  fieldsight help\n"
            "\n"
            "STREAM is a folder of images, a .strm file, a video file or camera:N.\n"
@@ -52,6 +56,8 @@ int runCommandWord(const QString& command, const QStringList& args, const Contex
         return evalCommand(args, ctx);
     if (command == "compare")
         return compareCommand(args, ctx);
+    if (command == "annotations")
+        return annotationsCommand(args, ctx);
     if (command == "synth")
         return synthCommand(args, ctx);
     if (command == "lut")
