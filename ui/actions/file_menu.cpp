@@ -1,4 +1,5 @@
 // File: streams, tables, the camera recording and snapshots of the view.
+#include "ui/actions/coco_export_command.h"
 #include "ui/actions/file_commands.h"
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
@@ -107,6 +108,18 @@ void addFileMenu(MainWindow& w)
     addMenuItem(file, QObject::tr("Save LUT as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
                 &w, [&] { (void)files.saveLutAs(); });
     files.setRecentMenu(file->addMenu(QObject::tr("Recent streams")));
+    file->addSeparator();
+    QAction* coco = file->addAction(QObject::tr("Export annotations as COCO…"), &w, [&] {
+        const QFileInfo spec(session.stream().streamSpec());
+        const QString folder = spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
+        const QString path = Dialogs::current().saveFile(
+            &w, QObject::tr("Export annotations as COCO"),
+            folder + QStringLiteral("/%1_coco.json").arg(spec.completeBaseName()),
+            QObject::tr("COCO JSON (*.json)"));
+        if (!path.isEmpty())
+            exportAnnotationsAsCoco(w, path);
+    });
+    coco->setObjectName(QStringLiteral("file.export_coco"));
     file->addSeparator();
     addMenuItem(
         file, QObject::tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), &w, [&] {
