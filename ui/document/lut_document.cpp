@@ -1,11 +1,11 @@
 #include "ui/document/lut_document.h"
 
 #include "ui/adapters/local_path.h"
+#include "ui/document/recovery_meta.h"
 
 #include "visioncore/basics/json_text.h"
 #include "visioncore/basics/atomic_file.h"
 
-#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -15,34 +15,6 @@
 #include <nlohmann/json.hpp>
 
 namespace fieldsight::ui {
-
-namespace {
-
-/// `meta[key]` when it is a string, else "" (a damaged recovery file is ignored, never thrown on).
-std::string stringAt(const nlohmann::json& meta, const std::string& key)
-{
-    const auto it = meta.find(key);
-    return it != meta.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
-/// A path in the recovery file: "<key>" for people (bad bytes shown as U+FFFD) and
-/// "<key>_bytes", the file name's exact bytes percent-encoded, for finding it again.
-void putPath(nlohmann::ordered_json& meta, const std::string& key, const QString& path)
-{
-    const std::string bytes = toLocalPath(path);
-    meta[key] = bytes;
-    meta[key + "_bytes"] = QByteArray::fromStdString(bytes).toPercentEncoding("/").toStdString();
-}
-
-QString pathAt(const nlohmann::json& meta, const std::string& key)
-{
-    if (const std::string encoded = stringAt(meta, key + "_bytes"); !encoded.empty())
-        return fromLocalPath(
-            QByteArray::fromPercentEncoding(QByteArray::fromStdString(encoded)).toStdString());
-    return fromLocalPath(stringAt(meta, key));
-}
-
-} // namespace
 
 /// One edit: the cells it changed, with what they were, so undo restores the bytes exactly.
 class LutCellsCommand : public QUndoCommand
@@ -193,7 +165,7 @@ Status LutDocument::writeRecovery()
     nlohmann::ordered_json meta{{"format", "fieldsight-lut-recovery/1"}};
     putPath(meta, "path", m_path);
     putPath(meta, "stream", m_stream);
-    meta["saved_at"] = QDateTime::currentDateTime().toString(Qt::ISODate).toStdString();
+    meta["saved_at"] = recoveryTimestamp();
     return writeFileAtomically(toLocalPath(base + ".json"), jsonText(meta, 2) + '\n');
 }
 
