@@ -6,6 +6,7 @@
 // changes together.
 #pragma once
 
+#include "ui/document/annotations_document.h"
 #include "ui/document/bookmarks_document.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/document/lut_document.h"
@@ -53,6 +54,7 @@ public:
     PipelineSettings& settings() { return *m_settings; }
     BookmarksDocument& bookmarks() { return *m_bookmarks; }
     SamplesDocument& samples() { return *m_samples; }
+    AnnotationsDocument& annotations() { return *m_annotations; }
     EditEffectScan& effectScan() { return *m_effect; }
 
     /// Edit > Undo and Redo act on the active stack; the document edited last becomes active.
@@ -103,6 +105,7 @@ private:
     StreamDocument* m_stream = nullptr;
     BookmarksDocument* m_bookmarks = nullptr;
     SamplesDocument* m_samples = nullptr;
+    AnnotationsDocument* m_annotations = nullptr;
     EditEffectScan* m_effect = nullptr;
     QUndoGroup m_undo_group;
     std::vector<UndoDocument> m_undo_documents;
