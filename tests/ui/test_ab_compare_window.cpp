@@ -1,7 +1,8 @@
 // Compare A/B and the COCO export in the main window, offscreen: Pipeline > Compare A/B with a
 // table B that erases one colour lists the frames it broke for the class that colour finds (the
 // same frames `compare` gives), choosing one shows that frame, a comparison can be cancelled, and
-// File > Export annotations as COCO writes the file, never over an input.
+// File > Export annotations as COCO writes the annotations document's truth (unsaved edits too),
+// never over an input.
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -173,6 +174,19 @@ private slots:
         const auto coco = nlohmann::json::parse(test::fileBytes(out).toStdString(), nullptr, false);
         QCOMPARE(coco.at("images").size(), std::size_t(30));
         QCOMPARE(coco.at("images").at(0).at("width").get<int>(), 320);
+
+        // What the annotations document holds is exported, unsaved edits too.
+        QVERIFY(
+            w.session().annotations().edit("drop frame 0", {{"frame_000000.png", std::nullopt}}));
+        QVERIFY(w.session().annotations().modified());
+        const QString edited = m_dir.filePath("edited_coco.json");
+        dialogs.paths.push_back(edited);
+        exporting->trigger();
+        const auto fewer =
+            nlohmann::json::parse(test::fileBytes(edited).toStdString(), nullptr, false);
+        QCOMPARE(fewer.at("images").size(), std::size_t(29));
+        QCOMPARE(fewer.at("images").at(0).at("file_name").get<std::string>(),
+                 std::string("frame_000001.png"));
 
         // Over the stream's own annotations: refused, the file as it was.
         const QString truth = lab2() + "/annotations.json";

@@ -1,11 +1,12 @@
+// File > Export annotations as COCO: the annotations document's truth in COCO JSON.
 #include "ui/actions/coco_export_command.h"
 
 #include "ui/adapters/local_path.h"
+#include "ui/document/annotations_document.h"
 #include "ui/main_window.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/output_guard.h"
 #include "visioncore/io/coco_export.h"
-#include "visioncore/services/evaluation.h"
 
 namespace fieldsight::ui {
 
@@ -18,15 +19,16 @@ bool exportAnnotationsAsCoco(MainWindow& window, const QString& path)
     };
     if (!stream.hasStream() || stream.live())
         return fail("Export annotations as COCO: open a stream with annotations first");
+    const AnnotationsDocument& document = window.session().annotations();
+    if (!document.loadProblem().isEmpty())
+        return fail(document.loadProblem().toStdString());
+    if (document.annotations().frames.empty())
+        return fail("Export annotations as COCO: the stream has no annotated frame yet");
     const std::string spec = toLocalPath(stream.streamSpec());
-    const std::string source = defaultTruthPath(spec);
+    const std::string source = toLocalPath(document.path());
     const std::string out = toLocalPath(path);
     if (Status s = checkNotAnInput("Export annotations as COCO", out, {spec, source}); !s)
         return fail(s.error().message);
-    auto annotations =
-        Annotations::load(source, window.session().pipeline().perceptKinds(), stream.frameCount());
-    if (!annotations)
-        return fail(annotations.error().message);
     CocoStream frames;
     frames.path = spec;
     for (std::size_t i = 0; i < stream.frameCount(); ++i)
@@ -34,14 +36,13 @@ bool exportAnnotationsAsCoco(MainWindow& window, const QString& path)
     frames.width = stream.info().width;
     frames.height = stream.info().height;
     frames.orientation = stream.orientation();
-    auto json =
-        cocoJson(annotations.value(), frames, window.session().pipeline().perceptKinds(), source);
+    auto json = cocoJson(document.annotations(), frames, document.kinds(), source);
     if (!json)
         return fail(json.error().message);
     if (Status s = writeFileAtomically(out, json.value()); !s)
         return fail(s.error().message);
     window.showMessage(QObject::tr("Exported the annotations of %1 frames to %2 as COCO")
-                           .arg(annotations.value().frames.size())
+                           .arg(document.annotations().frames.size())
                            .arg(path),
                        false);
     return true;

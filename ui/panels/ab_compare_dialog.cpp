@@ -1,9 +1,9 @@
+// Compare A/B in the window: choosing side B, the background run, the list of changed frames.
 #include "ui/panels/ab_compare_dialog.h"
 
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "visioncore/io/lut_import.h"
-#include "visioncore/services/evaluation.h"
 
 #include <QDialogButtonBox>
 #include <QFileInfo>
@@ -213,12 +213,13 @@ bool AbCompareDialog::start()
         return refuse(tr("Choose table B or parameters B first."));
     if (!stream.hasStream() || stream.live())
         return refuse(tr("Open a stream with annotations first."));
+    // The annotations as the document holds them, unsaved edits too.
+    const AnnotationsDocument& annotations = m_session.annotations();
+    if (!annotations.loadProblem().isEmpty())
+        return refuse(annotations.loadProblem());
     const std::string spec = toLocalPath(stream.streamSpec());
-    const std::string truth_path = defaultTruthPath(spec);
-    auto truth =
-        Annotations::load(truth_path, m_session.pipeline().perceptKinds(), stream.frameCount());
-    if (!truth)
-        return refuse(qs(truth.error().message));
+    const std::string truth_path = toLocalPath(annotations.path());
+    Annotations truth = annotations.annotations();
     StreamOptions options;
     options.orientation = stream.orientation();
     auto reader = openStream(spec, options);
@@ -249,8 +250,8 @@ bool AbCompareDialog::start()
     m_cancel_button->setEnabled(true);
     m_status->setText(tr("Comparing…"));
     m_poll->start();
-    m_watcher.setFuture(QtConcurrent::run(
-        [this, input, b = std::move(b), truth = std::move(truth).value(), truth_path]() {
+    m_watcher.setFuture(
+        QtConcurrent::run([this, input, b = std::move(b), truth = std::move(truth), truth_path]() {
             RunHooks hooks;
             hooks.cancel = &m_cancel;
             hooks.progress = [this](std::size_t done, std::size_t total) {

@@ -1,7 +1,8 @@
 // Compare A/B in the window: side A is the table being edited and the pipeline's settings, side B
 // another table or parameter file (or both); the comparison (visioncore/services/ab_compare.h)
-// runs over the stream's annotated frames in the background with progress and cancel, and lists
-// per class the frames B fixed and broke. Choosing a frame shows it.
+// runs over the annotated frames (as the annotations document holds them) in the background with
+// progress and cancel, and lists per class the frames B fixed and broke. Choosing a frame shows
+// it.
 #pragma once
 
 #include "ui/document/editing_session.h"
@@ -35,7 +36,8 @@ public:
     /// when the file cannot be read or does not fit the pipeline.
     Status setTableB(const QString& path);
     Status setParamsB(const QString& path);
-    /// Reads the stream's annotations and starts; false, with the reason shown, when it cannot.
+    /// Starts with a copy of the annotations document; false, with the reason shown, when it
+    /// cannot.
     bool start();
     void cancel();
     bool running() const { return m_watcher.isRunning(); }
