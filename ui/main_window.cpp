@@ -50,6 +50,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     addEditMenu(*this);
     addViewMenu(*this);
     addNavigateMenu(*this);
+    addObjectMenu(*this);
     addPipelineMenu(*this);
     addHelpMenu(*this);
 
