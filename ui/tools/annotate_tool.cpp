@@ -15,8 +15,8 @@ namespace {
 
 /// How near an object a click must be to take it, screen px.
 constexpr double kNearScreenPx = 6;
-/// A polyline's end this near the image's left or right edge is put on it, screen px (the
-/// boundary's error is taken over x = 0..width-1).
+/// A polyline's end this near the image's left or right edge is put on it, screen px (a
+/// polyline is scored over x = 0..width-1).
 constexpr double kEdgeSnapScreenPx = 12;
 
 PointF pointOf(QPoint p)
