@@ -28,6 +28,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace fieldsight::ui {
@@ -49,6 +50,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     addEditMenu(*this);
     addViewMenu(*this);
     addNavigateMenu(*this);
+    addObjectMenu(*this);
     addPipelineMenu(*this);
     addHelpMenu(*this);
 
@@ -205,9 +207,16 @@ void MainWindow::buildDocks()
     // without scrolling at 1280x800.
     resizeDocks({pipeline, detections}, {600, 160}, Qt::Vertical);
 
+    // The annotation tools' buttons, beside the frame they draw on.
+    auto* annotate = new QToolBar(tr("Annotation tools"), this);
+    annotate->setObjectName(QStringLiteral("annotate_toolbar"));
+    annotate->addActions(m_tools->actions(QStringLiteral("annotate")));
+    addToolBar(Qt::LeftToolBarArea, annotate);
+
     m_docks_menu = new QMenu(tr("Panels"), this);
     for (QDockWidget* d : {layers, bookmarks, history, inspector, pipeline, lut, detections, uv})
         m_docks_menu->addAction(d->toggleViewAction());
+    m_docks_menu->addAction(annotate->toggleViewAction());
 }
 
 void MainWindow::setMode(ViewMode mode)

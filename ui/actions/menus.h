@@ -14,6 +14,8 @@ void addFileMenu(MainWindow& window);
 void addEditMenu(MainWindow& window);
 void addViewMenu(MainWindow& window);
 void addNavigateMenu(MainWindow& window);
+/// What is set on the annotated object selected (concealed, keyframe, propagation).
+void addObjectMenu(MainWindow& window);
 void addPipelineMenu(MainWindow& window);
 void addHelpMenu(MainWindow& window);
 
