@@ -15,6 +15,7 @@ void addEditMenu(MainWindow& window);
 void addViewMenu(MainWindow& window);
 void addNavigateMenu(MainWindow& window);
 void addPipelineMenu(MainWindow& window);
+void addAnnotateMenu(MainWindow& window);
 void addHelpMenu(MainWindow& window);
 
 /// A menu item with a shortcut, calling `fn` on `receiver`.
