@@ -26,7 +26,7 @@ AnnotationStrip::AnnotationStrip(const AnnotationsDocument& annotations,
     : QWidget(parent), m_doc(annotations), m_stream(stream), m_slider(slider)
 {
     setObjectName(QStringLiteral("annotation_strip"));
-    setFixedHeight(5);
+    setFixedHeight(6); // a row of the window's background apart from the strip above
     setMouseTracking(true);
     connect(&stream, &StreamDocument::streamChanged, this, [this] {
         readNames();
@@ -108,7 +108,7 @@ long long AnnotationStrip::frameAt(int px) const
 void AnnotationStrip::paintEvent(QPaintEvent*)
 {
     QPainter p(this);
-    p.fillRect(rect(), QColor(38, 38, 38));
+    p.fillRect(rect().adjusted(0, 1, 0, 0), QColor(38, 38, 38));
     const std::size_t n = m_names.size();
     if (n == 0)
         return;
@@ -130,11 +130,11 @@ void AnnotationStrip::paintEvent(QPaintEvent*)
             annotated |= m_states.annotated[std::size_t(f)];
         }
         if (done || annotated)
-            p.fillRect(px, 0, 1, height(), done ? kDone : kAnnotated);
+            p.fillRect(px, 1, 1, height() - 1, done ? kDone : kAnnotated);
     }
     const double cx =
         left + length * double(m_stream.currentIndex()) / double(std::max<std::size_t>(1, n - 1));
-    p.fillRect(QRectF(cx - 0.5, 0, 1.5, height()), QColor(255, 255, 255, 200));
+    p.fillRect(QRectF(cx - 0.5, 1, 1.5, height() - 1), QColor(255, 255, 255, 200));
 }
 
 void AnnotationStrip::mousePressEvent(QMouseEvent* event)
