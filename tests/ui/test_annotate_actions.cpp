@@ -409,7 +409,8 @@ private slots:
             dialogs.paths.push_back(b);
             QTest::keyClick(&w, Qt::Key_O, Qt::ControlModifier); // File > Open stream folder
         }
-        QCOMPARE(dialogs.asked.last(), QStringLiteral("Unsaved annotations"));
+        QCOMPARE(dialogs.asked.value(dialogs.asked.size() - 1),
+                 QStringLiteral("Unsaved annotations"));
         QVERIFY(dialogs.unanswered.isEmpty());
 
         if (answer == QMessageBox::Cancel) {
