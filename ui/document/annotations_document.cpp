@@ -10,7 +10,6 @@
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFile>
-#include <QStandardPaths>
 #include <QUndoCommand>
 
 #include <filesystem>
@@ -61,22 +60,8 @@ private:
 AnnotationsDocument::AnnotationsDocument(const Pipeline& pipeline, QObject* parent)
     : QObject(parent), m_kinds(pipeline.perceptKinds())
 {
-    m_recovery_dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-    m_autosave.setSingleShot(true);
-    m_autosave.setInterval(30000);
-    connect(&m_autosave, &QTimer::timeout, this, [this] {
-        if (!modified())
-            return;
-        if (Status s = writeRecovery(); !s)
-            emit problem(QString::fromStdString(s.error().message));
-    });
-    connect(&m_undo, &QUndoStack::cleanChanged, this, [this] {
-        if (!modified()) { // undone back to the saved annotations: nothing to recover
-            m_autosave.stop();
-            discardRecovery();
-        }
-        emit modifiedChanged(modified());
-    });
+    m_recovery_dir = defaultRecoveryDir();
+    wireAutosave(*this, m_autosave, m_undo);
 }
 
 AnnotationsDocument::~AnnotationsDocument()

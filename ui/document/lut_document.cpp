@@ -9,7 +9,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QStandardPaths>
 #include <QUndoCommand>
 
 #include <nlohmann/json.hpp>
@@ -46,22 +45,8 @@ private:
 
 LutDocument::LutDocument(QObject* parent) : QObject(parent)
 {
-    m_recovery_dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-    m_autosave.setSingleShot(true);
-    m_autosave.setInterval(30000);
-    connect(&m_autosave, &QTimer::timeout, this, [this] {
-        if (!modified())
-            return;
-        if (Status s = writeRecovery(); !s)
-            emit problem(QString::fromStdString(s.error().message));
-    });
-    connect(&m_undo, &QUndoStack::cleanChanged, this, [this] {
-        if (!modified()) { // undone back to the saved table: nothing to recover
-            m_autosave.stop();
-            discardRecovery();
-        }
-        emit modifiedChanged(modified());
-    });
+    m_recovery_dir = defaultRecoveryDir();
+    wireAutosave(*this, m_autosave, m_undo);
 }
 
 LutDocument::~LutDocument()
