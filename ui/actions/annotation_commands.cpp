@@ -133,7 +133,7 @@ bool AnnotationCommands::confirmChanges()
     if (answer == QMessageBox::Save)
         return save();
     revert();
-    d.discardRecovery();
+    d.discardOwnRecovery();
     return true;
 }
 
