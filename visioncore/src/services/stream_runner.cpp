@@ -11,6 +11,12 @@
 #include <optional>
 #include <stdexcept>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace fieldsight {
 
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
@@ -71,6 +77,17 @@ std::vector<std::size_t> firstFrames(std::size_t n)
     for (std::size_t i = 0; i < n; ++i)
         indices[i] = i;
     return indices;
+}
+
+void lowerThreadPriority()
+{
+#ifdef __linux__
+    thread_local bool lowered = false;
+    if (!lowered) {
+        lowered = true;
+        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+    }
+#endif
 }
 
 namespace {
