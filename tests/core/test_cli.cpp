@@ -2,6 +2,7 @@
 // errors naming the file, and the JSON of run, bench and eval on a tiny stream.
 #include "support/synthetic_frames.h"
 #include "visioncore/basics/colour_lut.h"
+#include "visioncore/percepts/percept_set.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <QtTest>
@@ -674,13 +675,18 @@ private slots:
         QCOMPARE(o.status, 0);
         const QStringList pngs = QDir(dir).entryList({"*.png"}, QDir::Files, QDir::Name);
         QCOMPARE(pngs, (QStringList{"frame_000000.png", "frame_000001.png", "frame_000002.png"}));
-        // lab1's first frame has a true field boundary, drawn thin and dark.
+        // lab1's first frame has a true field boundary, drawn thin in the truth colour.
         const QImage image(dir + "/frame_000000.png");
         QCOMPARE(image.size(), QSize(320, 240));
-        int truth_pixels = 0;
+        const QImage frame(QString::fromStdString(fieldsight::test::sampleStreamsDir() +
+                                                  "/lab1/frame_000000.png"));
+        QCOMPARE(frame.size(), image.size());
+        const QRgb ink = qRgb(fieldsight::kTruthColour.r, fieldsight::kTruthColour.g,
+                              fieldsight::kTruthColour.b);
+        int truth_pixels = 0; // in the truth colour where the frame itself is not
         for (int y = 0; y < image.height(); ++y)
             for (int x = 0; x < image.width(); ++x)
-                truth_pixels += image.pixel(x, y) == qRgb(40, 40, 40);
+                truth_pixels += image.pixel(x, y) == ink && frame.pixel(x, y) != ink;
         QVERIFY2(truth_pixels >= 320, qPrintable(QString::number(truth_pixels)));
 
         // --layers without --render is a usage error, an unknown layer bad input.

@@ -1,13 +1,13 @@
 // Regression on real robot frames from reference_data: B-Human's 2009 Nao log with the colour
 // table that shipped beside it, and NUbots lab frames with the NUbots lab LUT. The expected counts
 // were measured once through the CLI; the margins leave room for tuning but not for a broken stage.
+#include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/percepts/field_line.h"
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/services/stream_runner.h"
-#include "visioncore/io/lut_import.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <QtTest>
@@ -21,10 +21,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <numeric>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,40 +43,6 @@ bool writeJson(const QString& path, const QJsonObject& object)
 {
     QFile file(path);
     return file.open(QIODevice::WriteOnly) && file.write(QJsonDocument(object).toJson()) > 0;
-}
-
-/// The kinematic horizon of each frame from frames.csv, as SPEC §4's [y at x = 0, y at x = 319]:
-/// the csv gives the point where the horizon crosses x = 159.5 and its unit direction.
-std::optional<std::vector<std::array<double, 2>>> readBhumanHorizons(const QString& csv_path,
-                                                                     std::vector<double>& stamps)
-{
-    QFile file(csv_path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return std::nullopt;
-    const QStringList header = QString::fromUtf8(file.readLine()).trimmed().split(',');
-    const qsizetype c_stamp = header.indexOf("timestamp_ms");
-    const qsizetype c_ox = header.indexOf("horizon_origin_x");
-    const qsizetype c_oy = header.indexOf("horizon_origin_y");
-    const qsizetype c_dx = header.indexOf("horizon_dir_x");
-    const qsizetype c_dy = header.indexOf("horizon_dir_y");
-    if (std::min({c_stamp, c_ox, c_oy, c_dx, c_dy}) < 0)
-        return std::nullopt;
-    std::vector<std::array<double, 2>> horizons;
-    while (!file.atEnd()) {
-        const QStringList cells = QString::fromUtf8(file.readLine()).trimmed().split(',');
-        if (cells.size() != header.size())
-            continue;
-        const double ox = cells[c_ox].toDouble();
-        const double oy = cells[c_oy].toDouble();
-        const double dx = cells[c_dx].toDouble();
-        const double dy = cells[c_dy].toDouble();
-        if (std::abs(dx) < 1e-6) // a vertical horizon: the head would be rolled 90 degrees
-            return std::nullopt;
-        auto y_at = [&](double x) { return oy + (x - ox) * dy / dx; };
-        horizons.push_back({y_at(0), y_at(kBhumanWidth - 1)});
-        stamps.push_back(cells[c_stamp].toDouble());
-    }
-    return horizons;
 }
 
 /// Linear interpolation of the green horizon hull (x ascending) at `x`.
@@ -150,28 +114,24 @@ private:
     {
         const QString source = refPath("bhuman2009_log_coltable");
         m_bhuman = m_dir.filePath("bhuman2009");
-        QVERIFY(QDir().mkpath(m_bhuman));
-        std::vector<double> stamps;
-        const auto horizons = readBhumanHorizons(source + "/frames.csv", stamps);
-        QVERIFY2(horizons, "cannot read frames.csv");
-        QCOMPARE(int(horizons->size()), kBhumanFrames);
+        const auto rows = test::readBhumanFramesCsv(source + "/frames.csv");
+        QVERIFY2(rows, "cannot read frames.csv");
+        QCOMPARE(int(rows->size()), kBhumanFrames);
 
         QJsonArray frames;
-        for (int i = 0; i < kBhumanFrames; ++i) {
-            const QString name = QString("f%1.png").arg(i, 3, 10, QChar('0'));
-            QVERIFY(QFile::link(source + "/frames_ycbcr/" + name, m_bhuman + "/" + name));
-            frames.append(QJsonObject{{"file", name},
-                                      {"timestamp_ms", stamps[std::size_t(i)]},
-                                      {"horizon", QJsonArray{(*horizons)[std::size_t(i)][0],
-                                                             (*horizons)[std::size_t(i)][1]}}});
+        for (const test::BhumanFrameRow& row : *rows) {
+            const auto horizon = row.horizon(kBhumanWidth);
+            frames.append(
+                QJsonObject{{"file", QString("f%1.png").arg(row.index, 3, 10, QChar('0'))},
+                            {"timestamp_ms", row.timestamp_ms},
+                            {"horizon", QJsonArray{horizon[0], horizon[1]}}});
         }
-        QVERIFY(writeJson(m_bhuman + "/stream.json", {{"format", "fieldsight-stream/1"},
-                                                      {"pixel_format", "ycbcr"},
-                                                      {"lut", "default.lut"},
-                                                      {"frames", frames}}));
-        auto lut = importLut((source + "/coltable.c64").toStdString());
-        QVERIFY2(lut.ok(), lut.ok() ? "" : lut.error().message.c_str());
-        QVERIFY(lut.value().save((m_bhuman + "/default.lut").toStdString()).ok());
+        const QString made = test::makeLinkedStream(
+            m_bhuman, source + "/frames_ycbcr", frames,
+            {{"format", "fieldsight-stream/1"}, {"pixel_format", "ycbcr"}, {"lut", "default.lut"}});
+        QVERIFY2(made.isEmpty(), qPrintable(made));
+        const QString lut = test::convertLut(source + "/coltable.c64", m_bhuman + "/default.lut");
+        QVERIFY2(lut.isEmpty(), qPrintable(lut));
     }
 
     void makeNubotsStream()

@@ -28,7 +28,8 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
 {
     m_lut = new LutDocument(this);
     m_settings = new PipelineSettings(pipeline, this);
-    m_stream = new StreamDocument(pipeline, *m_lut, *m_settings, this);
+    m_annotations = new AnnotationsDocument(pipeline, this);
+    m_stream = new StreamDocument(pipeline, *m_lut, *m_settings, *m_annotations, this);
     m_bookmarks = new BookmarksDocument(this);
     m_samples = new SamplesDocument(*m_lut, this);
     m_effect = new EditEffectScan(pipeline, this);
@@ -38,6 +39,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     addUndoDocument(tr("LUT samples"), m_samples->undoStack());
     addUndoDocument(tr("Pipeline settings"), m_settings->undoStack());
     addUndoDocument(tr("Bookmarks"), m_bookmarks->undoStack());
+    addUndoDocument(tr("Annotations"), m_annotations->undoStack());
     addUndoDocument(tr("Stream orientation"), m_stream->undoStack());
     m_undo_group.setActiveStack(&m_lut->undoStack());
 
@@ -71,6 +73,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     connect(m_lut, &LutDocument::problem, this, &EditingSession::problem);
     connect(m_samples, &SamplesDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::problem, this, &EditingSession::problem);
+    connect(m_annotations, &AnnotationsDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::notice, this, &EditingSession::notice);
 }
 
@@ -181,6 +184,11 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     const QString spec = opened->spec;
     const QString lut_path = opened->lut_path;
     std::shared_ptr<const ColourLut> table = opened->lut;
+    // Its annotations just before it, so its first frame is drawn with its own truth. Unsaved
+    // annotation edits of the stream before are the window's to save or drop before it opens
+    // another; a recovery of them stays for their own stream.
+    m_annotations->adopt(sessionStreamName(spec), opened->annotations_path,
+                         std::move(opened->annotations), opened->annotations_problem);
     // The stream first: the table's change then runs the new stream's frame, never the old one.
     m_stream->adopt(std::move(opened));
     // Edits are never dropped silently: a table opened under unsaved edits (an open finishing
@@ -188,8 +196,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     if (!m_lut->modified())
         m_lut->reset(std::move(table), lut_path);
     // The recovery file names the stream its edits belong to, wherever the next session runs.
-    m_lut->setStream(
-        spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath());
+    m_lut->setStream(sessionStreamName(spec));
     if (Status s = m_bookmarks->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)

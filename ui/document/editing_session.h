@@ -7,6 +7,7 @@
 // changes together.
 #pragma once
 
+#include "ui/document/annotations_document.h"
 #include "ui/document/bookmarks_document.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/document/evaluation_scan.h"
@@ -55,6 +56,7 @@ public:
     PipelineSettings& settings() { return *m_settings; }
     BookmarksDocument& bookmarks() { return *m_bookmarks; }
     SamplesDocument& samples() { return *m_samples; }
+    AnnotationsDocument& annotations() { return *m_annotations; }
     EditEffectScan& effectScan() { return *m_effect; }
     EvaluationScan& evaluation() { return *m_evaluation; }
 
@@ -106,6 +108,7 @@ private:
     StreamDocument* m_stream = nullptr;
     BookmarksDocument* m_bookmarks = nullptr;
     SamplesDocument* m_samples = nullptr;
+    AnnotationsDocument* m_annotations = nullptr;
     EditEffectScan* m_effect = nullptr;
     EvaluationScan* m_evaluation = nullptr;
     QUndoGroup m_undo_group;

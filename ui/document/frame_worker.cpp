@@ -199,7 +199,8 @@ bool FrameWorker::aheadAnswers(const FrameRequest& request, bool any_frame) cons
 {
     const FrameRequest& k = m_ahead_for;
     return m_ahead && k.source == request.source && (any_frame || k.index == request.index) &&
-           k.lut == request.lut && k.params == request.params && k.skip == request.skip;
+           k.lut == request.lut && k.params == request.params && k.skip == request.skip &&
+           k.truth == request.truth;
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
@@ -356,8 +357,11 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     out.result =
         collectResult(request.index, frame.name, std::move(report).value(), control.blackboard());
 
-    const auto truth_it = request.source->truth.find(frameStem(frame.name));
-    const PerceptSet* truth = truth_it == request.source->truth.end() ? nullptr : truth_it->second;
+    const PerceptSet* truth = nullptr;
+    if (request.truth) {
+        const auto it = request.truth->truth.find(frameStem(frame.name));
+        truth = it == request.truth->truth.end() ? nullptr : it->second;
+    }
     out.drawings = frameDrawings(m_pipeline, m_layers, m_data.canvas(), out.result.percepts, truth);
     out.items = perceptItems(out.result.percepts);
 }

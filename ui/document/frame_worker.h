@@ -5,6 +5,7 @@
 
 #include "ui/document/gui_data_wrapper.h"
 #include "visioncore/framework/control_wrapper.h"
+#include "ui/document/annotations_document.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/datawrappers/camera_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
@@ -30,10 +31,8 @@ namespace fieldsight::ui {
 /// DataWrapper (which captures on a thread of its own). Only the worker thread touches them.
 struct FrameSource
 {
-    std::unique_ptr<StreamReader> reader;           ///< files: random access by index
-    std::unique_ptr<CameraDataWrapper> camera;      ///< live: the newest frame at each run
-    std::shared_ptr<const Annotations> annotations; ///< may be null
-    std::map<std::string, const PerceptSet*> truth; ///< by frame stem, into `annotations`
+    std::unique_ptr<StreamReader> reader;      ///< files: random access by index
+    std::unique_ptr<CameraDataWrapper> camera; ///< live: the newest frame at each run
 };
 
 /// What one run uses; each version of the LUT or the settings is a new immutable object, so an
@@ -44,7 +43,8 @@ struct FrameRequest
     std::size_t index = 0;
     std::shared_ptr<FrameSource> source;
     std::shared_ptr<const ColourLut> lut;
-    std::shared_ptr<const ParamSet> params; ///< values that differ from the defaults
+    std::shared_ptr<const ParamSet> params;          ///< values that differ from the defaults
+    std::shared_ptr<const AnnotationsVersion> truth; ///< drawn on the truth layers (may be null)
     std::set<std::string, std::less<>> skip;
     std::chrono::steady_clock::time_point submitted = std::chrono::steady_clock::now();
     /// Answered already (from takeAhead): make `index` current and prepare the frame after it.

@@ -1,48 +1,19 @@
 #include "ui/document/lut_document.h"
 
 #include "ui/adapters/local_path.h"
+#include "ui/document/recovery_meta.h"
 
 #include "visioncore/basics/json_text.h"
 #include "visioncore/basics/atomic_file.h"
 
-#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QStandardPaths>
 #include <QUndoCommand>
 
 #include <nlohmann/json.hpp>
 
 namespace fieldsight::ui {
-
-namespace {
-
-/// `meta[key]` when it is a string, else "" (a damaged recovery file is ignored, never thrown on).
-std::string stringAt(const nlohmann::json& meta, const std::string& key)
-{
-    const auto it = meta.find(key);
-    return it != meta.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
-/// A path in the recovery file: "<key>" for people (bad bytes shown as U+FFFD) and
-/// "<key>_bytes", the file name's exact bytes percent-encoded, for finding it again.
-void putPath(nlohmann::ordered_json& meta, const std::string& key, const QString& path)
-{
-    const std::string bytes = toLocalPath(path);
-    meta[key] = bytes;
-    meta[key + "_bytes"] = QByteArray::fromStdString(bytes).toPercentEncoding("/").toStdString();
-}
-
-QString pathAt(const nlohmann::json& meta, const std::string& key)
-{
-    if (const std::string encoded = stringAt(meta, key + "_bytes"); !encoded.empty())
-        return fromLocalPath(
-            QByteArray::fromPercentEncoding(QByteArray::fromStdString(encoded)).toStdString());
-    return fromLocalPath(stringAt(meta, key));
-}
-
-} // namespace
 
 /// One edit: the cells it changed, with what they were, so undo restores the bytes exactly.
 class LutCellsCommand : public QUndoCommand
@@ -74,22 +45,8 @@ private:
 
 LutDocument::LutDocument(QObject* parent) : QObject(parent)
 {
-    m_recovery_dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-    m_autosave.setSingleShot(true);
-    m_autosave.setInterval(30000);
-    connect(&m_autosave, &QTimer::timeout, this, [this] {
-        if (!modified())
-            return;
-        if (Status s = writeRecovery(); !s)
-            emit problem(QString::fromStdString(s.error().message));
-    });
-    connect(&m_undo, &QUndoStack::cleanChanged, this, [this] {
-        if (!modified()) { // undone back to the saved table: nothing to recover
-            m_autosave.stop();
-            discardRecovery();
-        }
-        emit modifiedChanged(modified());
-    });
+    m_recovery_dir = defaultRecoveryDir();
+    wireAutosave(*this, m_autosave, m_undo);
 }
 
 LutDocument::~LutDocument()
@@ -193,7 +150,7 @@ Status LutDocument::writeRecovery()
     nlohmann::ordered_json meta{{"format", "fieldsight-lut-recovery/1"}};
     putPath(meta, "path", m_path);
     putPath(meta, "stream", m_stream);
-    meta["saved_at"] = QDateTime::currentDateTime().toString(Qt::ISODate).toStdString();
+    meta["saved_at"] = recoveryTimestamp();
     return writeFileAtomically(toLocalPath(base + ".json"), jsonText(meta, 2) + '\n');
 }
 

@@ -1,12 +1,14 @@
 #include "ui/document/stream_document.h"
 
 #include "ui/adapters/local_path.h"
+#include "ui/document/annotations_document.h"
 #include "ui/document/lut_document.h"
 #include "ui/document/pipeline_settings.h"
 
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 
+#include <QFileInfo>
 #include <QTimer>
 
 #include <filesystem>
@@ -67,12 +69,29 @@ private:
     std::unique_ptr<StreamReader> m_opened;
 };
 
+QString sessionStreamName(const QString& spec)
+{
+    return spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
+}
+
 StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
-                               PipelineSettings& settings, QObject* parent)
-    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
+                               PipelineSettings& settings, AnnotationsDocument& annotations,
+                               QObject* parent)
+    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings),
+      m_annotations(annotations)
 {
     connect(&m_lut, &LutDocument::changed, this, &StreamDocument::submit);
     connect(&m_settings, &PipelineSettings::changed, this, &StreamDocument::submit);
+    connect(&m_annotations, &AnnotationsDocument::changed, this, [this](const QStringList& frames) {
+        // Only the open stream's annotations are drawn over its frames (a session adopts the
+        // next stream's annotations just before the stream).
+        if (!m_stream || m_stream->names.empty() ||
+            m_annotations.stream() != sessionStreamName(m_stream->spec))
+            return;
+        const std::string shown = m_annotations.keyOf(m_stream->names[m_index]);
+        if (frames.isEmpty() || frames.contains(QString::fromStdString(shown)))
+            submit();
+    });
     qRegisterMetaType<std::shared_ptr<const FrameOutput>>();
     m_worker = new FrameWorker(pipeline);
     m_worker->moveToThread(&m_thread);
@@ -136,17 +155,19 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
     else
         opened->source->reader = std::move(r);
 
-    const std::string truth_path = defaultTruthPath(local(spec));
+    opened->annotations_path = AnnotationsDocument::defaultPath(spec);
     std::error_code ec;
-    if (!truth_path.empty() && std::filesystem::exists(truth_path, ec)) {
-        auto annotations =
-            Annotations::load(truth_path, pipeline.perceptKinds(), opened->info.frame_count);
+    if (!opened->annotations_path.isEmpty() &&
+        std::filesystem::exists(local(opened->annotations_path), ec)) {
+        auto annotations = Annotations::load(local(opened->annotations_path),
+                                             pipeline.perceptKinds(), opened->info.frame_count);
         if (annotations) {
-            auto shared = std::make_shared<const Annotations>(std::move(annotations).value());
-            opened->source->truth = shared->truthByStem();
-            opened->source->annotations = std::move(shared);
+            opened->annotations = std::move(annotations).value();
         } else {
-            opened->warnings << QString::fromStdString(annotations.error().message);
+            opened->annotations_problem = QString::fromStdString(annotations.error().message);
+            opened->warnings << opened->annotations_problem +
+                                    tr(" (it is not written over: save the annotations under "
+                                       "another name)");
         }
     }
     return opened;
@@ -216,8 +237,6 @@ Status StreamDocument::applyOrientation(Orientation o, std::unique_ptr<StreamRea
     // A new source: what the worker prepared or keeps for the old one is never shown again.
     auto stream = std::make_shared<OpenedStream>(*m_stream);
     stream->source = std::make_shared<FrameSource>();
-    stream->source->annotations = m_stream->source->annotations;
-    stream->source->truth = m_stream->source->truth;
     stream->info = reader->info();
     stream->names.clear();
     for (std::size_t i = 0; i < stream->info.frame_count; ++i)
@@ -276,6 +295,7 @@ FrameRequest StreamDocument::request() const
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
+    request.truth = m_annotations.version();
     return request;
 }
 

@@ -28,10 +28,18 @@ struct OpenedStream
     std::shared_ptr<FrameSource> source;
     QStringList warnings;     ///< what was not found or could not be read, the stream still opens
     bool lut_problem = false; ///< no table was found or it was damaged: an empty one is used
+    QString annotations_path; ///< where the stream keeps its annotations (empty: a camera)
+    Annotations annotations;  ///< as read from there (none when absent or damaged)
+    QString annotations_problem; ///< why the file there could not be read
 };
 
+class AnnotationsDocument;
 class LutDocument;
 class PipelineSettings;
+
+/// How a session's documents name the stream `spec` in their recovery files: a folder or file as
+/// its absolute path, a live camera as its spec.
+QString sessionStreamName(const QString& spec);
 
 class StreamDocument : public QObject
 {
@@ -39,8 +47,10 @@ class StreamDocument : public QObject
 public:
     /// Frames are run with `lut`'s current table and `settings`' values: the document observes
     /// both and runs the current frame again when either changes.
+    /// The truth drawn over each frame is `annotations`' (the frame is drawn again when the
+    /// annotations of the frame shown change).
     StreamDocument(const Pipeline& pipeline, LutDocument& lut, PipelineSettings& settings,
-                   QObject* parent = nullptr);
+                   AnnotationsDocument& annotations, QObject* parent = nullptr);
     ~StreamDocument() override;
 
     const Pipeline& pipeline() const { return m_pipeline; }
@@ -136,6 +146,7 @@ private:
     const Pipeline& m_pipeline;
     LutDocument& m_lut;
     PipelineSettings& m_settings;
+    AnnotationsDocument& m_annotations;
     QThread m_thread;
     FrameWorker* m_worker = nullptr;
 

@@ -111,11 +111,12 @@ std::vector<DebugDrawing> PerceptSet::drawings(bool truth) const
             continue;
         DebugDrawing d;
         d.layer = std::string(prefix) + "." + std::string(nameOf(e->kind(), names));
+        // A dark rim under each keeps it visible on its own colour (a ball outline on the ball,
+        // a true line on a white line).
         if (truth) {
+            e->draw(kPerceptRimColour, kTruthLineWidth + 2, d);
             e->draw(kTruthColour, kTruthLineWidth, d);
         } else {
-            // A dark rim under each detection keeps it visible on its own colour (a ball outline
-            // on the ball).
             e->draw(kPerceptRimColour, kPerceptLineWidth + 2, d);
             e->draw(e->kind().colour, kPerceptLineWidth, d);
         }

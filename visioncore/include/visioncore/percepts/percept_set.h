@@ -172,9 +172,9 @@ template <class P> const PerceptKind& perceptKind()
 /// Layer id prefixes of the percept drawings ("percepts.balls", "truth.field_boundary").
 inline constexpr std::string_view kPerceptLayerPrefix = "percepts";
 inline constexpr std::string_view kTruthLayerPrefix = "truth";
-/// Ground truth is drawn in one dark colour under the detections, thin; detections in their
-/// kind's colour.
-inline constexpr Rgb kTruthColour{40, 40, 40};
+/// Ground truth is drawn white over a black rim, thin, so it shows on carpet, walls and lines alike
+/// and never looks like a detection; detections in their kind's colour over a black rim.
+inline constexpr Rgb kTruthColour{255, 255, 255};
 inline constexpr double kTruthLineWidth = 1;
 inline constexpr double kPerceptLineWidth = 2;
 inline constexpr Rgb kPerceptRimColour{0, 0, 0};

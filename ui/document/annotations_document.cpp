@@ -1,0 +1,303 @@
+#include "ui/document/annotations_document.h"
+
+#include "ui/adapters/local_path.h"
+#include "ui/document/recovery_meta.h"
+
+#include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/json_text.h"
+#include "visioncore/services/evaluation.h"
+
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFile>
+#include <QUndoCommand>
+
+#include <filesystem>
+
+namespace fieldsight::ui {
+
+namespace {
+constexpr const char* kRecoveryFormat = "fieldsight-annotations-recovery/1";
+
+/// The largest recovery file read: the annotations' own cap for a long stream.
+constexpr std::size_t kMaxRecoveryFrames = 100000;
+} // namespace
+
+/// One edit: each changed frame's annotation before and after, so undo restores it exactly.
+class AnnotationsCommand : public QUndoCommand
+{
+public:
+    AnnotationsCommand(AnnotationsDocument& doc, const QString& text,
+                       AnnotationsDocument::FrameEdits before,
+                       AnnotationsDocument::FrameEdits after, int merge)
+        : QUndoCommand(text), m_doc(doc), m_before(std::move(before)), m_after(std::move(after)),
+          m_merge(merge)
+    {
+    }
+    void redo() override { m_doc.apply(m_after); }
+    void undo() override { m_doc.apply(m_before); }
+    int id() const override { return m_merge > 0 ? 1 : -1; }
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        const auto* next = static_cast<const AnnotationsCommand*>(other);
+        if (next->m_merge != m_merge)
+            return false;
+        // The first state before stays; the newest state after wins.
+        for (const auto& [name, before] : next->m_before)
+            m_before.emplace(name, before);
+        for (const auto& [name, after] : next->m_after)
+            m_after[name] = after;
+        return true;
+    }
+
+private:
+    AnnotationsDocument& m_doc;
+    AnnotationsDocument::FrameEdits m_before;
+    AnnotationsDocument::FrameEdits m_after;
+    int m_merge;
+};
+
+AnnotationsDocument::AnnotationsDocument(const Pipeline& pipeline, QObject* parent)
+    : QObject(parent), m_kinds(pipeline.perceptKinds())
+{
+    m_recovery_dir = defaultRecoveryDir();
+    wireAutosave(*this, m_autosave, m_undo);
+}
+
+AnnotationsDocument::~AnnotationsDocument()
+{
+    QObject::disconnect(&m_undo, nullptr, this, nullptr);
+    blockSignals(true);
+}
+
+QString AnnotationsDocument::defaultPath(const QString& stream)
+{
+    return stream.isEmpty() ? QString() : fromLocalPath(defaultTruthPath(toLocalPath(stream)));
+}
+
+void AnnotationsDocument::reset()
+{
+    m_key_by_stem.clear();
+    for (const auto& [name, frame] : m_annotations.frames)
+        m_key_by_stem.emplace(frameStem(name), name);
+    m_version.reset();
+    m_recovered = false;
+    m_undo.clear();
+    m_autosave.stop();
+    m_top_merge = 0;
+    m_top_index = -1;
+}
+
+void AnnotationsDocument::adopt(const QString& stream, const QString& path, Annotations annotations,
+                                const QString& load_problem)
+{
+    m_stream = stream;
+    m_path = path;
+    m_load_problem = load_problem;
+    m_annotations = std::move(annotations);
+    reset();
+    emit changed({});
+    emit modifiedChanged(false);
+}
+
+Status AnnotationsDocument::setStream(const QString& stream, std::size_t frames)
+{
+    const QString path = defaultPath(stream);
+    std::error_code ec;
+    if (path.isEmpty() || !std::filesystem::exists(toLocalPath(path), ec)) {
+        adopt(stream, path, {});
+        return {};
+    }
+    auto loaded = Annotations::load(toLocalPath(path), m_kinds, frames);
+    if (!loaded) {
+        adopt(stream, path, {}, QString::fromStdString(loaded.error().message));
+        return loaded.error();
+    }
+    adopt(stream, path, std::move(loaded).value());
+    return {};
+}
+
+std::string AnnotationsDocument::keyOf(const std::string& name) const
+{
+    if (m_annotations.frames.count(name))
+        return name;
+    const auto it = m_key_by_stem.find(frameStem(name));
+    return it != m_key_by_stem.end() ? it->second : name;
+}
+
+const FrameAnnotation* AnnotationsDocument::frame(const std::string& name) const
+{
+    const auto it = m_annotations.frames.find(keyOf(name));
+    return it != m_annotations.frames.end() ? &it->second : nullptr;
+}
+
+std::shared_ptr<const AnnotationsVersion> AnnotationsDocument::version() const
+{
+    if (!m_version) {
+        auto v = std::make_shared<AnnotationsVersion>();
+        v->annotations = m_annotations;
+        v->truth = v->annotations.truthByStem();
+        m_version = std::move(v);
+    }
+    return m_version;
+}
+
+bool AnnotationsDocument::edit(const QString& text, FrameEdits after, int merge)
+{
+    FrameEdits keyed;
+    FrameEdits before;
+    for (auto& [name, annotation] : after) {
+        const std::string key = keyOf(name);
+        const FrameAnnotation* now = frame(key);
+        const bool same = now ? annotation && *annotation == *now : !annotation;
+        if (same)
+            continue;
+        before.emplace(key, now ? std::optional<FrameAnnotation>(*now) : std::nullopt);
+        keyed.emplace(key, std::move(annotation));
+    }
+    if (keyed.empty())
+        return false;
+    const bool merging = merge > 0 && merge == m_top_merge && m_undo.index() == m_top_index;
+    if (!merging)
+        m_top_merge = 0;
+    m_undo.push(new AnnotationsCommand(*this, text, std::move(before), std::move(keyed), merge));
+    m_top_merge = merge;
+    m_top_index = m_undo.index();
+    return true;
+}
+
+bool AnnotationsDocument::editFrame(const std::string& name, FrameAnnotation after,
+                                    const QString& text, int merge)
+{
+    FrameEdits edits;
+    edits.emplace(name, std::move(after));
+    return edit(text, std::move(edits), merge);
+}
+
+void AnnotationsDocument::apply(const FrameEdits& edits)
+{
+    QStringList names;
+    for (const auto& [name, annotation] : edits) {
+        if (annotation) {
+            m_annotations.frames[name] = *annotation;
+            m_key_by_stem.emplace(frameStem(name), name);
+        } else {
+            m_annotations.frames.erase(name);
+            m_key_by_stem.erase(frameStem(name));
+        }
+        names << QString::fromStdString(name);
+    }
+    m_version.reset();
+    if (!m_autosave.isActive())
+        m_autosave.start(); // at most the delay after the first unsaved edit
+    emit changed(names);
+}
+
+Status AnnotationsDocument::save()
+{
+    if (m_path.isEmpty())
+        return Error{"the annotations have no file yet: use Save Annotations As"};
+    if (!m_load_problem.isEmpty())
+        return Error{toLocalPath(m_path) +
+                     ": could not be read when the stream opened, so it is not written over; "
+                     "save the annotations under another name"};
+    return saveAs(m_path);
+}
+
+Status AnnotationsDocument::saveAs(const QString& path)
+{
+    if (Status s = m_annotations.save(toLocalPath(path), m_kinds); !s)
+        return s; // the edits stay in memory, and modified
+    if (path != m_path)
+        m_load_problem.clear();
+    m_path = path;
+    m_recovered = false;
+    m_undo.setClean();
+    m_autosave.stop();
+    discardRecovery();
+    emit modifiedChanged(false);
+    return {};
+}
+
+QString AnnotationsDocument::recoveryFile(const QString& stream) const
+{
+    const QByteArray hash = QCryptographicHash::hash(QByteArray::fromStdString(toLocalPath(stream)),
+                                                     QCryptographicHash::Sha1)
+                                .toHex()
+                                .left(16);
+    return QDir(m_recovery_dir)
+        .filePath(QStringLiteral("annotations-recovery-%1.json").arg(QString::fromLatin1(hash)));
+}
+
+Status AnnotationsDocument::writeRecovery()
+{
+    if (m_stream.isEmpty())
+        return Error{"a live camera's annotations have no stream to be recovered onto"};
+    if (!makeLocalFolder(m_recovery_dir))
+        return Error{toLocalPath(m_recovery_dir) + ": cannot create the recovery folder"};
+    auto root = nlohmann::ordered_json::parse(m_annotations.toJson(m_kinds));
+    nlohmann::ordered_json meta{{"format", kRecoveryFormat}};
+    putPath(meta, "path", m_path);
+    putPath(meta, "stream", m_stream);
+    meta["saved_at"] = recoveryTimestamp();
+    root["recovery"] = std::move(meta);
+    return writeFileAtomically(toLocalPath(recoveryFile(m_stream)), jsonText(root, 1) + '\n');
+}
+
+std::optional<AnnotationsRecovery> AnnotationsDocument::findRecovery(const QString& stream) const
+{
+    const QString of = stream.isEmpty() ? m_stream : stream;
+    if (of.isEmpty())
+        return std::nullopt;
+    const QString file = recoveryFile(of);
+    if (!localPathExists(file))
+        return std::nullopt;
+    const Result<std::string> text =
+        readWholeFile(toLocalPath(file), maxAnnotationsBytes(kMaxRecoveryFrames));
+    if (!text)
+        return std::nullopt;
+    const auto root = nlohmann::json::parse(text.value(), nullptr, false);
+    if (!root.is_object() || !root.contains("recovery") || !root["recovery"].is_object())
+        return std::nullopt;
+    const nlohmann::json& meta = root["recovery"];
+    if (stringAt(meta, "format") != kRecoveryFormat || pathAt(meta, "stream") != of)
+        return std::nullopt; // another stream's file of the same hash: never offered here
+    AnnotationsRecovery r;
+    r.file = file;
+    r.path = pathAt(meta, "path");
+    r.stream = of;
+    r.saved_at = QString::fromStdString(stringAt(meta, "saved_at"));
+    if (const auto frames = root.find("frames"); frames != root.end() && frames->is_object())
+        r.frames = frames->size();
+    return r;
+}
+
+Status AnnotationsDocument::recover(const AnnotationsRecovery& recovery)
+{
+    if (recovery.stream != m_stream)
+        return Error{toLocalPath(recovery.file) + ": these annotation edits belong to " +
+                     toLocalPath(recovery.stream) + ", not to the open stream " +
+                     toLocalPath(m_stream)};
+    auto text = readWholeFile(toLocalPath(recovery.file), maxAnnotationsBytes(kMaxRecoveryFrames));
+    if (!text)
+        return text.error();
+    auto annotations = Annotations::fromJson(text.value(), toLocalPath(recovery.file), m_kinds);
+    if (!annotations)
+        return annotations.error();
+    m_annotations = std::move(annotations).value();
+    m_path = recovery.path;
+    m_load_problem.clear();
+    reset();
+    m_recovered = true;
+    emit changed({});
+    emit modifiedChanged(true);
+    return {};
+}
+
+void AnnotationsDocument::discardRecovery()
+{
+    if (!m_stream.isEmpty())
+        QFile::remove(recoveryFile(m_stream));
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,137 @@
+// The annotations document: the open stream's ground truth (SPEC §5.2), its single owner. Every
+// change is a command on its own undo stack that holds the changed frames before and after (a
+// drag merges into one step); saves are atomic, to annotations.json beside the stream or a chosen
+// file; unsaved edits are written to a recovery file of their own stream at most 30 s after an
+// edit, and offered again only when that stream is opened.
+#pragma once
+
+#include "visioncore/framework/controller.h"
+#include "visioncore/io/annotations.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace fieldsight::ui {
+
+/// An immutable copy of the annotations for the frame worker, with the truth of each frame by
+/// frame stem (a .strm and the PNG folder beside it name the same frame differently).
+struct AnnotationsVersion
+{
+    Annotations annotations;
+    std::map<std::string, const PerceptSet*> truth; ///< by frameStem(), into `annotations`
+};
+
+/// A recovery file left by a session that did not save its annotation edits.
+struct AnnotationsRecovery
+{
+    QString file;           ///< the recovery file
+    QString path;           ///< the annotations file the edits belong to
+    QString stream;         ///< the stream they were made on
+    QString saved_at;       ///< ISO 8601
+    std::size_t frames = 0; ///< annotated frames in it
+};
+
+class AnnotationsDocument : public QObject
+{
+    Q_OBJECT
+public:
+    explicit AnnotationsDocument(const Pipeline& pipeline, QObject* parent = nullptr);
+    ~AnnotationsDocument() override;
+
+    /// The kinds read and written, in the order files list them (the pipeline's percept kinds).
+    const std::vector<const PerceptKind*>& kinds() const { return m_kinds; }
+
+    /// The annotations of `stream` as read from `path` (clean, new history). `load_problem` says
+    /// why the file could not be read: the document is then empty, and the damaged file is
+    /// never written over (save() asks for saveAs()).
+    void adopt(const QString& stream, const QString& path, Annotations annotations,
+               const QString& load_problem = {});
+    /// Reads `stream`'s annotations file here (tests, scripts): absent is empty; an Error names
+    /// a damaged file (kept as loadProblem()).
+    Status setStream(const QString& stream, std::size_t frames = 0);
+    /// Where `stream` keeps its annotations (annotations.json in its folder; empty for a camera).
+    static QString defaultPath(const QString& stream);
+
+    QString stream() const { return m_stream; }
+    QString path() const { return m_path; }
+    QString loadProblem() const { return m_load_problem; }
+    const Annotations& annotations() const { return m_annotations; }
+    /// The annotation of frame `name` (found by name, or by frame stem), null when it has none.
+    const FrameAnnotation* frame(const std::string& name) const;
+    /// The key frame `name` is kept under: the existing one of the same stem, or `name`.
+    std::string keyOf(const std::string& name) const;
+    /// The current annotations as an immutable version (one copy per change).
+    std::shared_ptr<const AnnotationsVersion> version() const;
+
+    bool modified() const { return m_recovered || !m_undo.isClean(); }
+    QUndoStack& undoStack() { return m_undo; }
+
+    /// Frame name -> its annotation after the edit (nullopt: the frame has none).
+    using FrameEdits = std::map<std::string, std::optional<FrameAnnotation>>;
+    /// Applies `after` as one undo step named `text`; edits with the same nonzero `merge` follow
+    /// each other into one step (a drag while the mouse is down). False when nothing changes.
+    bool edit(const QString& text, FrameEdits after, int merge = 0);
+    /// The same for one frame.
+    bool editFrame(const std::string& name, FrameAnnotation after, const QString& text,
+                   int merge = 0);
+    /// A fresh merge id for edit().
+    int newMerge() { return ++m_last_merge; }
+
+    /// Saves to path() (atomically); an Error names the file and keeps the edits in memory. A
+    /// file that could not be read when the stream opened is not written over: use saveAs().
+    Status save();
+    Status saveAs(const QString& path);
+
+    /// Where the recovery files go; the app data folder by default. The autosave runs `delay_ms`
+    /// after the first unsaved edit (30 s by default).
+    void setRecoveryDir(const QString& dir) { m_recovery_dir = dir; }
+    void setAutosaveDelay(int delay_ms) { m_autosave.setInterval(delay_ms); }
+    /// Writes the recovery file of the open stream now.
+    Status writeRecovery();
+    /// The recovery file left for `stream` (the open one when empty), if any.
+    std::optional<AnnotationsRecovery> findRecovery(const QString& stream = {}) const;
+    /// Loads a recovery of the open stream (one of another stream is refused, naming both): the
+    /// annotations become modified, to be saved to the path they came from.
+    Status recover(const AnnotationsRecovery& recovery);
+    /// Removes the open stream's recovery file (after a save, or when the user declines it).
+    void discardRecovery();
+
+signals:
+    /// The annotations of `frames` changed (an edit, undo or redo); empty: all of them (a new
+    /// stream, a recovery).
+    void changed(const QStringList& frames);
+    void modifiedChanged(bool modified);
+    /// A background problem (the autosave failed), for the window's message bar.
+    void problem(const QString& message);
+
+private:
+    friend class AnnotationsCommand;
+    void apply(const FrameEdits& edits);
+    QString recoveryFile(const QString& stream) const;
+    void reset();
+
+    std::vector<const PerceptKind*> m_kinds;
+    Annotations m_annotations;
+    std::map<std::string, std::string> m_key_by_stem;
+    mutable std::shared_ptr<const AnnotationsVersion> m_version;
+    QString m_stream;
+    QString m_path;
+    QString m_load_problem;
+    QUndoStack m_undo;
+    QTimer m_autosave;
+    QString m_recovery_dir;
+    bool m_recovered = false;
+    int m_last_merge = 0;
+    int m_top_merge = 0;
+    int m_top_index = -1;
+};
+
+} // namespace fieldsight::ui
