@@ -1,11 +1,11 @@
-// Scoring detections against annotations (SPEC §5.3): greedy one-to-one matching, nearest first.
+// Scoring detections against annotations (SPEC §5.3 and docs/formats.md): greedy one-to-one
+// matching, nearest first, and the one path every scorer goes through, matchFrame().
 #include "visioncore/services/evaluation.h"
 
 #include "visioncore/percepts/field_boundary.h"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <tuple>
 #include <utility>
 
@@ -415,73 +415,6 @@ EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
                           const Annotations& truth, int width, int height)
 {
     return evaluateFrames(detected, truth, width, height).scores;
-}
-
-std::string defaultTruthPath(const std::string& stream)
-{
-    return besideStream(stream, "annotations.json");
-}
-
-Result<std::map<std::string, std::size_t>> scoredFrameIndices(const StreamInput& input,
-                                                              const Annotations& truth,
-                                                              const std::string& truth_path)
-{
-    std::map<std::string, std::size_t> by_name;
-    std::map<std::string, std::size_t> by_stem;
-    for (std::size_t i = 0; i < input.info().frame_count; ++i) {
-        const std::string name = input.reader->frameName(i);
-        by_name.emplace(name, i);
-        by_stem.emplace(frameStem(name), i);
-    }
-    std::map<std::string, std::size_t> indices;
-    for (const auto& [name, annotation] : truth.frames) {
-        if (!isScored(annotation))
-            continue;
-        if (auto it = by_name.find(name); it != by_name.end()) {
-            indices.emplace(name, it->second);
-        } else if (auto st = by_stem.find(frameStem(name)); st != by_stem.end()) {
-            indices.emplace(name, st->second);
-        } else {
-            return Error{truth_path + ": frame '" + name + "' is " +
-                         (annotation.done ? "marked done" : "reviewed") + " but " + input.stream +
-                         " has no such frame"};
-        }
-    }
-    return indices;
-}
-
-Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
-                                  const std::string& truth_path, int threads, const RunHooks& hooks)
-{
-    auto names = scoredFrameIndices(input, truth, truth_path);
-    if (!names)
-        return names.error();
-    std::vector<std::size_t> indices;
-    for (const auto& [name, index] : names.value())
-        indices.push_back(index);
-    std::sort(indices.begin(), indices.end());
-    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-
-    auto run = runStream(input, indices, threads, hooks);
-    if (!run)
-        return run.error();
-    if (run.value().cancelled)
-        return Error{input.stream + ": evaluation cancelled"};
-    std::map<std::size_t, const FrameResult*> by_index;
-    for (const FrameResult& f : run.value().frames)
-        by_index.emplace(f.index, &f);
-    EvalReport report;
-    for (const auto& [name, index] : names.value())
-        report.detected.emplace(name, by_index.at(index)->percepts);
-    report.stream = input.stream;
-    report.lut_path = input.lut_path;
-    report.truth_path = truth_path;
-    Evaluation evaluation =
-        evaluateFrames(report.detected, truth, input.info().width, input.info().height);
-    report.scores = evaluation.scores;
-    report.disagreements = std::move(evaluation.disagreements);
-    report.frame_index = std::move(names).value();
-    return report;
 }
 
 } // namespace fieldsight

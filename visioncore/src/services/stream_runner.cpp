@@ -79,14 +79,16 @@ std::vector<std::size_t> firstFrames(std::size_t n)
     return indices;
 }
 
-void lowerThreadPriority()
+void lowerThreadPriority(int niceness)
 {
 #ifdef __linux__
-    thread_local bool lowered = false;
-    if (!lowered) {
-        lowered = true;
-        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+    thread_local int applied = 0;
+    if (applied != niceness) {
+        applied = niceness;
+        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), niceness);
     }
+#else
+    (void)niceness;
 #endif
 }
 

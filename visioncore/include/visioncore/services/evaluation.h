@@ -260,5 +260,13 @@ Result<std::map<std::string, std::size_t>> scoredFrameIndices(const StreamInput&
 Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
                                   const std::string& truth_path, int threads,
                                   const RunHooks& hooks = {});
+/// The same, but a scored frame whose detections `known` holds (by its name in `truth`; made
+/// with the same table and settings) is not run again: a change of the truth alone is scored
+/// without running the pipeline on the frames scored before. `frames_run`, when given, is set
+/// to the frames the pipeline ran.
+Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
+                                  const std::string& truth_path, int threads, const RunHooks& hooks,
+                                  const std::map<std::string, PerceptSet>& known,
+                                  std::size_t* frames_run = nullptr);
 
 } // namespace fieldsight
