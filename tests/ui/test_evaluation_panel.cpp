@@ -1,11 +1,13 @@
 // The evaluation dock in the real main window, offscreen: its numbers equal `fieldsight eval
 // --json` on the same stream and annotations (run as a child process), a ball annotated where
 // nothing is detected is listed on its frame and the next-disagreement key lands there with the
-// ball drawn emphasised, and a LUT edit that erases orange drops the ball recall the dock shows.
+// ball drawn emphasised, a LUT edit that erases orange drops the ball recall the dock shows, and
+// an edit of the annotations document is scored again with the detections already made.
 #include "support/child_process.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
 #include "ui/actions/file_commands.h"
+#include "ui/document/annotations_document.h"
 #include "ui/document/evaluation_scan.h"
 #include "ui/main_window.h"
 #include "ui/panels/evaluation_panel.h"
@@ -287,6 +289,59 @@ private slots:
         QVERIFY(panel.changeText().contains(
             QString("ball recall %1 → %2")
                 .arg(QString::number(after, 'f', 2), QString::number(before, 'f', 2))));
+    }
+
+    void annotationEditsAreScoredWithTheDetectionsMade()
+    {
+        // Frame 29 not done: scored once it is marked done.
+        const QString stream = m_dir.filePath("edits");
+        copyStream(stream, [](QJsonObject& frames) {
+            QJsonObject f29 = frames.value("frame_000029.png").toObject();
+            f29["done"] = false;
+            frames["frame_000029.png"] = f29;
+        });
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndWait(w, stream));
+        QVERIFY(waitForEvaluation(w));
+        ui::EvaluationScan& scan = w.session().evaluation();
+        QCOMPARE(scan.lastFramesRun(), std::size_t(29));
+        QCOMPARE(scan.report()->scores.frames, std::size_t(29));
+        const auto missedOn17 = [&scan] {
+            return std::any_of(scan.failing().begin(), scan.failing().end(), [](const auto& f) {
+                return f.index == 17 && f.disagreement.kind == &perceptKind<Ball>() &&
+                       f.disagreement.missed == std::vector<std::size_t>{1};
+            });
+        };
+        QVERIFY(!missedOn17());
+
+        // A ball annotated where nothing is: matched again, no frame run again.
+        ui::AnnotationsDocument& truth = w.session().annotations();
+        FrameAnnotation f17 = *truth.frame("frame_000017.png");
+        f17.truth.output<Ball>().push_back({10, 10, 5});
+        QVERIFY(truth.editFrame("frame_000017.png", f17, "add ball"));
+        QVERIFY(scan.pending());
+        QVERIFY(waitForEvaluation(w));
+        QVERIFY(missedOn17());
+        QCOMPARE(scan.lastFramesRun(), std::size_t(0));
+        QVERIFY(!scan.before()); // the detectors did not change
+        QVERIFY(w.evaluationPanel().changeText().isEmpty());
+
+        // Marking frame 29 done runs that frame alone.
+        FrameAnnotation f29 = *truth.frame("frame_000029.png");
+        f29.done = true;
+        QVERIFY(truth.editFrame("frame_000029.png", f29, "done"));
+        QVERIFY(waitForEvaluation(w));
+        QCOMPARE(scan.lastFramesRun(), std::size_t(1));
+        QCOMPARE(scan.report()->scores.frames, std::size_t(30));
+
+        // Undo takes the ball back out of the scores.
+        w.session().undoGroup().setActiveStack(&truth.undoStack());
+        w.session().undoGroup().undo();
+        w.session().undoGroup().undo();
+        QVERIFY(waitForEvaluation(w));
+        QVERIFY(!missedOn17());
+        QCOMPARE(scan.report()->scores.frames, std::size_t(29));
     }
 
     void scoreChangeTextNamesKindsByTheirNouns()

@@ -55,6 +55,10 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     connect(m_settings, &PipelineSettings::changed, m_evaluation, [this] {
         m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     });
+    // And the annotations: a change of the truth alone is matched again without running the
+    // frames scored before.
+    connect(m_annotations, &AnnotationsDocument::changed, m_evaluation,
+            [this] { m_evaluation->setTruth(truthVersion(), m_annotations->path()); });
 
     // Whatever reads the stream's frames reads them turned as the window shows them.
     connect(m_stream, &StreamDocument::orientationChanged, this, [this] {
@@ -87,6 +91,13 @@ EditingSession::~EditingSession()
     }
     for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>())
         watcher->waitForFinished();
+}
+
+std::shared_ptr<const Annotations> EditingSession::truthVersion() const
+{
+    std::shared_ptr<const AnnotationsVersion> version = m_annotations->version();
+    const Annotations* annotations = &version->annotations;
+    return {std::move(version), annotations}; // shares the version's ownership
 }
 
 void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
@@ -206,6 +217,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     m_effect->setStream(spec, m_lut->version(), options);
     m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
+    m_evaluation->setTruth(truthVersion(), m_annotations->path());
     m_evaluation->setStream(spec, m_lut->version(), options);
     // The settings keep their history across streams; Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());

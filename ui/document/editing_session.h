@@ -91,6 +91,8 @@ signals:
 
 private:
     void addUndoDocument(const QString& name, QUndoStack& stack);
+    /// The annotations document's current truth, for the evaluation.
+    std::shared_ptr<const Annotations> truthVersion() const;
 
     struct Opening
     {

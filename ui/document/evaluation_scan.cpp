@@ -5,12 +5,25 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
-#include <chrono>
 #include <exception>
-#include <filesystem>
 #include <new>
 
 namespace fieldsight::ui {
+
+namespace {
+
+/// The evaluation's threads yield to the window and its frame worker, but less than the
+/// whole-stream scan's: its few frames give the scores of an edit before the scan's strip is full.
+constexpr int kNiceness = 5;
+
+std::size_t scoredCount(const Annotations* truth)
+{
+    return truth ? std::size_t(std::count_if(truth->frames.begin(), truth->frames.end(),
+                                             [](const auto& f) { return isScored(f.second); }))
+                 : 0;
+}
+
+} // namespace
 
 struct EvaluationScan::Job
 {
@@ -21,10 +34,12 @@ struct EvaluationScan::Job
     std::shared_ptr<const ParamSet> params;
     std::vector<std::string> skip;
     int threads = 0;
-    /// The annotations to score against; null: read them beside the stream first.
     std::shared_ptr<const Annotations> truth;
     std::string truth_path;
     int truth_serial = 0;
+    int settings_serial = 0;
+    /// Detections made with this job's table and settings (not run again).
+    std::shared_ptr<const Detections> known;
     bool edit = false; ///< follows a table or settings change
     std::chrono::steady_clock::time_point requested;
 
@@ -35,26 +50,11 @@ struct EvaluationScan::Job
 
 struct EvaluationScan::Outcome
 {
-    bool loaded_truth = false; ///< `truth` was read by this job
-    std::shared_ptr<const Annotations> truth;
-    std::size_t scored_frames = 0;
     std::optional<EvalReport> report;
+    std::size_t frames_run = 0;
     std::string error;
     bool cancelled = false;
 };
-
-Result<std::shared_ptr<const Annotations>>
-streamAnnotations(const QString& spec, const Pipeline& pipeline, std::size_t frames)
-{
-    const std::string path = defaultTruthPath(toLocalPath(spec));
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
-        return std::shared_ptr<const Annotations>();
-    auto loaded = Annotations::load(path, pipeline.perceptKinds(), frames);
-    if (!loaded)
-        return loaded.error();
-    return std::make_shared<const Annotations>(std::move(loaded).value());
-}
 
 EvaluationScan::EvaluationScan(const Pipeline& pipeline, QObject* parent)
     : QObject(parent), m_pipeline(pipeline)
@@ -81,31 +81,11 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
 {
     Outcome out;
     try {
-        std::shared_ptr<const Annotations> truth = job->truth;
         auto reader = openStream(job->stream, job->options);
         if (!reader) {
             out.error = reader.error().message;
             return out;
         }
-        if (!truth) {
-            auto loaded = streamAnnotations(QString::fromStdString(job->stream), *job->pipeline,
-                                            reader.value()->info().frame_count);
-            if (!loaded) {
-                out.error = loaded.error().message;
-                return out;
-            }
-            out.loaded_truth = true;
-            out.truth = loaded.value();
-            truth = out.truth;
-            if (!truth)
-                return out;
-        }
-        out.scored_frames =
-            std::size_t(std::count_if(truth->frames.begin(), truth->frames.end(),
-                                      [](const auto& f) { return isScored(f.second); }));
-        if (out.scored_frames == 0)
-            return out;
-        job->total = out.scored_frames;
         StreamInput input;
         input.stream = job->stream;
         input.reader = std::move(reader).value();
@@ -115,12 +95,17 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
         input.skip = job->skip;
         RunHooks hooks;
         hooks.cancel = &job->cancel;
-        hooks.progress = [&job](std::size_t done, std::size_t) { job->done = done; };
+        hooks.progress = [&job](std::size_t done, std::size_t total) {
+            job->done = done;
+            job->total = total;
+        };
         hooks.prefilter = [](std::size_t, const Frame&) {
-            lowerThreadPriority();
+            lowerThreadPriority(kNiceness);
             return true;
         };
-        auto report = evaluateStream(input, *truth, job->truth_path, job->threads, hooks);
+        static const Detections none;
+        auto report = evaluateStream(input, *job->truth, job->truth_path, job->threads, hooks,
+                                     job->known ? *job->known : none, &out.frames_run);
         if (job->cancel)
             out.cancelled = true;
         else if (!report)
@@ -144,18 +129,15 @@ void EvaluationScan::setStream(const QString& spec, std::shared_ptr<const Colour
     m_spec = spec.startsWith(QLatin1String("camera:")) ? QString() : spec;
     m_options = options;
     m_lut = std::move(lut);
-    m_truth.reset();
-    m_truth_path = m_spec.isEmpty() ? QString()
-                                    : QString::fromStdString(defaultTruthPath(toLocalPath(m_spec)));
+    ++m_settings_serial;
     ++m_truth_serial;
-    m_scored_frames = 0;
     m_report.reset();
+    m_detected.reset();
     m_before.reset();
     m_failing.clear();
     m_problem.clear();
     m_pending = !m_spec.isEmpty() && m_lut;
     m_pending_edit = false;
-    m_load_truth = true;
     m_requested = std::chrono::steady_clock::now();
     emit finished(); // what was shown is gone
     start();
@@ -165,12 +147,7 @@ void EvaluationScan::setTruth(std::shared_ptr<const Annotations> truth, const QS
 {
     m_truth = std::move(truth);
     m_truth_path = path;
-    m_load_truth = false;
     ++m_truth_serial;
-    m_scored_frames =
-        m_truth ? std::size_t(std::count_if(m_truth->frames.begin(), m_truth->frames.end(),
-                                            [](const auto& f) { return isScored(f.second); }))
-                : 0;
     schedule(false);
 }
 
@@ -179,6 +156,7 @@ void EvaluationScan::setLut(std::shared_ptr<const ColourLut> lut)
     if (!lut || lut == m_lut)
         return;
     m_lut = std::move(lut);
+    ++m_settings_serial;
     schedule(true);
 }
 
@@ -187,6 +165,7 @@ void EvaluationScan::setSettings(std::shared_ptr<const ParamSet> params,
 {
     m_params = params ? std::move(params) : std::make_shared<ParamSet>();
     m_skip = std::move(skip);
+    ++m_settings_serial;
     schedule(true);
 }
 
@@ -198,8 +177,10 @@ void EvaluationScan::schedule(bool edit)
         m_requested = std::chrono::steady_clock::now();
     m_pending = true;
     m_pending_edit = m_pending_edit || edit;
-    if (m_job)
-        m_job->cancel = true; // stale: its frames ran with what the change replaced
+    // Stale: its frames ran with what the change replaced. A run under annotations that changed
+    // goes on: its detections still hold.
+    if (m_job && edit)
+        m_job->cancel = true;
     m_delay.start();
 }
 
@@ -210,6 +191,7 @@ void EvaluationScan::evaluate()
     if (!m_pending)
         m_requested = std::chrono::steady_clock::now();
     m_pending = true;
+    m_rerun_all = true;
     start();
 }
 
@@ -218,6 +200,7 @@ void EvaluationScan::cancel()
     m_delay.stop();
     m_pending = false;
     m_pending_edit = false;
+    m_rerun_all = false;
     if (m_job)
         m_job->cancel = true;
 }
@@ -229,19 +212,42 @@ std::pair<std::size_t, std::size_t> EvaluationScan::progress() const
     return {m_job->done.load(), m_job->total.load()};
 }
 
+const EvaluationScan::Detections& EvaluationScan::detected() const
+{
+    static const Detections none;
+    return m_detected ? *m_detected : none;
+}
+
+bool EvaluationScan::nothingToScore()
+{
+    if (scoredCount(m_truth.get()) > 0)
+        return false;
+    m_report.reset();
+    m_detected.reset();
+    m_before.reset();
+    m_failing.clear();
+    m_problem = m_truth && !m_truth->frames.empty()
+                    ? tr("Nothing to score: no annotated frame is marked done or has a reviewed "
+                         "kind")
+                    : tr("No annotations for this stream yet: annotate frames and mark them done "
+                         "to score the detectors");
+    return true;
+}
+
 void EvaluationScan::start()
 {
     m_delay.stop();
     if (m_job) {
-        m_job->cancel = true; // onFinished() starts the pending one
+        if (m_pending_edit || m_rerun_all)
+            m_job->cancel = true; // onFinished() starts the pending one
         return;
     }
     if (!m_pending || m_spec.isEmpty() || !m_lut)
         return;
-    if (!m_load_truth && m_scored_frames == 0) {
-        m_pending = false;
-        m_problem = m_truth ? tr("%1: no frame is done or has a reviewed kind").arg(m_truth_path)
-                            : tr("No annotations for this stream (%1)").arg(m_truth_path);
+    m_pending = false;
+    if (nothingToScore()) {
+        m_pending_edit = false;
+        m_rerun_all = false;
         emit finished();
         return;
     }
@@ -253,14 +259,17 @@ void EvaluationScan::start()
     job->params = m_params;
     job->skip.assign(m_skip.begin(), m_skip.end());
     job->threads = m_threads;
-    job->truth = m_load_truth ? nullptr : m_truth;
+    job->truth = m_truth;
     job->truth_path = toLocalPath(m_truth_path);
     job->truth_serial = m_truth_serial;
+    job->settings_serial = m_settings_serial;
+    if (!m_rerun_all && m_detected_serial == m_settings_serial)
+        job->known = m_detected;
     job->edit = m_pending_edit;
     job->requested = m_requested;
-    job->total = m_scored_frames;
-    m_pending = false;
+    job->total = scoredCount(m_truth.get());
     m_pending_edit = false;
+    m_rerun_all = false;
     m_job = job;
     m_watcher.setFuture(
         QtConcurrent::run(&m_pool, [job] { return std::make_shared<Outcome>(runJob(job)); }));
@@ -275,28 +284,25 @@ void EvaluationScan::onFinished()
     if (!job)
         return;
     const std::shared_ptr<Outcome> out = m_watcher.result();
-    // A run for another stream or other annotations (cancelled when they changed) is dropped.
-    const bool current = job->truth_serial == m_truth_serial;
-    if (current && out->loaded_truth) {
-        m_truth = out->truth;
-        m_load_truth = false;
-        m_scored_frames = out->scored_frames;
+    const bool same_settings = job->settings_serial == m_settings_serial;
+    // Detections made with the table and settings in use serve the next run, whatever the
+    // annotations became meanwhile.
+    if (out->report && same_settings) {
+        m_detected = std::make_shared<const Detections>(std::move(out->report->detected));
+        m_detected_serial = job->settings_serial;
     }
-    if (current && !out->cancelled) {
+    if (same_settings && job->truth_serial == m_truth_serial && !out->cancelled) {
         m_problem.clear();
         if (!out->error.empty()) {
             m_problem = QString::fromStdString(out->error);
-        } else if (!out->report) {
-            m_problem = m_truth
-                            ? tr("%1: no frame is done or has a reviewed kind").arg(m_truth_path)
-                            : tr("No annotations for this stream (%1)").arg(m_truth_path);
-        } else {
+        } else if (out->report) {
             if (!job->edit)
                 m_before.reset();
             else if (m_report && m_report_truth == job->truth_serial)
                 m_before = m_report->scores;
             m_report = std::move(out->report);
             m_report_truth = job->truth_serial;
+            m_last_frames_run = out->frames_run;
             m_last_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
                                                                   job->requested)
                             .count();

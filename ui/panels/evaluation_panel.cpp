@@ -393,7 +393,7 @@ QImage EvaluationPanel::culpritImage(const FailingFrame& failing) const
     };
     if (const auto t = truth->frames.find(d.frame); t != truth->frames.end())
         add(t->second.truth.find(*d.kind), d.missed, kMissedColour);
-    if (const auto s = report->detected.find(d.frame); s != report->detected.end())
+    if (const auto s = m_scan.detected().find(d.frame); s != m_scan.detected().end())
         add(s->second.find(*d.kind), d.false_detections, kFalseColour);
     QPainter painter(&image);
     paintDrawing(painter, drawing);
