@@ -5,10 +5,12 @@
 // - the re-score after a LUT edit (a click's tolerance box of the field colour, then of the
 //   ball's), from the edit to the panel's new scores, with the window's longest event-loop stall
 //   meanwhile (a 5 ms QTimer probe) and the effect scan running too;
+// - the re-score after an annotation edit (matched again with the detections made);
 // - the same evaluation headless (evaluateStream, as `fieldsight eval`), for comparison.
 //   build/tests/bench_evaluation [DIR]
 #include "commands/commands.h"
 #include "ui/actions/file_commands.h"
+#include "ui/document/annotations_document.h"
 #include "ui/document/evaluation_scan.h"
 #include "ui/main_window.h"
 #include "ui/panels/evaluation_panel.h"
@@ -188,10 +190,26 @@ int main(int argc, char** argv)
         if (!ok)
             continue;
         stall = waitForEvaluation(w);
-        std::printf("window: %s edit to new scores: %.2f s (%zu frames); longest event-loop "
+        std::printf("window: %s edit to new scores: %.2f s (%zu frames run); longest event-loop "
                     "stall %.1f ms; %s\n",
-                    e.what, scan.lastRunMs() / 1000.0, scan.report()->scores.frames, stall,
+                    e.what, scan.lastRunMs() / 1000.0, scan.lastFramesRun(), stall,
                     qPrintable(w.evaluationPanel().changeText()));
+    }
+
+    // An annotation edit (a ball added on an annotated frame): matched again, nothing run.
+    for (int i = 0; i < 3; ++i) {
+        const std::string name = frameName(9 * (100 + 37 * i)).toStdString();
+        ui::AnnotationsDocument& truth = w.session().annotations();
+        if (!truth.frame(name))
+            continue;
+        FrameAnnotation f = *truth.frame(name);
+        f.truth.output<Ball>().push_back({5.0 + i, 5.0, 3});
+        truth.editFrame(name, f, "bench");
+        stall = waitForEvaluation(w);
+        std::printf("window: annotation edit to new scores: %.2f s (%zu frames run, %zu scored); "
+                    "longest event-loop stall %.1f ms\n",
+                    scan.lastRunMs() / 1000.0, scan.lastFramesRun(), scan.report()->scores.frames,
+                    stall);
     }
     return 0;
 }
