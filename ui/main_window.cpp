@@ -198,6 +198,16 @@ void MainWindow::buildDocks()
     connect(m_evaluation, &EvaluationPanel::highlightChanged, m_view, [this](const QImage& image) {
         m_view->setHighlight(QStringLiteral("evaluation"), image);
     });
+    connect(m_evaluation, &EvaluationPanel::culpritsAt, this, [this](const QRect& r) {
+        // Centred when they are not all in sight (zoomed in on another part of the frame).
+        const double zoom = m_view->zoom();
+        const QRectF shown(QPointF(m_view->imageOrigin()) + QPointF(r.topLeft()) * zoom,
+                           QSizeF(r.size()) * zoom);
+        if (QRectF(m_view->rect()).contains(shown))
+            return;
+        const QPointF centre = (QRectF(r).center()) * zoom;
+        m_view->setImageOrigin((QPointF(m_view->rect().center()) - centre).toPoint());
+    });
     connect(m_evaluation, &EvaluationPanel::marksChanged, this, [this] {
         m_disagreement_strip->setMarks(m_evaluation->frameMarks(),
                                        m_session->stream().frameCount());

@@ -230,8 +230,14 @@ private slots:
         auto* next = w.findChild<QAction*>("navigate.next_disagreement");
         QVERIFY(next);
         QCOMPARE(next->shortcut(), QKeySequence(Qt::Key_F6));
+        // Zoomed in on another corner: the view is brought to the culprit.
+        w.view().setZoom(8);
+        w.view().setImageOrigin({-1500, -1000});
         QTest::keyClick(&w.view(), Qt::Key_F6);
         QVERIFY(waitForFrame(w, 17));
+        const QPointF ball = QPointF(w.view().imageOrigin()) + QPointF(10.5, 10.5) * 8;
+        QVERIFY2(w.view().rect().contains(ball.toPoint()),
+                 qPrintable(QString("%1,%2").arg(ball.x()).arg(ball.y())));
         QCOMPARE(panel.chosen(), row);
         QCOMPARE(panel.frames().currentRow(), row);
         // The missed ball is drawn emphasised over the frame: its ring (radius 5 around 10, 10)
@@ -239,7 +245,7 @@ private slots:
         const QImage& culprit = w.view().highlight("evaluation");
         QVERIFY(!culprit.isNull());
         QCOMPARE(culprit.size(), QSize(320, 240));
-        QCOMPARE(culprit.pixelColor(15, 10), QColor(255, 230, 0));
+        QCOMPARE(culprit.pixelColor(15, 10), QColor(255, 40, 200));
         QCOMPARE(culprit.pixelColor(10, 10).alpha(), 0);
         QCOMPARE(culprit.pixelColor(100, 100).alpha(), 0);
 

@@ -23,7 +23,7 @@ namespace {
 
 /// The culprits' colours: a missed true object and a false detection, drawn wide under the
 /// overlay so the kind's own drawing still shows on top.
-constexpr Rgb kMissedColour{255, 230, 0};
+constexpr Rgb kMissedColour{255, 40, 200};
 constexpr Rgb kFalseColour{0, 230, 255};
 constexpr Rgb kHaloRim{0, 0, 0};
 constexpr double kHaloWidth = 5;
@@ -164,7 +164,7 @@ EvaluationPanel::EvaluationPanel(EvaluationScan& scan, StreamDocument& stream, Q
     column->addWidget(failing_title);
     m_frames = new QListWidget(this);
     m_frames->setObjectName(QStringLiteral("evaluation.frames"));
-    m_frames->setToolTip(tr("Choose one to go there: a missed true object is drawn yellow, a "
+    m_frames->setToolTip(tr("Choose one to go there: a missed true object is drawn pink, a "
                             "false detection cyan"));
     connect(m_frames, &QListWidget::itemActivated, this,
             [this](QListWidgetItem* item) { showDisagreement(m_frames->row(item)); });
@@ -321,7 +321,18 @@ void EvaluationPanel::choose(int row)
     m_chosen_what = failing[std::size_t(row)];
     m_frames->setCurrentRow(row);
     m_frames->scrollToItem(m_frames->item(row));
-    emit highlightChanged(culpritImage(m_chosen_what));
+    const QImage image = culpritImage(m_chosen_what);
+    emit highlightChanged(image);
+    // Where the culprits are (image px), so the view can bring them into sight.
+    QRect bounds;
+    for (int y = 0; y < image.height(); ++y) {
+        const auto* pixels = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x)
+            if (qAlpha(pixels[x]) != 0)
+                bounds |= QRect(x, y, 1, 1);
+    }
+    if (!bounds.isEmpty())
+        emit culpritsAt(bounds);
 }
 
 void EvaluationPanel::showDisagreement(int row)

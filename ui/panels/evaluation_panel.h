@@ -56,6 +56,8 @@ signals:
     /// The culprits of the chosen disagreement, an image of the frame's size, transparent
     /// elsewhere (null: none to show); for the frame view's highlight.
     void highlightChanged(const QImage& image);
+    /// The chosen disagreement's culprits lie in `bounds` (image px).
+    void culpritsAt(const QRect& bounds);
     /// A new evaluation: frameMarks() changed.
     void marksChanged();
 
