@@ -22,9 +22,10 @@ class QTableWidget;
 
 namespace fieldsight::ui {
 
-/// "ball recall 0.91 → 0.97, goalpost precision 1.00 → 0.96": the precisions, recalls and
-/// boundary error that differ between two evaluations, each kind by its noun (two decimals, or
-/// three where two would not show the change); "no change in the scores" when none differs.
+/// "<noun> recall 0.91 → 0.97, <noun> precision 1.00 → 0.96": the precisions, recalls and
+/// boundary error that differ between two evaluations, each kind by its noun from the percept
+/// registry (two decimals, or three where two would not show the change); "no change in the
+/// scores" when none differs.
 QString scoreChangeText(const EvaluationScores& before, const EvaluationScores& after);
 
 class EvaluationPanel : public QWidget
