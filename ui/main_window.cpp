@@ -7,6 +7,7 @@
 #include "ui/document/frame_recorder.h"
 #include "ui/panels/bookmarks_panel.h"
 #include "ui/panels/detections_panel.h"
+#include "ui/panels/evaluation_panel.h"
 #include "ui/panels/history_panel.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/layers_panel.h"
@@ -16,6 +17,7 @@
 #include "ui/settings/window_settings.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/stream_navigator/effect_strip.h"
+#include "ui/stream_navigator/frame_marks_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
 #include "ui/widgets/message_bar.h"
 
@@ -130,6 +132,14 @@ void MainWindow::buildCentre()
     m_navigator = new StreamNavigator(m_session->stream(), central);
     column->addWidget(m_navigator);
     setCentralWidget(central);
+    // What the last change did to the evaluation's scores, over the strip of what it did to
+    // every frame; shown once there is such a change.
+    m_scores_change = new QLabel(m_navigator);
+    m_scores_change->setObjectName(QStringLiteral("scores_change"));
+    m_scores_change->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_scores_change->setContentsMargins(4, 1, 4, 1);
+    m_scores_change->hide();
+    m_navigator->addTimelineStrip(m_scores_change);
     m_effect_strip = new EffectStrip(m_session->effectScan(), *m_navigator->slider(), m_navigator);
     m_navigator->addTimelineStrip(m_effect_strip);
     connect(m_effect_strip, &EffectStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
@@ -140,6 +150,13 @@ void MainWindow::buildCentre()
     m_navigator->addTimelineStrip(m_annotation_strip);
     connect(m_annotation_strip, &AnnotationStrip::frameClicked, m_navigator,
             &StreamNavigator::goToFrame);
+    m_disagreement_strip =
+        new FrameMarksStrip(*m_navigator->slider(), QColor(0, 190, 255), m_navigator);
+    m_disagreement_strip->setObjectName(QStringLiteral("disagreement_strip"));
+    m_disagreement_strip->setToolTip(tr("Frames where detections and truth disagree"));
+    m_navigator->addTimelineStrip(m_disagreement_strip);
+    connect(m_navigator->slider(), &QSlider::valueChanged, m_disagreement_strip,
+            qOverload<>(&QWidget::update));
 }
 
 void MainWindow::buildStatusBar()
@@ -190,6 +207,38 @@ void MainWindow::buildDocks()
         dock(m_bookmarks, tr("Bookmarks"), "bookmarks_dock", Qt::LeftDockWidgetArea);
     m_history = new HistoryPanel(s, this);
     QDockWidget* history = dock(m_history, tr("History"), "history_dock", Qt::LeftDockWidgetArea);
+    m_evaluation = new EvaluationPanel(s.evaluation(), s.stream(), this);
+    // Tabbed with the layers, where there is height for its list; scrolled all the same.
+    auto* evaluation_scroll = new QScrollArea(this);
+    evaluation_scroll->setWidget(m_evaluation);
+    evaluation_scroll->setWidgetResizable(true);
+    evaluation_scroll->setFrameShape(QFrame::NoFrame);
+    QDockWidget* evaluation =
+        dock(evaluation_scroll, tr("Evaluation"), "evaluation_dock", Qt::LeftDockWidgetArea);
+    // The chosen disagreement's culprits over the frame; its frames on the timeline.
+    connect(m_evaluation, &EvaluationPanel::highlightChanged, m_view, [this](const QImage& image) {
+        m_view->setHighlight(QStringLiteral("evaluation"), image);
+    });
+    connect(m_evaluation, &EvaluationPanel::culpritsAt, this, [this](const QRect& r) {
+        // Centred when they are not all in sight (zoomed in on another part of the frame).
+        const double zoom = m_view->zoom();
+        const QRectF shown(QPointF(m_view->imageOrigin()) + QPointF(r.topLeft()) * zoom,
+                           QSizeF(r.size()) * zoom);
+        if (QRectF(m_view->rect()).contains(shown))
+            return;
+        const QPointF centre = (QRectF(r).center()) * zoom;
+        m_view->setImageOrigin((QPointF(m_view->rect().center()) - centre).toPoint());
+    });
+    connect(m_evaluation, &EvaluationPanel::marksChanged, this, [this] {
+        m_disagreement_strip->setMarks(m_evaluation->frameMarks(),
+                                       m_session->stream().frameCount());
+        const QString change = m_evaluation->changeText();
+        m_scores_change->setText(tr("Scores after the last change: %1").arg(change));
+        m_scores_change->setToolTip(m_scores_change->text());
+        m_scores_change->setVisible(!change.isEmpty());
+    });
+    connect(m_disagreement_strip, &FrameMarksStrip::frameClicked, m_evaluation,
+            &EvaluationPanel::showFrame);
 
     m_pipeline = new PipelinePanel(s.stream(), s.settings(), this);
     QDockWidget* pipeline =
@@ -214,6 +263,7 @@ void MainWindow::buildDocks()
 
     tabifyDockWidget(layers, bookmarks);
     tabifyDockWidget(layers, history);
+    tabifyDockWidget(layers, evaluation);
     layers->raise();
     splitDockWidget(pipeline, detections, Qt::Vertical);
     tabifyDockWidget(pipeline, lut); // after the split, or the detections join the tabs
@@ -233,7 +283,8 @@ void MainWindow::buildDocks()
     addToolBar(Qt::LeftToolBarArea, annotate);
 
     m_docks_menu = new QMenu(tr("Panels"), this);
-    for (QDockWidget* d : {layers, bookmarks, history, inspector, pipeline, lut, detections, uv})
+    for (QDockWidget* d :
+         {layers, bookmarks, history, inspector, pipeline, lut, detections, uv, evaluation})
         m_docks_menu->addAction(d->toggleViewAction());
     m_docks_menu->addAction(annotate->toggleViewAction());
 }

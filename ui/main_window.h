@@ -1,6 +1,7 @@
-// The main window: the frame view with its navigator and the edit-effect strip, and docks made
-// from the stage and tool registries (layers, pipeline, LUT editor, UV plane), the detections,
-// the pixel inspector, the bookmarks and the undo history. It builds these over one editing
+// The main window: the frame view with its navigator, the edit-effect strip and the marks of the
+// evaluation's disagreements, and docks made from the stage and tool registries (layers,
+// pipeline, LUT editor, UV plane), the detections, the pixel inspector, the bookmarks, the undo
+// history and the evaluation. It builds these over one editing
 // session and wires them; the documents, the tools and the menus' commands hold the state.
 #pragma once
 
@@ -23,6 +24,8 @@ class AnnotationStrip;
 class BookmarksPanel;
 class DetectionsPanel;
 class EffectStrip;
+class EvaluationPanel;
+class FrameMarksStrip;
 class FileCommands;
 class FrameRecorder;
 class HistoryPanel;
@@ -58,6 +61,9 @@ public:
     UvPlanePanel& uvPanel() { return *m_uv; }
     BookmarksPanel& bookmarksPanel() { return *m_bookmarks; }
     EffectStrip& effectStrip() { return *m_effect_strip; }
+    EvaluationPanel& evaluationPanel() { return *m_evaluation; }
+    /// The timeline's marks of the frames where detections and truth disagree.
+    FrameMarksStrip& disagreementStrip() { return *m_disagreement_strip; }
     FrameRecorder& recorder() { return *m_recorder; }
     MessageBar& messageBar() { return *m_message_bar; }
     OfferBar& recoveryBar() { return *m_recovery_bar; }
@@ -110,6 +116,7 @@ private:
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;
     EffectStrip* m_effect_strip = nullptr;
+    FrameMarksStrip* m_disagreement_strip = nullptr;
     MessageBar* m_message_bar = nullptr;
     OfferBar* m_recovery_bar = nullptr;
     OfferBar* m_annotations_recovery_bar = nullptr;
@@ -122,11 +129,13 @@ private:
     UvPlanePanel* m_uv = nullptr;
     BookmarksPanel* m_bookmarks = nullptr;
     HistoryPanel* m_history = nullptr;
+    EvaluationPanel* m_evaluation = nullptr;
     QMenu* m_docks_menu = nullptr;
     QLabel* m_status_zoom = nullptr;
     QLabel* m_status_time = nullptr;
     QLabel* m_status_effect = nullptr;
     QLabel* m_status_annotation = nullptr;
+    QLabel* m_scores_change = nullptr;       ///< what the last change did to the evaluation
     std::optional<CellMask> m_compare_cells; ///< the compare dialog's chosen row, if any
     std::optional<QPoint> m_hover;
     QString m_last_message;

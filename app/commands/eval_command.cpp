@@ -1,5 +1,6 @@
-// `fieldsight eval`: the pipeline over the done frames of an annotations file, scored per SPEC
-// §5.3, printed as a table and written as fieldsight-eval/1.
+// `fieldsight eval`: the pipeline over the scored frames of an annotations file (done, or with
+// reviewed kinds), scored per SPEC §5.3 and docs/formats.md, printed as a table and written as
+// fieldsight-eval/1.
 #include "commands/commands.h"
 
 #include "visioncore/basics/json_text.h"
@@ -14,6 +15,17 @@
 namespace fieldsight::cli {
 namespace {
 
+/// The eval JSON's name of a scored kind's class (its key in "classes").
+std::string className(const PerceptKind& kind)
+{
+    const char* names[] = {"ball", "goalpost", "obstacle", "field_line"};
+    const std::vector<const PerceptKind*>& kinds = scoredKinds();
+    for (std::size_t k = 0; k < kinds.size(); ++k)
+        if (kinds[k]->key == kind.key)
+            return names[k];
+    return std::string(kind.key);
+}
+
 constexpr const char* kPrecisionNote = "precision = 1 when TP+FP = 0; recall = 1 when TP+FN = 0";
 
 std::string evalTable(const EvalReport& report)
@@ -24,9 +36,15 @@ std::string evalTable(const EvalReport& report)
     std::snprintf(line, sizeof line, "fieldsight eval: %s against %s\n", report.stream.c_str(),
                   report.truth_path.c_str());
     text += line;
-    std::snprintf(line, sizeof line,
-                  "%zu done frames scored (%zu annotated frames not done, ignored)\n", s.frames,
-                  s.frames_not_done);
+    if (s.frames_reviewed == 0)
+        std::snprintf(line, sizeof line,
+                      "%zu done frames scored (%zu annotated frames not done, ignored)\n", s.frames,
+                      s.frames_not_done);
+    else
+        std::snprintf(line, sizeof line,
+                      "%zu done frames scored, and %zu not done for their reviewed kinds only (%zu "
+                      "annotated frames not done)\n",
+                      s.frames, s.frames_reviewed, s.frames_not_done);
     text += line;
     std::snprintf(line, sizeof line, "%-10s %7s %7s %7s %10s %8s\n", "class", "TP", "FP", "FN",
                   "precision", "recall");
@@ -39,6 +57,16 @@ std::string evalTable(const EvalReport& report)
     row("ball", s.balls);
     row("goalpost", s.goalposts);
     row("obstacle", s.obstacles);
+    row("field line", s.field_lines);
+    for (const auto& [name, c] :
+         {std::pair{"ball", s.balls}, std::pair{"goalpost", s.goalposts},
+          std::pair{"obstacle", s.obstacles}, std::pair{"field line", s.field_lines}})
+        if (c.concealed_found + c.concealed_missed > 0) {
+            std::snprintf(line, sizeof line,
+                          "concealed %s: %d found, %d missed (in neither TP nor FN)\n", name,
+                          c.concealed_found, c.concealed_missed);
+            text += line;
+        }
     if (s.boundary_frames > 0)
         std::snprintf(line, sizeof line, "field boundary: mean error %.2f px over %zu frames\n",
                       s.boundaryMeanError(), s.boundary_frames);
@@ -59,7 +87,9 @@ std::string evalJson(const EvalReport& report)
                     {"fp", c.fp},
                     {"fn", c.fn},
                     {"precision", rounded(c.precision(), 6)},
-                    {"recall", rounded(c.recall(), 6)}};
+                    {"recall", rounded(c.recall(), 6)},
+                    {"concealed_found", c.concealed_found},
+                    {"concealed_missed", c.concealed_missed}};
     };
     Json j;
     j["format"] = "fieldsight-eval/1";
@@ -68,9 +98,11 @@ std::string evalJson(const EvalReport& report)
     j["truth"] = report.truth_path;
     j["frames"] = s.frames;
     j["frames_not_done"] = s.frames_not_done;
+    j["frames_reviewed"] = s.frames_reviewed;
     j["classes"] = {{"ball", score(s.balls)},
                     {"goalpost", score(s.goalposts)},
-                    {"obstacle", score(s.obstacles)}};
+                    {"obstacle", score(s.obstacles)},
+                    {"field_line", score(s.field_lines)}};
     Json boundary;
     if (s.boundary_frames > 0)
         boundary["mean_error_px"] = rounded(s.boundaryMeanError(), 4);
@@ -78,6 +110,18 @@ std::string evalJson(const EvalReport& report)
         boundary["mean_error_px"] = nullptr;
     boundary["frames"] = s.boundary_frames;
     j["field_boundary"] = std::move(boundary);
+    Json disagreements = Json::array();
+    for (const FrameDisagreement& d : report.disagreements) {
+        Json frame;
+        frame["frame"] = d.frame;
+        if (const auto it = report.frame_index.find(d.frame); it != report.frame_index.end())
+            frame["index"] = it->second;
+        frame["class"] = className(*d.kind);
+        frame["false_detections"] = d.false_detections;
+        frame["missed"] = d.missed;
+        disagreements.push_back(std::move(frame));
+    }
+    j["disagreements"] = std::move(disagreements);
     j["note"] = kPrecisionNote;
     return jsonText(j, 2) + "\n";
 }
@@ -124,9 +168,9 @@ int evalCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, truth.error().message);
         // Precision and recall of nothing would print as a perfect 1.000.
         if (std::none_of(truth.value().frames.begin(), truth.value().frames.end(),
-                         [](const auto& f) { return f.second.done; }))
-            return badInput(ctx,
-                            truth_path + ": nothing to score (no frame is marked \"done\": true)");
+                         [](const auto& f) { return isScored(f.second); }))
+            return badInput(ctx, truth_path + ": nothing to score (no frame is marked \"done\": "
+                                              "true or has a \"reviewed\" kind)");
         auto report = evaluateStream(input.value(), truth.value(), truth_path, int(*threads));
         if (!report)
             return badInput(ctx, report.error().message);

@@ -545,6 +545,20 @@ private slots:
         QCOMPARE(ball.value("precision").toDouble(), 1.0);
         QCOMPARE(ball.value("recall").toDouble(), 0.0);
         QCOMPARE(doc.value("field_boundary").toObject().value("frames").toInt(), 2);
+        // The additions of docs/formats.md: reviewed frames, concealed counts, field lines, and
+        // the frame with the missed ball (its truth ball 0) as the one disagreement.
+        QCOMPARE(doc.value("frames_reviewed").toInt(-1), 0);
+        QCOMPARE(ball.value("concealed_found").toInt(-1), 0);
+        QVERIFY(doc.value("classes").toObject().contains("field_line"));
+        const QJsonArray disagreements = doc.value("disagreements").toArray();
+        QCOMPARE(disagreements.size(), 1);
+        const QJsonObject miss = disagreements.at(0).toObject();
+        QCOMPARE(miss.value("frame").toString(), QString("frame_000000.png"));
+        QCOMPARE(miss.value("index").toInt(-1), 0);
+        QCOMPARE(miss.value("class").toString(), QString("ball"));
+        QCOMPARE(miss.value("missed").toArray(), QJsonArray{0});
+        QVERIFY(miss.value("false_detections").toArray().isEmpty());
+        QVERIFY(o.out.contains("field line "));
 
         // A missing truth file is bad input.
         const Outcome missing = fieldsight({"eval", m_stream, "--truth", path("nope.json")});

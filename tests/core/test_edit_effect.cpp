@@ -252,16 +252,18 @@ private slots:
         after.output<Obstacle>() = {{55, 85, 60, 150}, {250, 300, 60, 150}}; // one new
 
         const DetectionDelta d = compareDetections(before, after, 320, 240);
-        QCOMPARE(d.kinds.size(), std::size_t(3));
+        // Every kind with a matching rule, field lines too (docs/formats.md), in one order.
+        QCOMPARE(d.kinds.size(), std::size_t(4));
         QCOMPARE(d.kinds[0].kind, &perceptKind<Ball>());
         QCOMPARE(d.kinds[1].kind, &perceptKind<Goalpost>());
         QCOMPARE(d.kinds[2].kind, &perceptKind<Obstacle>());
+        QCOMPARE(d.kinds[3].kind, &perceptKind<FieldLine>());
         QCOMPARE(d.of("balls").appeared + d.of("balls").vanished, 0);
         QCOMPARE(d.of("goalposts").vanished, 1);
         QCOMPARE(d.of("goalposts").appeared, 0);
         QCOMPARE(d.of("obstacles").appeared, 1);
         QCOMPARE(d.of("obstacles").vanished, 0);
-        QCOMPARE(d.of("field_lines").appeared, 0); // no rule: never listed
+        QCOMPARE(d.of("field_lines").appeared, 0); // neither run has lines
         QCOMPARE(d.appeared(), 1);
         QCOMPARE(d.vanished(), 1);
 
@@ -269,7 +271,7 @@ private slots:
         DetectionDelta total;
         total += d;
         total += compareDetections(after, before, 320, 240);
-        QCOMPARE(total.kinds.size(), std::size_t(3));
+        QCOMPARE(total.kinds.size(), std::size_t(4));
         QCOMPARE(total.of("goalposts").appeared, 1);
         QCOMPARE(total.of("goalposts").vanished, 1);
         QCOMPARE(total.appeared(), 2);

@@ -179,13 +179,15 @@ QString makeBhumanStream(const QString& folder, const QJsonObject& horizons)
 
 QString scoreLine(const char* name, const ClassScore& c)
 {
-    return QString("%1 TP %2 FP %3 FN %4 precision %5 recall %6")
+    return QString("%1 TP %2 FP %3 FN %4 precision %5 recall %6 (concealed: %7 found, %8 missed)")
         .arg(name, -9)
         .arg(c.tp, 3)
         .arg(c.fp, 3)
         .arg(c.fn, 3)
         .arg(c.precision(), 0, 'f', 3)
-        .arg(c.recall(), 0, 'f', 3);
+        .arg(c.recall(), 0, 'f', 3)
+        .arg(c.concealed_found)
+        .arg(c.concealed_missed);
 }
 
 /// Today's floors for one class: a regression below them fails.
@@ -237,8 +239,9 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
         const auto it = truth.frames.find(f.name);
         if (it == truth.frames.end() || !it->second.done)
             continue;
+        // Frame by frame through the one matching path (concealed objects apart, as eval).
         EvaluationScores one;
-        scoreFrame(f.percepts, it->second.truth, kWidth, kHeight, one);
+        one.add(matchFrame(f.percepts, it->second, kWidth, kHeight));
         sum.balls += one.balls;
         sum.goalposts += one.goalposts;
         sum.obstacles += one.obstacles;
@@ -361,10 +364,12 @@ private slots:
             evaluateAndReport(stream, truth, truth_path, "transitions.goal_colour=9");
         QVERIFY(s.frames >= 40);
         // Measured when the fixture was made (46 frames): ball 29/3/0, goalposts 40/0/0,
-        // obstacles 2/58/23, boundary 14.14 px.
+        // obstacles 2/58/23, boundary 14.14 px. With concealed objects scored apart (eval,
+        // docs/formats.md): ball 28/3/0 and 1 concealed found, goalposts 31/0/0 and 9 found,
+        // obstacles 0/58/14 with 2 found and 9 missed: the only robots found are concealed ones.
         checkFloor("ball", s.balls, 0.85, 0.95);
         checkFloor("goalpost", s.goalposts, 0.95, 0.95);
-        checkFloor("obstacle", s.obstacles, 0.02, 0.04);
+        QVERIFY2(s.obstacles.concealed_found >= 2, qPrintable(scoreLine("obstacle", s.obstacles)));
         QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 16.0,
                  qPrintable(QString::number(s.boundaryMeanError())));
     }

@@ -5,12 +5,13 @@
 //                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]...
 //                  [--colour NAME] [--tool ID] [--click X,Y]... [--drag X0,Y0,X1,Y1]...
 //                  [--preview X,Y] [--uv-select CB0,CR0,CB1,CR1] [--y-range LO,HI]
-//                  [--orientation 0|90|180|270]
+//                  [--orientation 0|90|180|270] [--disagreement ROW]
 // --click presses the tool at image pixel X,Y (the LUT tools edit the table there, the annotation
 // tools select), --drag drags it from X0,Y0 to X1,Y1 (draws or moves an annotated object);
 // --preview hovers the tool there (all at zoom 1 unless --zoom); the whole-stream scan is waited
-// for before the shot. --orientation turns
-// the stream's pictures as View > Orientation does, before anything else.
+// for before the shot. --orientation turns the stream's pictures as View > Orientation does,
+// before anything else. The evaluation is waited for; --disagreement chooses a row of its list
+// of disagreements (go there, culprits drawn; --dock evaluation_dock shows the list).
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
@@ -19,6 +20,7 @@
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/document/edit_effect_scan.h"
+#include "ui/panels/evaluation_panel.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -39,7 +41,8 @@ int main(int argc, char** argv)
     p.addPositionalArgument("stream", "stream");
     for (const char* o :
          {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock", "colour",
-          "tool", "click", "drag", "preview", "uv-select", "y-range", "orientation"})
+          "tool", "click", "drag", "preview", "uv-select", "y-range", "orientation",
+          "disagreement"})
         p.addOption({o, o, "value"});
     p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
@@ -149,6 +152,14 @@ int main(int argc, char** argv)
         const QStringList v = p.value("y-range").split(',');
         w.uvPanel().setYLevels(v[0].toInt(), v[1].toInt());
     }
+    // Edits are scored against the evaluation of the table before them.
+    const auto waitEvaluation = [&w] {
+        ui::EvaluationScan& scan = w.session().evaluation();
+        for (int i = 0; i < 6000 && (scan.running() || scan.pending()); ++i)
+            QTest::qWait(10);
+    };
+    if (p.isSet("click"))
+        waitEvaluation();
     for (const QString& xy : p.values("click")) {
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, viewPoint(xy));
         waitFrame();
@@ -180,6 +191,11 @@ int main(int argc, char** argv)
         QTest::mouseMove(&w.view(), viewPoint(p.value("preview")));
     for (int i = 0; i < 2000 && w.session().effectScan().running(); ++i)
         QTest::qWait(10);
+    waitEvaluation();
+    if (p.isSet("disagreement")) {
+        w.evaluationPanel().showDisagreement(p.value("disagreement").toInt());
+        waitFrame();
+    }
     QApplication::processEvents();
     QTest::qWait(50);
     const QImage shot = w.grab().toImage();

@@ -33,6 +33,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_bookmarks = new BookmarksDocument(this);
     m_samples = new SamplesDocument(*m_lut, this);
     m_effect = new EditEffectScan(pipeline, this);
+    m_evaluation = new EvaluationScan(pipeline, this);
 
     addUndoDocument(tr("Colour table"), m_lut->undoStack());
     addUndoDocument(tr("LUT samples"), m_samples->undoStack());
@@ -48,11 +49,24 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     connect(m_settings, &PipelineSettings::changed, m_effect, [this] {
         m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     });
+    // So does the evaluation: the annotated frames are scored again after every change.
+    connect(m_lut, &LutDocument::changed, m_evaluation,
+            [this] { m_evaluation->setLut(m_lut->version()); });
+    connect(m_settings, &PipelineSettings::changed, m_evaluation, [this] {
+        m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
+    });
+    // And the annotations: a change of the truth alone is matched again without running the
+    // frames scored before.
+    connect(m_annotations, &AnnotationsDocument::changed, m_evaluation,
+            [this] { m_evaluation->setTruth(truthVersion(), m_annotations->path()); });
 
     // Whatever reads the stream's frames reads them turned as the window shows them.
     connect(m_stream, &StreamDocument::orientationChanged, this, [this] {
         const StreamOptions options{m_stream->orientation()};
         m_samples->setStreamOptions(options);
+        if (!m_evaluation->stream().isEmpty() &&
+            m_evaluation->streamOptions().orientation != options.orientation)
+            m_evaluation->setStream(m_stream->streamSpec(), m_lut->version(), options);
         if (m_effect->stream().isEmpty() ||
             m_effect->streamOptions().orientation == options.orientation)
             return; // saved, not turned
@@ -77,6 +91,13 @@ EditingSession::~EditingSession()
     }
     for (QFutureWatcherBase* watcher : findChildren<QFutureWatcherBase*>())
         watcher->waitForFinished();
+}
+
+std::shared_ptr<const Annotations> EditingSession::truthVersion() const
+{
+    std::shared_ptr<const AnnotationsVersion> version = m_annotations->version();
+    const Annotations* annotations = &version->annotations;
+    return {std::move(version), annotations}; // shares the version's ownership
 }
 
 void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
@@ -169,6 +190,7 @@ Status EditingSession::open(const QString& spec, const QString& lut)
 void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
 {
     m_effect->setStream({}, nullptr); // scanned again once its table is in
+    m_evaluation->setStream({}, nullptr);
     m_warnings = opened->warnings;
     const QString spec = opened->spec;
     const QString lut_path = opened->lut_path;
@@ -194,6 +216,9 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     m_effect->setStream(spec, m_lut->version(), options);
+    m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
+    m_evaluation->setTruth(truthVersion(), m_annotations->path());
+    m_evaluation->setStream(spec, m_lut->version(), options);
     // The settings keep their history across streams; Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
 }

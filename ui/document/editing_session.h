@@ -1,7 +1,8 @@
 // One editing session: the open documents, each the single owner of its data (the stream and its
 // frame results, the colour table, the pipeline settings, the bookmarks, the LUT samples; the
 // annotations join them), the observers that follow them (the frame worker inside the stream
-// document, the whole-stream edit-effect scan), and the undo group whose active stack Edit > Undo
+// document, the whole-stream edit-effect scan, the evaluation against the annotations), and the
+// undo group whose active stack Edit > Undo
 // follows. Opening a stream (in the background) and a table goes through here, so every document
 // changes together.
 #pragma once
@@ -9,6 +10,7 @@
 #include "ui/document/annotations_document.h"
 #include "ui/document/bookmarks_document.h"
 #include "ui/document/edit_effect_scan.h"
+#include "ui/document/evaluation_scan.h"
 #include "ui/document/lut_document.h"
 #include "ui/document/samples_document.h"
 #include "ui/document/pipeline_settings.h"
@@ -56,6 +58,7 @@ public:
     SamplesDocument& samples() { return *m_samples; }
     AnnotationsDocument& annotations() { return *m_annotations; }
     EditEffectScan& effectScan() { return *m_effect; }
+    EvaluationScan& evaluation() { return *m_evaluation; }
 
     /// Edit > Undo and Redo act on the active stack; the document edited last becomes active.
     QUndoGroup& undoGroup() { return m_undo_group; }
@@ -88,6 +91,8 @@ signals:
 
 private:
     void addUndoDocument(const QString& name, QUndoStack& stack);
+    /// The annotations document's current truth, for the evaluation.
+    std::shared_ptr<const Annotations> truthVersion() const;
 
     struct Opening
     {
@@ -107,6 +112,7 @@ private:
     SamplesDocument* m_samples = nullptr;
     AnnotationsDocument* m_annotations = nullptr;
     EditEffectScan* m_effect = nullptr;
+    EvaluationScan* m_evaluation = nullptr;
     QUndoGroup m_undo_group;
     std::vector<UndoDocument> m_undo_documents;
     QStringList m_warnings;

@@ -1,6 +1,7 @@
 #include "ui/stream_navigator/effect_strip.h"
 
 #include "ui/adapters/image_adapter.h"
+#include "ui/stream_navigator/frame_marks_strip.h"
 
 #include <QHelpEvent>
 #include <QLocale>
@@ -52,9 +53,7 @@ EffectStrip::EffectStrip(const EditEffectScan& scan, const QSlider& slider, QWid
 
 std::pair<double, double> EffectStrip::span() const
 {
-    const int handle = m_slider.style()->pixelMetric(QStyle::PM_SliderLength, nullptr, &m_slider);
-    const double left = m_slider.x() - x() + handle / 2.0;
-    return {left, std::max(1.0, double(m_slider.width() - handle))};
+    return sliderSpan(m_slider, *this);
 }
 
 long long EffectStrip::frameAt(int px) const

@@ -6,30 +6,7 @@
 #include <exception>
 #include <utility>
 
-#ifdef __linux__
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
-
 namespace fieldsight {
-
-namespace {
-
-/// The scan yields to the window and its frame worker: its threads run at a lower priority
-/// (nice 10 on Linux; the threads end with the scan).
-void lowerThreadPriority()
-{
-#ifdef __linux__
-    thread_local bool lowered = false;
-    if (!lowered) {
-        lowered = true;
-        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
-    }
-#endif
-}
-
-} // namespace
 
 EditEffectScanner::EditEffectScanner(const Pipeline& pipeline) : m_pipeline(pipeline) {}
 
@@ -115,7 +92,7 @@ void EditEffectScanner::run(const EditEffectJob& job)
         // A frame none of whose pixels changed class keeps its result: the pipeline runs only
         // where the edit shows (or everywhere when the settings changed).
         hooks.prefilter = [&](std::size_t index, const Frame& frame) {
-            lowerThreadPriority();
+            lowerThreadPriority(); // the scan yields to the window and its frame worker
             tallies[index] = tally_pixels(frame.ycbcr);
             const bool unchanged = job.before && !job.rerun_all && tallies[index].in_mask == 0 &&
                                    m_previous[index] && m_previous_lut[index] == job.before;

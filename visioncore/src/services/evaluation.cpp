@@ -1,11 +1,11 @@
-// Scoring detections against annotations (SPEC §5.3): greedy one-to-one matching, nearest first.
+// Scoring detections against annotations (SPEC §5.3 and docs/formats.md): greedy one-to-one
+// matching, nearest first, and the one path every scorer goes through, matchFrame().
 #include "visioncore/services/evaluation.h"
 
 #include "visioncore/percepts/field_boundary.h"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <tuple>
 #include <utility>
 
@@ -105,6 +105,52 @@ MatchResult matchObstacles(const std::vector<Obstacle>& detected,
     return greedyMatch(std::move(candidates), detected.size(), truth.size());
 }
 
+double fieldLineMatchCost(const FieldLine& a, const FieldLine& b)
+{
+    const double length_a = std::hypot(a.x2 - a.x1, a.y2 - a.y1);
+    const double length_b = std::hypot(b.x2 - b.x1, b.y2 - b.y1);
+    // Ties go to the first argument as the longer one: the rule is symmetric all the same.
+    const FieldLine& longer = length_a >= length_b ? a : b;
+    const FieldLine& shorter = length_a >= length_b ? b : a;
+    const double length = std::max(length_a, length_b);
+    const double limit = std::max(4.0, 0.05 * length);
+    if (length < 1e-9) // two points
+        return std::hypot(a.x1 - b.x1, a.y1 - b.y1) <= limit ? std::hypot(a.x1 - b.x1, a.y1 - b.y1)
+                                                             : -1.0;
+    const double ux = (longer.x2 - longer.x1) / length;
+    const double uy = (longer.y2 - longer.y1) / length;
+    // Along and across the longer segment, from its first end.
+    const auto along = [&](double x, double y) {
+        return (x - longer.x1) * ux + (y - longer.y1) * uy;
+    };
+    const auto across = [&](double x, double y) {
+        return std::abs((x - longer.x1) * uy - (y - longer.y1) * ux);
+    };
+    const double d1 = across(shorter.x1, shorter.y1);
+    const double d2 = across(shorter.x2, shorter.y2);
+    if (d1 > limit || d2 > limit)
+        return -1.0;
+    const double t1 = along(shorter.x1, shorter.y1);
+    const double t2 = along(shorter.x2, shorter.y2);
+    const double lo = std::min(t1, t2);
+    const double hi = std::max(t1, t2);
+    const double overlap = std::min(hi, length) - std::max(lo, 0.0);
+    // A point-like shorter segment must lie within the longer one's extent.
+    const bool overlaps = hi - lo < 1e-9 ? lo >= 0 && lo <= length : overlap >= 0.5 * (hi - lo);
+    return overlaps ? 0.5 * (d1 + d2) : -1.0;
+}
+
+MatchResult matchFieldLines(const std::vector<FieldLine>& detected,
+                            const std::vector<FieldLine>& truth)
+{
+    std::vector<Candidate> candidates;
+    for (std::size_t t = 0; t < truth.size(); ++t)
+        for (std::size_t d = 0; d < detected.size(); ++d)
+            if (const double cost = fieldLineMatchCost(detected[d], truth[t]); cost >= 0)
+                candidates.push_back({cost, d, t});
+    return greedyMatch(std::move(candidates), detected.size(), truth.size());
+}
+
 double polylineYAt(const std::vector<PointF>& polyline, double x)
 {
     if (x <= polyline.front().x)
@@ -132,20 +178,139 @@ double polylineMeanAbsDifference(const std::vector<PointF>& a, const std::vector
     return sum / double(width);
 }
 
+const std::vector<const PerceptKind*>& scoredKinds()
+{
+    static const std::vector<const PerceptKind*> kinds{
+        &perceptKind<Ball>(), &perceptKind<Goalpost>(), &perceptKind<Obstacle>(),
+        &perceptKind<FieldLine>()};
+    return kinds;
+}
+
+const PerceptKind& boundaryKind()
+{
+    return perceptKind<FieldBoundary>();
+}
+
+namespace {
+
+/// The rule of scoredKinds()[k] applied to the two sets' lists of that kind.
+MatchResult matchKind(std::size_t k, const PerceptSet& detected, const PerceptSet& truth,
+                      int height)
+{
+    switch (k) {
+    case 0:
+        return matchBalls(detected.list<Ball>(), truth.list<Ball>());
+    case 1:
+        return matchGoalposts(detected.list<Goalpost>(), truth.list<Goalpost>(), height);
+    case 2:
+        return matchObstacles(detected.list<Obstacle>(), truth.list<Obstacle>());
+    default:
+        return matchFieldLines(detected.list<FieldLine>(), truth.list<FieldLine>());
+    }
+}
+
+std::size_t listSize(const PerceptSet& set, const PerceptKind& kind)
+{
+    const PerceptEntry* e = set.find(kind);
+    return e && e->present() ? e->size() : 0;
+}
+
+/// matchFrame() with `marks` (null: every kind complete, no object concealed).
+FrameMatch matchFrameWith(const PerceptSet& detected, const PerceptSet& truth,
+                          const FrameAnnotation* marks, int width, int height)
+{
+    FrameMatch frame;
+    const std::vector<const PerceptKind*>& kinds = scoredKinds();
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+        const PerceptKind& kind = *kinds[k];
+        if (marks && !marks->complete(kind.truth_key))
+            continue;
+        const MatchResult match = matchKind(k, detected, truth, height);
+        KindMatch m;
+        m.kind = &kind;
+        m.pairs = match.pairs;
+        const std::size_t detected_count = listSize(detected, kind);
+        const std::size_t truth_count = listSize(truth, kind);
+        std::vector<bool> detection_used(detected_count, false);
+        std::vector<bool> truth_used(truth_count, false);
+        const auto concealed = [&](std::size_t t) {
+            return marks && marks->flagsOf(kind.truth_key, t).concealed;
+        };
+        for (const MatchPair& pair : match.pairs) {
+            detection_used[pair.detection] = true;
+            truth_used[pair.truth] = true;
+            ++(concealed(pair.truth) ? m.score.concealed_found : m.score.tp);
+        }
+        for (std::size_t d = 0; d < detected_count; ++d)
+            if (!detection_used[d])
+                m.false_detections.push_back(d);
+        for (std::size_t t = 0; t < truth_count; ++t)
+            if (!truth_used[t])
+                (concealed(t) ? m.concealed_missed : m.missed).push_back(t);
+        m.score.fp = int(m.false_detections.size());
+        m.score.fn = int(m.missed.size());
+        m.score.concealed_missed = int(m.concealed_missed.size());
+        frame.kinds.push_back(std::move(m));
+    }
+    if (!marks || marks->complete(boundaryKind().truth_key))
+        frame.boundary_error =
+            polylineMeanAbsDifference(boundaryOf(detected), boundaryOf(truth), width);
+    return frame;
+}
+
+} // namespace
+
+bool FrameMatch::disagrees() const
+{
+    return std::any_of(kinds.begin(), kinds.end(), [](const KindMatch& k) {
+        return !k.false_detections.empty() || !k.missed.empty();
+    });
+}
+
+FrameMatch matchFrame(const PerceptSet& detected, const FrameAnnotation& truth, int width,
+                      int height)
+{
+    return matchFrameWith(detected, truth.truth, &truth, width, height);
+}
+
+ClassScore* EvaluationScores::of(const PerceptKind& kind)
+{
+    return const_cast<ClassScore*>(std::as_const(*this).of(kind));
+}
+
+const ClassScore* EvaluationScores::of(const PerceptKind& kind) const
+{
+    const std::vector<const PerceptKind*>& kinds = scoredKinds();
+    const ClassScore* scores[] = {&balls, &goalposts, &obstacles, &field_lines};
+    for (std::size_t k = 0; k < kinds.size(); ++k)
+        if (kinds[k]->key == kind.key)
+            return scores[k];
+    return nullptr;
+}
+
+std::vector<std::pair<const PerceptKind*, ClassScore>> EvaluationScores::classes() const
+{
+    std::vector<std::pair<const PerceptKind*, ClassScore>> out;
+    for (const PerceptKind* kind : scoredKinds())
+        out.emplace_back(kind, *of(*kind));
+    return out;
+}
+
+void EvaluationScores::add(const FrameMatch& frame)
+{
+    for (const KindMatch& k : frame.kinds)
+        *of(*k.kind) += k.score;
+    if (frame.boundary_error >= 0) {
+        boundary_error_sum += frame.boundary_error;
+        ++boundary_frames;
+    }
+}
+
 void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, int height,
                 EvaluationScores& scores)
 {
     ++scores.frames;
-    scores.balls += matchBalls(detected.list<Ball>(), truth.list<Ball>()).score;
-    scores.goalposts +=
-        matchGoalposts(detected.list<Goalpost>(), truth.list<Goalpost>(), height).score;
-    scores.obstacles += matchObstacles(detected.list<Obstacle>(), truth.list<Obstacle>()).score;
-    const double boundary =
-        polylineMeanAbsDifference(boundaryOf(detected), boundaryOf(truth), width);
-    if (boundary >= 0) {
-        scores.boundary_error_sum += boundary;
-        ++scores.boundary_frames;
-    }
+    scores.add(matchFrameWith(detected, truth, nullptr, width, height));
 }
 
 KindDelta DetectionDelta::of(std::string_view key) const
@@ -202,102 +367,54 @@ bool operator==(const DetectionDelta& a, const DetectionDelta& b)
 DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
                                  int height)
 {
-    EvaluationScores scores;
-    scoreFrame(after, before, width, height, scores);
+    // The run before plays the truth: a detection after the edit that nothing before matches
+    // appeared (a false positive); one before that nothing after matches vanished (a miss).
+    const FrameMatch match = matchFrameWith(after, before, nullptr, width, height);
     DetectionDelta delta;
-    // A false positive is a detection after the edit that nothing before matches: it appeared.
-    for (const auto& [kind, score] : {std::pair{&perceptKind<Ball>(), scores.balls},
-                                      std::pair{&perceptKind<Goalpost>(), scores.goalposts},
-                                      std::pair{&perceptKind<Obstacle>(), scores.obstacles}})
-        delta.kinds.push_back({kind, score.fp, score.fn});
+    for (const KindMatch& k : match.kinds)
+        delta.kinds.push_back({k.kind, k.score.fp, k.score.fn});
     return delta;
+}
+
+bool isScored(const FrameAnnotation& annotation)
+{
+    if (annotation.done)
+        return true;
+    for (const PerceptKind* kind : scoredKinds())
+        if (annotation.complete(kind->truth_key))
+            return true;
+    return annotation.complete(boundaryKind().truth_key);
+}
+
+Evaluation evaluateFrames(const std::map<std::string, PerceptSet>& detected,
+                          const Annotations& truth, int width, int height)
+{
+    Evaluation evaluation;
+    EvaluationScores& scores = evaluation.scores;
+    const PerceptSet nothing;
+    for (const auto& [name, annotation] : truth.frames) {
+        if (!annotation.done)
+            ++scores.frames_not_done;
+        if (!isScored(annotation))
+            continue;
+        ++(annotation.done ? scores.frames : scores.frames_reviewed);
+        const auto it = detected.find(name);
+        if (it == detected.end())
+            ++scores.frames_missing;
+        const FrameMatch match =
+            matchFrame(it == detected.end() ? nothing : it->second, annotation, width, height);
+        scores.add(match);
+        for (const KindMatch& k : match.kinds)
+            if (!k.false_detections.empty() || !k.missed.empty())
+                evaluation.disagreements.push_back({name, k.kind, k.false_detections, k.missed});
+    }
+    return evaluation;
 }
 
 EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
                           const Annotations& truth, int width, int height)
 {
-    EvaluationScores scores;
-    const PerceptSet nothing;
-    for (const auto& [name, annotation] : truth.frames) {
-        if (!annotation.done) {
-            ++scores.frames_not_done;
-            continue;
-        }
-        const auto it = detected.find(name);
-        if (it == detected.end())
-            ++scores.frames_missing;
-        scoreFrame(it == detected.end() ? nothing : it->second, annotation.truth, width, height,
-                   scores);
-    }
-    return scores;
-}
-
-std::string defaultTruthPath(const std::string& stream)
-{
-    return besideStream(stream, "annotations.json");
-}
-
-namespace {
-
-/// The stream index of every done frame of `truth`, by name, else by name without extension.
-Result<std::map<std::string, std::size_t>>
-doneFrameIndices(const StreamInput& input, const Annotations& truth, const std::string& truth_path)
-{
-    std::map<std::string, std::size_t> by_name;
-    std::map<std::string, std::size_t> by_stem;
-    for (std::size_t i = 0; i < input.info().frame_count; ++i) {
-        const std::string name = input.reader->frameName(i);
-        by_name.emplace(name, i);
-        by_stem.emplace(frameStem(name), i);
-    }
-    std::map<std::string, std::size_t> indices;
-    for (const auto& [name, annotation] : truth.frames) {
-        if (!annotation.done)
-            continue;
-        if (auto it = by_name.find(name); it != by_name.end()) {
-            indices.emplace(name, it->second);
-        } else if (auto st = by_stem.find(frameStem(name)); st != by_stem.end()) {
-            indices.emplace(name, st->second);
-        } else {
-            return Error{truth_path + ": frame '" + name + "' is marked done but " + input.stream +
-                         " has no such frame"};
-        }
-    }
-    return indices;
-}
-
-} // namespace
-
-Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
-                                  const std::string& truth_path, int threads, const RunHooks& hooks)
-{
-    auto names = doneFrameIndices(input, truth, truth_path);
-    if (!names)
-        return names.error();
-    std::vector<std::size_t> indices;
-    for (const auto& [name, index] : names.value())
-        indices.push_back(index);
-    std::sort(indices.begin(), indices.end());
-    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-
-    auto run = runStream(input, indices, threads, hooks);
-    if (!run)
-        return run.error();
-    if (run.value().cancelled)
-        return Error{input.stream + ": evaluation cancelled"};
-    std::map<std::size_t, const FrameResult*> by_index;
-    for (const FrameResult& f : run.value().frames)
-        by_index.emplace(f.index, &f);
-    std::map<std::string, PerceptSet> detected;
-    for (const auto& [name, index] : names.value())
-        detected.emplace(name, by_index.at(index)->percepts);
-
-    EvalReport report;
-    report.stream = input.stream;
-    report.lut_path = input.lut_path;
-    report.truth_path = truth_path;
-    report.scores = evaluate(detected, truth, input.info().width, input.info().height);
-    return report;
+    return evaluateFrames(detected, truth, width, height).scores;
 }
 
 } // namespace fieldsight

@@ -11,6 +11,12 @@
 #include <optional>
 #include <stdexcept>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace fieldsight {
 
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
@@ -71,6 +77,19 @@ std::vector<std::size_t> firstFrames(std::size_t n)
     for (std::size_t i = 0; i < n; ++i)
         indices[i] = i;
     return indices;
+}
+
+void lowerThreadPriority(int niceness)
+{
+#ifdef __linux__
+    thread_local int applied = 0;
+    if (applied != niceness) {
+        applied = niceness;
+        setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), niceness);
+    }
+#else
+    (void)niceness;
+#endif
 }
 
 namespace {

@@ -1,10 +1,13 @@
-// Scoring detections against ground-truth annotations with the matching rules of SPEC §5.3, so
-// every scorer (the eval command, tests, the GUI) agrees; and evaluating a whole stream.
+// Scoring detections against ground-truth annotations with the matching rules of SPEC §5.3 (and
+// the field line rule of docs/formats.md), so every scorer (the eval command, the window's
+// evaluation, the edit-effect scan, tests) agrees: one matching path, matchFrame(); and
+// evaluating a whole stream.
 #pragma once
 
 #include "visioncore/io/annotations.h"
 #include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/field_line.h"
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"
 #include "visioncore/percepts/percept_set.h"
@@ -18,12 +21,16 @@
 
 namespace fieldsight {
 
-/// True positives, false positives and false negatives of one object class.
+/// True positives, false positives and false negatives of one object class. A concealed true
+/// object (ObjectFlags::concealed) is counted apart: found, its detection is neither a true nor a
+/// false positive; missed, it is no false negative.
 struct ClassScore
 {
-    int tp = 0; ///< detections matched to a true object
-    int fp = 0; ///< detections left unmatched
-    int fn = 0; ///< true objects left unmatched
+    int tp = 0;               ///< detections matched to a true object
+    int fp = 0;               ///< detections left unmatched
+    int fn = 0;               ///< true objects left unmatched
+    int concealed_found = 0;  ///< concealed true objects matched by a detection
+    int concealed_missed = 0; ///< concealed true objects left unmatched
 
     /// tp / (tp + fp), defined as 1 when there were no detections at all.
     double precision() const { return tp + fp == 0 ? 1.0 : double(tp) / double(tp + fp); }
@@ -35,6 +42,8 @@ struct ClassScore
         tp += other.tp;
         fp += other.fp;
         fn += other.fn;
+        concealed_found += other.concealed_found;
+        concealed_missed += other.concealed_missed;
         return *this;
     }
     friend bool operator==(const ClassScore&, const ClassScore&) = default;
@@ -73,6 +82,17 @@ MatchResult matchObstacles(const std::vector<Obstacle>& detected,
 /// Horizontal intersection over union of two obstacles' inclusive column ranges, in [0, 1].
 double horizontalIou(const Obstacle& a, const Obstacle& b);
 
+/// The field line rule (docs/formats.md, an extension of SPEC §5.3): with S the shorter segment
+/// and L the longer, both ends of S lie within max(4 px, 5% of L's length) of the straight line
+/// through L, and S's projection onto L overlaps L over at least half S's projected length. The
+/// cost (mean distance of S's ends from L's line, px) when they match, else a negative value.
+/// Symmetric in its arguments.
+double fieldLineMatchCost(const FieldLine& a, const FieldLine& b);
+
+/// Field lines match by fieldLineMatchCost(); the smallest cost first.
+MatchResult matchFieldLines(const std::vector<FieldLine>& detected,
+                            const std::vector<FieldLine>& truth);
+
 /// The y of a polyline (x ascending) at column x, linearly interpolated, constant beyond its
 /// ends. The polyline must not be empty.
 double polylineYAt(const std::vector<PointF>& polyline, double x);
@@ -82,15 +102,52 @@ double polylineYAt(const std::vector<PointF>& polyline, double x);
 double polylineMeanAbsDifference(const std::vector<PointF>& a, const std::vector<PointF>& b,
                                  int width);
 
+/// The kinds with a matching rule, in the order every score lists them: balls, goalposts,
+/// obstacles, field lines.
+const std::vector<const PerceptKind*>& scoredKinds();
+/// The kind scored by its boundary error (SPEC §5.3) instead of matching: the field boundary.
+const PerceptKind& boundaryKind();
+
+/// One kind's matching on one frame (indices into the frame's detected and true lists).
+struct KindMatch
+{
+    const PerceptKind* kind = nullptr;
+    std::vector<MatchPair> pairs;              ///< in the order accepted (nearest first)
+    ClassScore score;                          ///< concealed objects counted apart
+    std::vector<std::size_t> false_detections; ///< detections nothing true matches, ascending
+    std::vector<std::size_t> missed;           ///< true objects, not concealed, nothing matches
+    std::vector<std::size_t> concealed_missed; ///< concealed true objects nothing matches
+};
+
+/// One frame's matching: a KindMatch for each scored kind (scoredKinds() order) whose truth is
+/// complete on the frame, and the boundary error when the boundary's is and both exist.
+struct FrameMatch
+{
+    std::vector<KindMatch> kinds;
+    double boundary_error = -1; ///< px, mean |y| difference; negative when not scored
+    /// A miss (of an object not concealed) or a false detection in some kind.
+    bool disagrees() const;
+};
+
+/// Matches one frame: only the kinds whose list is complete on it (`truth.complete(key)`: the
+/// frame is done, or the kind reviewed) are scored; the others' detections are ignored. Absent
+/// lists count as empty. THE matching path: evaluate(), scoreFrame() and compareDetections() go
+/// through it.
+FrameMatch matchFrame(const PerceptSet& detected, const FrameAnnotation& truth, int width,
+                      int height);
+
 /// Scores over a set of frames.
 struct EvaluationScores
 {
     std::size_t frames = 0;          ///< done frames scored
-    std::size_t frames_not_done = 0; ///< annotated frames skipped because they are not done
-    std::size_t frames_missing = 0;  ///< done frames without detections (scored as finding nothing)
+    std::size_t frames_not_done = 0; ///< annotated frames that are not done
+    /// Of frames_not_done, those scored for their reviewed kinds only (FrameAnnotation::reviewed).
+    std::size_t frames_reviewed = 0;
+    std::size_t frames_missing = 0; ///< scored frames without detections (scored as finding none)
     ClassScore balls;
     ClassScore goalposts;
     ClassScore obstacles;
+    ClassScore field_lines;
     double boundary_error_sum = 0;   ///< px, sum over boundary_frames of the per-frame mean error
     std::size_t boundary_frames = 0; ///< frames where both boundaries exist
 
@@ -99,10 +156,17 @@ struct EvaluationScores
     {
         return boundary_frames == 0 ? -1.0 : boundary_error_sum / double(boundary_frames);
     }
+    /// The score of `kind` (one of scoredKinds()); null for another kind.
+    ClassScore* of(const PerceptKind& kind);
+    const ClassScore* of(const PerceptKind& kind) const;
+    /// Every scored kind with its score, in scoredKinds() order (for readers that name no kind).
+    std::vector<std::pair<const PerceptKind*, ClassScore>> classes() const;
+    /// Adds one frame's matching (the frame counters are the caller's).
+    void add(const FrameMatch& frame);
 };
 
-/// Scores one frame's detections against its true percepts (whether or not the frame is done).
-/// Absent lists count as empty.
+/// Scores one frame's detections against its true percepts (whether or not the frame is done:
+/// every kind counts as complete, no object as concealed). Absent lists count as empty.
 void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, int height,
                 EvaluationScores& scores);
 
@@ -135,12 +199,38 @@ struct DetectionDelta
     friend bool operator==(const DetectionDelta& a, const DetectionDelta& b);
 };
 
-/// Balls, goalposts and obstacles (the kinds with a matching rule), in that order.
+/// Every kind with a matching rule (scoredKinds(), in that order), the run before playing the
+/// truth.
 DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
                                  int height);
 
-/// Scores every done frame of `truth` against `detected` (by frame name). Frames that are not done
-/// are ignored; a done frame missing from `detected` is scored as if nothing was detected.
+/// A scored frame where the detections and the truth disagree in one kind: the detections
+/// nothing true matches and the true objects (not concealed) nothing detected matches.
+struct FrameDisagreement
+{
+    std::string frame; ///< the frame's name in the annotations
+    const PerceptKind* kind = nullptr;
+    std::vector<std::size_t> false_detections; ///< indices into the frame's detected list
+    std::vector<std::size_t> missed;           ///< indices into the frame's true list
+};
+
+/// The scores and where they come from.
+struct Evaluation
+{
+    EvaluationScores scores;
+    /// By frame name (the annotations' order), then kind (scoredKinds() order).
+    std::vector<FrameDisagreement> disagreements;
+};
+
+/// Whether `annotation` has anything to score: it is done, or some kind is reviewed.
+bool isScored(const FrameAnnotation& annotation);
+
+/// Scores every scored frame of `truth` (isScored) against `detected` (by frame name), each kind
+/// only where its truth is complete; other frames are ignored. A scored frame missing from
+/// `detected` is scored as if nothing was detected.
+Evaluation evaluateFrames(const std::map<std::string, PerceptSet>& detected,
+                          const Annotations& truth, int width, int height);
+/// evaluateFrames(...).scores
 EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
                           const Annotations& truth, int width, int height);
 
@@ -153,13 +243,30 @@ struct EvalReport
     std::string lut_path;
     std::string truth_path;
     EvaluationScores scores;
+    std::vector<FrameDisagreement> disagreements;   ///< as Evaluation's
+    std::map<std::string, std::size_t> frame_index; ///< each scored frame's index in the stream
+    std::map<std::string, PerceptSet> detected;     ///< each scored frame's detections
 };
 
-/// Runs the pipeline over the done frames of `truth` (found in the stream by name, or by name
-/// without extension: a .strm names its frames frame_000000 where the PNG folder beside it has
-/// frame_000000.png) and scores them. A done frame the stream lacks is bad input.
+/// The stream index of every scored frame of `truth` (isScored), by name, else by name without
+/// extension (a .strm names its frames frame_000000 where the PNG folder beside it has
+/// frame_000000.png). A scored frame the stream lacks is an Error naming `truth_path`.
+Result<std::map<std::string, std::size_t>> scoredFrameIndices(const StreamInput& input,
+                                                              const Annotations& truth,
+                                                              const std::string& truth_path);
+
+/// Runs the pipeline over the scored frames of `truth` (scoredFrameIndices) and scores them. A
+/// scored frame the stream lacks is bad input; a cancelled run is an Error.
 Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
                                   const std::string& truth_path, int threads,
                                   const RunHooks& hooks = {});
+/// The same, but a scored frame whose detections `known` holds (by its name in `truth`; made
+/// with the same table and settings) is not run again: a change of the truth alone is scored
+/// without running the pipeline on the frames scored before. `frames_run`, when given, is set
+/// to the frames the pipeline ran.
+Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
+                                  const std::string& truth_path, int threads, const RunHooks& hooks,
+                                  const std::map<std::string, PerceptSet>& known,
+                                  std::size_t* frames_run = nullptr);
 
 } // namespace fieldsight

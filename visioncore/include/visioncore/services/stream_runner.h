@@ -99,6 +99,11 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
 /// 0, 1, ..., n-1
 std::vector<std::size_t> firstFrames(std::size_t n);
 
+/// The calling thread yields to the others: a background run (the whole-stream scan, the
+/// window's evaluation) calls it from its workers so the window and its frame worker come
+/// first (`niceness` on Linux, 10 by default; the threads end with the run).
+void lowerThreadPriority(int niceness = 10);
+
 /// Population mean and standard deviation of a set of timings.
 struct TimingStats
 {
