@@ -1,5 +1,6 @@
 #include "ui/main_window.h"
 
+#include "ui/actions/annotation_commands.h"
 #include "ui/actions/file_commands.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/image_adapter.h"
@@ -14,6 +15,7 @@
 #include "ui/panels/pipeline_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/settings/window_settings.h"
+#include "ui/stream_navigator/annotation_strip.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/frame_marks_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
@@ -30,6 +32,7 @@
 #include <QScreen>
 #include <QScrollArea>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace fieldsight::ui {
@@ -45,13 +48,16 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_recorder = new FrameRecorder(m_session->stream(), this);
     buildCentre();
     m_files = new FileCommands(*this);
+    m_annotation_files = new AnnotationCommands(*this);
     buildStatusBar();
     buildDocks();
     addFileMenu(*this);
     addEditMenu(*this);
     addViewMenu(*this);
     addNavigateMenu(*this);
+    addObjectMenu(*this);
     addPipelineMenu(*this);
+    addAnnotateMenu(*this);
     addHelpMenu(*this);
 
     // The window shows what the documents say; it relays nothing between them.
@@ -61,6 +67,8 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     connect(&stream, &StreamDocument::frameReady, this, &MainWindow::onFrameReady);
     connect(&lut, &LutDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(&lut, &LutDocument::changed, this, &MainWindow::updateTitle);
+    connect(&m_session->annotations(), &AnnotationsDocument::modifiedChanged, this,
+            &MainWindow::updateTitle);
     const auto error = [this](const QString& m) { showMessage(m); };
     const auto note = [this](const QString& m) { showMessage(m, false); };
     connect(m_session, &EditingSession::problem, this, error);
@@ -113,6 +121,9 @@ void MainWindow::buildCentre()
     m_recovery_bar = new OfferBar(tr("Recover"), tr("Discard"), central);
     m_recovery_bar->setObjectName(QStringLiteral("recovery_bar"));
     column->addWidget(m_recovery_bar);
+    m_annotations_recovery_bar = new OfferBar(tr("Recover"), tr("Discard"), central);
+    m_annotations_recovery_bar->setObjectName(QStringLiteral("annotations_recovery_bar"));
+    column->addWidget(m_annotations_recovery_bar);
     m_view = new FrameView(central);
     m_view->setObjectName(QStringLiteral("frame_view"));
     m_view->setTools(m_tools);
@@ -134,6 +145,11 @@ void MainWindow::buildCentre()
     connect(m_effect_strip, &EffectStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
     connect(m_navigator->slider(), &QSlider::valueChanged, m_effect_strip,
             qOverload<>(&QWidget::update));
+    m_annotation_strip = new AnnotationStrip(m_session->annotations(), m_session->stream(),
+                                             *m_navigator->slider(), m_navigator);
+    m_navigator->addTimelineStrip(m_annotation_strip);
+    connect(m_annotation_strip, &AnnotationStrip::frameClicked, m_navigator,
+            &StreamNavigator::goToFrame);
     m_disagreement_strip =
         new FrameMarksStrip(*m_navigator->slider(), QColor(0, 190, 255), m_navigator);
     m_disagreement_strip->setObjectName(QStringLiteral("disagreement_strip"));
@@ -153,6 +169,11 @@ void MainWindow::buildStatusBar()
     // text is the tooltip).
     m_status_effect->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(m_status_effect, 1);
+    m_status_annotation = new QLabel(this);
+    m_status_annotation->setObjectName(QStringLiteral("annotation_status"));
+    statusBar()->addPermanentWidget(m_status_annotation);
+    connect(m_annotation_strip, &AnnotationStrip::statusChanged, m_status_annotation,
+            &QLabel::setText);
     statusBar()->addPermanentWidget(m_status_time);
     statusBar()->addPermanentWidget(m_status_zoom);
     connect(&m_session->effectScan(), &EditEffectScan::updated, this, [this] {
@@ -255,10 +276,17 @@ void MainWindow::buildDocks()
     // without scrolling at 1280x800.
     resizeDocks({pipeline, detections}, {600, 160}, Qt::Vertical);
 
+    // The annotation tools' buttons, beside the frame they draw on.
+    auto* annotate = new QToolBar(tr("Annotation tools"), this);
+    annotate->setObjectName(QStringLiteral("annotate_toolbar"));
+    annotate->addActions(m_tools->actions(QStringLiteral("annotate")));
+    addToolBar(Qt::LeftToolBarArea, annotate);
+
     m_docks_menu = new QMenu(tr("Panels"), this);
     for (QDockWidget* d :
          {layers, bookmarks, history, inspector, pipeline, lut, detections, uv, evaluation})
         m_docks_menu->addAction(d->toggleViewAction());
+    m_docks_menu->addAction(annotate->toggleViewAction());
 }
 
 void MainWindow::setMode(ViewMode mode)
@@ -347,17 +375,31 @@ void MainWindow::updateTitle()
 {
     const StreamDocument& stream = m_session->stream();
     const LutDocument& lut = m_session->lut();
+    const AnnotationsDocument& annotations = m_session->annotations();
+    const bool annotations_edited = stream.hasStream() && annotations.modified();
     QString title = QStringLiteral("Fieldsight");
-    if (stream.hasStream())
-        title = QStringLiteral("%1 — %2[*] — Fieldsight")
-                    .arg(QFileInfo(stream.streamSpec()).fileName(),
-                         lut.path().isEmpty()
-                             ? tr("new LUT")
-                             // Which default.lut: its folder too.
-                             : QFileInfo(lut.path()).dir().dirName() + QLatin1Char('/') +
-                                   QFileInfo(lut.path()).fileName());
+    if (stream.hasStream()) {
+        // A [*] after each document with unsaved edits (Qt shows a * at every one), after the
+        // table when none has.
+        const QString marker =
+            lut.modified() || !annotations_edited ? QStringLiteral("[*]") : QString();
+        title =
+            QStringLiteral("%1 — %2%3")
+                .arg(QFileInfo(stream.streamSpec()).fileName(),
+                     lut.path().isEmpty() ? tr("new LUT")
+                                          // Which default.lut: its folder too.
+                                          : QFileInfo(lut.path()).dir().dirName() +
+                                                QLatin1Char('/') + QFileInfo(lut.path()).fileName(),
+                     marker);
+        if (annotations_edited)
+            title +=
+                QStringLiteral(" — %1[*]")
+                    .arg(annotations.path().isEmpty() ? tr("annotations")
+                                                      : QFileInfo(annotations.path()).fileName());
+        title += QStringLiteral(" — Fieldsight");
+    }
     setWindowTitle(title);
-    setWindowModified(lut.modified());
+    setWindowModified(lut.modified() || annotations_edited);
 }
 
 void MainWindow::saveSettings() const
@@ -425,7 +467,7 @@ void MainWindow::restoreSettings()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (!m_files->confirmLutChanges()) {
+    if (!m_files->confirmLutChanges() || !m_annotation_files->confirmChanges()) {
         event->ignore();
         return;
     }

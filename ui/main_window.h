@@ -19,6 +19,8 @@ class QMenu;
 
 namespace fieldsight::ui {
 
+class AnnotationCommands;
+class AnnotationStrip;
 class BookmarksPanel;
 class DetectionsPanel;
 class EffectStrip;
@@ -48,6 +50,7 @@ public:
     EditingSession& session() { return *m_session; }
     ToolManager& tools() { return *m_tools; }
     FileCommands& files() { return *m_files; }
+    AnnotationCommands& annotationFiles() { return *m_annotation_files; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -64,6 +67,10 @@ public:
     FrameRecorder& recorder() { return *m_recorder; }
     MessageBar& messageBar() { return *m_message_bar; }
     OfferBar& recoveryBar() { return *m_recovery_bar; }
+    /// The offer of unsaved annotation edits kept for the open stream (beside the LUT's: a crash
+    /// can leave both).
+    OfferBar& annotationsRecoveryBar() { return *m_annotations_recovery_bar; }
+    AnnotationStrip& annotationStrip() { return *m_annotation_strip; }
     QMenu& docksMenu() { return *m_docks_menu; }
 
     /// Shows `text` in the message bar (red for an error, blue for a note) and the status bar.
@@ -104,6 +111,7 @@ private:
     EditingSession* m_session = nullptr;
     ToolManager* m_tools = nullptr;
     FileCommands* m_files = nullptr;
+    AnnotationCommands* m_annotation_files = nullptr;
     FrameRecorder* m_recorder = nullptr;
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;
@@ -111,6 +119,8 @@ private:
     FrameMarksStrip* m_disagreement_strip = nullptr;
     MessageBar* m_message_bar = nullptr;
     OfferBar* m_recovery_bar = nullptr;
+    OfferBar* m_annotations_recovery_bar = nullptr;
+    AnnotationStrip* m_annotation_strip = nullptr;
     LayersPanel* m_layers = nullptr;
     PipelinePanel* m_pipeline = nullptr;
     DetectionsPanel* m_detections = nullptr;
@@ -124,7 +134,8 @@ private:
     QLabel* m_status_zoom = nullptr;
     QLabel* m_status_time = nullptr;
     QLabel* m_status_effect = nullptr;
-    QLabel* m_scores_change = nullptr;       ///< what the last change did to the evaluation
+    QLabel* m_scores_change = nullptr; ///< what the last change did to the evaluation
+    QLabel* m_status_annotation = nullptr;
     std::optional<CellMask> m_compare_cells; ///< the compare dialog's chosen row, if any
     std::optional<QPoint> m_hover;
     QString m_last_message;

@@ -10,6 +10,9 @@ namespace fieldsight::cli {
 int runCommand(const QStringList& args, const Context& ctx);
 int benchCommand(const QStringList& args, const Context& ctx);
 int evalCommand(const QStringList& args, const Context& ctx);
+int compareCommand(const QStringList& args, const Context& ctx);
+/// `annotations export` (COCO JSON) and `annotations import-dnt` (the Dutch Nao Team's labels).
+int annotationsCommand(const QStringList& args, const Context& ctx);
 int synthCommand(const QStringList& args, const Context& ctx);
 int lutCommand(const QStringList& args, const Context& ctx);
 /// The GUI: makes the QApplication from `argc` and `argv` (which hold the program name, then

@@ -17,7 +17,10 @@ std::string usageText(const Pipeline& pipeline)
            "                          [--limit N]   (several streams: a table as the paper's "
            "Table 1)\n"
            "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE] [--threads N]\n"
-           "  (run, bench and eval also take --set STAGE.PARAM=VALUE, e.g. "
+           "  fieldsight compare STREAM [--lut A] --lut-b B [--params A] [--params-b B]\n"
+           "                          [--truth FILE] [--json FILE|-] [--threads N]\n"
+           "                          (frames fixed and broken by table or parameters B)\n"
+           "  (run, bench, eval and compare also take --set STAGE.PARAM=VALUE, e.g. "
            "transitions.goal_colour=9,\n"
            "   --params FILE with fieldsight-params/1, and --orientation DEG: 0, 90, 180 or 270\n"
            "   degrees clockwise to turn the stored pictures upright, overriding stream.json's)\n"
@@ -27,6 +30,10 @@ std::string usageText(const Pipeline& pipeline)
            "  fieldsight lut build STREAM --out FILE [--samples FILE] [--smoothing N] [--soft]\n"
            "                          [--goal-colour NAME] [--truth FILE] [--save-samples FILE]\n"
            "                          [--orientation DEG]\n"
+           "  fieldsight annotations export STREAM --coco FILE [--annotations FILE] "
+           "[--orientation DEG]\n"
+           "  fieldsight annotations import-dnt LABELS --stream STREAM [--out FILE] "
+           "[--post-width PX]\n"
            "  fieldsight help\n"
            "\n"
            "STREAM is a folder of images, a .strm file, a video file or camera:N.\n"
@@ -47,6 +54,10 @@ int runCommandWord(const QString& command, const QStringList& args, const Contex
         return benchCommand(args, ctx);
     if (command == "eval")
         return evalCommand(args, ctx);
+    if (command == "compare")
+        return compareCommand(args, ctx);
+    if (command == "annotations")
+        return annotationsCommand(args, ctx);
     if (command == "synth")
         return synthCommand(args, ctx);
     if (command == "lut")

@@ -23,7 +23,7 @@ public:
     ui::ToolInfo info() const override
     {
         return {QStringLiteral("fake"), QStringLiteral("Fake"),
-                QStringLiteral("Marks the frame where it is pressed"), QKeySequence(Qt::Key_K)};
+                QStringLiteral("Marks the frame where it is pressed"), QKeySequence(Qt::Key_J)};
     }
     void press(const ui::ToolEvent& event) override
     {

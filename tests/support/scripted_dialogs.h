@@ -26,6 +26,7 @@ public:
     QStringList asked;       ///< every title, in order
     QStringList unanswered;  ///< titles asked with nothing queued
     QStringList suggested;   ///< the path each file or folder question started from, in order
+    QList<int> offered;      ///< the number each number question started from, in order
 
     QString openFile(QWidget*, const QString& title, const QString& start, const QString&) override
     {
@@ -54,9 +55,10 @@ public:
         texts.pop_front();
         return t;
     }
-    std::optional<int> number(QWidget*, const QString& title, const QString&, int, int,
+    std::optional<int> number(QWidget*, const QString& title, const QString&, int initial, int,
                               int) override
     {
+        offered << initial;
         if (numbers.empty())
             return next(numbers, title, std::optional<int>());
         return next(numbers, title, 0);

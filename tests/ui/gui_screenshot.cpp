@@ -3,14 +3,15 @@
 //   gui_screenshot OUT.png STREAM [--lut FILE] [--set S.P=V] [--frame N] [--size WxH]
 //                  [--layers all|default|ID,...] [--mode raw|classified|side|blend]
 //                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]...
-//                  [--colour NAME] [--tool click|brush|erase|wand] [--click X,Y]...
+//                  [--colour NAME] [--tool ID] [--click X,Y]... [--drag X0,Y0,X1,Y1]...
 //                  [--preview X,Y] [--uv-select CB0,CR0,CB1,CR1] [--y-range LO,HI]
 //                  [--orientation 0|90|180|270] [--disagreement ROW]
-// --click edits the LUT with the tool at image pixel X,Y; --preview hovers the tool there (both at
-// zoom 1 unless --zoom); the whole-stream scan is waited for before the shot. --orientation turns
-// the stream's pictures as View > Orientation does, before anything else. The evaluation is
-// waited for; --disagreement chooses a row of its list of disagreements (go there, culprits drawn;
-// --dock evaluation_dock shows the list).
+// --click presses the tool at image pixel X,Y (the LUT tools edit the table there, the annotation
+// tools select), --drag drags it from X0,Y0 to X1,Y1 (draws or moves an annotated object);
+// --preview hovers the tool there (all at zoom 1 unless --zoom); the whole-stream scan is waited
+// for before the shot. --orientation turns the stream's pictures as View > Orientation does,
+// before anything else. The evaluation is waited for; --disagreement chooses a row of its list
+// of disagreements (go there, culprits drawn; --dock evaluation_dock shows the list).
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
@@ -38,9 +39,9 @@ int main(int argc, char** argv)
     QCommandLineParser p;
     p.addPositionalArgument("out", "PNG to write");
     p.addPositionalArgument("stream", "stream");
-    for (const char* o :
-         {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock", "colour",
-          "tool", "click", "preview", "uv-select", "y-range", "orientation", "disagreement"})
+    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock",
+                          "colour", "tool", "click", "drag", "preview", "uv-select", "y-range",
+                          "orientation", "disagreement"})
         p.addOption({o, o, "value"});
     p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
@@ -142,7 +143,7 @@ int main(int argc, char** argv)
         return QPoint(int(w.view().imageOrigin().x() + (v[0].toInt() + 0.5) * z),
                       int(w.view().imageOrigin().y() + (v[1].toInt() + 0.5) * z));
     };
-    if (!p.isSet("zoom") && (p.isSet("click") || p.isSet("preview"))) {
+    if (!p.isSet("zoom") && (p.isSet("click") || p.isSet("drag") || p.isSet("preview"))) {
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
     }
@@ -156,10 +157,24 @@ int main(int argc, char** argv)
         for (int i = 0; i < 6000 && (scan.running() || scan.pending()); ++i)
             QTest::qWait(10);
     };
-    if (p.isSet("click"))
+    if (p.isSet("click") || p.isSet("drag"))
         waitEvaluation();
     for (const QString& xy : p.values("click")) {
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, viewPoint(xy));
+        waitFrame();
+    }
+    for (const QString& xyxy : p.values("drag")) {
+        const QStringList v = xyxy.split(',');
+        if (v.size() != 4) {
+            std::cerr << "--drag: expected X0,Y0,X1,Y1\n";
+            return 2;
+        }
+        const QPoint from = viewPoint(v[0] + ',' + v[1]);
+        const QPoint to = viewPoint(v[2] + ',' + v[3]);
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, from);
+        QTest::mouseMove(&w.view(), (from + to) / 2);
+        QTest::mouseMove(&w.view(), to);
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, to);
         waitFrame();
     }
     if (p.isSet("uv-select")) {

@@ -210,6 +210,47 @@ private slots:
         QFile::remove(QDir(m_a).filePath("annotations.json"));
     }
 
+    void anEarlierSessionsRecoveryIsKeptUntilTheUserChooses()
+    {
+        const QString recovery = m_dir.filePath("recovery-kept");
+        std::string f0;
+        {
+            EditingSession crashed;
+            crashed.annotations().setRecoveryDir(recovery);
+            QVERIFY(crashed.open(m_b).ok());
+            f0 = crashed.stream().frameName(0).toStdString();
+            FrameAnnotation done;
+            done.done = true;
+            QVERIFY(crashed.annotations().editFrame(f0, done, "Done"));
+            QVERIFY(crashed.annotations().writeRecovery().ok());
+        }
+        EditingSession next;
+        AnnotationsDocument& doc = next.annotations();
+        doc.setRecoveryDir(recovery);
+        QVERIFY(next.open(m_b).ok());
+        const auto offered = doc.findRecovery();
+        QVERIFY(offered.has_value());
+        const QByteArray before = fileBytes(offered->file);
+        // The user ignores the offer and edits: neither the autosave, nor an undo back to the
+        // file, nor a save, replaces or removes the earlier session's edits.
+        FrameAnnotation other;
+        other.reviewed.insert("x");
+        QVERIFY(doc.editFrame(f0, other, "Reviewed"));
+        QVERIFY(doc.writeRecovery().ok());
+        QCOMPARE(fileBytes(offered->file), before);
+        doc.undoStack().undo();
+        QCOMPARE(fileBytes(offered->file), before);
+        doc.undoStack().redo();
+        QVERIFY(doc.saveAs(m_dir.filePath("kept.json")).ok());
+        QCOMPARE(fileBytes(offered->file), before);
+        // Recovering it brings those edits back; then the file is this session's again.
+        QVERIFY(doc.recover(*offered).ok());
+        QVERIFY(doc.frame(f0) && doc.frame(f0)->done);
+        QVERIFY(doc.writeRecovery().ok());
+        doc.discardRecovery();
+        QVERIFY(!doc.findRecovery().has_value());
+    }
+
 private:
     QTemporaryDir m_dir;
     QString m_a;

@@ -276,7 +276,7 @@ private slots:
             for (QAction* a : menu->actions())
                 in_menu = in_menu || (a->objectName() == "tool.fake" && menu->title() == "Tool");
         QVERIFY(in_menu);
-        QTest::keyClick(&w, Qt::Key_K);
+        QTest::keyClick(&w, Qt::Key_J);
         QCOMPARE(w.tools().active().info().id, QStringLiteral("fake"));
 
         // The view forwards the mouse; the tool's preview shows in the view and the status bar.

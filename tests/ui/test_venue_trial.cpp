@@ -341,7 +341,7 @@ private slots:
         // Both drawn, in their class colours, over the image.
         ui::ToolOutline outline = w.tools().active().outline();
         QCOMPARE(outline.shapes.size(), std::size_t(2));
-        QCOMPARE(outline.shapes[0].polygon.boundingRect(), QRect(QPoint(40, 180), QPoint(80, 220)));
+        QCOMPARE(outline.shapes[0].polygon.boundingRect(), QRectF(40, 180, 40, 40));
         QCOMPARE(outline.shapes[0].colour, ui::toQColor(colourDisplayRgb(Colour::Green)));
         const QImage shown = w.view().grab().toImage();
         QCOMPARE(QColor(shown.pixel(60, 180)), ui::toQColor(colourDisplayRgb(Colour::Green)));

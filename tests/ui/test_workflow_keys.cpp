@@ -15,6 +15,7 @@
 #include <QListWidget>
 #include <QPainter>
 #include <QSettings>
+#include <QShortcut>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -77,6 +78,30 @@ private slots:
     }
 
     void init() { QSettings().clear(); }
+
+    void noTwoActionsShareAKey()
+    {
+        // Qt fires neither of two window actions with one shortcut ("ambiguous"): every key the
+        // menus, tools and panels bind must be bound once.
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        std::map<QString, QStringList> owners;
+        for (const QAction* action : w.findChildren<QAction*>()) {
+            for (const QKeySequence& key : action->shortcuts())
+                if (!key.isEmpty() && action->shortcutContext() != Qt::WidgetShortcut)
+                    owners[key.toString()] << action->text();
+        }
+        for (const QShortcut* shortcut : w.findChildren<QShortcut*>())
+            if (!shortcut->key().isEmpty() && shortcut->context() != Qt::WidgetShortcut)
+                owners[shortcut->key().toString()] << shortcut->objectName();
+        QVERIFY(owners.size() > 20);
+        QStringList clashes;
+        for (const auto& [key, names] : owners)
+            if (names.size() > 1)
+                clashes << key + ": " + names.join(" / ");
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join("; ")));
+    }
 
     void ctrlBMarksTheFrameAndBracketsGoBetweenMarks()
     {

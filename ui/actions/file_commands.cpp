@@ -1,5 +1,6 @@
 #include "ui/actions/file_commands.h"
 
+#include "ui/actions/annotation_commands.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
@@ -103,7 +104,7 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
 
 bool FileCommands::openStream(const QString& spec, const QString& lut)
 {
-    if (!confirmLutChanges())
+    if (!confirmLutChanges() || !m_window.annotationFiles().confirmChanges())
         return false;
     rememberFrame();
     EditingSession& session = m_window.session();

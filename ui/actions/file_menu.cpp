@@ -1,4 +1,6 @@
 // File: streams, tables, the camera recording and snapshots of the view.
+#include "ui/actions/coco_export_command.h"
+#include "ui/actions/annotation_commands.h"
 #include "ui/actions/file_commands.h"
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
@@ -102,11 +104,32 @@ void addFileMenu(MainWindow& w)
         if (!path.isEmpty())
             files.compareLut(path);
     });
-    addMenuItem(file, QObject::tr("Save LUT"), QKeySequence::Save, &w,
-                [&] { (void)files.saveLut(); });
+    // Ctrl+S saves what has unsaved edits: the annotations, and the table as it always did.
+    QAction* save = addMenuItem(file, QObject::tr("Save"), QKeySequence::Save, &w,
+                                [&] { (void)w.annotationFiles().saveAll(); });
+    save->setObjectName(QStringLiteral("file.save"));
+    save->setToolTip(QObject::tr("Save the LUT, and the annotations when they have unsaved edits"));
     addMenuItem(file, QObject::tr("Save LUT as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
                 &w, [&] { (void)files.saveLutAs(); });
+    addMenuItem(file, QObject::tr("Save annotations"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S),
+                &w, [&] { (void)w.annotationFiles().save(); })
+        ->setObjectName(QStringLiteral("file.save_annotations"));
+    file->addAction(QObject::tr("Save annotations as…"), &w,
+                    [&] { (void)w.annotationFiles().saveAs(); })
+        ->setObjectName(QStringLiteral("file.save_annotations_as"));
     files.setRecentMenu(file->addMenu(QObject::tr("Recent streams")));
+    file->addSeparator();
+    QAction* coco = file->addAction(QObject::tr("Export annotations as COCO…"), &w, [&] {
+        const QFileInfo spec(session.stream().streamSpec());
+        const QString folder = spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
+        const QString path = Dialogs::current().saveFile(
+            &w, QObject::tr("Export annotations as COCO"),
+            folder + QStringLiteral("/%1_coco.json").arg(spec.completeBaseName()),
+            QObject::tr("COCO JSON (*.json)"));
+        if (!path.isEmpty())
+            exportAnnotationsAsCoco(w, path);
+    });
+    coco->setObjectName(QStringLiteral("file.export_coco"));
     file->addSeparator();
     addMenuItem(
         file, QObject::tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), &w, [&] {

@@ -14,7 +14,10 @@ void addFileMenu(MainWindow& window);
 void addEditMenu(MainWindow& window);
 void addViewMenu(MainWindow& window);
 void addNavigateMenu(MainWindow& window);
+/// What is set on the annotated object selected (concealed, keyframe, propagation).
+void addObjectMenu(MainWindow& window);
 void addPipelineMenu(MainWindow& window);
+void addAnnotateMenu(MainWindow& window);
 void addHelpMenu(MainWindow& window);
 
 /// A menu item with a shortcut, calling `fn` on `receiver`.

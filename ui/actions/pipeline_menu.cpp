@@ -1,8 +1,10 @@
-// Pipeline: run the frame again, reset, and parameter files (loading one is an undoable edit).
+// Pipeline: run the frame again, reset, parameter files (loading one is an undoable edit), and
+// comparing the table and parameters in use with others over the annotated frames.
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
+#include "ui/panels/ab_compare_dialog.h"
 
 #include <QMenuBar>
 
@@ -42,6 +44,15 @@ void addPipelineMenu(MainWindow& w)
         if (!s)
             w.showMessage(QString::fromStdString(s.error().message));
     });
+    pipe->addSeparator();
+    QAction* compare = pipe->addAction(QObject::tr("Compare A/B…"), &w, [&w, &session] {
+        auto* dialog = new AbCompareDialog(session, &w);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    compare->setObjectName(QStringLiteral("pipeline.compare_ab"));
+    compare->setToolTip(QObject::tr("Run the annotated frames with another table or parameter set "
+                                    "and list the frames it fixes and breaks"));
 }
 
 } // namespace fieldsight::ui

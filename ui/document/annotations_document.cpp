@@ -96,6 +96,7 @@ void AnnotationsDocument::adopt(const QString& stream, const QString& path, Anno
     m_load_problem = load_problem;
     m_annotations = std::move(annotations);
     reset();
+    m_offered_recovery = findRecovery().has_value();
     emit changed({});
     emit modifiedChanged(false);
 }
@@ -214,7 +215,7 @@ Status AnnotationsDocument::saveAs(const QString& path)
     m_recovered = false;
     m_undo.setClean();
     m_autosave.stop();
-    discardRecovery();
+    discardOwnRecovery();
     emit modifiedChanged(false);
     return {};
 }
@@ -233,6 +234,8 @@ Status AnnotationsDocument::writeRecovery()
 {
     if (m_stream.isEmpty())
         return Error{"a live camera's annotations have no stream to be recovered onto"};
+    if (m_offered_recovery)
+        return {}; // the earlier session's file is not written over before the user chooses
     if (!makeLocalFolder(m_recovery_dir))
         return Error{toLocalPath(m_recovery_dir) + ": cannot create the recovery folder"};
     auto root = nlohmann::ordered_json::parse(m_annotations.toJson(m_kinds));
@@ -288,14 +291,22 @@ Status AnnotationsDocument::recover(const AnnotationsRecovery& recovery)
     m_path = recovery.path;
     m_load_problem.clear();
     reset();
+    m_offered_recovery = false;
     m_recovered = true;
     emit changed({});
     emit modifiedChanged(true);
     return {};
 }
 
+void AnnotationsDocument::discardOwnRecovery()
+{
+    if (!m_offered_recovery) // an earlier session's edits stay on offer until the user chooses
+        discardRecovery();
+}
+
 void AnnotationsDocument::discardRecovery()
 {
+    m_offered_recovery = false;
     if (!m_stream.isEmpty())
         QFile::remove(recoveryFile(m_stream));
 }

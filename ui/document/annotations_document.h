@@ -94,15 +94,19 @@ public:
     /// after the first unsaved edit (30 s by default).
     void setRecoveryDir(const QString& dir) { m_recovery_dir = dir; }
     void setAutosaveDelay(int delay_ms) { m_autosave.setInterval(delay_ms); }
-    /// Writes the recovery file of the open stream now.
+    /// Writes the recovery file of the open stream now; while the file an earlier session left is
+    /// still on offer (neither recovered nor discarded) it is kept, not written over.
     Status writeRecovery();
     /// The recovery file left for `stream` (the open one when empty), if any.
     std::optional<AnnotationsRecovery> findRecovery(const QString& stream = {}) const;
     /// Loads a recovery of the open stream (one of another stream is refused, naming both): the
     /// annotations become modified, to be saved to the path they came from.
     Status recover(const AnnotationsRecovery& recovery);
-    /// Removes the open stream's recovery file (after a save, or when the user declines it).
+    /// Removes the open stream's recovery file (the user declines it).
     void discardRecovery();
+    /// Removes the recovery file of this session's edits (they were saved or dropped); an earlier
+    /// session's file still on offer stays.
+    void discardOwnRecovery();
 
 signals:
     /// The annotations of `frames` changed (an edit, undo or redo); empty: all of them (a new
@@ -129,6 +133,7 @@ private:
     QTimer m_autosave;
     QString m_recovery_dir;
     bool m_recovered = false;
+    bool m_offered_recovery = false; ///< an earlier session's recovery file waits for a choice
     int m_last_merge = 0;
     int m_top_merge = 0;
     int m_top_index = -1;

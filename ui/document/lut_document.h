@@ -73,6 +73,8 @@ public:
     Status recover(const LutRecovery& recovery);
     /// Removes the recovery files (after a save, or when the user declines them).
     void discardRecovery();
+    /// The same: the table's recovery file is offered once, at the start.
+    void discardOwnRecovery() { discardRecovery(); }
 
 signals:
     /// The table changed: an edit, undo, redo, reset or recovery.

@@ -48,7 +48,7 @@ template <class Document> void wireAutosave(Document& doc, QTimer& timer, QUndoS
     QObject::connect(&undo, &QUndoStack::cleanChanged, &doc, [&doc, &timer] {
         if (!doc.modified()) { // undone back to what was saved: nothing to recover
             timer.stop();
-            doc.discardRecovery();
+            doc.discardOwnRecovery();
         }
         emit doc.modifiedChanged(doc.modified());
     });

@@ -299,24 +299,40 @@ void FrameView::paintEvent(QPaintEvent*)
             }
         }
     }
-    // The tool's shapes (sample regions): a dark edge under the class colour, so a region
-    // shows on any background; the selected one thicker, its corners marked.
+    // The tool's shapes (sample regions, annotated objects): a dark edge under the colour, so a
+    // shape shows on any background; the selected one thicker, its handles marked.
     if (m_tools && m_output) {
-        const ToolOutline outline = m_tools->active().outline();
-        for (const OutlineShape& shape : outline.shapes) {
+        const auto toView = [this](const QPolygonF& points) {
             QPolygonF at;
-            for (const QPoint& q : shape.polygon)
+            for (const QPointF& q : points)
                 at << QPointF(panelX(0) + (q.x() + 0.5) * m_zoom,
                               m_origin.y() + (q.y() + 0.5) * m_zoom);
+            return at;
+        };
+        const ToolOutline outline = m_tools->active().outline();
+        p.setBrush(Qt::NoBrush);
+        for (const OutlineShape& shape : outline.shapes) {
+            const QPolygonF at = toView(shape.polygon);
+            if (at.isEmpty())
+                continue;
+            const auto draw = [&](const QPen& pen) {
+                p.setPen(pen);
+                if (shape.radius >= 0)
+                    p.drawEllipse(at.front(), shape.radius * m_zoom, shape.radius * m_zoom);
+                else if (shape.closed)
+                    p.drawPolygon(at);
+                else
+                    p.drawPolyline(at);
+            };
             const double width = shape.selected ? 3 : 1.5;
-            p.setBrush(Qt::NoBrush);
-            p.setPen(QPen(QColor(0, 0, 0, 200), width + 2));
-            p.drawPolygon(at);
-            p.setPen(QPen(shape.colour, width));
-            p.drawPolygon(at);
+            draw(QPen(QColor(0, 0, 0, 200), width + 2));
+            QPen pen(shape.colour, width);
+            if (shape.dashed)
+                pen.setDashPattern({3, 2});
+            draw(pen);
             if (shape.selected)
-                for (const QPointF& corner : at)
-                    p.fillRect(QRectF(corner - QPointF(3, 3), QSizeF(7, 7)), Qt::white);
+                for (const QPointF& handle : shape.handles.isEmpty() ? at : toView(shape.handles))
+                    p.fillRect(QRectF(handle - QPointF(3, 3), QSizeF(7, 7)), Qt::white);
         }
     }
     // The brush under the cursor: a circle through the outer pixels' centres, in every panel.
@@ -424,8 +440,23 @@ void FrameView::mousePressEvent(QMouseEvent* event)
     if (const std::optional<QPoint> pixel = pixelAt(event->position())) {
         if (event->button() == Qt::LeftButton)
             m_tool_down = true;
-        m_tools->press(ToolEvent::of(ToolSurface::Image, *event, *pixel));
+        m_tools->press(toolEvent(*event, *pixel));
     }
+}
+
+ToolEvent FrameView::toolEvent(const QMouseEvent& event, QPoint pixel) const
+{
+    ToolEvent e = ToolEvent::of(ToolSurface::Image, event, pixel);
+    e.zoom = m_zoom;
+    return e;
+}
+
+void FrameView::keyPressEvent(QKeyEvent* event)
+{
+    if (m_tools && m_tools->key(event->key()))
+        event->accept();
+    else
+        QWidget::keyPressEvent(event);
 }
 
 void FrameView::mouseMoveEvent(QMouseEvent* event)
@@ -441,7 +472,7 @@ void FrameView::mouseMoveEvent(QMouseEvent* event)
         update();
     }
     if (pixel && m_tool_down && m_tools)
-        m_tools->move(ToolEvent::of(ToolSurface::Image, *event, *pixel));
+        m_tools->move(toolEvent(*event, *pixel));
     if (m_tools)
         m_tools->hover(pixel);
     if (pixel)
@@ -455,7 +486,7 @@ void FrameView::mouseReleaseEvent(QMouseEvent* event)
     if (m_tool_down && event->button() == Qt::LeftButton && m_tools) {
         m_tool_down = false;
         const std::optional<QPoint> pixel = pixelAt(event->position());
-        m_tools->release(ToolEvent::of(ToolSurface::Image, *event, pixel.value_or(QPoint(-1, -1))));
+        m_tools->release(toolEvent(*event, pixel.value_or(QPoint(-1, -1))));
     }
     if (m_drag_from) {
         m_drag_from.reset();

@@ -85,6 +85,7 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
     void leaveEvent(QEvent* event) override;
     bool event(QEvent* event) override;
 
@@ -98,6 +99,8 @@ private:
     std::optional<QPointF> imagePoint(QPointF pos) const;
     void applyFit();
     bool toolPans() const;
+    /// `event` at image pixel `pixel`, for the tools.
+    ToolEvent toolEvent(const QMouseEvent& event, QPoint pixel) const;
     /// The active tool's brush outline (image px; < 0: none).
     int brushRadius() const;
 

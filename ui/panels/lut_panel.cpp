@@ -120,10 +120,11 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
             [&settings](QAction* a) { settings.setColour(Colour(a->data().toInt())); });
     column->addLayout(palette);
 
-    // A button per tool, from the tool list (they share the window's actions and shortcuts).
+    // A button per LUT tool, from the tool list (they share the window's actions and shortcuts;
+    // the annotation tools have their own bar).
     auto* tool_row = new QGridLayout;
     int at = 0;
-    for (QAction* action : m_tools.actions()) {
+    for (QAction* action : m_tools.actions(QString())) {
         auto* button = new QToolButton(this);
         button->setObjectName(action->objectName());
         button->setDefaultAction(action);

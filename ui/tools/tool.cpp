@@ -12,6 +12,7 @@ ToolEvent ToolEvent::of(ToolSurface surface, const QMouseEvent& mouse, QPoint po
     e.button = mouse.button();
     e.buttons = mouse.buttons();
     e.modifiers = mouse.modifiers();
+    e.double_click = mouse.type() == QEvent::MouseButtonDblClick;
     return e;
 }
 

@@ -9,7 +9,7 @@
 
 #include <QColor>
 #include <QCursor>
-#include <QPolygon>
+#include <QPolygonF>
 #include <QKeySequence>
 #include <QObject>
 #include <QPoint>
@@ -26,6 +26,7 @@ class QMouseEvent;
 
 namespace fieldsight::ui {
 
+class AnnotationSelection;
 class EditingSession;
 class LutToolSettings;
 
@@ -44,6 +45,8 @@ struct ToolEvent
     Qt::KeyboardModifiers modifiers = Qt::NoModifier;
     int y_lo = 0; ///< the UV plane's Y cells, inclusive
     int y_hi = 127;
+    double zoom = 1;           ///< screen px per image px (how near "near" is)
+    bool double_click = false; ///< the press is the second of a double click
 
     /// The event at `point` of `surface` with `mouse`'s buttons and modifiers.
     static ToolEvent of(ToolSurface surface, const QMouseEvent& mouse, QPoint point);
@@ -58,13 +61,18 @@ struct ToolPreview
     QString text;                     ///< one line for people (empty when none)
 };
 
-/// Drawn around the cursor.
-/// A shape a tool shows over the image (a sample region, later an annotation).
+/// A shape a tool shows over the image (a sample region, an annotated object), in image px with
+/// pixel centres at whole numbers.
 struct OutlineShape
 {
-    QPolygon polygon; ///< image px, corner pixels inclusive
+    QPolygonF polygon;  ///< a polygon's corners (corner pixels inclusive), a polyline's points
+                        ///< (`closed` false), or a circle's centre
+    double radius = -1; ///< >= 0: a circle of this radius around the polygon's one point
+    bool closed = true;
     QColor colour;
-    bool selected = false; ///< drawn thicker, with its corners marked
+    bool selected = false; ///< drawn thicker, with its handles marked
+    bool dashed = false;   ///< made by the program (interpolated), not placed by hand
+    QPolygonF handles;     ///< marked when selected (empty: the polygon's points)
 };
 
 struct ToolOutline
@@ -80,6 +88,8 @@ struct ToolInfo
     QString name;
     QString tooltip;
     QKeySequence shortcut;
+    QString icon{};  ///< its icon's name in resources/icons/tools (empty: the id)
+    QString group{}; ///< where its button is: empty for the LUT editor's, "annotate"
 };
 
 /// What every tool may use.
@@ -87,6 +97,7 @@ struct ToolContext
 {
     EditingSession& session;
     LutToolSettings& settings;
+    AnnotationSelection& selection; ///< the annotated object the annotation tools selected
 };
 
 class Tool : public QObject
@@ -104,6 +115,14 @@ public:
     /// The mouse moved with a button down.
     virtual void move(const ToolEvent&) {}
     virtual void release(const ToolEvent&) {}
+    /// The pointer is over image pixel `pixel` with no button down (none: off the image).
+    virtual void hover(std::optional<QPoint> pixel) { (void)pixel; }
+    /// A key pressed in the frame view (Qt::Key); true when the tool used it.
+    virtual bool key(int key)
+    {
+        (void)key;
+        return false;
+    }
     /// The tool stops being the active one (a stroke in progress ends).
     virtual void deactivate() {}
 
@@ -127,11 +146,17 @@ protected:
     ToolContext& m_context;
 };
 
-using ToolFactory = std::function<std::unique_ptr<Tool>(ToolContext&)>;
+/// Makes the tools of one line of the tool list: one tool, or one per something of the pipeline
+/// (annotateTools(): one per kind drawn by hand).
+using ToolFactory = std::function<std::vector<std::unique_ptr<Tool>>(ToolContext&)>;
 
 template <class T> ToolFactory toolFactory()
 {
-    return [](ToolContext& context) { return std::make_unique<T>(context); };
+    return [](ToolContext& context) {
+        std::vector<std::unique_ptr<Tool>> one;
+        one.push_back(std::make_unique<T>(context));
+        return one;
+    };
 }
 
 /// THE tools, in the order of their buttons (tool_list.cpp).

@@ -10,10 +10,11 @@ namespace fieldsight::ui {
 
 namespace {
 
-/// The icon compiled in for the tool `id` (resources/icons/tools/<id>.svg), or none.
-QIcon toolIcon(const QString& id)
+/// The icon compiled in for a tool (resources/icons/tools/<icon or id>.svg), or none.
+QIcon toolIcon(const ToolInfo& info)
 {
-    const QString path = QStringLiteral(":/icons/tools/%1.svg").arg(id);
+    const QString path =
+        QStringLiteral(":/icons/tools/%1.svg").arg(info.icon.isEmpty() ? info.id : info.icon);
     return QFile::exists(path) ? QIcon(path) : QIcon();
 }
 
@@ -21,14 +22,17 @@ QIcon toolIcon(const QString& id)
 
 ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>& tools,
                          QObject* parent)
-    : QObject(parent), m_context{session, m_settings}
+    : QObject(parent), m_context{session, m_settings, m_selection}
 {
     m_actions = new QActionGroup(this);
     m_actions->setExclusive(true);
-    for (const ToolFactory& make : tools) {
-        std::unique_ptr<Tool> tool = make(m_context);
+    std::vector<std::unique_ptr<Tool>> made;
+    for (const ToolFactory& make : tools)
+        for (std::unique_ptr<Tool>& tool : make(m_context))
+            made.push_back(std::move(tool));
+    for (std::unique_ptr<Tool>& tool : made) {
         const ToolInfo info = tool->info();
-        auto* action = new QAction(toolIcon(info.id), info.name, this);
+        auto* action = new QAction(toolIcon(info), info.name, this);
         action->setObjectName(QStringLiteral("tool.%1").arg(info.id));
         action->setCheckable(true);
         action->setShortcut(info.shortcut);
@@ -38,6 +42,7 @@ ToolManager::ToolManager(EditingSession& session, const std::vector<ToolFactory>
                 : QStringLiteral("%1 (%2)").arg(info.tooltip,
                                                 info.shortcut.toString(QKeySequence::NativeText)));
         action->setData(info.id);
+        action->setProperty("group", info.group);
         m_actions->addAction(action);
         connect(action, &QAction::triggered, this, [this, id = info.id] { activate(id); });
         connect(tool.get(), &Tool::previewChanged, this, [this, t = tool.get()] {
@@ -95,6 +100,15 @@ QList<QAction*> ToolManager::actions() const
     return m_actions->actions();
 }
 
+QList<QAction*> ToolManager::actions(const QString& group) const
+{
+    QList<QAction*> out;
+    for (QAction* a : m_actions->actions())
+        if (a->property("group").toString() == group)
+            out << a;
+    return out;
+}
+
 void ToolManager::press(const ToolEvent& event)
 {
     if (m_active && m_active->accepts(event.surface))
@@ -119,6 +133,8 @@ void ToolManager::release(const ToolEvent& event)
 void ToolManager::hover(std::optional<QPoint> pixel)
 {
     m_hover = pixel;
+    if (m_active)
+        m_active->hover(pixel);
     refreshPreview();
 }
 

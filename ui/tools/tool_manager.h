@@ -4,6 +4,7 @@
 // the frame and the shared settings.
 #pragma once
 
+#include "ui/tools/annotation_selection.h"
 #include "ui/tools/lut_tool_settings.h"
 #include "ui/tools/tool.h"
 
@@ -27,6 +28,8 @@ public:
     ~ToolManager() override;
 
     LutToolSettings& settings() { return m_settings; }
+    /// The annotated object the annotation tools selected (the Object menu acts on it).
+    AnnotationSelection& selection() { return m_selection; }
     const std::vector<std::unique_ptr<Tool>>& tools() const { return m_tools; }
     Tool* find(const QString& id) const;
     Tool& active() const { return *m_active; }
@@ -34,9 +37,11 @@ public:
     bool deleteSelection() { return m_active && m_active->deleteSelection(); }
     /// Makes the tool `id` active (unknown ids are ignored); the first tool is active at first.
     void activate(const QString& id);
-    /// One checkable action per tool, in the tool list's order, with its shortcut and the icon
-    /// named by its id in the resources (:/icons/tools/<id>.svg; none when there is no such file).
+    /// One checkable action per tool, in the tool list's order, with its shortcut and its icon
+    /// in the resources (:/icons/tools/<icon or id>.svg; none when there is no such file).
     QList<QAction*> actions() const;
+    /// The actions of the tools of `group` (ToolInfo::group), in the same order.
+    QList<QAction*> actions(const QString& group) const;
 
     // From the views.
     void press(const ToolEvent& event);
@@ -44,6 +49,8 @@ public:
     void release(const ToolEvent& event);
     /// The cursor is over image pixel `pixel` (none: off the image).
     void hover(std::optional<QPoint> pixel);
+    /// A key pressed in the frame view; true when the active tool used it.
+    bool key(int key) { return m_active && m_active->key(key); }
 
     /// What the active tool would change at the cursor (or has, mid-stroke).
     const ToolPreview& preview() const { return m_preview; }
@@ -58,6 +65,7 @@ private:
     void refreshPreview();
 
     LutToolSettings m_settings;
+    AnnotationSelection m_selection;
     ToolContext m_context;
     std::vector<std::unique_ptr<Tool>> m_tools;
     Tool* m_active = nullptr;

@@ -1,0 +1,210 @@
+#include "ui/actions/annotation_commands.h"
+
+#include "ui/actions/file_commands.h"
+#include "ui/adapters/local_path.h"
+#include "ui/dialogs/dialogs.h"
+#include "ui/document/annotations_document.h"
+#include "ui/main_window.h"
+#include "ui/widgets/message_bar.h"
+#include "visioncore/basics/output_guard.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFileInfo>
+#include <QFontMetrics>
+#include <QLocale>
+
+namespace fieldsight::ui {
+
+namespace {
+
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+
+} // namespace
+
+AnnotationCommands::AnnotationCommands(MainWindow& window) : QObject(&window), m_window(window)
+{
+    // A recovery is offered only when the stream it belongs to is open.
+    connect(&m_window.session().stream(), &StreamDocument::streamChanged, this,
+            &AnnotationCommands::offerRecovery);
+    OfferBar& bar = m_window.annotationsRecoveryBar();
+    connect(&bar, &OfferBar::accepted, this, &AnnotationCommands::recover);
+    connect(&bar, &OfferBar::declined, this, &AnnotationCommands::discardRecovery);
+}
+
+AnnotationsDocument& AnnotationCommands::doc()
+{
+    return m_window.session().annotations();
+}
+
+bool AnnotationCommands::save()
+{
+    AnnotationsDocument& d = doc();
+    if (!m_window.session().stream().hasStream()) {
+        m_window.showMessage(tr("Open a stream first: annotations belong to a stream"));
+        return false;
+    }
+    if (!d.loadProblem().isEmpty()) {
+        // The damaged file is never written over unasked: another file, or that one chosen.
+        m_window.showMessage(tr("%1 could not be read when the stream opened, so Save does not "
+                                "write over it: choose a file for the annotations")
+                                 .arg(d.path()));
+        return saveAs();
+    }
+    if (d.path().isEmpty())
+        return saveAs();
+    if (Status s = d.save(); !s) {
+        m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
+                                 .arg(qs(s.error().message)));
+        return false;
+    }
+    m_window.showMessage(tr("Saved the annotations to %1").arg(d.path()), false);
+    return true;
+}
+
+bool AnnotationCommands::saveAs(const QString& given)
+{
+    AnnotationsDocument& d = doc();
+    const StreamDocument& stream = m_window.session().stream();
+    if (!stream.hasStream()) {
+        m_window.showMessage(tr("Open a stream first: annotations belong to a stream"));
+        return false;
+    }
+    const QFileInfo spec(stream.streamSpec());
+    const QString folder = spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
+    QString path = given;
+    if (path.isEmpty()) {
+        QString suggestion =
+            d.path().isEmpty() ? folder + QStringLiteral("/annotations.json") : d.path();
+        if (!d.loadProblem().isEmpty()) // another name than the file that could not be read
+            suggestion = QFileInfo(suggestion).absolutePath() + QLatin1Char('/') +
+                         QFileInfo(suggestion).completeBaseName() + QStringLiteral(".new.json");
+        path = Dialogs::current().saveFile(&m_window, tr("Save annotations as"), suggestion,
+                                           tr("Fieldsight annotations (*.json)"));
+        if (path.isEmpty())
+            return false;
+    }
+    if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive))
+        path += QStringLiteral(".json");
+    // Never over what the window reads: the stream's file or manifest, the table.
+    if (Status s = checkNotAnInput("Save annotations as", toLocalPath(path),
+                                   {toLocalPath(spec.isDir() ? QString() : stream.streamSpec()),
+                                    toLocalPath(folder + QStringLiteral("/stream.json")),
+                                    toLocalPath(m_window.session().lut().path())});
+        !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
+    if (Status s = d.saveAs(path); !s) {
+        m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
+                                 .arg(qs(s.error().message)));
+        return false;
+    }
+    m_window.showMessage(tr("Saved the annotations to %1").arg(path), false);
+    return true;
+}
+
+bool AnnotationCommands::saveAll()
+{
+    const bool annotations = doc().modified();
+    bool ok = true;
+    if (annotations)
+        ok = save();
+    if (m_window.session().lut().modified() || !annotations)
+        ok = m_window.files().saveLut() && ok;
+    return ok;
+}
+
+bool AnnotationCommands::confirmChanges()
+{
+    AnnotationsDocument& d = doc();
+    if (!d.modified())
+        return true;
+    const auto answer = Dialogs::current().question(
+        &m_window, tr("Unsaved annotations"),
+        tr("The annotations of %1 have edits that are not saved. Save them first?")
+            .arg(QFileInfo(d.stream()).fileName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel)
+        return false;
+    if (answer == QMessageBox::Save)
+        return save();
+    revert();
+    d.discardOwnRecovery();
+    return true;
+}
+
+void AnnotationCommands::revert()
+{
+    AnnotationsDocument& d = doc();
+    Annotations annotations;
+    QString problem;
+    if (!d.path().isEmpty() && localPathExists(d.path())) {
+        auto loaded = Annotations::load(toLocalPath(d.path()), d.kinds(),
+                                        m_window.session().stream().frameCount());
+        if (loaded)
+            annotations = std::move(loaded).value();
+        else
+            problem = qs(loaded.error().message);
+    }
+    d.adopt(d.stream(), d.path(), std::move(annotations), problem);
+}
+
+void AnnotationCommands::offerRecovery()
+{
+    OfferBar& bar = m_window.annotationsRecoveryBar();
+    const std::optional<AnnotationsRecovery> r =
+        m_window.session().stream().hasStream() ? doc().findRecovery() : std::nullopt;
+    if (!r) {
+        bar.hide();
+        return;
+    }
+    const QFontMetrics metrics(bar.font());
+    const QString file = r->path.isEmpty() ? tr("(no file yet)") : r->path;
+    const QDateTime saved = QDateTime::fromString(r->saved_at, Qt::ISODate);
+    const QString when = saved.isValid() ? QLocale().toString(saved, QLocale::ShortFormat)
+                                         : tr("at a time not recorded");
+    bar.offer(
+        tr("Unsaved annotation edits of this stream (%n annotated frame(s), for %1) were "
+           "kept when a session ended (%2). Recover them?",
+           nullptr, int(r->frames))
+            .arg(metrics.elidedText(file, Qt::ElideMiddle, metrics.averageCharWidth() * 48), when),
+        tr("Annotations: %1\nStream: %2\nKept in: %3\nAt: %4").arg(file, r->stream, r->file, when));
+}
+
+bool AnnotationCommands::recover()
+{
+    AnnotationsDocument& d = doc();
+    const std::optional<AnnotationsRecovery> r = d.findRecovery();
+    m_window.annotationsRecoveryBar().hide();
+    if (!r)
+        return false;
+    if (d.modified() &&
+        Dialogs::current().question(
+            &m_window, tr("Recover annotations"),
+            tr("Recovering replaces the annotation edits made since the stream opened. Recover "
+               "anyway?"),
+            QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes)
+        return false;
+    if (Status s = d.recover(*r); !s) {
+        m_window.showMessage(qs(s.error().message));
+        return false;
+    }
+    m_window.showMessage(tr("Recovered the annotation edits of %1 (%n annotated frame(s)); save "
+                            "them with Ctrl+Alt+S",
+                            nullptr, int(r->frames))
+                             .arg(QFileInfo(r->stream).fileName()),
+                         false);
+    return true;
+}
+
+void AnnotationCommands::discardRecovery()
+{
+    doc().discardRecovery();
+    m_window.annotationsRecoveryBar().hide();
+}
+
+} // namespace fieldsight::ui

@@ -1,0 +1,48 @@
+// What the window does with the annotations document's file: Save Annotations (Save As for a
+// stream without a file, or whose file could not be read), Ctrl+S saving the annotations with the
+// LUT, asking before unsaved annotation edits are dropped (another stream, closing), and offering
+// a crashed session's annotation edits back when their own stream opens. Every question goes
+// through the Dialogs seam and every error to the window's message bar.
+#pragma once
+
+#include <QObject>
+#include <QString>
+
+namespace fieldsight::ui {
+
+class AnnotationsDocument;
+class MainWindow;
+
+class AnnotationCommands : public QObject
+{
+    Q_OBJECT
+public:
+    explicit AnnotationCommands(MainWindow& window);
+
+    /// Saves the annotations to their file, atomically; asks for another file (Save As) when
+    /// they have none or theirs could not be read. False with a message when not saved.
+    bool save();
+    /// Saves them to `path` (asks for one when empty); the file becomes theirs.
+    bool saveAs(const QString& path = {});
+    /// File > Save (Ctrl+S): the annotations when they have unsaved edits, and the LUT as
+    /// before (when it has unsaved edits, or when the annotations had none).
+    bool saveAll();
+    /// Asks what to do with unsaved annotation edits (save, discard, cancel); true to go on.
+    /// Discarded edits are reverted to the file (and their recovery file removed).
+    bool confirmChanges();
+
+    /// Shows the offer of a recovery file left for the open stream, if any (hides it otherwise).
+    void offerRecovery();
+    /// Loads the offered recovery onto the open stream's annotations (only its own stream's).
+    bool recover();
+    void discardRecovery();
+
+private:
+    AnnotationsDocument& doc();
+    /// Back to the annotations as saved: the file read again (empty when it is absent).
+    void revert();
+
+    MainWindow& m_window;
+};
+
+} // namespace fieldsight::ui

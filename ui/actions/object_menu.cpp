@@ -1,0 +1,183 @@
+// Object: what is set on the one annotated object an annotation tool selected: concealed, a
+// keyframe of its track and whether the frames since the previous keyframe are interpolated, and
+// the object propagated to the next or previous frames. Each is one undoable edit of the
+// annotations document; the Qt-free rules are in visioncore/services/annotation_tracks.h.
+#include "ui/actions/menus.h"
+#include "ui/dialogs/dialogs.h"
+#include "ui/main_window.h"
+#include "ui/tools/annotation_selection.h"
+
+#include "visioncore/services/annotation_tracks.h"
+
+#include <QMenuBar>
+#include <QStatusBar>
+
+#include <memory>
+
+namespace fieldsight::ui {
+
+namespace {
+
+/// The selected object, on the frame shown.
+struct Target
+{
+    std::string key;    ///< its frame, as the annotations key it
+    std::size_t at = 0; ///< the frame's index in the stream
+    const PerceptKind* kind = nullptr;
+    std::size_t index = 0; ///< in the frame's list of `kind`
+    ObjectFlags flags;
+    QString title; ///< the kind's, for the undo step's name
+};
+
+std::optional<Target> target(MainWindow& w)
+{
+    EditingSession& session = w.session();
+    const auto& object = w.tools().selection().object();
+    if (!object || object->frame != currentFrameName(session))
+        return std::nullopt;
+    const FrameAnnotation* frame = session.annotations().frame(object->frame);
+    if (!frame || object->index >= shapesOf(*frame, *object->kind).size())
+        return std::nullopt;
+    return Target{
+        session.annotations().keyOf(object->frame),
+        session.stream().currentIndex(),
+        object->kind,
+        object->index,
+        frame->flagsOf(object->kind->truth_key, object->index),
+        QString::fromUtf8(object->kind->title.data(), qsizetype(object->kind->title.size()))};
+}
+
+/// The selected object, or a word in the status bar on how to select one.
+std::optional<Target> targetOrHint(MainWindow& w)
+{
+    auto t = target(w);
+    if (!t)
+        w.statusBar()->showMessage(
+            QObject::tr("Select an object first: click it with its annotation tool"), 5000);
+    return t;
+}
+
+void commit(MainWindow& w, const AnnotationChanges& changes, const QString& text)
+{
+    w.session().annotations().edit(text, changes.frames());
+}
+
+void toggleConcealed(MainWindow& w)
+{
+    const auto t = targetOrHint(w);
+    if (!t)
+        return;
+    AnnotationChanges changes(w.session().annotations().annotations());
+    ObjectFlags flags = t->flags;
+    flags.concealed = !flags.concealed;
+    changes.edit(t->key).setFlags(t->kind->truth_key, t->index, flags);
+    commit(w, changes,
+           (flags.concealed ? QObject::tr("%1: concealed") : QObject::tr("%1: not concealed"))
+               .arg(t->title));
+}
+
+void toggleKeyframe(MainWindow& w)
+{
+    const auto t = targetOrHint(w);
+    if (!t)
+        return;
+    AnnotationChanges changes(w.session().annotations().annotations());
+    const bool keyframe = !t->flags.keyframe;
+    if (!setKeyframe(changes, annotationFrameKeys(w.session()), t->at, *t->kind, t->index,
+                     keyframe)) {
+        w.statusBar()->showMessage(
+            QObject::tr("%1: this kind has no keyframes (propagate it instead)").arg(t->title),
+            5000);
+        return;
+    }
+    commit(w, changes,
+           (keyframe ? QObject::tr("%1: keyframe") : QObject::tr("%1: no keyframe")).arg(t->title));
+}
+
+void toggleInterpolation(MainWindow& w)
+{
+    const auto t = targetOrHint(w);
+    if (!t)
+        return;
+    AnnotationChanges changes(w.session().annotations().annotations());
+    const bool interpolate = !t->flags.interpolate;
+    if (!setInterpolate(changes, annotationFrameKeys(w.session()), t->at, *t->kind, t->index,
+                        interpolate)) {
+        w.statusBar()->showMessage(
+            QObject::tr("Only a keyframe is interpolated from the one before: mark it first (K)"),
+            5000);
+        return;
+    }
+    commit(w, changes,
+           (interpolate ? QObject::tr("%1: interpolate") : QObject::tr("%1: do not interpolate"))
+               .arg(t->title));
+}
+
+/// Asks how many frames (starting from the last answer) and propagates the selected object
+/// that many frames forward (`direction` 1) or back (-1).
+void propagateSelected(MainWindow& w, int direction, int& last)
+{
+    const auto t = targetOrHint(w);
+    if (!t)
+        return;
+    const std::optional<int> count = Dialogs::current().number(
+        &w,
+        direction > 0 ? QObject::tr("Propagate to the next frames")
+                      : QObject::tr("Propagate to the previous frames"),
+        QObject::tr("Copy the selected object to how many frames %1 this one?")
+            .arg(direction > 0 ? QObject::tr("after") : QObject::tr("before")),
+        last, 1, 100000);
+    if (!count)
+        return;
+    last = *count;
+    AnnotationChanges changes(w.session().annotations().annotations());
+    const std::size_t made = propagate(changes, annotationFrameKeys(w.session()), t->at, *t->kind,
+                                       t->index, direction * *count);
+    commit(w, changes,
+           QObject::tr("%1: propagated to %n frame(s)", nullptr, int(made)).arg(t->title));
+}
+
+} // namespace
+
+void addObjectMenu(MainWindow& w)
+{
+    QMenu* menu = w.menuBar()->addMenu(QObject::tr("&Object"));
+    QAction* concealed = addMenuItem(menu, QObject::tr("Concealed"), QKeySequence(Qt::Key_Q), &w,
+                                     [&w] { toggleConcealed(w); });
+    QAction* keyframe = addMenuItem(menu, QObject::tr("Keyframe"), QKeySequence(Qt::Key_K), &w,
+                                    [&w] { toggleKeyframe(w); });
+    QAction* interpolate =
+        addMenuItem(menu, QObject::tr("Interpolated from the previous keyframe"),
+                    QKeySequence(Qt::SHIFT | Qt::Key_K), &w, [&w] { toggleInterpolation(w); });
+    concealed->setObjectName(QStringLiteral("object.concealed"));
+    keyframe->setObjectName(QStringLiteral("object.keyframe"));
+    interpolate->setObjectName(QStringLiteral("object.interpolate"));
+    menu->addSeparator();
+    // How many frames the last propagation went, offered again (both ways).
+    auto last = std::make_shared<int>(10);
+    addMenuItem(menu, QObject::tr("Propagate to the next frames…"),
+                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), &w,
+                [&w, last] { propagateSelected(w, 1, *last); })
+        ->setObjectName(QStringLiteral("object.propagate_next"));
+    addMenuItem(menu, QObject::tr("Propagate to the previous frames…"),
+                QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P), &w,
+                [&w, last] { propagateSelected(w, -1, *last); })
+        ->setObjectName(QStringLiteral("object.propagate_previous"));
+
+    // The checks show the selected object's flags (none selected: all clear).
+    const auto sync = [&w, concealed, keyframe, interpolate] {
+        const auto t = target(w);
+        concealed->setChecked(t && t->flags.concealed);
+        keyframe->setChecked(t && t->flags.keyframe);
+        interpolate->setChecked(t && t->flags.keyframe && t->flags.interpolate);
+    };
+    for (QAction* a : {concealed, keyframe, interpolate}) {
+        a->setCheckable(true);
+        QObject::connect(a, &QAction::triggered, &w, sync); // also when nothing changed
+    }
+    QObject::connect(&w.tools().selection(), &AnnotationSelection::changed, &w, sync);
+    QObject::connect(&w.session().annotations(), &AnnotationsDocument::changed, &w, sync);
+    sync();
+}
+
+} // namespace fieldsight::ui

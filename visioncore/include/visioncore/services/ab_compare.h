@@ -1,0 +1,80 @@
+// A/B comparison of two colour tables or two parameter sets over one stream: the pipeline runs
+// twice over the annotated frames, each frame is scored with the matching of SPEC §5.3
+// (scoreFrame), and per class the frames that got fixed or broken are listed. The command line
+// (`fieldsight compare`) and the window's dialog both drive it.
+#pragma once
+
+#include "visioncore/io/annotations.h"
+#include "visioncore/services/evaluation.h"
+#include "visioncore/services/stream_runner.h"
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+/// The second side of a comparison: what differs from the first (the StreamInput's table and
+/// parameters). The stream, the skipped stages and the truth are shared.
+struct AbSide
+{
+    std::string lut_path; ///< for reports (empty: the same table as A)
+    std::shared_ptr<const ColourLut> lut;
+    std::string params_path; ///< for reports (empty: no parameter file)
+    ParamSet params;
+};
+
+/// One frame where a class was scored, with each side's score of that frame.
+struct AbFrame
+{
+    std::size_t index = 0; ///< in the stream
+    std::string name;      ///< as the annotations name it
+    ClassScore a;
+    ClassScore b;
+
+    /// A miss or a false detection.
+    static bool wrong(const ClassScore& s) { return s.fp > 0 || s.fn > 0; }
+};
+
+/// One class (a percept kind with a matching rule) over the frames where its truth is complete.
+struct AbClass
+{
+    const PerceptKind* kind = nullptr; ///< from the percept registry
+    std::string name;                  ///< as `eval` names the class ("ball")
+    std::size_t frames = 0;            ///< frames where the class's truth is complete
+    ClassScore a;                      ///< summed over those frames
+    ClassScore b;
+    std::vector<AbFrame> fixed;  ///< wrong with A, right with B; by frame index
+    std::vector<AbFrame> broken; ///< right with A, wrong with B; by frame index
+    std::size_t wrong_both = 0;  ///< frames wrong with both sides
+};
+
+struct AbComparison
+{
+    std::size_t frames = 0; ///< annotated frames scored (at least one class complete)
+    std::vector<AbClass> classes;
+    /// The field boundary's mean error over the frames where its truth is complete and both
+    /// boundaries exist (EvaluationScores::boundaryMeanError; negative: none).
+    double boundary_a = -1;
+    double boundary_b = -1;
+    std::size_t boundary_frames_a = 0;
+    std::size_t boundary_frames_b = 0;
+    bool cancelled = false; ///< then nothing else is filled in
+};
+
+/// The frames of `truth` with at least one complete class (done, or a reviewed kind), by stream
+/// index (a .strm's frame "frame_000000" is the annotations' "frame_000000.png": found by stem).
+/// Such a frame the stream lacks is bad input, named with `truth_path`.
+Result<std::vector<std::pair<std::size_t, std::string>>>
+completeFrames(const StreamReader& reader, const std::string& stream, const Annotations& truth,
+               const std::string& truth_path);
+
+/// Runs `input` (side A: its table and parameters) and then side `b` over the frames of
+/// completeFrames() and compares them. Progress counts both runs (2 x frames); a cancel ends with
+/// `cancelled` set. Bad input (a frame that cannot be read) is an Error.
+Result<AbComparison> compareAb(StreamInput& input, const AbSide& b, const Annotations& truth,
+                               const std::string& truth_path, int threads,
+                               const RunHooks& hooks = {});
+
+} // namespace fieldsight
