@@ -134,8 +134,8 @@ private:
     QLabel* m_status_zoom = nullptr;
     QLabel* m_status_time = nullptr;
     QLabel* m_status_effect = nullptr;
+    QLabel* m_scores_change = nullptr; ///< what the last change did to the evaluation
     QLabel* m_status_annotation = nullptr;
-    QLabel* m_scores_change = nullptr;       ///< what the last change did to the evaluation
     std::optional<CellMask> m_compare_cells; ///< the compare dialog's chosen row, if any
     std::optional<QPoint> m_hover;
     QString m_last_message;

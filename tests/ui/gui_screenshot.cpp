@@ -39,10 +39,9 @@ int main(int argc, char** argv)
     QCommandLineParser p;
     p.addPositionalArgument("out", "PNG to write");
     p.addPositionalArgument("stream", "stream");
-    for (const char* o :
-         {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock", "colour",
-          "tool", "click", "drag", "preview", "uv-select", "y-range", "orientation",
-          "disagreement"})
+    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock",
+                          "colour", "tool", "click", "drag", "preview", "uv-select", "y-range",
+                          "orientation", "disagreement"})
         p.addOption({o, o, "value"});
     p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
     p.process(app);
@@ -158,7 +157,7 @@ int main(int argc, char** argv)
         for (int i = 0; i < 6000 && (scan.running() || scan.pending()); ++i)
             QTest::qWait(10);
     };
-    if (p.isSet("click"))
+    if (p.isSet("click") || p.isSet("drag"))
         waitEvaluation();
     for (const QString& xy : p.values("click")) {
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, viewPoint(xy));
