@@ -428,6 +428,8 @@ void MainWindow::saveSettings() const
     w.keep_others = tools.keepOthers();
     w.soft_classes = tools.softClasses();
     w.preview = tools.previewOn();
+    if (const auto* propagate = findChild<QAction*>(QStringLiteral("object.propagate_next")))
+        w.propagate_frames = propagate->data().toInt();
     w.save();
 }
 
@@ -462,6 +464,8 @@ void MainWindow::restoreSettings()
     tools.setKeepOthers(w.keep_others);
     tools.setSoftClasses(w.soft_classes);
     tools.setPreviewOn(w.preview);
+    if (auto* propagate = findChild<QAction*>(QStringLiteral("object.propagate_next")))
+        propagate->setData(w.propagate_frames);
     m_tools->activate(w.tool);
 }
 

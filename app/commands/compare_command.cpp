@@ -57,15 +57,15 @@ std::string compareTable(const AbComparison& c, const Sides& s)
     text += "B: " + (s.b.lut_path.empty() ? s.a_lut : s.b.lut_path) +
             (s.b.params_path.empty() ? "" : ", parameters " + s.b.params_path) + "\n";
     text += std::to_string(c.frames) + " annotated frames scored (each class where its truth is "
-                                       "complete)\n";
+                                       "complete; concealed objects apart, as in eval)\n";
     char line[256];
     std::snprintf(line, sizeof line,
-                  "%-9s %6s | %5s %5s %5s %6s %6s | %5s %5s %5s %6s %6s | %5s %6s\n", "class",
+                  "%-10s %6s | %5s %5s %5s %6s %6s | %5s %5s %5s %6s %6s | %5s %6s\n", "class",
                   "frames", "A TP", "FP", "FN", "prec", "recall", "B TP", "FP", "FN", "prec",
                   "recall", "fixed", "broken");
     text += line;
     for (const AbClass& k : c.classes) {
-        std::snprintf(line, sizeof line, "%-9s %6zu | %s | %s | %5zu %6zu\n", k.name.c_str(),
+        std::snprintf(line, sizeof line, "%-10s %6zu | %s | %s | %5zu %6zu\n", k.name.c_str(),
                       k.frames, scoreText(k.a).c_str(), scoreText(k.b).c_str(), k.fixed.size(),
                       k.broken.size());
         text += line;
@@ -104,7 +104,9 @@ std::string compareJson(const AbComparison& c, const Sides& s)
                     {"fp", k.fp},
                     {"fn", k.fn},
                     {"precision", rounded(k.precision(), 6)},
-                    {"recall", rounded(k.recall(), 6)}};
+                    {"recall", rounded(k.recall(), 6)},
+                    {"concealed_found", k.concealed_found},
+                    {"concealed_missed", k.concealed_missed}};
     };
     const auto frames = [](const std::vector<AbFrame>& list) {
         Json out = Json::array();

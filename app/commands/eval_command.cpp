@@ -15,17 +15,6 @@
 namespace fieldsight::cli {
 namespace {
 
-/// The eval JSON's name of a scored kind's class (its key in "classes").
-std::string className(const PerceptKind& kind)
-{
-    const char* names[] = {"ball", "goalpost", "obstacle", "field_line"};
-    const std::vector<const PerceptKind*>& kinds = scoredKinds();
-    for (std::size_t k = 0; k < kinds.size(); ++k)
-        if (kinds[k]->key == kind.key)
-            return names[k];
-    return std::string(kind.key);
-}
-
 constexpr const char* kPrecisionNote = "precision = 1 when TP+FP = 0; recall = 1 when TP+FN = 0";
 
 std::string evalTable(const EvalReport& report)
@@ -116,7 +105,7 @@ std::string evalJson(const EvalReport& report)
         frame["frame"] = d.frame;
         if (const auto it = report.frame_index.find(d.frame); it != report.frame_index.end())
             frame["index"] = it->second;
-        frame["class"] = className(*d.kind);
+        frame["class"] = scoredClassName(*d.kind);
         frame["false_detections"] = d.false_detections;
         frame["missed"] = d.missed;
         disagreements.push_back(std::move(frame));

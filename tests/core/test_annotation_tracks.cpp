@@ -183,6 +183,50 @@ private slots:
         QVERIFY(!a.frames.at("f0").flagsOf(circles().truth_key, 0).keyframe);
     }
 
+    void aDeletedInterpolatedObjectStaysDeleted()
+    {
+        const auto frames = tenFrames();
+        Annotations a;
+        addObject(a.frames["f2"], circles(), {circle(10, 20, 4), keyframeOf(5)});
+        addObject(a.frames["f6"], circles(), {circle(30, 40, 8), keyframeOf(5)});
+        addObject(a.frames["f8"], circles(), {circle(50, 40, 8), keyframeOf(5)});
+        AnnotationChanges fill(a);
+        interpolateTrack(fill, frames, circles(), 5);
+        apply(a, fill);
+        QCOMPARE(a.frames.size(), std::size_t(7)); // f2..f8
+
+        // The interpolated ball on f4 deleted: f3 and f5 keep their shapes as plain objects of
+        // the track, the span f2..f6 is no longer interpolated; the next span is untouched.
+        AnnotationChanges del(a);
+        QVERIFY(removeFromTrack(del, frames, 4, circles(), 0));
+        apply(a, del);
+        QVERIFY(a.frames.count("f4") == 0 || a.frames.at("f4").truth.list<Ball>().empty());
+        for (const char* name : {"f3", "f5"}) {
+            const ObjectFlags f = a.frames.at(name).flagsOf(circles().truth_key, 0);
+            QVERIFY(!f.interpolated);
+            QCOMPARE(f.track, 5);
+        }
+        QCOMPARE(a.frames.at("f3").truth.list<Ball>()[0].x, 15.0);
+        QVERIFY(!a.frames.at("f6").flagsOf(circles().truth_key, 0).interpolate);
+        QVERIFY(a.frames.at("f8").flagsOf(circles().truth_key, 0).interpolate);
+        QVERIFY(a.frames.at("f7").flagsOf(circles().truth_key, 0).interpolated);
+
+        // A keyframe moved afterwards does not bring the deleted ball back.
+        AnnotationChanges moved(a);
+        setShape(moved.edit("f2"), circles(), 0, circle(0, 0, 4));
+        interpolateTrack(moved, frames, circles(), 5);
+        apply(a, moved);
+        QVERIFY(a.frames.count("f4") == 0 || a.frames.at("f4").truth.list<Ball>().empty());
+        QCOMPARE(a.frames.at("f3").truth.list<Ball>()[0].x, 15.0);
+
+        // A keyframe deleted: the span it ended is interpolated again from the keyframes left.
+        AnnotationChanges key(a);
+        QVERIFY(removeFromTrack(key, frames, 8, circles(), 0));
+        apply(a, key);
+        QVERIFY(a.frames.count("f7") == 0 || a.frames.at("f7").truth.list<Ball>().empty());
+        QVERIFY(!removeFromTrack(key, frames, 8, circles(), 0)); // nothing left there
+    }
+
     void boxesInterpolateToWholePixels()
     {
         const auto frames = tenFrames();

@@ -1,7 +1,8 @@
 // A/B comparison (`fieldsight compare`, visioncore/services/ab_compare.h): a table B that erases
 // the ball colour breaks exactly the ball frames A got right; swapping the sides fixes them; the
 // JSON has its documented fields and side A's scores equal `eval`'s; a class is scored only where
-// its truth is complete (a reviewed class on a frame not done).
+// its truth is complete (a reviewed class on a frame not done); a concealed ball B misses breaks
+// nothing (the matching of eval, concealed objects apart).
 #include "support/child_process.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/basics/colour_lut.h"
@@ -137,8 +138,8 @@ private slots:
         const Outcome e = fieldsight({"eval", lab2(), "--json", eval_json});
         QVERIFY2(e.status == 0, e.err.c_str());
         const Json eval = parsed(test::readAll(eval_json));
-        for (const char* c : {"ball", "goalpost", "obstacle"})
-            for (const char* n : {"tp", "fp", "fn"})
+        for (const char* c : {"ball", "goalpost", "obstacle", "field_line"})
+            for (const char* n : {"tp", "fp", "fn", "concealed_found", "concealed_missed"})
                 QCOMPARE(doc.at("classes").at(c).at("a").at(n).get<int>(),
                          eval.at("classes").at(c).at(n).get<int>());
         QCOMPARE(doc.at("field_boundary").at("a").at("mean_error_px").get<double>(),
@@ -223,7 +224,8 @@ private slots:
         const AbComparison& c = result.value();
         QCOMPARE(c.frames, std::size_t(2));
         QCOMPARE(progress, (std::vector<std::size_t>{1, 2, 3, 4}));
-        QCOMPARE(c.classes.size(), std::size_t(3));
+        QCOMPARE(c.classes.size(), std::size_t(4)); // with field lines, as eval scores them
+        QCOMPARE(c.classes[3].name, std::string("field_line"));
         QCOMPARE(c.classes[0].kind, &perceptKind<Ball>());
         QCOMPARE(c.classes[0].frames, std::size_t(2));
         QCOMPARE(c.classes[0].a.tp + c.classes[0].a.fn, 2);
@@ -231,6 +233,23 @@ private slots:
         QCOMPARE(c.classes[1].frames, std::size_t(1)); // frame 1 is not reviewed for goalposts
         QCOMPARE(c.boundary_frames_a, std::size_t(1));
         QCOMPARE(input.value().lut_path, lab2() + "/default.lut"); // side A is kept
+
+        // The done frame's ball concealed: B missing it breaks nothing, as eval counts it apart.
+        QCOMPARE(c.classes[0].broken.size(), std::size_t(2));
+        FrameAnnotation& done = truth.frames.at("frame_000000.png");
+        QVERIFY(!done.truth.list<Ball>().empty());
+        ObjectFlags concealed;
+        concealed.concealed = true;
+        done.setFlags("balls", 0, concealed);
+        auto hidden = compareAb(input.value(), b, truth, "truth.json", 1);
+        QVERIFY(hidden.ok());
+        const AbClass& balls = hidden.value().classes[0];
+        QCOMPARE(balls.broken.size(), std::size_t(1));
+        QCOMPARE(balls.broken[0].name, std::string("frame_000001.png"));
+        QCOMPARE(balls.b.concealed_missed, 1);
+        QCOMPARE(balls.a.concealed_found, 1);
+        QCOMPARE(balls.a.tp + balls.a.fn, 1);
+        done.setFlags("balls", 0, ObjectFlags{});
 
         // A frame with a complete class that the stream lacks is bad input, named.
         truth.frames["frame_000099.png"] = source.value().frames.at("frame_000000.png");

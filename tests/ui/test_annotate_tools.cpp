@@ -350,6 +350,18 @@ private slots:
         QCOMPARE(undo.index(), steps + 3);
         undo.undo();
         QCOMPARE(shapesOn(w, 0, kind).front().points.size(), std::size_t(4));
+        // A point pressed is chosen (ringed): Delete removes that point alone, one step; with
+        // two points left Delete removes the whole line.
+        drag(w, {200, 95}, {200, 95});
+        QCOMPARE(tool->outline().shapes.at(0).chosen_handle, 2);
+        QTest::keyClick(&w, Qt::Key_Delete);
+        QCOMPARE(text(shapesOn(w, 0, kind)), QStringLiteral("(0, 100) (100, 70) (319, 100)"));
+        QCOMPARE(tool->outline().shapes.at(0).chosen_handle, -1); // the choice is used up
+        undo.undo();
+        QCOMPARE(shapesOn(w, 0, kind).front().points.size(), std::size_t(4));
+        undo.redo();
+        QCOMPARE(shapesOn(w, 0, kind).front().points.size(), std::size_t(3));
+        undo.undo();
         // One a frame: a click off the line starts no second one.
         click(w, {150, 200});
         QVERIFY(tool->draft().empty());
@@ -442,6 +454,21 @@ private slots:
         QTest::keyClick(&w, Qt::Key_K, Qt::ShiftModifier);
         QCOMPARE(text(shapesOn(w, 3, kind)), text(EditShape{{{80, 65}}, 8}));
 
+        // The interpolated ball on frame 2 deleted stays deleted: frame 3 keeps its shape and a
+        // move of keyframe 4 no longer reaches the span.
+        goTo(w, 2);
+        click(w, {70, 60});
+        QCOMPARE(tool->selected(), std::optional<std::size_t>(0));
+        steps = undo.index();
+        QTest::keyClick(&w, Qt::Key_Delete);
+        QCOMPARE(undo.index(), ++steps);
+        QVERIFY(shapesOn(w, 2, kind).empty());
+        goTo(w, 4);
+        drag(w, {90, 70}, {92, 70});
+        QVERIFY(shapesOn(w, 2, kind).empty());
+        QCOMPARE(text(shapesOn(w, 3, kind)), text(EditShape{{{80, 65}}, 8}));
+        QVERIFY(!flagsOn(w, 3, kind).interpolated);
+
         // Backwards (Ctrl+Alt+P) from a new circle on frame 10, offered the last count again.
         goTo(w, 10);
         drag(w, {200, 100}, {200, 106});
@@ -455,6 +482,17 @@ private slots:
 
         const QString problem = savedAndReadBack(w, stream);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
+
+        // The count is remembered with the window's settings: the next session offers it.
+        QVERIFY(w.close());
+        MainWindow next;
+        QVERIFY(open(next, stream));
+        next.tools().activate(tool->info().id);
+        goTo(next, 0);
+        click(next, {50, 50}); // frame 0's keyframe, selected
+        dialogs.numbers = {1};
+        QTest::keyClick(&next, Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(dialogs.offered, (QList<int>{10, 4, 2}));
     }
 
     /// Q marks the selected object concealed (one step, saved in the file) and clears it;

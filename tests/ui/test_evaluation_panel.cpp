@@ -295,6 +295,21 @@ private slots:
         QVERIFY(panel.changeText().contains(
             QString("ball recall %1 → %2")
                 .arg(QString::number(after, 'f', 2), QString::number(before, 'f', 2))));
+        // The table edit again, and an annotation edit landing while it is being scored: the
+        // change is still shown, measured on the annotations as they now are.
+        QVERIFY(w.lutPanel().clearClass(Colour::Orange) > 0);
+        ui::AnnotationsDocument& truth = w.session().annotations();
+        FrameAnnotation f3 = *truth.frame("frame_000003.png");
+        f3.truth.output<Ball>().clear(); // its ball no longer there: one fewer to find
+        QVERIFY(truth.editFrame("frame_000003.png", f3, "no ball"));
+        QVERIFY(waitForEvaluation(w));
+        const ClassScore balls = *w.session().evaluation().report()->scores.of(perceptKind<Ball>());
+        const EvaluationScores* scored_before = w.session().evaluation().before();
+        QVERIFY(scored_before);
+        const ClassScore was = *scored_before->of(perceptKind<Ball>());
+        QCOMPARE(was.tp + was.fn, balls.tp + balls.fn); // the same annotations on both sides
+        QVERIFY2(was.recall() > balls.recall(), qPrintable(panel.changeText()));
+        QVERIFY2(panel.changeText().contains("ball recall"), qPrintable(panel.changeText()));
     }
 
     void annotationEditsAreScoredWithTheDetectionsMade()

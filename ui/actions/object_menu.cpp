@@ -113,9 +113,10 @@ void toggleInterpolation(MainWindow& w)
                .arg(t->title));
 }
 
-/// Asks how many frames (starting from the last answer) and propagates the selected object
-/// that many frames forward (`direction` 1) or back (-1).
-void propagateSelected(MainWindow& w, int direction, int& last)
+/// Asks how many frames (starting from the last answer, kept as `remembered`'s data, which the
+/// window's settings keep between sessions) and propagates the selected object that many frames
+/// forward (`direction` 1) or back (-1).
+void propagateSelected(MainWindow& w, int direction, QAction* remembered)
 {
     const auto t = targetOrHint(w);
     if (!t)
@@ -126,10 +127,10 @@ void propagateSelected(MainWindow& w, int direction, int& last)
                       : QObject::tr("Propagate to the previous frames"),
         QObject::tr("Copy the selected object to how many frames %1 this one?")
             .arg(direction > 0 ? QObject::tr("after") : QObject::tr("before")),
-        last, 1, 100000);
+        std::clamp(remembered->data().toInt(), 1, 100000), 1, 100000);
     if (!count)
         return;
-    last = *count;
+    remembered->setData(*count);
     AnnotationChanges changes(w.session().annotations().annotations());
     const std::size_t made = propagate(changes, annotationFrameKeys(w.session()), t->at, *t->kind,
                                        t->index, direction * *count);
@@ -153,15 +154,16 @@ void addObjectMenu(MainWindow& w)
     keyframe->setObjectName(QStringLiteral("object.keyframe"));
     interpolate->setObjectName(QStringLiteral("object.interpolate"));
     menu->addSeparator();
-    // How many frames the last propagation went, offered again (both ways).
-    auto last = std::make_shared<int>(10);
-    addMenuItem(menu, QObject::tr("Propagate to the next frames…"),
-                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), &w,
-                [&w, last] { propagateSelected(w, 1, *last); })
-        ->setObjectName(QStringLiteral("object.propagate_next"));
+    // How many frames the last propagation went (both ways) is the first action's data, offered
+    // again.
+    QAction* next = menu->addAction(QObject::tr("Propagate to the next frames…"));
+    next->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    next->setObjectName(QStringLiteral("object.propagate_next"));
+    next->setData(10);
+    QObject::connect(next, &QAction::triggered, &w, [&w, next] { propagateSelected(w, 1, next); });
     addMenuItem(menu, QObject::tr("Propagate to the previous frames…"),
                 QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P), &w,
-                [&w, last] { propagateSelected(w, -1, *last); })
+                [&w, next] { propagateSelected(w, -1, next); })
         ->setObjectName(QStringLiteral("object.propagate_previous"));
 
     // The checks show the selected object's flags (none selected: all clear).

@@ -40,7 +40,9 @@ struct EvaluationScan::Job
     int settings_serial = 0;
     /// Detections made with this job's table and settings (not run again).
     std::shared_ptr<const Detections> known;
-    bool edit = false; ///< follows a table or settings change
+    /// Detections made before the table or settings change this job follows (null: it follows
+    /// none): the scores before the change are theirs, on this job's annotations.
+    std::shared_ptr<const Detections> baseline;
     std::chrono::steady_clock::time_point requested;
 
     std::atomic<bool> cancel{false};
@@ -51,6 +53,9 @@ struct EvaluationScan::Job
 struct EvaluationScan::Outcome
 {
     std::optional<EvalReport> report;
+    /// The job's annotations scored with its baseline's detections (a frame the baseline lacks,
+    /// newly scored, with the report's: unchanged by the edit).
+    std::optional<EvaluationScores> before;
     std::size_t frames_run = 0;
     std::string error;
     bool cancelled = false;
@@ -112,6 +117,14 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
             out.error = report.error().message;
         else
             out.report = std::move(report).value();
+        if (out.report && job->baseline) {
+            Detections before = out.report->detected;
+            for (auto& [name, percepts] : before)
+                if (const auto b = job->baseline->find(name); b != job->baseline->end())
+                    percepts = b->second;
+            out.before =
+                fieldsight::evaluate(before, *job->truth, input.info().width, input.info().height);
+        }
     } catch (const std::bad_alloc&) {
         out.error = job->stream + ": not enough memory to evaluate it";
     } catch (const std::exception& e) {
@@ -134,6 +147,7 @@ void EvaluationScan::setStream(const QString& spec, std::shared_ptr<const Colour
     m_report.reset();
     m_detected.reset();
     m_before.reset();
+    m_baseline.reset();
     m_failing.clear();
     m_problem.clear();
     m_pending = !m_spec.isEmpty() && m_lut;
@@ -177,6 +191,11 @@ void EvaluationScan::schedule(bool edit)
         m_requested = std::chrono::steady_clock::now();
     m_pending = true;
     m_pending_edit = m_pending_edit || edit;
+    // What the change is measured against: the detections before the first change of a burst,
+    // kept until a report on the changed table and settings is in (whatever the annotations
+    // became meanwhile).
+    if (edit && !m_baseline)
+        m_baseline = m_detected;
     // Stale: its frames ran with what the change replaced. A run under annotations that changed
     // goes on: its detections still hold.
     if (m_job && edit)
@@ -225,6 +244,7 @@ bool EvaluationScan::nothingToScore()
     m_report.reset();
     m_detected.reset();
     m_before.reset();
+    m_baseline.reset();
     m_failing.clear();
     m_problem = m_truth && !m_truth->frames.empty()
                     ? tr("Nothing to score: no annotated frame is marked done or has a reviewed "
@@ -265,7 +285,7 @@ void EvaluationScan::start()
     job->settings_serial = m_settings_serial;
     if (!m_rerun_all && m_detected_serial == m_settings_serial)
         job->known = m_detected;
-    job->edit = m_pending_edit;
+    job->baseline = m_baseline;
     job->requested = m_requested;
     job->total = scoredCount(m_truth.get());
     m_pending_edit = false;
@@ -296,10 +316,8 @@ void EvaluationScan::onFinished()
         if (!out->error.empty()) {
             m_problem = QString::fromStdString(out->error);
         } else if (out->report) {
-            if (!job->edit)
-                m_before.reset();
-            else if (m_report && m_report_truth == job->truth_serial)
-                m_before = m_report->scores;
+            m_before = out->before;
+            m_baseline.reset(); // the change is measured
             m_report = std::move(out->report);
             m_report_truth = job->truth_serial;
             m_last_frames_run = out->frames_run;

@@ -88,8 +88,9 @@ public:
     const EvalReport* report() const { return m_report ? &*m_report : nullptr; }
     /// Each scored frame's detections in the last report, by its name in the annotations.
     const Detections& detected() const;
-    /// The scores before the change the last evaluation followed (a table or settings change),
-    /// on the same annotations; null when it followed no such change.
+    /// The scores before the change the last evaluation followed (a table or settings change):
+    /// the detections from before it, on the annotations of the last report (an annotation edit
+    /// landing meanwhile does not lose the change); null when it followed no such change.
     const EvaluationScores* before() const { return m_before ? &*m_before : nullptr; }
     /// The last report's disagreements, in stream order (then kind order).
     const std::vector<FailingFrame>& failing() const { return m_failing; }
@@ -146,6 +147,8 @@ private:
     std::shared_ptr<const Detections> m_detected;
     int m_detected_serial = -1;
     std::optional<EvaluationScores> m_before;
+    /// The detections before a table or settings change not yet measured (null: none).
+    std::shared_ptr<const Detections> m_baseline;
     std::vector<FailingFrame> m_failing;
     QString m_problem;
     double m_last_ms = -1;

@@ -330,9 +330,18 @@ void FrameView::paintEvent(QPaintEvent*)
             if (shape.dashed)
                 pen.setDashPattern({3, 2});
             draw(pen);
-            if (shape.selected)
-                for (const QPointF& handle : shape.handles.isEmpty() ? at : toView(shape.handles))
-                    p.fillRect(QRectF(handle - QPointF(3, 3), QSizeF(7, 7)), Qt::white);
+            if (shape.selected) {
+                const QPolygonF handles = shape.handles.isEmpty() ? at : toView(shape.handles);
+                for (int h = 0; h < handles.size(); ++h) {
+                    const QRectF box(handles[h] - QPointF(3, 3), QSizeF(7, 7));
+                    p.fillRect(box, Qt::white);
+                    if (h != shape.chosen_handle)
+                        continue;
+                    p.setPen(QPen(shape.colour, 2)); // the chosen one: ringed in its colour
+                    p.setBrush(Qt::NoBrush);
+                    p.drawRect(box.adjusted(-3, -3, 3, 3));
+                }
+            }
         }
     }
     // The brush under the cursor: a circle through the outer pixels' centres, in every panel.

@@ -91,6 +91,8 @@ WindowSettings WindowSettings::load()
                    s.value(QStringLiteral("tools/tolerance_cr"), 4).toInt()};
     w.brush_radius = s.value(QStringLiteral("tools/brush_radius"), 2).toInt();
     w.keep_others = s.value(QStringLiteral("tools/keep_others"), false).toBool();
+    w.propagate_frames =
+        std::clamp(s.value(QStringLiteral("tools/propagate_frames"), 10).toInt(), 1, 100000);
     w.soft_classes = s.value(QStringLiteral("tools/soft_classes"), false).toBool();
     w.preview = s.value(QStringLiteral("tools/preview"), true).toBool();
     return w;
@@ -131,6 +133,7 @@ void WindowSettings::save() const
     s.setValue(QStringLiteral("tools/tolerance_cr"), tolerance.cr);
     s.setValue(QStringLiteral("tools/brush_radius"), brush_radius);
     s.setValue(QStringLiteral("tools/keep_others"), keep_others);
+    s.setValue(QStringLiteral("tools/propagate_frames"), propagate_frames);
     s.setValue(QStringLiteral("tools/soft_classes"), soft_classes);
     s.setValue(QStringLiteral("tools/preview"), preview);
 }

@@ -33,6 +33,7 @@ struct WindowSettings
     bool keep_others = false;
     bool soft_classes = false;
     bool preview = true;
+    int propagate_frames = 10; ///< how far the last propagation of an object went
     /// Why the settings were not read (the window then starts with its defaults), or empty.
     QString problem;
 

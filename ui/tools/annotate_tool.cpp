@@ -184,6 +184,7 @@ void AnnotateTool::press(const ToolEvent& event)
     }
     const std::vector<EditShape> shapes = currentShapes();
     const bool polyline = m_kind.form == ShapeForm::Polyline;
+    m_point.reset();
     // The selected object's handles first; a polyline's points are always handles.
     std::optional<std::size_t> index = polyline && !shapes.empty() ? 0 : selected();
     const auto startDrag = [&](std::size_t i, std::optional<std::size_t> handle,
@@ -197,6 +198,8 @@ void AnnotateTool::press(const ToolEvent& event)
                       what.arg(text(m_kind.title)),
                       doc.newMerge()};
         select(i);
+        if (polyline)
+            m_point = handle;
     };
     if (index && *index < shapes.size()) {
         if (const auto handle = handleAt(handlesOf(m_kind.form, shapes[*index]), p, near)) {
@@ -321,6 +324,7 @@ void AnnotateTool::finishDraft()
 
 void AnnotateTool::cancel()
 {
+    m_point.reset();
     m_draft.clear();
     m_create_from.reset();
     m_drag.reset();
@@ -379,12 +383,26 @@ bool AnnotateTool::deleteSelection()
     if (!index)
         return false;
     AnnotationsDocument& doc = m_context.session.annotations();
+    if (const auto point = std::exchange(m_point, std::nullopt)) {
+        // A chosen point of a line of more than two: that point alone goes.
+        std::vector<EditShape> shapes = currentShapes();
+        if (*index < shapes.size() && *point < shapes[*index].points.size() &&
+            shapes[*index].points.size() > 2) {
+            FrameAnnotation after = *doc.frame(m_frame);
+            shapes[*index].points.erase(shapes[*index].points.begin() + std::ptrdiff_t(*point));
+            setShape(after, m_kind, *index, shapes[*index]);
+            doc.editFrame(m_frame, std::move(after),
+                          tr("%1: delete a point").arg(text(m_kind.title)));
+            return true;
+        }
+    }
     AnnotationChanges changes(doc.annotations());
-    FrameAnnotation& frame = changes.edit(doc.keyOf(currentFrameName(m_context.session)));
-    const ObjectFlags flags = frame.flagsOf(m_kind.truth_key, *index);
-    removeObject(frame, m_kind, *index);
-    if (flags.keyframe) // the frames it was interpolated to follow the keyframes left
-        interpolateTrack(changes, annotationFrameKeys(m_context.session), m_kind, flags.track);
+    const std::vector<std::string> frames = annotationFrameKeys(m_context.session);
+    const std::string key = doc.keyOf(currentFrameName(m_context.session));
+    const auto at = std::find(frames.begin(), frames.end(), key);
+    if (at == frames.end())
+        return false;
+    removeFromTrack(changes, frames, std::size_t(at - frames.begin()), m_kind, *index);
     m_context.selection.clear();
     doc.edit(tr("%1: delete").arg(text(m_kind.title)), changes.frames());
     return true;

@@ -82,6 +82,8 @@ private:
     PointF m_create_to;
     std::vector<PointF> m_draft; ///< a polyline being drawn
     std::optional<PointF> m_hover;
+    /// The polyline point pressed last on the selected line: Delete removes that point alone.
+    std::optional<std::size_t> m_point;
     double m_zoom = 1; ///< screen px per image px at the last press
 };
 

@@ -65,6 +65,8 @@ ToolOutline AnnotateTool::outline() const
     const auto chosen = selected();
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         OutlineShape s = shapeOf(shapes[i], chosen == i);
+        if (chosen == i && m_point && *m_point < std::size_t(s.handles.size()))
+            s.chosen_handle = int(*m_point);
         const ObjectFlags flags = frame->flagsOf(m_kind.truth_key, i);
         s.dashed = flags.interpolated;
         if (flags.concealed) // partly hidden: drawn faint
@@ -130,6 +132,8 @@ ToolPreview AnnotateTool::preview(std::optional<QPoint>) const
                 parts << tr("interpolated");
             if (f.concealed)
                 parts << tr("concealed");
+            if (m_point && m_kind.form == ShapeForm::Polyline)
+                parts << tr("point %1 chosen: Delete removes it").arg(*m_point + 1);
             p.text = parts.join(QStringLiteral(" · "));
         }
     }

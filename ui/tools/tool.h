@@ -70,9 +70,10 @@ struct OutlineShape
     double radius = -1; ///< >= 0: a circle of this radius around the polygon's one point
     bool closed = true;
     QColor colour;
-    bool selected = false; ///< drawn thicker, with its handles marked
-    bool dashed = false;   ///< made by the program (interpolated), not placed by hand
-    QPolygonF handles;     ///< marked when selected (empty: the polygon's points)
+    bool selected = false;  ///< drawn thicker, with its handles marked
+    bool dashed = false;    ///< made by the program (interpolated), not placed by hand
+    QPolygonF handles;      ///< marked when selected (empty: the polygon's points)
+    int chosen_handle = -1; ///< >= 0: this handle is chosen (Delete acts on it), marked apart
 };
 
 struct ToolOutline

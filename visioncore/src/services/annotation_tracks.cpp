@@ -257,6 +257,41 @@ bool setInterpolate(AnnotationChanges& changes, const std::vector<std::string>& 
     return true;
 }
 
+bool removeFromTrack(AnnotationChanges& changes, const std::vector<std::string>& frames,
+                     std::size_t at, const PerceptKind& kind, std::size_t index)
+{
+    const auto object = objectAt(changes, frames, at, kind, index);
+    if (!object)
+        return false;
+    const ObjectFlags flags = object->flags;
+    removeObject(changes.edit(frames[at]), kind, index);
+    if (flags.track <= 0)
+        return true;
+    if (flags.interpolated) {
+        // Walk out from the deleted object to the keyframes around it: the objects between keep
+        // their shapes as plain objects of the track; the later keyframe stops interpolating.
+        const auto settle = [&](std::size_t i) {
+            const FrameAnnotation* frame = changes.find(frames[i]);
+            const auto there = frame ? findTrack(*frame, kind, flags.track) : std::nullopt;
+            if (!there)
+                return false;
+            ObjectFlags f = frame->flagsOf(kind.truth_key, *there);
+            const bool keyframe = f.keyframe;
+            if (keyframe && i > at)
+                f.interpolate = false;
+            f.interpolated = false;
+            changes.edit(frames[i]).setFlags(kind.truth_key, *there, f);
+            return keyframe;
+        };
+        for (std::size_t i = at; i-- > 0 && !settle(i);) {
+        }
+        for (std::size_t i = at + 1; i < frames.size() && !settle(i); ++i) {
+        }
+    }
+    interpolateTrack(changes, frames, kind, flags.track);
+    return true;
+}
+
 std::size_t propagate(AnnotationChanges& changes, const std::vector<std::string>& frames,
                       std::size_t at, const PerceptKind& kind, std::size_t index, int count)
 {

@@ -186,6 +186,16 @@ const std::vector<const PerceptKind*>& scoredKinds()
     return kinds;
 }
 
+std::string scoredClassName(const PerceptKind& kind)
+{
+    const char* names[] = {"ball", "goalpost", "obstacle", "field_line"};
+    const std::vector<const PerceptKind*>& kinds = scoredKinds();
+    for (std::size_t k = 0; k < kinds.size(); ++k)
+        if (kinds[k]->key == kind.key)
+            return names[k];
+    return std::string(kind.key);
+}
+
 const PerceptKind& boundaryKind()
 {
     return perceptKind<FieldBoundary>();

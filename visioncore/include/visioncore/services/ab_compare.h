@@ -1,6 +1,7 @@
 // A/B comparison of two colour tables or two parameter sets over one stream: the pipeline runs
-// twice over the annotated frames, each frame is scored with the matching of SPEC §5.3
-// (scoreFrame), and per class the frames that got fixed or broken are listed. The command line
+// twice over the scored frames (those `eval` scores), each frame is matched by matchFrame() (the
+// one matching path of `eval` and the window: concealed objects apart, reviewed kinds, field
+// lines), and per class the frames that got fixed or broken are listed. The command line
 // (`fieldsight compare`) and the window's dialog both drive it.
 #pragma once
 
@@ -33,7 +34,7 @@ struct AbFrame
     ClassScore a;
     ClassScore b;
 
-    /// A miss or a false detection.
+    /// A miss (of an object not concealed) or a false detection.
     static bool wrong(const ClassScore& s) { return s.fp > 0 || s.fn > 0; }
 };
 
@@ -41,7 +42,7 @@ struct AbFrame
 struct AbClass
 {
     const PerceptKind* kind = nullptr; ///< from the percept registry
-    std::string name;                  ///< as `eval` names the class ("ball")
+    std::string name;                  ///< as `eval` names the class (scoredClassName)
     std::size_t frames = 0;            ///< frames where the class's truth is complete
     ClassScore a;                      ///< summed over those frames
     ClassScore b;
@@ -52,7 +53,7 @@ struct AbClass
 
 struct AbComparison
 {
-    std::size_t frames = 0; ///< annotated frames scored (at least one class complete)
+    std::size_t frames = 0; ///< scored frames (isScored: done, or some kind reviewed)
     std::vector<AbClass> classes;
     /// The field boundary's mean error over the frames where its truth is complete and both
     /// boundaries exist (EvaluationScores::boundaryMeanError; negative: none).
@@ -63,15 +64,9 @@ struct AbComparison
     bool cancelled = false; ///< then nothing else is filled in
 };
 
-/// The frames of `truth` with at least one complete class (done, or a reviewed kind), by stream
-/// index (a .strm's frame "frame_000000" is the annotations' "frame_000000.png": found by stem).
-/// Such a frame the stream lacks is bad input, named with `truth_path`.
-Result<std::vector<std::pair<std::size_t, std::string>>>
-completeFrames(const StreamReader& reader, const std::string& stream, const Annotations& truth,
-               const std::string& truth_path);
-
-/// Runs `input` (side A: its table and parameters) and then side `b` over the frames of
-/// completeFrames() and compares them. Progress counts both runs (2 x frames); a cancel ends with
+/// Runs `input` (side A: its table and parameters) and then side `b` over the scored frames of
+/// `truth` (scoredFrameIndices: a scored frame the stream lacks is an Error naming `truth_path`)
+/// and compares them. Progress counts both runs (2 x frames); a cancel ends with
 /// `cancelled` set. Bad input (a frame that cannot be read) is an Error.
 Result<AbComparison> compareAb(StreamInput& input, const AbSide& b, const Annotations& truth,
                                const std::string& truth_path, int threads,

@@ -84,6 +84,14 @@ bool setKeyframe(AnnotationChanges& changes, const std::vector<std::string>& fra
 bool setInterpolate(AnnotationChanges& changes, const std::vector<std::string>& frames,
                     std::size_t at, const PerceptKind& kind, std::size_t index, bool interpolate);
 
+/// Deletes object `index` of `kind` on `frames[at]` so that it stays deleted. A keyframe: the
+/// track is interpolated again without it. An interpolated object: its span (from the track's
+/// keyframe before to the one after) stops being interpolated, the span's other objects kept as
+/// they are now (no longer flagged interpolated), so a later edit of the keyframes does not bring
+/// the deleted one back. Returns false when there is no such object.
+bool removeFromTrack(AnnotationChanges& changes, const std::vector<std::string>& frames,
+                     std::size_t at, const PerceptKind& kind, std::size_t index);
+
 /// Copies object `index` of `kind` on `frames[at]` to the next `count` frames (the previous
 /// -`count` when negative, up to the stream's ends) as objects of its track (an object without
 /// a track gets a fresh one): the track's object on a frame there takes the shape, a keyframe

@@ -105,6 +105,9 @@ double polylineMeanAbsDifference(const std::vector<PointF>& a, const std::vector
 /// The kinds with a matching rule, in the order every score lists them: balls, goalposts,
 /// obstacles, field lines.
 const std::vector<const PerceptKind*>& scoredKinds();
+/// The name `eval` and `compare` print a scored kind's class by, and key it with in their JSON
+/// ("ball", "goalpost", "obstacle", "field_line"); another kind's results key.
+std::string scoredClassName(const PerceptKind& kind);
 /// The kind scored by its boundary error (SPEC §5.3) instead of matching: the field boundary.
 const PerceptKind& boundaryKind();
 
