@@ -15,3 +15,13 @@ function(fieldsight_target_options target)
         target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
     endif()
 endfunction()
+
+# Precompiled headers for the libraries: most of a translation unit's compile time is parsing the
+# same big headers (nlohmann-json, OpenCV's core, Qt's widgets), so each library parses them once.
+# A library's own headers are not in them (an edit would rebuild the library whole).
+option(FIELDSIGHT_PCH "Precompile the big third-party headers of each library" ON)
+function(fieldsight_precompile target)
+    if(FIELDSIGHT_PCH)
+        target_precompile_headers(${target} PRIVATE ${ARGN})
+    endif()
+endfunction()

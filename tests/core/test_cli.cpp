@@ -206,8 +206,10 @@ private slots:
         for (const QString& f : files)
             QVERIFY2(bytes(s + "/" + f) == before[f], qPrintable(f));
         const QString own = path("own_synth");
-        QCOMPARE(fieldsight({"synth", "--frames", "3", "--out", own}).status, 0);
-        QCOMPARE(fieldsight({"synth", "--frames", "2", "--out", own}).status, 0);
+        // Small frames: the rule is tested, not the renderer (slow under the sanitizers).
+        const QStringList small{"--width", "64", "--height", "48"};
+        QCOMPARE(fieldsight(QStringList{"synth", "--frames", "3", "--out", own} + small).status, 0);
+        QCOMPARE(fieldsight(QStringList{"synth", "--frames", "2", "--out", own} + small).status, 0);
         QCOMPARE(QDir(own).entryList({"frame_*.png"}, QDir::Files).size(), 2); // nothing mixed
 
         // A new file beside the frames is still fine.
