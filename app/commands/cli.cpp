@@ -203,7 +203,8 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
     if (!input)
         return input.error();
     printWarnings(ctx.err, input.value().info());
-    input.value().params = std::move(params).value();
+    // The stream's own parameters, then --params and --set over them.
+    input.value().params.merge(params.value());
     return input;
 }
 

@@ -14,6 +14,8 @@ int compareCommand(const QStringList& args, const Context& ctx);
 /// `annotations export` (COCO JSON) and `annotations import-dnt` (the Dutch Nao Team's labels).
 int annotationsCommand(const QStringList& args, const Context& ctx);
 int synthCommand(const QStringList& args, const Context& ctx);
+/// `import LOG --out DIR`: a robot's log folder (a B-Human log) made into a stream folder.
+int importCommand(const QStringList& args, const Context& ctx);
 int lutCommand(const QStringList& args, const Context& ctx);
 /// The GUI: makes the QApplication from `argc` and `argv` (which hold the program name, then
 /// "gui" or nothing, then the GUI's arguments), opens the main window and runs it.

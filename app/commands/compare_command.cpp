@@ -145,7 +145,8 @@ std::string compareJson(const AbComparison& c, const Sides& s)
     return jsonText(j, 2) + "\n";
 }
 
-/// Side B from --lut-b and --params-b (with every --set applied to both sides).
+/// Side B from --lut-b and --params-b (over the stream's own parameters, with every --set applied
+/// to both sides).
 Result<AbSide> sideB(const QCommandLineParser& parser, const Context& ctx, const StreamInput& a)
 {
     AbSide b;
@@ -165,9 +166,14 @@ Result<AbSide> sideB(const QCommandLineParser& parser, const Context& ctx, const
     auto loaded = ParamSet::load(b.params_path);
     if (!loaded)
         return Error{"--params-b " + loaded.error().message};
-    b.params = std::move(loaded).value();
-    if (Status s = b.params.check(ctx.pipeline); !s)
+    if (Status s = loaded.value().check(ctx.pipeline); !s)
         return Error{"--params-b " + b.params_path + ": " + s.error().message};
+    // Over the stream's own parameters (A's --params is replaced, not added to).
+    auto own = streamParams(a.info(), ctx.pipeline);
+    if (!own)
+        return own.error();
+    b.params = std::move(own).value();
+    b.params.merge(loaded.value());
     for (const QString& setting : parser.values("set"))
         if (Status s = b.params.parseSetting(setting.toStdString()); !s)
             return Error{"--set " + s.error().message};

@@ -63,7 +63,9 @@ std::string evalTable(const EvalReport& report)
         std::snprintf(line, sizeof line,
                       "field boundary: no frame with both a detected and a true boundary\n");
     text += line;
-    text += std::string("(") + kPrecisionNote + ")\n";
+    text += "("; // in steps: GCC 12 misreads a + of these as out of bounds
+    text += kPrecisionNote;
+    text += ")\n";
     return text;
 }
 

@@ -34,6 +34,9 @@ std::string usageText(const Pipeline& pipeline)
            "[--orientation DEG]\n"
            "  fieldsight annotations import-dnt LABELS --stream STREAM [--out FILE] "
            "[--post-width PX]\n"
+           "  fieldsight import LOG --out DIR [--set STAGE.PARAM=VALUE]...   (a B-Human log "
+           "folder\n"
+           "                          made a stream: frames, kinematic horizons, colour table)\n"
            "  fieldsight help\n"
            "\n"
            "STREAM is a folder of images, a .strm file, a video file or camera:N.\n"
@@ -60,6 +63,8 @@ int runCommandWord(const QString& command, const QStringList& args, const Contex
         return annotationsCommand(args, ctx);
     if (command == "synth")
         return synthCommand(args, ctx);
+    if (command == "import")
+        return importCommand(args, ctx);
     if (command == "lut")
         return lutCommand(args, ctx);
     if (command == "help" || command == "--help" || command == "-h") {

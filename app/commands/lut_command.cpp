@@ -202,8 +202,11 @@ int lutCommand(const QStringList& args, const Context& ctx)
                    "them.\n";
         return kExitOk;
     }
-    if (command.isEmpty())
-        return badInput(ctx, std::string("lut: missing command; ") + kLutUsage);
+    if (command.isEmpty()) {
+        std::string text = "lut: missing command; "; // in steps: GCC 12 misreads a + here
+        text += kLutUsage;
+        return badInput(ctx, text);
+    }
     return badInput(ctx, "lut: unknown lut command '" + command + "'; " + kLutUsage);
 }
 

@@ -15,6 +15,7 @@
 
 #include <QTemporaryDir>
 
+#include <filesystem>
 #include <set>
 
 using namespace fieldsight;
@@ -173,6 +174,37 @@ private slots:
         QVERIFY(doc.at("classes").at("goalpost").at("fixed").empty());
         QCOMPARE(doc.at("classes").at("goalpost").at("a"),
                  doc.at("classes").at("goalpost").at("b"));
+    }
+
+    void aStreamsOwnParametersApplyUnderTheCommandLines()
+    {
+        // lab2 copied, its manifest naming a parameter file no ball passes.
+        const std::string stream = path("own_params");
+        std::filesystem::create_directories(stream);
+        for (const auto& entry : std::filesystem::directory_iterator(lab2()))
+            std::filesystem::copy(entry.path(), stream + "/" + entry.path().filename().string());
+        Json manifest = parsed(test::readAll(stream + "/stream.json"));
+        manifest["params"] = "params.json";
+        test::writeBytes(stream + "/stream.json", manifest.dump());
+        test::writeBytes(stream + "/params.json", R"({"format": "fieldsight-params/1",
+                                                     "stages": {"ball": {"min_radius": 100}}})");
+        const std::string json = path("own_params_eval.json");
+        const auto ballTp = [&](std::vector<std::string> args) {
+            args.insert(args.begin(), {"eval", stream, "--json", json});
+            const Outcome o = fieldsight(args);
+            if (o.status != 0)
+                return -1;
+            return parsed(test::readAll(json)).at("classes").at("ball").at("tp").get<int>();
+        };
+        QCOMPARE(ballTp({}), 0);
+        QVERIFY(ballTp({"--set", "ball.min_radius=2"}) > 20); // --set over the stream's file
+
+        // A file the manifest names that is missing: bad input naming it.
+        std::filesystem::remove(stream + "/params.json");
+        const Outcome o = fieldsight({"eval", stream});
+        QCOMPARE(o.status, 2);
+        QVERIFY2(o.err.find(stream + "/params.json") != std::string::npos, o.err.c_str());
+        QVERIFY2(o.err.find("\"params\"") != std::string::npos, o.err.c_str());
     }
 
     void badUsageIsRefusedBeforeAnythingIsWritten()

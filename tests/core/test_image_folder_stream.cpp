@@ -290,6 +290,8 @@ private slots:
             {R"({"format": "fieldsight-stream/9"})",
              "unsupported format \"fieldsight-stream/9\" (expected \"fieldsight-stream/1\")"},
             {R"({"lut": 5})", "\"lut\" must be a string (a file name relative to the folder)"},
+            {R"({"params": ["a.json"]})", "\"params\" must be a string (a fieldsight-params/1 file "
+                                          "name relative to the folder)"},
             {R"({"camera": {"fov_deg": [60]}})",
              "\"camera.fov_deg\" must be an array of two numbers"},
             {R"({"frames": [{"file": "a.png", "horizon": "high"}]})",

@@ -3,7 +3,8 @@
 // undone and redone through Edit > Undo and Redo, checking the document's bytes each time; the
 // history dock follows the document edited last; a tool added by this test alone (FakeTool, one
 // registration line) gets its button, menu item and shortcut and receives the view's mouse events;
-// every question goes through the dialogs seam.
+// every question goes through the dialogs seam; a stream's own parameters are saved to it and
+// applied when it opens.
 #include "support/test_files.h"
 #include "support/fake_stage.h"
 #include "support/fake_tool.h"
@@ -420,6 +421,56 @@ private slots:
         QVERIFY(w.session().lut().findRecovery().has_value()); // the edits are not lost
         QCOMPARE(QFileInfo(w.session().stream().streamSpec()).canonicalFilePath(),
                  QFileInfo(a).canonicalFilePath());
+    }
+
+    /// Pipeline > Save parameters to the stream writes them beside its frames and names them in
+    /// its manifest; opening the stream applies them (one undo step); a params.json the stream
+    /// does not name is not written over.
+    void aStreamsOwnParametersAreSavedToItAndApplied()
+    {
+        const QString stream = copyStream("own_params");
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, stream));
+        ui::PipelineSettings& settings = w.session().settings();
+        QVERIFY(settings.paramChanges().empty());
+        QVERIFY(settings.setParam("ball", "min_radius", 4).ok());
+        menuAction(w, "pipeline.save_params_to_stream")->trigger();
+        auto saved = ParamSet::load((stream + "/params.json").toStdString());
+        QVERIFY2(saved.ok(), saved ? "" : saved.error().message.c_str());
+        QCOMPARE(saved.value().values, settings.paramChanges().values);
+        QFile manifest(stream + "/stream.json");
+        QVERIFY(manifest.open(QIODevice::ReadOnly));
+        QVERIFY(manifest.readAll().contains("\"params\": \"params.json\""));
+
+        // Another stream (none of its own: the defaults), then this one: its parameters again.
+        QVERIFY(openAndWait(w, sampleStream()));
+        QVERIFY(settings.paramChanges().empty());
+        QVERIFY(openAndWait(w, stream));
+        QCOMPARE(settings.paramValue("ball", "min_radius"), 4.0);
+        settings.undoStack().undo(); // the stream's parameters were one step
+        QVERIFY(settings.paramChanges().empty());
+        settings.undoStack().redo();
+
+        // Saved again: to the file the manifest names.
+        QVERIFY(settings.setParam("ball", "min_radius", 5).ok());
+        menuAction(w, "pipeline.save_params_to_stream")->trigger();
+        QCOMPARE(ParamSet::load((stream + "/params.json").toStdString()).value().values,
+                 settings.paramChanges().values);
+
+        // A folder with a params.json of someone else's: left as it is, and the window says so.
+        const QString other = copyStream("foreign_params");
+        QFile foreign(other + "/params.json");
+        QVERIFY(foreign.open(QIODevice::WriteOnly));
+        foreign.write("not ours");
+        foreign.close();
+        QVERIFY(openAndWait(w, other));
+        menuAction(w, "pipeline.save_params_to_stream")->trigger();
+        QFile kept(other + "/params.json");
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), QByteArray("not ours"));
+        QVERIFY(!QFileInfo::exists(other + "/stream.json"));
+        QVERIFY2(w.lastMessage().contains("not written over"), qPrintable(w.lastMessage()));
     }
 
     void questionsGoThroughTheDialogsSeam()

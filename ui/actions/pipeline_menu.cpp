@@ -6,9 +6,52 @@
 #include "ui/main_window.h"
 #include "ui/panels/ab_compare_dialog.h"
 
+#include "visioncore/io/orientation.h"
+
 #include <QMenuBar>
 
+#include <filesystem>
+
 namespace fieldsight::ui {
+
+namespace {
+
+/// Saves the parameters in use as the stream's own: to the file its manifest names, or to a new
+/// params.json in its folder, which the manifest then names (so the stream opens with them, in
+/// the window and on the command line). Never over a file the stream does not name.
+void saveParamsToStream(MainWindow& w)
+{
+    StreamDocument& stream = w.session().stream();
+    const StreamInfo& info = stream.info();
+    if (!stream.hasStream() || info.kind != StreamKind::ImageFolder) {
+        w.showMessage(QObject::tr("Only a folder of images keeps its own parameters (in its "
+                                  "stream.json); use Save parameters… for this stream"));
+        return;
+    }
+    const std::filesystem::path folder(info.path);
+    const bool named = !info.params.empty();
+    const std::string file = named ? info.params : (folder / "params.json").string();
+    std::error_code ec;
+    if (!named && std::filesystem::exists(std::filesystem::symlink_status(file, ec))) {
+        w.showMessage(QObject::tr("%1 exists and the stream does not name it as its parameters: "
+                                  "it is not written over (use Save parameters…)")
+                          .arg(fromLocalPath(file)));
+        return;
+    }
+    Status s = w.session().settings().paramChanges().save(file);
+    if (s && !named)
+        s = writeStreamParams(info.path, file);
+    if (!s) {
+        w.showMessage(QString::fromStdString(s.error().message));
+        return;
+    }
+    stream.setParamsFile(file);
+    w.showMessage(QObject::tr("Saved the parameters as the stream's own (%1): it opens with them")
+                      .arg(fromLocalPath(file)),
+                  false);
+}
+
+} // namespace
 
 void addPipelineMenu(MainWindow& w)
 {
@@ -32,6 +75,9 @@ void addPipelineMenu(MainWindow& w)
         else
             w.showMessage(QObject::tr("Saved the parameters to %1").arg(path), false);
     });
+    pipe->addAction(QObject::tr("Save parameters to the stream"), &w,
+                    [&w] { saveParamsToStream(w); })
+        ->setObjectName(QStringLiteral("pipeline.save_params_to_stream"));
     pipe->addAction(QObject::tr("Load parameters…"), &w, [&w, &session] {
         const QString path = Dialogs::current().openFile(&w, QObject::tr("Load parameters"), {},
                                                          QObject::tr("Parameter sets (*.json)"));

@@ -194,6 +194,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     m_warnings = opened->warnings;
     const QString spec = opened->spec;
     const QString lut_path = opened->lut_path;
+    const std::optional<ParamSet> params = opened->params;
     std::shared_ptr<const ColourLut> table = opened->lut;
     // Its annotations just before it, so its first frame is drawn with its own truth. Unsaved
     // annotation edits of the stream before are the window's to save or drop before it opens
@@ -212,6 +213,11 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
+    // The stream's own parameters replace those in use (one step: Undo brings them back); a
+    // stream without a parameter file runs with the pipeline's defaults.
+    if (params && !(params->values == m_settings->paramChanges().values))
+        (void)m_settings->setParamChanges(*params,
+                                          tr("Parameters of %1").arg(QFileInfo(spec).fileName()));
     const StreamOptions options{m_stream->orientation()};
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());

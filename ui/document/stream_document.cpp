@@ -155,6 +155,13 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
     else
         opened->source->reader = std::move(r);
 
+    // The stream's own parameters: a bad file is said, and the stream opens without them.
+    if (auto params = streamParams(opened->info, pipeline); params)
+        opened->params = std::move(params).value();
+    else if (opened->info.kind != StreamKind::Camera)
+        opened->warnings << QString::fromStdString(params.error().message) +
+                                tr("; the stream opened with the parameters in use");
+
     opened->annotations_path = AnnotationsDocument::defaultPath(spec);
     std::error_code ec;
     if (!opened->annotations_path.isEmpty() &&
@@ -194,6 +201,12 @@ const StreamInfo& StreamDocument::info() const
 {
     static const StreamInfo none;
     return m_stream ? m_stream->info : none;
+}
+
+void StreamDocument::setParamsFile(const std::string& path)
+{
+    if (m_stream)
+        m_stream->info.params = path;
 }
 
 QString StreamDocument::frameName(std::size_t index) const

@@ -31,6 +31,9 @@ struct OpenedStream
     QString annotations_path; ///< where the stream keeps its annotations (empty: a camera)
     Annotations annotations;  ///< as read from there (none when absent or damaged)
     QString annotations_problem; ///< why the file there could not be read
+    /// The stream's own stage parameters (its manifest's "params"; empty: none), or none when
+    /// its file could not be used (said in the warnings).
+    std::optional<ParamSet> params;
 };
 
 class AnnotationsDocument;
@@ -68,6 +71,8 @@ public:
     bool hasStream() const { return m_stream != nullptr; }
     QString streamSpec() const { return m_stream ? m_stream->spec : QString(); }
     const StreamInfo& info() const;
+    /// The stream's manifest now names `path` as its parameter file (it was just written there).
+    void setParamsFile(const std::string& path);
     bool live() const { return m_stream && m_stream->info.kind == StreamKind::Camera; }
     /// Frames of the stream (0 for a camera).
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }

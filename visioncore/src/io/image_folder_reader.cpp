@@ -207,6 +207,11 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     } else if (fs::is_regular_file(folder / "default.lut", ec)) {
         info.default_lut = (folder / "default.lut").string();
     }
+    if (manifest.params) {
+        // Kept even if missing, so loading it reports the bad name.
+        const fs::path params(*manifest.params);
+        info.params = (params.is_absolute() ? params : folder / params).string();
+    }
 
     auto reader = std::make_unique<ImageFolderReader>(std::move(info), folder, std::move(files),
                                                       std::move(meta), manifest.pixel_format);

@@ -103,6 +103,12 @@ Result<Manifest> readManifest(const std::string& path, std::size_t frames)
             return bad("\"lut\" must be a string (a file name relative to the folder)");
         manifest.lut = it->get<std::string>();
     }
+    if (const auto it = root.find("params"); it != root.end()) {
+        if (!it->is_string())
+            return bad("\"params\" must be a string (a fieldsight-params/1 file name relative to "
+                       "the folder)");
+        manifest.params = it->get<std::string>();
+    }
     if (const auto it = root.find("camera"); it != root.end()) {
         if (!it->is_object())
             return bad("\"camera\" must be an object");
@@ -230,18 +236,38 @@ Status writeStreamOrientation(const std::string& folder, Orientation o)
     });
 }
 
-Status writeStreamLut(const std::string& folder, const std::string& lut)
+namespace {
+
+/// `file` as the manifest of `folder` names it: relative to the folder when inside it, so the
+/// stream can move with its files.
+std::string namedFromFolder(const std::string& folder, const std::string& file)
 {
     namespace fs = std::filesystem;
-    // Inside the folder: named relative to it, so the stream can move with its table.
     std::error_code ec;
     const fs::path base = fs::weakly_canonical(fs::absolute(folder, ec), ec);
-    const fs::path table = fs::weakly_canonical(fs::absolute(lut, ec), ec);
-    fs::path named = table.lexically_relative(base);
+    const fs::path target = fs::weakly_canonical(fs::absolute(file, ec), ec);
+    fs::path named = target.lexically_relative(base);
     if (named.empty() || *named.begin() == "..")
-        named = table;
+        named = target;
+    return named.string();
+}
+
+} // namespace
+
+Status writeStreamLut(const std::string& folder, const std::string& lut)
+{
     return updateManifest(folder, "table",
-                          [&named](nlohmann::ordered_json& root) { root["lut"] = named.string(); });
+                          [named = namedFromFolder(folder, lut)](nlohmann::ordered_json& root) {
+                              root["lut"] = named;
+                          });
+}
+
+Status writeStreamParams(const std::string& folder, const std::string& params)
+{
+    return updateManifest(folder, "parameter file",
+                          [named = namedFromFolder(folder, params)](nlohmann::ordered_json& root) {
+                              root["params"] = named;
+                          });
 }
 
 } // namespace fieldsight

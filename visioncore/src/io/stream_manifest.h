@@ -32,6 +32,8 @@ struct Manifest
     /// "flipped": true is 180, as .strm's flipped).
     Orientation orientation = Orientation::Upright;
     std::optional<std::string> lut;
+    /// The stream's own stage parameters: a fieldsight-params/1 file, relative to the folder.
+    std::optional<std::string> params;
     std::optional<std::array<double, 2>> fov_deg;
     std::map<std::string, FrameMeta> frames; ///< by file name
 };

@@ -19,6 +19,20 @@
 
 namespace fieldsight {
 
+Result<ParamSet> streamParams(const StreamInfo& info, const Pipeline& pipeline)
+{
+    if (info.params.empty())
+        return ParamSet{};
+    const std::string named =
+        info.path + " names the parameter file " + info.params + " (\"params\")";
+    auto params = ParamSet::load(info.params);
+    if (!params)
+        return Error{named + ": " + params.error().message};
+    if (Status s = params.value().check(pipeline); !s)
+        return Error{named + ": " + s.error().message};
+    return params;
+}
+
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
                                     const Pipeline& pipeline, const StreamOptions& options)
 {
@@ -36,6 +50,10 @@ Result<StreamInput> openStreamInput(const std::string& stream, const std::string
     if (!lut)
         return lut.error();
     input.lut = std::make_shared<const ColourLut>(std::move(lut).value());
+    auto params = streamParams(input.info(), pipeline);
+    if (!params)
+        return params.error();
+    input.params = std::move(params).value();
     return input;
 }
 

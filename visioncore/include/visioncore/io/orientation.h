@@ -44,4 +44,9 @@ Status writeStreamOrientation(const std::string& folder, Orientation o);
 /// writeStreamOrientation.
 Status writeStreamLut(const std::string& folder, const std::string& lut);
 
+/// Sets "params" in the stream.json of the image folder `folder` to the parameter file `params`
+/// (named relative to the folder when it is inside it), so the stream opens with those
+/// parameters; the same rules as writeStreamOrientation.
+Status writeStreamParams(const std::string& folder, const std::string& params);
+
 } // namespace fieldsight

@@ -25,6 +25,9 @@ struct StreamInfo
     int height = 0; ///< px
     std::size_t frame_count = 0;
     std::string default_lut; ///< the manifest's lut or <folder>/default.lut; empty if none exists
+    /// The stream's own stage parameters (the manifest's "params"), applied when it is opened;
+    /// empty when it names none.
+    std::string params;
     std::optional<std::array<double, 2>> fov_deg; ///< deg, horizontal and vertical
     /// What the reader skipped, one line each naming it (a frame entry that is a dangling link,
     /// a link loop, a FIFO): the stream opened without it. Commands print these, the window

@@ -40,8 +40,13 @@ struct StreamInput
 /// Every id names a stage of `pipeline` that can be skipped.
 Status checkSkip(const Pipeline& pipeline, const std::vector<std::string>& skip);
 
+/// The stream's own parameters (StreamInfo::params; none: empty), checked against `pipeline`.
+/// Errors name the stream's manifest, the file and the problem.
+Result<ParamSet> streamParams(const StreamInfo& info, const Pipeline& pipeline);
+
 /// Opens `stream` (with `options`: its orientation) and the LUT `lut_path`, or the stream's
-/// default LUT when `lut_path` is empty. Errors name the file and the problem.
+/// default LUT when `lut_path` is empty, with the stream's own parameters (streamParams). Errors
+/// name the file and the problem.
 Result<StreamInput> openStreamInput(const std::string& stream, const std::string& lut_path,
                                     const Pipeline& pipeline = Pipeline::standard(),
                                     const StreamOptions& options = {});
