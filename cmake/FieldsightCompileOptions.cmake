@@ -10,8 +10,9 @@ function(fieldsight_target_options target)
             -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
-    if(FIELDSIGHT_FUZZ)
-        # Coverage for libFuzzer in every library the fuzz targets link (tests/fuzz/).
+    if(FIELDSIGHT_FUZZ AND target MATCHES "^(fieldsight_visioncore|fieldsight_fuzz_support|fuzz_)")
+        # Coverage for libFuzzer in what the fuzz targets run (tests/fuzz/: the core and
+        # themselves); nothing else needs it.
         target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
     endif()
 endfunction()

@@ -68,7 +68,8 @@ int guiCommand(int& argc, char** argv, const Context& ctx)
     ui::identifyApplication();
 
     ui::MainWindow window(ctx.pipeline);
-    window.session().settings().reset(params); // checked above
+    window.session().settings().reset(params);  // checked above
+    window.session().setParamOverrides(params); // over every stream's own, as on the command line
     window.show();
     if (!positional.isEmpty())
         window.files().openStream(positional.front(), lut);

@@ -16,12 +16,15 @@
 
 #include <QtTest>
 
+#include <algorithm>
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -200,17 +203,20 @@ void checkFloor(const char* name, const ClassScore& c, double precision, double 
             QString(": under the floor (precision %1, recall %2)").arg(precision).arg(recall)));
 }
 
-/// Scores `stream` (goal colour `goal_colour`) against `truth` with evaluateStream, prints the
-/// table and every frame that disagrees, and checks the per-frame scores add up to the total.
+/// Scores `stream` (with the parameter `settings`) against `truth` with evaluateStream, prints
+/// the table and every frame that disagrees, and checks the per-frame scores add up to the total.
+/// `boundary_errors`, when given, gets each frame's boundary error (px).
 EvaluationScores evaluateAndReport(const QString& stream, const Annotations& truth,
-                                   const QString& truth_path, const std::string& setting)
+                                   const QString& truth_path,
+                                   const std::vector<std::string>& settings,
+                                   std::vector<double>* boundary_errors = nullptr)
 {
     auto input = openStreamInput(stream.toStdString(), "");
     if (!input.ok()) {
         qWarning("%s", input.error().message.c_str());
         return {};
     }
-    if (!setting.empty())
+    for (const std::string& setting : settings)
         if (Status s = input.value().params.parseSetting(setting); !s) {
             qWarning("%s", s.error().message.c_str());
             return {};
@@ -257,6 +263,8 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
         note("ball", one.balls);
         note("goalpost", one.goalposts);
         note("obstacle", one.obstacles);
+        if (boundary_errors && one.boundary_frames > 0)
+            boundary_errors->push_back(one.boundaryMeanError());
         if (one.boundaryMeanError() > 10)
             wrong << QString("boundary off by %1 px").arg(one.boundaryMeanError(), 0, 'f', 1);
         if (!wrong.isEmpty())
@@ -270,6 +278,14 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
     }
     return s;
 }
+
+/// The B-Human 2009 stream's own parameters (as `fieldsight import --set` gives it,
+/// docs/formats.md): its goal is sky-blue (colour class 9); its walls are close behind the field
+/// and its table calls them green in places, so only dense green connected to the field below is
+/// the field.
+const std::vector<std::string> kBhumanParams{"transitions.goal_colour=9",
+                                             "green_horizon.max_field_gap=60",
+                                             "green_horizon.min_green_density=0.75"};
 
 } // namespace
 
@@ -359,19 +375,29 @@ private slots:
         const QString stream = makeBhumanStream(
             dir.filePath("bhuman2009"), loadJsonObject(fixturePath("bhuman2009/horizons.json")));
         QVERIFY(!stream.isEmpty());
-        // The 2009 goal is sky-blue (colour class 9).
+        std::vector<double> boundary_errors;
         const EvaluationScores s =
-            evaluateAndReport(stream, truth, truth_path, "transitions.goal_colour=9");
+            evaluateAndReport(stream, truth, truth_path, kBhumanParams, &boundary_errors);
         QVERIFY(s.frames >= 40);
         // Measured when the fixture was made (46 frames): ball 29/3/0, goalposts 40/0/0,
         // obstacles 2/58/23, boundary 14.14 px. With concealed objects scored apart (eval,
         // docs/formats.md): ball 28/3/0 and 1 concealed found, goalposts 31/0/0 and 9 found,
         // obstacles 0/58/14 with 2 found and 9 missed: the only robots found are concealed ones.
+        // With the stream's green horizon parameters (issue 23): obstacles 1/41/13, none of the
+        // concealed found (fewer false boxes on the wall; the white robots are still not seen).
         checkFloor("ball", s.balls, 0.85, 0.95);
         checkFloor("goalpost", s.goalposts, 0.95, 0.95);
-        QVERIFY2(s.obstacles.concealed_found >= 2, qPrintable(scoreLine("obstacle", s.obstacles)));
-        QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 16.0,
-                 qPrintable(QString::number(s.boundaryMeanError())));
+        QVERIFY2(s.obstacles.tp + s.obstacles.concealed_found >= 1 && s.obstacles.fp <= 45,
+                 qPrintable(scoreLine("obstacle", s.obstacles)));
+        // With the field's edge taken as the green connected to the field below (not green on the
+        // wall above a wider gap) and dense (issue 23): mean 14.14 -> 5.42 px, median 4.83 ->
+        // 2.92 px.
+        std::sort(boundary_errors.begin(), boundary_errors.end());
+        QVERIFY(!boundary_errors.empty());
+        const double median = boundary_errors[boundary_errors.size() / 2];
+        qInfo().noquote() << QString("field boundary: median error %1 px").arg(median, 0, 'f', 2);
+        QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 6.5 && median <= 3.5,
+                 qPrintable(QString("mean %1, median %2").arg(s.boundaryMeanError()).arg(median)));
     }
 
     void nubotsFixtureIsWellFormed()
@@ -402,7 +428,7 @@ private slots:
              {"orientation", 180},
              {"lut", test::referencePath("nubots_robocup_2013_luts/default_lab.lut")}});
         QVERIFY2(made.isEmpty(), qPrintable(made));
-        const EvaluationScores s = evaluateAndReport(stream, truth, truth_path, "");
+        const EvaluationScores s = evaluateAndReport(stream, truth, truth_path, {});
         QCOMPARE(int(s.frames), 3);
         // Measured: ball 3/0/0, goalposts 5/0/1, obstacles 0/15/0, boundary 76.69 px.
         checkFloor("ball", s.balls, 0.95, 0.95);

@@ -59,6 +59,7 @@ int main(int argc, char** argv)
                 return 2;
             }
         (void)w.session().settings().setParamChanges(params);
+        w.session().setParamOverrides(params);
     }
     const QStringList size =
         p.value("size").isEmpty() ? QStringList{"1280", "800"} : p.value("size").split('x');

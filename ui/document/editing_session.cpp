@@ -213,11 +213,16 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
-    // The stream's own parameters replace those in use (one step: Undo brings them back); a
-    // stream without a parameter file runs with the pipeline's defaults.
-    if (params && !(params->values == m_settings->paramChanges().values))
-        (void)m_settings->setParamChanges(*params,
-                                          tr("Parameters of %1").arg(QFileInfo(spec).fileName()));
+    // The stream's own parameters (and the command line's over them) replace those in use (one
+    // step: Undo brings them back); a stream without a parameter file runs with the pipeline's
+    // defaults.
+    if (params) {
+        ParamSet wanted = *params;
+        wanted.merge(m_param_overrides);
+        if (!(wanted.values == m_settings->paramChanges().values))
+            (void)m_settings->setParamChanges(
+                wanted, tr("Parameters of %1").arg(QFileInfo(spec).fileName()));
+    }
     const StreamOptions options{m_stream->orientation()};
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());

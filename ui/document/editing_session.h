@@ -81,6 +81,10 @@ public:
     /// Loads a table in any importable format as the LUT document's (clean, new history).
     Status openLut(const QString& path);
 
+    /// Parameters that win over every stream's own (the window's --params and --set), applied
+    /// at each open over the stream's. Checked by the caller.
+    void setParamOverrides(const ParamSet& params) { m_param_overrides = params; }
+
 signals:
     /// A background open ended: the stream is in (ok), or `error` says why not (or that the
     /// user cancelled it).
@@ -119,6 +123,7 @@ private:
     std::shared_ptr<OpenJob> m_job;
     SourceOpener m_opener;
     QString m_opening;
+    ParamSet m_param_overrides; ///< setParamOverrides
 };
 
 } // namespace fieldsight::ui

@@ -65,45 +65,90 @@ const StageInfo& GreenHorizonDetector::info() const
     return info;
 }
 
+std::optional<int> GreenHorizonDetector::fieldStart(Blackboard& bb, int x, int y0,
+                                                    std::optional<double> horizon)
+{
+    const int h = bb.height();
+    const int min_green = m_min_green_pixels;
+    const int max_gap = m_max_gap;
+    const double density = m_min_density;
+    const cv::Mat& image = bb.image();
+    const ColourLut& lut = bb.lut();
+    const std::ptrdiff_t step = std::ptrdiff_t(image.step[0]);
+    // Every run of the column that is green enough, top to bottom. A run bridges gaps of up to
+    // max_gap pixels (far lines and the thin strip beyond them blend into colours no class
+    // claims), like the transition filter's field-noise rules (the original required min_green
+    // pixels of uninterrupted green and so put the horizon below the far touch line). Its front
+    // moves down while it is sparser than min_green_density: speckle on a wall never gathers
+    // enough dense green.
+    std::vector<Span>& runs = m_runs;
+    runs.clear();
+    std::vector<int>& rows = m_run_rows;
+    rows.clear();
+    std::size_t front = 0;
+    int gap = 0;
+    const auto close = [&] {
+        if (int(rows.size() - front) >= min_green)
+            runs.push_back({rows[front], rows.back()});
+        rows.clear();
+        front = 0;
+        gap = 0;
+    };
+    // Walked by pointer: the image and LUT cannot change under the loop.
+    const std::uint8_t* p = image.ptr<std::uint8_t>(y0) + 3 * x;
+    for (int y = y0; y < h; ++y, p += step) {
+        if (lut.classify(p[0], p[1], p[2]) == Colour::Green) {
+            rows.push_back(y);
+            gap = 0;
+            while (rows.size() - front > 1 &&
+                   double(rows.size() - front) < density * double(y - rows[front] + 1))
+                ++front;
+            if (m_max_field_gap <= 0 && int(rows.size() - front) >= min_green)
+                return rows[front]; // the first run is the field's (the original rule)
+        } else if (rows.size() > front && ++gap > max_gap) {
+            close();
+        }
+    }
+    close();
+    if (runs.empty())
+        return std::nullopt;
+    // The field is the run nearest the camera and the runs above it that a gap no wider than a
+    // field line there separates (a line's height in the image grows with the square of its
+    // depth below the horizon, up to max_field_gap at the bottom row). A green run above a wider
+    // gap (a wall behind the field that the table calls green in places) is not the field.
+    // Without a kinematic horizon the depth is unknown: any gap up to max_field_gap is bridged.
+    const double depth = horizon ? std::max(1.0, double(h) - *horizon) : 1.0;
+    std::size_t top = runs.size() - 1;
+    while (top > 0) {
+        const int below = runs[top].first;
+        const double t = horizon ? std::clamp((double(below) - *horizon) / depth, 0.0, 1.0) : 1.0;
+        const double allowed = std::max(double(max_gap), m_max_field_gap * t * t);
+        if (double(below - runs[top - 1].second - 1) > allowed)
+            break;
+        --top;
+    }
+    for (std::size_t i = 0; i < top; ++i)
+        bb.gh_thrown_points.push_back({x, runs[i].first});
+    return runs[top].first;
+}
+
 void GreenHorizonDetector::run(Blackboard& bb)
 {
     const int w = bb.width();
     const int h = bb.height();
     const int spacing = m_scan_spacing;
-    const int min_green = m_min_green_pixels;
-    const int max_gap = m_max_gap;
-
     auto& points = bb.gh_scan_points;
-    const cv::Mat& image = bb.image();
-    const ColourLut& lut = bb.lut();
-    const std::ptrdiff_t step = std::ptrdiff_t(image.step[0]);
     for (int x = 0; x < w; x += spacing) {
         // Clamped as a double: the blackboard bounds the horizon, but a row is only an int here.
         const int y0 = int(std::clamp(bb.kinematic_horizon.yAt(x, w), 0.0, double(h - 1)));
-        // A run starts on green and counts green pixels; it bridges gaps of up to max_gap pixels
-        // (far lines and the thin strip beyond them blend into colours no class claims), like
-        // the transition filter's field-noise rules. The original required min_green pixels of
-        // uninterrupted green and so put the horizon below the far touch line.
-        int green = 0;
-        int gap = 0;
-        int start = 0;
-        // Walked by pointer: the image and LUT cannot change under the loop, but the compiler
-        // cannot know that across the push_back below.
-        const std::uint8_t* p = image.ptr<std::uint8_t>(y0) + 3 * x;
-        for (int y = y0; y < h; ++y, p += step) {
-            if (lut.classify(p[0], p[1], p[2]) == Colour::Green) {
-                if (green == 0)
-                    start = y;
-                gap = 0;
-                if (++green == min_green) {
-                    points.push_back({x, start});
-                    break;
-                }
-            } else if (green > 0 && ++gap > max_gap) {
-                green = 0;
-                gap = 0;
-            }
-        }
+        // SPEC §4: a stream without a horizon gives the top row (0, 0).
+        const Horizon& k = bb.kinematic_horizon;
+        const std::optional<double> horizon =
+            k.y_left == 0 && k.y_right == 0
+                ? std::nullopt
+                : std::optional<double>(std::min(k.yAt(x, w), double(h - 1)));
+        if (const auto start = fieldStart(bb, x, y0, horizon))
+            points.push_back({x, *start});
     }
 
     if (auto* d = bb.debug.layer("green_horizon.kinematic_horizon"))
@@ -154,7 +199,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         }
         hull.push_back(q);
     }
-    dropEndDips(hull, points, min_green, 2.0 * spacing);
+    dropEndDips(hull, points, int(m_min_green_pixels), 2.0 * spacing);
     bb.green_horizon.set(hull, w, h);
     bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 

@@ -5,6 +5,8 @@
 #include "visioncore/framework/stage.h"
 #include "visioncore/basics/geometry.h"
 
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace fieldsight {
@@ -16,7 +18,15 @@ public:
     void run(Blackboard& bb) override;
 
 private:
-    std::vector<PointF> m_hull; ///< per-frame scratch, kept so a frame allocates nothing
+    std::vector<PointF> m_hull;       ///< per-frame scratch, kept so a frame allocates nothing
+    std::vector<int> m_run_rows;      ///< the green rows of the run being scanned (scratch)
+    using Span = std::pair<int, int>; ///< a green run's first and last row
+    std::vector<Span> m_runs;         ///< a column's green runs (scratch)
+
+    /// The row where the field starts in column `x` (scanned from `y0` down; `horizon`: the
+    /// kinematic horizon's row there; none when the stream gives none), if it has one. Green
+    /// runs above the field it rejects are added to the thrown points.
+    std::optional<int> fieldStart(Blackboard& bb, int x, int y0, std::optional<double> horizon);
 
     Param<int> m_scan_spacing{
         this,
@@ -31,6 +41,19 @@ private:
                          3,
                          {"max_gap", "px", 0, 20, 1,
                           "Non-green pixels (a field line, noise) a green run may bridge."}};
+    Param<double> m_min_density{
+        this,
+        0.0,
+        {"min_green_density", "", 0, 1, 0.05,
+         "Share of a green run's pixels that must be green: the field is solid, a wall or a "
+         "shirt that the table calls green in places is speckled (0: any run)."}};
+    Param<double> m_max_field_gap{
+        this,
+        0.0,
+        {"max_field_gap", "px", 0, 120, 1,
+         "The widest non-green gap (a field line) within the field at the image's bottom row, "
+         "shrinking with the square of the depth below the horizon: green above a wider gap is "
+         "a wall, not the field (0: the first green run from the top is the field)."}};
     Param<double> m_upper_threshold_mult{
         this,
         2.5,
