@@ -140,8 +140,10 @@ void FrameView::applyFit()
     const double room_w = double(width() - (panelCount() - 1) * kPanelGap);
     double zoom =
         std::min(room_w / (image.width() * panelCount()), double(height()) / image.height());
-    // Whole zoom factors when there is room for them: every image pixel the same size.
-    if (zoom >= 1)
+    // Whole zoom factors when they lose little room (every image pixel the same size); a whole
+    // factor that would leave more than a quarter of the room empty (1x of a 1.9x fit: a 320 x
+    // 240 frame small in a large view) gives way to the fit itself.
+    if (zoom >= 1 && std::floor(zoom) >= 0.75 * zoom)
         zoom = std::floor(zoom);
     m_zoom = std::clamp(zoom, kZoomSteps.front(), kZoomSteps.back());
     const int total_w =
