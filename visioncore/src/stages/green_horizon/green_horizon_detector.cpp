@@ -138,15 +138,14 @@ void GreenHorizonDetector::run(Blackboard& bb)
     const int h = bb.height();
     const int spacing = m_scan_spacing;
     auto& points = bb.gh_scan_points;
+    // SPEC §4: a stream without a horizon gives the top row (0, 0).
+    const Horizon& k = bb.kinematic_horizon;
+    const bool known = k.y_left != 0 || k.y_right != 0;
     for (int x = 0; x < w; x += spacing) {
         // Clamped as a double: the blackboard bounds the horizon, but a row is only an int here.
-        const int y0 = int(std::clamp(bb.kinematic_horizon.yAt(x, w), 0.0, double(h - 1)));
-        // SPEC §4: a stream without a horizon gives the top row (0, 0).
-        const Horizon& k = bb.kinematic_horizon;
+        const int y0 = int(std::clamp(k.yAt(x, w), 0.0, double(h - 1)));
         const std::optional<double> horizon =
-            k.y_left == 0 && k.y_right == 0
-                ? std::nullopt
-                : std::optional<double>(std::min(k.yAt(x, w), double(h - 1)));
+            known ? std::optional<double>(std::min(k.yAt(x, w), double(h - 1))) : std::nullopt;
         if (const auto start = fieldStart(bb, x, y0, horizon))
             points.push_back({x, *start});
     }
