@@ -7,6 +7,7 @@
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
+#include "visioncore/io/dnt_labels.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/percepts/goalpost.h"
@@ -434,6 +435,48 @@ private slots:
         checkFloor("ball", s.balls, 0.95, 0.95);
         checkFloor("goalpost", s.goalposts, 0.95, 0.8);
         QVERIFY2(s.boundaryMeanError() <= 85.0, qPrintable(QString::number(s.boundaryMeanError())));
+    }
+
+    void dntGoalpostsAgainstLabels_data()
+    {
+        QTest::addColumn<QString>("set");
+        QTest::addColumn<double>("precision");
+        QTest::addColumn<double>("recall");
+        // Measured with tests/data/real/dnt2013/dnt_lab.lut: straightwalk 44/0/3 (1.000, 0.936),
+        // qvga_goal_subset 29/1/10 (0.967, 0.744).
+        QTest::newRow("straightwalk") << "straightwalk" << 0.95 << 0.90;
+        QTest::newRow("qvga_goal_subset") << "qvga_goal_subset" << 0.90 << 0.70;
+    }
+
+    void dntGoalpostsAgainstLabels()
+    {
+        QFETCH(QString, set);
+        QFETCH(double, precision);
+        QFETCH(double, recall);
+        if (test::referenceDataDir().empty())
+            QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
+        const QString folder = test::referencePath("dnt_uva_2013_fieldpictures/" + set);
+        auto input =
+            openStreamInput(folder.toStdString(), fixturePath("dnt2013/dnt_lab.lut").toStdString());
+        QVERIFY2(input.ok(), input.ok() ? "" : input.error().message.c_str());
+        const std::string labels = (folder + "/annotations_original.txt").toStdString();
+        auto pictures = loadDntLabels(labels);
+        QVERIFY2(pictures.ok(), pictures.ok() ? "" : pictures.error().message.c_str());
+        auto imported = importDntGoalposts(pictures.value(), *input.value().reader, labels);
+        QVERIFY2(imported.ok(), imported.ok() ? "" : imported.error().message.c_str());
+        QVERIFY(imported.value().posts >= 39);
+        auto report = evaluateStream(input.value(), imported.value().annotations, labels, 2);
+        QVERIFY2(report.ok(), report.ok() ? "" : report.error().message.c_str());
+        const EvaluationScores& s = report.value().scores;
+        qInfo().noquote() << scoreLine("goalpost", s.goalposts);
+        for (const FrameDisagreement& d : report.value().disagreements)
+            qInfo().noquote() << QString("%1: %2 false, %3 missed")
+                                     .arg(QString::fromStdString(d.frame))
+                                     .arg(d.false_detections.size())
+                                     .arg(d.missed.size());
+        // Only goalposts are labelled: nothing else is scored.
+        QCOMPARE(s.balls.tp + s.balls.fp + s.obstacles.tp + s.obstacles.fp, 0);
+        checkFloor("goalpost", s.goalposts, precision, recall);
     }
 };
 
