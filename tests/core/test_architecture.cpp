@@ -1,6 +1,7 @@
 // The paper's architecture, minus its drawbacks: wrappers as the only doors, a controller that can
 // skip stages and survives a throwing stage, no singletons (two cores side by side), and the
 // core's layers as folders that include only downwards.
+#include "support/recording_sink.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/datawrappers/memory_data_wrapper.h"
@@ -100,14 +101,7 @@ void writeFile(const fs::path& path, const std::string& text)
     std::ofstream(path) << text;
 }
 
-class RecordingSink : public DebugSink
-{
-public:
-    std::set<std::string, std::less<>> requestedLayers() const override { return layers; }
-    void publish(const DebugCanvas& canvas) override { published = canvas.drawings(); }
-    std::set<std::string, std::less<>> layers;
-    std::map<std::string, DebugDrawing, std::less<>> published;
-};
+using test::RecordingSink;
 
 cv::Mat sceneFrame()
 {

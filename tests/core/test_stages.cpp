@@ -2,6 +2,7 @@
 #include "stages/common/line_fit.h"
 #include "stages/common/ransac.h"
 #include "stages/transitions/transition_filter.h"
+#include "support/recording_sink.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/datawrappers/memory_data_wrapper.h"
@@ -218,6 +219,48 @@ private slots:
         QCOMPARE(bb.percepts.list<Ball>().size(), std::size_t(1));
         QVERIFY(std::hypot(bb.percepts.list<Ball>()[0].x - 150,
                            bb.percepts.list<Ball>()[0].y - 170) < 2.0);
+    }
+
+    /// With the camera's horizon and focal length, a ball's radius must fit where it stands: an
+    /// orange blob too small for its distance (a red jersey far off, a foot close by) is drawn on
+    /// the rejected layer with the reason, and the same blob passes when the size fits.
+    void ballTooSmallForItsDistanceIsRejected()
+    {
+        cv::Mat f = field(60);
+        fillCircle(f, 120.0, 160.0, 9, Colour::Orange);
+        // Horizon at row 40: the ball's centre 120 px below it, 24.6 degrees at 262 px focal
+        // length; a ball below the camera 48 px gives about 20 px there, 25 px about 10.
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
+        test::RecordingSink sink;
+        sink.layers = {"ball.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("ball", "focal_length", 262).ok());
+        QVERIFY(core.setParam("ball", "radius_at_nadir", 48).ok());
+        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(0));
+        const DebugDrawing& rejected = sink.published.at("ball.rejected");
+        QVERIFY(!rejected.shapes.empty());
+        bool said = false;
+        for (const auto& [i, note] : rejected.notes)
+            said = said || note.find("distance") != std::string::npos;
+        QVERIFY2(said, "no rejected circle says its size does not fit its distance");
+
+        QVERIFY(core.setParam("ball", "radius_at_nadir", 25).ok());
+        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(1));
+        // Without a horizon the distance is unknown: no size rule.
+        QVERIFY(core.setParam("ball", "radius_at_nadir", 48).ok());
+        data.setFrame(f, Horizon{});
+        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(1));
+    }
+
+    void ballCentreMustBeInTheImage()
+    {
+        cv::Mat f = field(60);
+        fillCircle(f, -4.0, 160.0, 10, Colour::Orange); // more than half cut by the left edge
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(0));
     }
 
     void noBallWithoutBallColour()

@@ -283,10 +283,11 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
 /// The B-Human 2009 stream's own parameters (as `fieldsight import --set` gives it,
 /// docs/formats.md): its goal is sky-blue (colour class 9); its walls are close behind the field
 /// and its table calls them green in places, so only dense green connected to the field below is
-/// the field.
-const std::vector<std::string> kBhumanParams{"transitions.goal_colour=9",
-                                             "green_horizon.max_field_gap=60",
-                                             "green_horizon.min_green_density=0.75"};
+/// the field; its camera (a 46.4 degree field of view over 320 px: focal length 373 px) and ball
+/// give a ball straight below the camera a radius of about 42 px.
+const std::vector<std::string> kBhumanParams{
+    "transitions.goal_colour=9", "green_horizon.max_field_gap=60",
+    "green_horizon.min_green_density=0.75", "ball.focal_length=373", "ball.radius_at_nadir=42"};
 
 } // namespace
 
@@ -386,7 +387,9 @@ private slots:
         // obstacles 0/58/14 with 2 found and 9 missed: the only robots found are concealed ones.
         // With the stream's green horizon parameters (issue 23): obstacles 1/41/13, none of the
         // concealed found (fewer false boxes on the wall; the white robots are still not seen).
-        checkFloor("ball", s.balls, 0.85, 0.95);
+        // With the ball's size set by its distance (issue 23): 28/0/0, the balls on the red
+        // jersey (f030, f031) and on a foot (f113) are too small for where they stand.
+        checkFloor("ball", s.balls, 0.97, 0.97);
         checkFloor("goalpost", s.goalposts, 0.95, 0.95);
         QVERIFY2(s.obstacles.tp + s.obstacles.concealed_found >= 1 && s.obstacles.fp <= 45,
                  qPrintable(scoreLine("obstacle", s.obstacles)));

@@ -133,6 +133,8 @@ void InspectorPanel::inspect(const FrameOutput* out, QPoint pixel)
                                                                                  : name->second))
                          .arg(i)
                          .arg(shapeText(d.shapes[i]));
+            if (const auto note = d.notes.find(i); note != d.notes.end())
+                lines.back() += QStringLiteral(": ") + QString::fromStdString(note->second);
             ++shown;
         }
     }

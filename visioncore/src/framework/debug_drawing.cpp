@@ -9,7 +9,7 @@ DebugDrawing* DebugCanvas::layer(std::string_view id)
         return nullptr;
     auto it = m_drawings.find(id);
     if (it == m_drawings.end())
-        it = m_drawings.emplace(std::string(id), DebugDrawing{std::string(id), {}}).first;
+        it = m_drawings.emplace(std::string(id), DebugDrawing{std::string(id), {}, {}}).first;
     return &it->second;
 }
 

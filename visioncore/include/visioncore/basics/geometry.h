@@ -45,6 +45,8 @@ struct Horizon
         return std::isfinite(y_left) && std::isfinite(y_right) && std::abs(y_left) <= kMaxRows &&
                std::abs(y_right) <= kMaxRows;
     }
+    /// SPEC §4: a stream without a horizon gives the top row, (0, 0).
+    bool known() const { return y_left != 0 || y_right != 0; }
     friend bool operator==(const Horizon&, const Horizon&) = default;
 };
 

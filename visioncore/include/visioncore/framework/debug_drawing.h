@@ -36,7 +36,16 @@ struct DebugDrawing
     std::string layer; ///< layer id, "<stage id>.<name>"
     std::vector<DebugShape> shapes;
 
+    /// Why a shape is there, for a user pointing at it (a rejected candidate's reason), by its
+    /// index in `shapes`; most shapes have none.
+    std::map<std::size_t, std::string> notes;
+
     void add(DebugShape shape) { shapes.push_back(std::move(shape)); }
+    void add(DebugShape shape, std::string note)
+    {
+        notes[shapes.size()] = std::move(note);
+        shapes.push_back(std::move(shape));
+    }
 };
 
 /// The layers requested for this frame and what the stages drew into them.

@@ -140,8 +140,39 @@ const StageInfo& BallDetector::info() const
         {"transitions", "scan_lines", "green_horizon", "image", "lut"},
         {},
         {&perceptKind<Ball>()},
-        {{"ball.edge_points", "Ball edge points", debug_colour::kSkyBlue}}};
+        {{"ball.edge_points", "Ball edge points", debug_colour::kSkyBlue},
+         {"ball.rejected", "Rejected balls (point at one: why)", debug_colour::kRejected}}};
     return info;
+}
+
+std::string BallDetector::rejection(const Blackboard& bb, PointF centre, double radius,
+                                    Colour colour) const
+{
+    const int w = bb.width(), h = bb.height();
+    if (radius < m_min_radius)
+        return "radius " + oneDecimal(radius) + " px, under min_radius";
+    if (radius > m_max_radius * h)
+        return "radius " + oneDecimal(radius) + " px, over max_radius of the image";
+    if (centre.x < 0 || centre.y < 0 || centre.x > w - 1 || centre.y > h - 1)
+        return "centre outside the image";
+    const double orange = colourFraction(bb, {centre, radius}, colour);
+    if (orange < m_min_orange_fraction)
+        return "ball colour " + oneDecimal(100 * orange) + " %, under min_orange_fraction";
+    // With the camera's horizon, the angle below it sets the distance along the ground and so the
+    // radius: r = radius_at_nadir * sin(angle), the angle from the focal length.
+    const Horizon& k = bb.kinematic_horizon;
+    if (m_focal_length > 0 && k.known()) {
+        const double depth = centre.y - k.yAt(centre.x, w);
+        if (depth <= 0)
+            return "above the kinematic horizon";
+        const double expected = m_radius_at_nadir * std::sin(std::atan(depth / m_focal_length));
+        const double lo = expected * (1 - m_radius_tolerance) - m_radius_slack;
+        const double hi = expected * (1 + m_radius_tolerance) + m_radius_slack;
+        if (radius < lo || radius > hi)
+            return "radius " + oneDecimal(radius) + " px, not " + oneDecimal(std::max(0.0, lo)) +
+                   "-" + oneDecimal(hi) + " px as its distance wants";
+    }
+    return {};
 }
 
 void BallDetector::run(Blackboard& bb)
@@ -164,7 +195,8 @@ void BallDetector::run(Blackboard& bb)
         const PointF c = s.centre();
         if (!gh.isBelow(int(c.x), int(c.y)))
             continue;
-        chords.push_back(&s);
+        if (s.x0 > 0 && s.x1 < w) // a chord cut by the border is no diameter
+            chords.push_back(&s);
         if (s.x0 > 0)
             edges.push_back({s.x0 - 0.5, double(s.y0)});
         if (s.x1 < w)
@@ -184,9 +216,13 @@ void BallDetector::run(Blackboard& bb)
     RansacParams params;
     params.max_error = m_max_fit_error;
     params.iterations = m_iterations;
+    DebugDrawing* rejected = bb.debug.layer("ball.rejected");
     const auto accept = [&](const Circle& c) {
-        return c.radius >= m_min_radius && c.radius <= std::max(w, h) &&
-               colourFraction(bb, c, colour) >= m_min_orange_fraction;
+        std::string why = rejection(bb, c.centre, c.radius, colour);
+        if (why.empty())
+            return true;
+        addRejected(rejected, circleShape(c.centre, c.radius, {}), std::move(why));
+        return false;
     };
 
     bool found = false;
@@ -212,8 +248,12 @@ void BallDetector::run(Blackboard& bb)
             if (!ransacFindModel(pts, params, rng, r) || !fitCircle(r.inliers, c))
                 continue;
             const double expected = 8 * c.radius / spacing;
-            if (double(r.inliers.size()) < std::max(4.0, m_min_edge_support * expected))
+            if (double(r.inliers.size()) < std::max(4.0, m_min_edge_support * expected)) {
+                addRejected(rejected, circleShape(c.centre, c.radius, {}),
+                            std::to_string(r.inliers.size()) +
+                                " edge points on the outline, under min_edge_support");
                 continue;
+            }
         }
         if (accept(c)) {
             ball = c;

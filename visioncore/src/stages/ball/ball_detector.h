@@ -7,6 +7,7 @@
 #include "visioncore/basics/segments.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace fieldsight {
@@ -23,6 +24,9 @@ private:
     std::vector<const ColourSegment*> m_chords;
     std::vector<std::size_t> m_parent; ///< the clustering's union-find
     std::vector<int> m_slot;
+
+    /// Why `centre`, `radius` cannot be the ball (empty: it can), by colour, size and place.
+    std::string rejection(const Blackboard& bb, PointF centre, double radius, Colour colour) const;
 
     Param<double> m_min_radius{
         this, 2.5, {"min_radius", "px", 0, 100, 0.5, "Balls with a smaller radius are ignored."}};
@@ -48,6 +52,34 @@ private:
         {"min_edge_support", "", 0, 1, 0.05,
          "A partly hidden ball needs this share of the edge points its outline would give the "
          "scan lines."}};
+    Param<double> m_max_radius{
+        this,
+        0.5,
+        {"max_radius", "", 0.05, 2, 0.05,
+         "Largest radius as a share of the image height; a ball's centre must also lie in the "
+         "image."}};
+    Param<double> m_focal_length{
+        this,
+        0,
+        {"focal_length", "px", 0, 5000, 1,
+         "The camera's focal length. With a kinematic horizon it sets the radius a ball may have "
+         "where it stands (0: no size rule)."}};
+    Param<double> m_radius_at_nadir{
+        this,
+        40,
+        {"radius_at_nadir", "px", 1, 1000, 1,
+         "A ball's radius straight below the camera (focal length x ball radius / (camera height - "
+         "ball radius)); further away it shrinks with the sine of its angle below the horizon."}};
+    Param<double> m_radius_tolerance{
+        this,
+        0.3,
+        {"radius_tolerance", "", 0, 1, 0.05,
+         "How far, as a share, a ball's radius may be from the one expected where it stands."}};
+    Param<double> m_radius_slack{
+        this,
+        2.5,
+        {"radius_slack", "px", 0, 50, 0.5,
+         "Widens the expected radius range both ways (a small ball's fit is a pixel or two off)."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 

@@ -5,6 +5,8 @@
 #include "visioncore/framework/debug_drawing.h"
 #include "visioncore/framework/param.h"
 
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace fieldsight {
@@ -20,6 +22,8 @@ inline constexpr Rgb kSkyBlue{40, 140, 255};
 inline constexpr Rgb kPurple{170, 60, 255};
 inline constexpr Rgb kLime{170, 255, 0};
 inline constexpr Rgb kPink{255, 150, 200};
+/// Every stage's layer of rejected candidates; each shape's note says why.
+inline constexpr Rgb kRejected{220, 20, 60};
 } // namespace debug_colour
 
 /// The seed parameter of every stage that samples with RANSAC (default 1).
@@ -33,6 +37,34 @@ template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colo
     for (const P& p : points)
         shape.points.push_back({double(p.x), double(p.y)});
     return shape;
+}
+
+/// `value` with one decimal ("7.1"), for the notes of rejected candidates.
+inline std::string oneDecimal(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", value);
+    return text;
+}
+
+/// Adds `shape` in the rejected colour to a rejected-candidates layer (nothing when nobody asked
+/// for it), its note saying why.
+inline void addRejected(DebugDrawing* layer, DebugShape shape, std::string why)
+{
+    if (!layer)
+        return;
+    shape.colour = debug_colour::kRejected;
+    layer->add(std::move(shape), std::move(why));
+}
+
+inline DebugShape circleShape(PointF centre, double radius, Rgb colour)
+{
+    return DebugShape{ShapeKind::Circle, {centre}, colour, radius, false, 1};
+}
+
+inline DebugShape rectShape(PointF top_left, PointF bottom_right, Rgb colour)
+{
+    return DebugShape{ShapeKind::Rect, {top_left, bottom_right}, colour, 1, false, 1};
 }
 
 inline DebugShape lineShape(PointF a, PointF b, Rgb colour, double width = 1)

@@ -138,9 +138,8 @@ void GreenHorizonDetector::run(Blackboard& bb)
     const int h = bb.height();
     const int spacing = m_scan_spacing;
     auto& points = bb.gh_scan_points;
-    // SPEC §4: a stream without a horizon gives the top row (0, 0).
     const Horizon& k = bb.kinematic_horizon;
-    const bool known = k.y_left != 0 || k.y_right != 0;
+    const bool known = k.known();
     for (int x = 0; x < w; x += spacing) {
         // Clamped as a double: the blackboard bounds the horizon, but a row is only an int here.
         const int y0 = int(std::clamp(k.yAt(x, w), 0.0, double(h - 1)));
