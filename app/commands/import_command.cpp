@@ -70,13 +70,11 @@ int importCommand(const QStringList& args, const Context& ctx)
         "Makes a stream folder from a robot's log folder (a B-Human log as the reference data "
         "keeps it: frames_ycbcr/, frames.csv, coltable.c64): its frames, a manifest with every "
         "frame's timestamp and kinematic horizon, the colour table as default.lut, and the "
-        "stream's own parameters from --set (params.json).");
+        "stream's own parameters from --params and --set (params.json).");
     parser.addPositionalArgument("LOG", "The log folder.");
     parser.addOption({"out", "The stream folder to make (new, or an empty folder).", "DIR"});
-    parser.addOption({"set",
-                      "A parameter the stream keeps (STAGE.PARAM=VALUE, e.g. "
-                      "transitions.goal_colour=9); may be repeated.",
-                      "S.P=V"});
+    parser.addOption(paramsOption());
+    parser.addOption(setOption());
     if (auto done = parseCommand(parser, "import", args, 1, 1, ctx))
         return *done;
     if (!parser.isSet("out"))
@@ -93,12 +91,10 @@ int importCommand(const QStringList& args, const Context& ctx)
             !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
             return badInput(ctx, out.string() + ": exists and is not an empty folder; nothing "
                                                 "was written (choose a new folder)");
-        ParamSet params;
-        for (const QString& setting : parser.values("set"))
-            if (Status s = params.parseSetting(setting.toStdString()); !s)
-                return badInput(ctx, "--set " + s.error().message);
-        if (Status s = params.check(ctx.pipeline); !s)
-            return badInput(ctx, "--set: " + s.error().message);
+        auto loaded = paramsFrom(parser, ctx.pipeline);
+        if (!loaded)
+            return badInput(ctx, loaded.error().message + "; nothing was written");
+        const ParamSet& params = loaded.value();
         auto log = readBhumanLog(source);
         if (!log)
             return badInput(ctx, log.error().message + "; nothing was written");

@@ -319,6 +319,34 @@ private slots:
         QVERIFY(std::min(l.x1, l.x2) < 10 && std::max(l.x1, l.x2) > 309);
     }
 
+    /// A white robot's body (white between dark joints, not on green) gives white runs as a line
+    /// does; with green_sides only the line on the carpet is a field line, and the robot's runs
+    /// are drawn on the rejected layer.
+    void whiteWithoutGreenBesideItIsNoFieldLine()
+    {
+        cv::Mat f = field(60);
+        drawLine(f, 0, 200, 319, 140, 3, Colour::White);
+        fillRect(f, 192, 70, 247, 130, Colour::ShadowObject);
+        fillRect(f, 200, 70, 239, 130, Colour::White); // a dark rim on both sides
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"field_lines.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(run(core).percepts.list<FieldLine>().size() >= 2); // the robot makes a "line"
+
+        QVERIFY(core.setParam("field_lines", "green_sides", 1).ok());
+        const Blackboard& bb = run(core);
+        QCOMPARE(bb.percepts.list<FieldLine>().size(), std::size_t(1));
+        const FieldLine& l = bb.percepts.list<FieldLine>()[0];
+        QVERIFY(std::min(l.x1, l.x2) < 10 && std::max(l.x1, l.x2) > 309); // the carpet's line
+        const DebugDrawing& rejected = sink.published.at("field_lines.rejected");
+        QVERIFY(!rejected.shapes.empty());
+        QCOMPARE(rejected.notes.size(), rejected.shapes.size());
+        for (const DebugShape& shape : rejected.shapes)
+            QVERIFY(shape.points[0].x >= 192 && shape.points[0].x <= 247);
+    }
+
     void robotInOpenFieldIsAnObstacle()
     {
         cv::Mat f = field(50);

@@ -6,6 +6,7 @@
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
+#include "visioncore/framework/param_set.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/dnt_labels.h"
 #include "visioncore/percepts/ball.h"
@@ -208,8 +209,7 @@ void checkFloor(const char* name, const ClassScore& c, double precision, double 
 /// the table and every frame that disagrees, and checks the per-frame scores add up to the total.
 /// `boundary_errors`, when given, gets each frame's boundary error (px).
 EvaluationScores evaluateAndReport(const QString& stream, const Annotations& truth,
-                                   const QString& truth_path,
-                                   const std::vector<std::string>& settings,
+                                   const QString& truth_path, const ParamSet& settings,
                                    std::vector<double>* boundary_errors = nullptr)
 {
     auto input = openStreamInput(stream.toStdString(), "");
@@ -217,11 +217,7 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
         qWarning("%s", input.error().message.c_str());
         return {};
     }
-    for (const std::string& setting : settings)
-        if (Status s = input.value().params.parseSetting(setting); !s) {
-            qWarning("%s", s.error().message.c_str());
-            return {};
-        }
+    input.value().params.merge(settings);
     auto report = evaluateStream(input.value(), truth, truth_path.toStdString(), 2);
     if (!report.ok()) {
         qWarning("%s", report.error().message.c_str());
@@ -232,6 +228,7 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
     qInfo().noquote() << scoreLine("ball", s.balls);
     qInfo().noquote() << scoreLine("goalpost", s.goalposts);
     qInfo().noquote() << scoreLine("obstacle", s.obstacles);
+    qInfo().noquote() << scoreLine("field line", s.field_lines);
     qInfo().noquote() << QString("field boundary: mean error %1 px over %2 frames")
                              .arg(s.boundaryMeanError(), 0, 'f', 2)
                              .arg(s.boundary_frames);
@@ -280,14 +277,19 @@ EvaluationScores evaluateAndReport(const QString& stream, const Annotations& tru
     return s;
 }
 
-/// The B-Human 2009 stream's own parameters (as `fieldsight import --set` gives it,
-/// docs/formats.md): its goal is sky-blue (colour class 9); its walls are close behind the field
-/// and its table calls them green in places, so only dense green connected to the field below is
-/// the field; its camera (a 46.4 degree field of view over 320 px: focal length 373 px) and ball
-/// give a ball straight below the camera a radius of about 42 px.
-const std::vector<std::string> kBhumanParams{
-    "transitions.goal_colour=9", "green_horizon.max_field_gap=60",
-    "green_horizon.min_green_density=0.75", "ball.focal_length=373", "ball.radius_at_nadir=42"};
+/// The B-Human 2009 stream's own parameters (bhuman2009/params.json, as `fieldsight import
+/// --params` keeps them; docs/formats.md): its goal is sky-blue (colour class 9); its walls are
+/// close behind the field and its table calls them green in places, so only dense green connected
+/// to the field below is the field; its camera (a 46.4 degree field of view over 320 px: focal
+/// length 373 px) and ball give a ball straight below the camera a radius of about 42 px; a line
+/// point has green on both sides.
+ParamSet bhumanParams()
+{
+    auto params = ParamSet::load(fixturePath("bhuman2009/params.json").toStdString());
+    if (!params.ok())
+        qFatal("%s", params.error().message.c_str());
+    return std::move(params).value();
+}
 
 } // namespace
 
@@ -379,7 +381,7 @@ private slots:
         QVERIFY(!stream.isEmpty());
         std::vector<double> boundary_errors;
         const EvaluationScores s =
-            evaluateAndReport(stream, truth, truth_path, kBhumanParams, &boundary_errors);
+            evaluateAndReport(stream, truth, truth_path, bhumanParams(), &boundary_errors);
         QVERIFY(s.frames >= 40);
         // Measured when the fixture was made (46 frames): ball 29/3/0, goalposts 40/0/0,
         // obstacles 2/58/23, boundary 14.14 px. With concealed objects scored apart (eval,
@@ -393,6 +395,10 @@ private slots:
         checkFloor("goalpost", s.goalposts, 0.95, 0.95);
         QVERIFY2(s.obstacles.tp + s.obstacles.concealed_found >= 1 && s.obstacles.fp <= 45,
                  qPrintable(scoreLine("obstacle", s.obstacles)));
+        // Field lines (the centre circle is not annotated, so its chords count as false):
+        // 42/111/18, and with green on both sides of a line point (issue 23) 43/65/17.
+        QVERIFY2(s.field_lines.fp <= 75 && s.field_lines.recall() >= 0.68,
+                 qPrintable(scoreLine("field line", s.field_lines)));
         // With the field's edge taken as the green connected to the field below (not green on the
         // wall above a wider gap) and dense (issue 23): mean 14.14 -> 5.42 px, median 4.83 ->
         // 2.92 px.
@@ -432,7 +438,7 @@ private slots:
              {"orientation", 180},
              {"lut", test::referencePath("nubots_robocup_2013_luts/default_lab.lut")}});
         QVERIFY2(made.isEmpty(), qPrintable(made));
-        const EvaluationScores s = evaluateAndReport(stream, truth, truth_path, {});
+        const EvaluationScores s = evaluateAndReport(stream, truth, truth_path, ParamSet{});
         QCOMPARE(int(s.frames), 3);
         // Measured: ball 3/0/0, goalposts 5/0/1, obstacles 0/15/0, boundary 76.69 px.
         checkFloor("ball", s.balls, 0.95, 0.95);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace fieldsight {
 
@@ -60,6 +61,69 @@ void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::v
     }
 }
 
+/// Whether field green borders scan[k] on both sides: the nearest segment each way, past pieces
+/// of other colours no longer than `blend` px in all, is green. The image's border counts as
+/// green (a line running out of the image); the start of a scan inside the image (a vertical scan
+/// starts at the green horizon, perhaps inside a robot) does not.
+bool greenBothSides(const Scan& scan, std::size_t k, int blend, int width, int height)
+{
+    const auto n = std::ptrdiff_t(scan.size());
+    for (const std::ptrdiff_t step : {std::ptrdiff_t(-1), std::ptrdiff_t(1)}) {
+        std::ptrdiff_t j = std::ptrdiff_t(k) + step;
+        int skipped = 0;
+        while (j >= 0 && j < n && scan[std::size_t(j)].colour != Colour::Green &&
+               skipped + scan[std::size_t(j)].length() <= blend) {
+            skipped += scan[std::size_t(j)].length();
+            j += step;
+        }
+        if (j >= 0 && j < n) {
+            if (scan[std::size_t(j)].colour != Colour::Green)
+                return false;
+            continue;
+        }
+        const ColourSegment& end = scan[std::size_t(j < 0 ? 0 : n - 1)];
+        const bool at_border =
+            j < 0 ? (end.x0 == 0 && end.x1 > end.x0) || (end.y0 == 0 && end.y1 > end.y0)
+                  : end.x1 >= width || end.y1 >= height;
+        if (!at_border)
+            return false;
+    }
+    return true;
+}
+
+/// The scan of `region` that `s` was cut from and its index there, or nullptr. `scan_at` maps a
+/// row (horizontal scans) or column (vertical) to its scan index; it is filled here once per
+/// region.
+const Scan* scanOf(const SegmentedRegion& region, const ColourSegment& s, std::vector<int>& scan_at,
+                   std::size_t& index)
+{
+    const bool horizontal = region.direction == ScanDirection::Horizontal;
+    const int key = horizontal ? s.y0 : s.x0;
+    if (key < 0 || std::size_t(key) >= scan_at.size() || scan_at[std::size_t(key)] < 0)
+        return nullptr;
+    const Scan& scan = region[std::size_t(scan_at[std::size_t(key)])];
+    const auto it = std::lower_bound(scan.begin(), scan.end(), s,
+                                     [horizontal](const ColourSegment& a, const ColourSegment& b) {
+                                         return horizontal ? a.x0 < b.x0 : a.y0 < b.y0;
+                                     });
+    if (it == scan.end() || it->x0 != s.x0 || it->y0 != s.y0)
+        return nullptr;
+    index = std::size_t(it - scan.begin());
+    return &scan;
+}
+
+void indexScans(const SegmentedRegion& region, int extent, std::vector<int>& scan_at)
+{
+    scan_at.assign(std::size_t(std::max(0, extent)), -1);
+    const bool horizontal = region.direction == ScanDirection::Horizontal;
+    for (std::size_t i = 0; i < region.size(); ++i)
+        if (!region[i].empty()) {
+            const int key = horizontal ? region[i][0].y0 : region[i][0].x0;
+            if (key >= 0 && key < extent)
+                scan_at[std::size_t(key)] = int(i);
+        }
+}
+
 } // namespace
 
 const StageInfo& FieldLineDetector::info() const
@@ -70,22 +134,43 @@ const StageInfo& FieldLineDetector::info() const
         "RANSAC lines through the centres of white runs below the green horizon; colinear lines "
         "merged.",
         true,
-        {"transitions", "green_horizon"},
+        {"transitions", "filtered_segments", "green_horizon"},
         {},
         {&perceptKind<FieldLine>()},
-        {{"field_lines.points", "Line points", debug_colour::kWhite}}};
+        {{"field_lines.points", "Line points", debug_colour::kWhite},
+         {"field_lines.rejected", "Rejected line points (point at one: why)",
+          debug_colour::kRejected}}};
     return info;
 }
 
 void FieldLineDetector::run(Blackboard& bb)
 {
     std::vector<PointF> points;
-    for (const Transitions* t : {&bb.horizontal_transitions, &bb.vertical_transitions})
+    DebugDrawing* rejected = bb.debug.layer("field_lines.rejected");
+    const auto reject = [&](PointF c, const char* why) {
+        if (rejected)
+            addRejected(rejected, pointsShape(std::vector<PointF>{c}, {}, 3), why);
+    };
+    for (const auto& [t, region, extent] :
+         {std::tuple{&bb.horizontal_transitions, &bb.horizontal_filtered, bb.height()},
+          std::tuple{&bb.vertical_transitions, &bb.vertical_filtered, bb.width()}}) {
+        if (m_green_sides)
+            indexScans(*region, extent, m_scan_at);
         for (const ColourSegment& s : (*t)[TransitionClass::Line]) {
             const PointF c = s.centre();
-            if (bb.green_horizon.isBelow(int(c.x), int(c.y)))
-                points.push_back(c);
+            if (!bb.green_horizon.isBelow(int(c.x), int(c.y))) {
+                reject(c, "above the field's edge");
+                continue;
+            }
+            std::size_t k = 0;
+            const Scan* scan = m_green_sides ? scanOf(*region, s, m_scan_at, k) : nullptr;
+            if (scan && !greenBothSides(*scan, k, m_side_blend, bb.width(), bb.height())) {
+                reject(c, "no field green on both sides");
+                continue;
+            }
+            points.push_back(c);
         }
+    }
     if (auto* d = bb.debug.layer("field_lines.points"))
         d->add(pointsShape(points, debug_colour::kWhite, 2));
 

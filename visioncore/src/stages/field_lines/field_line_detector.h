@@ -20,6 +20,7 @@ public:
 
 private:
     std::vector<std::pair<double, PointF>> m_sorted; ///< scratch of the gap split, kept
+    std::vector<int> m_scan_at; ///< scratch: the scan index of each row or column, or -1
 
     Param<int> m_min_points{
         this, 12, {"min_points", "", 2, 1000, 1, "Line points needed for a field line."}};
@@ -51,6 +52,18 @@ private:
                           {"locality", "", 0, 1000, 1,
                            "The second RANSAC point is drawn within this many points (in scan "
                            "order) of the first; 0 draws it anywhere."}};
+    Param<bool> m_green_sides{
+        this,
+        false,
+        {"green_sides", "", 0, 1, 1,
+         "A line point needs field green on both sides along its scan line (a line on the "
+         "carpet, not a white robot, wall or goal)."}};
+    Param<int> m_side_blend{
+        this,
+        4,
+        {"side_blend", "px", 0, 50, 1,
+         "Other colours this long between a line and the green beside it are the blur between "
+         "them."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
