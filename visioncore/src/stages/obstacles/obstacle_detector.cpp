@@ -3,6 +3,7 @@
 
 #include "stages/common/stage_util.h"
 #include "visioncore/framework/blackboard.h"
+#include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"
 
@@ -39,10 +40,12 @@ const StageInfo& ObstacleDetector::info() const
         "Robots and people standing on the field: runs of non-field colour on the vertical scan "
         "lines, grouped across neighbouring lines.",
         true,
-        {"filtered_segments", "transitions", "scan_lines", "green_horizon", "goalposts"},
+        {"filtered_segments", "transitions", "scan_lines", "green_horizon", "goalposts", "balls"},
         {"obstacle_points"},
         {&perceptKind<Obstacle>()},
-        {{"obstacles.points", "Obstacle feet", debug_colour::kPink}}};
+        {{"obstacles.points", "Obstacle feet", debug_colour::kPink},
+         {"obstacles.rejected", "Rejected obstacles (point at one: why)",
+          debug_colour::kRejected}}};
     return info;
 }
 
@@ -62,6 +65,7 @@ void ObstacleDetector::run(Blackboard& bb)
     // object (its bottom is where it stands).
     std::vector<Run>& runs = m_runs;
     runs.clear();
+    DebugDrawing* rejected = bb.debug.layer("obstacles.rejected");
     const int spacing = std::max(1, bb.verticalScanSpacing(1));
     // How many non-field pixels each vertical scan starts with: the field edge's own blend band
     // is about the same everywhere, so a column well deeper than the median is covered by
@@ -112,10 +116,19 @@ void ObstacleDetector::run(Blackboard& bb)
             const double foot_depth = bottom - gh;
             // (min_run of the height is allowed for blur, which flattens nothing real.)
             const bool standing = bottom - top + 1 - min_run >= m_min_height_ratio * foot_depth;
-            if (top >= 0 && bottom - top + 1 >= min_run && standing &&
-                bottom - gh >= m_min_distance_from_horizon) {
-                best = {scan[0].x0, top, bottom};
-                have = true;
+            if (top >= 0 && bottom - top + 1 >= min_run) {
+                if (standing && bottom - gh >= m_min_distance_from_horizon) {
+                    best = {scan[0].x0, top, bottom};
+                    have = true;
+                } else {
+                    addRejected(
+                        rejected,
+                        lineShape({double(x), double(top)}, {double(x), double(bottom)}, {}),
+                        standing ? "foot closer to the green horizon than "
+                                   "min_distance_from_horizon"
+                                 : "run too short for how far below the green horizon "
+                                   "its foot is (lying flat, min_height_ratio)");
+                }
             }
             top = -1;
         }
@@ -199,9 +212,15 @@ void ObstacleDetector::run(Blackboard& bb)
 
     // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
     // near its foot (it ends somewhere between two scan lines).
+    const std::vector<Ball>& balls = bb.percepts.list<Ball>();
     for (const Group& g : groups) {
-        if (g.columns < m_min_columns)
+        if (g.columns < m_min_columns) {
+            addRejected(rejected,
+                        rectShape({double(g.first_x), double(g.top)},
+                                  {double(g.last_x), double(g.bottom)}, {}),
+                        "on " + std::to_string(g.columns) + " scan line(s), under min_columns");
             continue;
+        }
         Obstacle o{std::max(0, g.first_x - spacing / 2),
                    std::min(bb.width() - 1, g.last_x + spacing / 2), g.top,
                    std::min(g.bottom, h - 1)};
@@ -215,6 +234,22 @@ void ObstacleDetector::run(Blackboard& bb)
                 o.left = std::min(o.left, std::max(int(s.x0), g.first_x - spacing));
                 o.right = std::max(o.right, std::min(s.x1 - 1, g.last_x + spacing));
             }
+        }
+        // A ball's shading and highlights leave runs of other colours inside it.
+        const double area = double(o.right - o.left + 1) * double(o.bottom - o.top + 1);
+        const auto inside = [&](const Ball& b) {
+            const double across =
+                std::min(o.right + 0.5, b.x + b.radius) - std::max(o.left - 0.5, b.x - b.radius);
+            const double down =
+                std::min(o.bottom + 0.5, b.y + b.radius) - std::max(o.top - 0.5, b.y - b.radius);
+            return across > 0 && down > 0 && across * down > m_max_ball_overlap * area;
+        };
+        if (m_max_ball_overlap < 1 && std::any_of(balls.begin(), balls.end(), inside)) {
+            addRejected(
+                rejected,
+                rectShape({double(o.left), double(o.top)}, {double(o.right), double(o.bottom)}, {}),
+                "inside the ball (max_ball_overlap)");
+            continue;
         }
         obstacles.push_back(o);
     }

@@ -68,6 +68,12 @@ private:
         0.75,
         {"max_width_ratio", "", 0, 5, 0.05,
          "Pieces of one robot merge while the whole is at most this wide for its height."}};
+    Param<double> m_max_ball_overlap{
+        this,
+        0.5,
+        {"max_ball_overlap", "", 0, 1, 0.05,
+         "An obstacle with more of its box inside a found ball's square than this share is the "
+         "ball's own shading, not something standing (1: off)."}};
     Param<int> m_min_edge_dip{
         this,
         4,
