@@ -303,6 +303,29 @@ private slots:
         QVERIFY(std::abs(left.base_x - 64.5) < 1.0);
     }
 
+    /// Goal colour on the wall behind the field (its foot far above the field's edge) is not a
+    /// post: it is drawn on the rejected layer with the reason.
+    void postStandingAboveTheFieldIsRejected()
+    {
+        cv::Mat f = field(120);
+        fillRect(f, 200, 5, 209, 60, Colour::Yellow); // foot 60 px above the field's edge
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"goalposts.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("goalposts", "max_foot_above_field", -1).ok());
+        QCOMPARE(run(core).percepts.list<Goalpost>().size(), std::size_t(1));
+        QVERIFY(core.setParam("goalposts", "max_foot_above_field", 40).ok());
+        QCOMPARE(run(core).percepts.list<Goalpost>().size(), std::size_t(0));
+        const DebugDrawing& rejected = sink.published.at("goalposts.rejected");
+        QCOMPARE(rejected.shapes.size(), std::size_t(1));
+        QVERIFY(rejected.notes.at(0).find("field's edge") != std::string::npos);
+        // Standing on the field it is a post again.
+        fillRect(f, 200, 60, 209, 130, Colour::Yellow);
+        QCOMPARE(run(core).percepts.list<Goalpost>().size(), std::size_t(1));
+    }
+
     void straightFieldLineIsFound()
     {
         cv::Mat f = field(60);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <numbers>
 #include <stdexcept>
 
@@ -75,11 +76,12 @@ const StageInfo& GoalpostDetector::info() const
         "Goalposts",
         "RANSAC lines through the left and right edges of goal-coloured runs, paired into posts.",
         true,
-        {"transitions", "scan_lines", "kinematic_horizon"},
+        {"transitions", "scan_lines", "kinematic_horizon", "green_horizon"},
         {},
         {&perceptKind<Goalpost>()},
         {{"goalposts.edge_lines", "Post edge lines (left cyan, right magenta)",
-          debug_colour::kCyan}}};
+          debug_colour::kCyan},
+         {"goalposts.rejected", "Rejected posts (point at one: why)", debug_colour::kRejected}}};
     return info;
 }
 
@@ -123,6 +125,14 @@ void GoalpostDetector::run(Blackboard& bb)
     const double tol = m_matching_tolerance;
     if (tol < 0 || tol > 1)
         throw std::invalid_argument("matching_tolerance must be in [0, 1]");
+    DebugDrawing* rejected = bb.debug.layer("goalposts.rejected");
+    const auto reject = [&](const Quad& q, std::string why) {
+        if (rejected)
+            addRejected(
+                rejected,
+                DebugShape{ShapeKind::Polyline, {q.bl, q.tl, q.tr, q.br, q.bl}, {}, 1, false, 1},
+                std::move(why));
+    };
     std::vector<bool> used(ends.size(), false);
     std::vector<Quad> posts;
     std::vector<std::size_t> order;
@@ -147,8 +157,11 @@ void GoalpostDetector::run(Blackboard& bb)
             used[i] = true;
             const Quad q{s.low, s.high, e.high, e.low};
             // Posts are tall: drop wide quads (crossbars, blobs) and narrow slivers.
-            if (q.height() / q.width() < m_min_aspect || q.width() <= m_min_width)
+            if (q.height() / q.width() < m_min_aspect || q.width() <= m_min_width) {
+                reject(q, q.width() <= m_min_width ? "narrower than min_width"
+                                                   : "too wide for its height (min_aspect)");
                 break;
+            }
             // A post stands roughly perpendicular to the horizon.
             const ImageLine axis{
                 q.bottomCentre(),
@@ -161,6 +174,8 @@ void GoalpostDetector::run(Blackboard& bb)
                 std::abs(axis.direction.x * hx + axis.direction.y * hy) / std::max(1e-9, al * hl);
             if (std::acos(std::min(1.0, cosang)) >= 0.75 * std::numbers::pi / 2)
                 posts.push_back(q);
+            else
+                reject(q, "not upright to the horizon");
             break;
         }
     }
@@ -263,9 +278,23 @@ void GoalpostDetector::run(Blackboard& bb)
                 g.base_y = last.y;
         }
         g.bottom = int(std::lround(g.base_y));
-        // Above the kinematic horizon cannot be a post's foot.
-        if (g.base_y < bb.kinematic_horizon.yAt(g.base_x, w))
+        // Above the kinematic horizon cannot be a post's foot; a post rises above the field's
+        // edge but stands on the field.
+        const auto reject_post = [&](const char* why) {
+            addRejected(
+                rejected,
+                rectShape({double(g.left), double(g.top)}, {double(g.right), double(g.bottom)}, {}),
+                why);
+        };
+        if (g.base_y < bb.kinematic_horizon.yAt(g.base_x, w)) {
+            reject_post("foot above the kinematic horizon");
             continue;
+        }
+        if (m_max_foot_above_field >= 0 &&
+            g.base_y < bb.green_horizon.yAt(int(std::lround(g.base_x))) - m_max_foot_above_field) {
+            reject_post("foot above the field's edge (max_foot_above_field)");
+            continue;
+        }
         goalposts.push_back(g);
     }
 

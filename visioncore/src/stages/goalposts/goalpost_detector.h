@@ -56,6 +56,12 @@ private:
         this,
         1.5,
         {"merge_widths", "", 0, 10, 0.1, "Posts closer than this many post widths are merged."}};
+    Param<double> m_max_foot_above_field{
+        this,
+        40,
+        {"max_foot_above_field", "px", -1, 240, 1,
+         "How far above the green horizon a post's foot may be (a post stands on the field; "
+         "-1: off)."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
