@@ -16,6 +16,7 @@
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/panels/bookmarks_panel.h"
+#include "ui/panels/inspector_panel.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/layers_panel.h"
@@ -144,6 +145,29 @@ class TestMainWindow : public QObject
     }
 
 private slots:
+    /// A rejected candidate's note (why a stage threw it away) shows in the inspector for the
+    /// shape under the pointer, and only for that shape.
+    void inspectorShowsWhyACandidateWasRejected()
+    {
+        ui::FrameOutput out;
+        out.frame.ycbcr = cv::Mat(20, 20, CV_8UC3, cv::Scalar(80, 100, 100));
+        out.classes = cv::Mat(20, 20, CV_8U, cv::Scalar(0));
+        out.raw = QImage(20, 20, QImage::Format_RGB32);
+        out.raw.fill(Qt::black);
+        DebugDrawing rejected{"ball.rejected", {}, {}};
+        rejected.add(DebugShape{ShapeKind::Circle, {{10, 10}}, {220, 20, 60}, 4, false, 1},
+                     "radius 4.0 px, not 8.5-20.3 px as its distance wants");
+        rejected.add(DebugShape{ShapeKind::Circle, {{3, 3}}, {220, 20, 60}, 2, false, 1});
+        out.drawings.push_back(rejected);
+        ui::InspectorPanel panel(Pipeline::standard());
+        panel.inspect(&out, {14, 10}); // on the first circle's outline
+        QVERIFY2(panel.text().contains("as its distance wants"), qPrintable(panel.text()));
+        QVERIFY2(panel.text().contains("Rejected balls"), qPrintable(panel.text()));
+        panel.inspect(&out, {5, 3}); // on the second, which has no note
+        QVERIFY2(panel.text().contains("centre (3, 3)") && !panel.text().contains("distance wants"),
+                 qPrintable(panel.text()));
+    }
+
     void initTestCase()
     {
         QStandardPaths::setTestModeEnabled(true);
