@@ -266,6 +266,11 @@ void FrameView::paintEvent(QPaintEvent*)
             }
             for (const auto& [id, highlight] : m_highlights)
                 p.drawImage(QPointF(0, 0), highlight);
+            // Drawings stay on their own image (a rejected circle may be larger than the frame):
+            // a couple of screen px of margin keeps outlines on the border whole.
+            const double margin = 3 / m_zoom;
+            p.setClipRect(
+                QRectF(-margin, -margin, image.width() + 2 * margin, image.height() + 2 * margin));
             for (const DebugDrawing* d : layers)
                 paintDrawing(p, *d);
             p.restore();

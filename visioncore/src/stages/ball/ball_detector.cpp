@@ -141,7 +141,7 @@ const StageInfo& BallDetector::info() const
         {},
         {&perceptKind<Ball>()},
         {{"ball.edge_points", "Ball edge points", debug_colour::kSkyBlue},
-         {"ball.rejected", "Rejected balls (point at one: why)", debug_colour::kRejected}}};
+         {"ball.rejected", "Rejected balls", debug_colour::kRejected}}};
     return info;
 }
 

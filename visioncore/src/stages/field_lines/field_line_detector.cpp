@@ -138,8 +138,7 @@ const StageInfo& FieldLineDetector::info() const
         {},
         {&perceptKind<FieldLine>()},
         {{"field_lines.points", "Line points", debug_colour::kWhite},
-         {"field_lines.rejected", "Rejected line points (point at one: why)",
-          debug_colour::kRejected}}};
+         {"field_lines.rejected", "Rejected line points", debug_colour::kRejected}}};
     return info;
 }
 

@@ -81,7 +81,7 @@ const StageInfo& GoalpostDetector::info() const
         {&perceptKind<Goalpost>()},
         {{"goalposts.edge_lines", "Post edge lines (left cyan, right magenta)",
           debug_colour::kCyan},
-         {"goalposts.rejected", "Rejected posts (point at one: why)", debug_colour::kRejected}}};
+         {"goalposts.rejected", "Rejected posts", debug_colour::kRejected}}};
     return info;
 }
 

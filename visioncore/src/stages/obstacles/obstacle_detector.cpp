@@ -44,8 +44,7 @@ const StageInfo& ObstacleDetector::info() const
         {"obstacle_points"},
         {&perceptKind<Obstacle>()},
         {{"obstacles.points", "Obstacle feet", debug_colour::kPink},
-         {"obstacles.rejected", "Rejected obstacles (point at one: why)",
-          debug_colour::kRejected}}};
+         {"obstacles.rejected", "Rejected obstacles", debug_colour::kRejected}}};
     return info;
 }
 
