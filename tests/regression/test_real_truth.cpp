@@ -393,8 +393,8 @@ private slots:
         // jersey (f030, f031) and on a foot (f113) are too small for where they stand.
         checkFloor("ball", s.balls, 0.97, 0.97);
         checkFloor("goalpost", s.goalposts, 0.95, 0.95);
-        // No box inside the ball (issue 23): 1/36/13.
-        QVERIFY2(s.obstacles.tp + s.obstacles.concealed_found >= 1 && s.obstacles.fp <= 40,
+        // No box inside the ball (issue 23): 1/36/13; no edge dips on this stream: 1/25/13.
+        QVERIFY2(s.obstacles.tp + s.obstacles.concealed_found >= 1 && s.obstacles.fp <= 30,
                  qPrintable(scoreLine("obstacle", s.obstacles)));
         // Field lines (the centre circle is not annotated, so its chords count as false):
         // 42/111/18, and with green on both sides of a line point (issue 23) 43/65/17.
