@@ -145,34 +145,44 @@ const StageInfo& BallDetector::info() const
     return info;
 }
 
-std::string BallDetector::rejection(const Blackboard& bb, PointF centre, double radius,
-                                    Colour colour) const
+bool BallDetector::rejects(const Blackboard& bb, PointF centre, double radius, Colour colour,
+                           std::string* why) const
 {
     const int w = bb.width(), h = bb.height();
+    // The reason is put in words only when asked for: `why ? say(...) : true`.
+    const auto say = [why](std::string reason) {
+        *why = std::move(reason);
+        return true;
+    };
     if (radius < m_min_radius)
-        return "radius " + oneDecimal(radius) + " px, under min_radius";
+        return why ? say("radius " + oneDecimal(radius) + " px, under min_radius") : true;
     if (radius > m_max_radius * h)
-        return "radius " + oneDecimal(radius) + " px, over max_radius of the image";
+        return why ? say("radius " + oneDecimal(radius) + " px, over max_radius of the image")
+                   : true;
     if (centre.x < 0 || centre.y < 0 || centre.x > w - 1 || centre.y > h - 1)
-        return "centre outside the image";
-    const double orange = colourFraction(bb, {centre, radius}, colour);
-    if (orange < m_min_orange_fraction)
-        return "ball colour " + oneDecimal(100 * orange) + " %, under min_orange_fraction";
+        return why ? say("centre outside the image") : true;
     // With the camera's horizon, the angle below it sets the distance along the ground and so the
     // radius: r = radius_at_nadir * sin(angle), the angle from the focal length.
     const Horizon& k = bb.kinematic_horizon;
     if (m_focal_length > 0 && k.known()) {
         const double depth = centre.y - k.yAt(centre.x, w);
         if (depth <= 0)
-            return "above the kinematic horizon";
+            return why ? say("above the kinematic horizon") : true;
         const double expected = m_radius_at_nadir * std::sin(std::atan(depth / m_focal_length));
         const double lo = expected * (1 - m_radius_tolerance) - m_radius_slack;
         const double hi = expected * (1 + m_radius_tolerance) + m_radius_slack;
         if (radius < lo || radius > hi)
-            return "radius " + oneDecimal(radius) + " px, not " + oneDecimal(std::max(0.0, lo)) +
-                   "-" + oneDecimal(hi) + " px as its distance wants";
+            return why ? say("radius " + oneDecimal(radius) + " px, not " +
+                             oneDecimal(std::max(0.0, lo)) + "-" + oneDecimal(hi) +
+                             " px as its distance wants")
+                       : true;
     }
-    return {};
+    const double orange = colourFraction(bb, {centre, radius}, colour);
+    if (orange < m_min_orange_fraction)
+        return why ? say("ball colour " + oneDecimal(100 * orange) +
+                         " %, under min_orange_fraction")
+                   : true;
+    return false;
 }
 
 void BallDetector::run(Blackboard& bb)
@@ -217,11 +227,12 @@ void BallDetector::run(Blackboard& bb)
     params.max_error = m_max_fit_error;
     params.iterations = m_iterations;
     DebugDrawing* rejected = bb.debug.layer("ball.rejected");
+    std::string why;
     const auto accept = [&](const Circle& c) {
-        std::string why = rejection(bb, c.centre, c.radius, colour);
-        if (why.empty())
+        if (!rejects(bb, c.centre, c.radius, colour, rejected ? &why : nullptr))
             return true;
-        addRejected(rejected, circleShape(c.centre, c.radius, {}), std::move(why));
+        if (rejected)
+            addRejected(*rejected, circleShape(c.centre, c.radius, {}), why);
         return false;
     };
 
@@ -249,9 +260,10 @@ void BallDetector::run(Blackboard& bb)
                 continue;
             const double expected = 8 * c.radius / spacing;
             if (double(r.inliers.size()) < std::max(4.0, m_min_edge_support * expected)) {
-                addRejected(rejected, circleShape(c.centre, c.radius, {}),
-                            std::to_string(r.inliers.size()) +
-                                " edge points on the outline, under min_edge_support");
+                if (rejected)
+                    addRejected(*rejected, circleShape(c.centre, c.radius, {}),
+                                std::to_string(r.inliers.size()) +
+                                    " edge points on the outline, under min_edge_support");
                 continue;
             }
         }

@@ -25,8 +25,10 @@ private:
     std::vector<std::size_t> m_parent; ///< the clustering's union-find
     std::vector<int> m_slot;
 
-    /// Why `centre`, `radius` cannot be the ball (empty: it can), by colour, size and place.
-    std::string rejection(const Blackboard& bb, PointF centre, double radius, Colour colour) const;
+    /// Whether `centre`, `radius` cannot be the ball, by size, place and colour; `why`, when
+    /// given, is set to the reason (for the rejected layer).
+    bool rejects(const Blackboard& bb, PointF centre, double radius, Colour colour,
+                 std::string* why) const;
 
     Param<double> m_min_radius{
         this, 2.5, {"min_radius", "px", 0, 100, 0.5, "Balls with a smaller radius are ignored."}};

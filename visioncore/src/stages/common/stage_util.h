@@ -47,14 +47,13 @@ inline std::string oneDecimal(double value)
     return text;
 }
 
-/// Adds `shape` in the rejected colour to a rejected-candidates layer (nothing when nobody asked
-/// for it), its note saying why.
-inline void addRejected(DebugDrawing* layer, DebugShape shape, std::string why)
+/// Adds `shape` in the rejected colour to a rejected-candidates layer, its note saying why.
+/// Callers build the shape and the note only when the layer was asked for (bb.debug.layer is not
+/// null): a frame nobody draws pays nothing for them.
+inline void addRejected(DebugDrawing& layer, DebugShape shape, std::string why)
 {
-    if (!layer)
-        return;
     shape.colour = debug_colour::kRejected;
-    layer->add(std::move(shape), std::move(why));
+    layer.add(std::move(shape), std::move(why));
 }
 
 inline DebugShape circleShape(PointF centre, double radius, Rgb colour)

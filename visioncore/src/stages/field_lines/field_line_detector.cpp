@@ -148,7 +148,7 @@ void FieldLineDetector::run(Blackboard& bb)
     DebugDrawing* rejected = bb.debug.layer("field_lines.rejected");
     const auto reject = [&](PointF c, const char* why) {
         if (rejected)
-            addRejected(rejected, pointsShape(std::vector<PointF>{c}, {}, 3), why);
+            addRejected(*rejected, pointsShape(std::vector<PointF>{c}, {}, 3), why);
     };
     for (const auto& [t, region, extent] :
          {std::tuple{&bb.horizontal_transitions, &bb.horizontal_filtered, bb.height()},

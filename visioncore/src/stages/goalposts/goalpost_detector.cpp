@@ -126,12 +126,12 @@ void GoalpostDetector::run(Blackboard& bb)
     if (tol < 0 || tol > 1)
         throw std::invalid_argument("matching_tolerance must be in [0, 1]");
     DebugDrawing* rejected = bb.debug.layer("goalposts.rejected");
-    const auto reject = [&](const Quad& q, std::string why) {
+    const auto reject = [&](const Quad& q, const char* why) {
         if (rejected)
             addRejected(
-                rejected,
+                *rejected,
                 DebugShape{ShapeKind::Polyline, {q.bl, q.tl, q.tr, q.br, q.bl}, {}, 1, false, 1},
-                std::move(why));
+                why);
     };
     std::vector<bool> used(ends.size(), false);
     std::vector<Quad> posts;
@@ -281,10 +281,11 @@ void GoalpostDetector::run(Blackboard& bb)
         // Above the kinematic horizon cannot be a post's foot; a post rises above the field's
         // edge but stands on the field.
         const auto reject_post = [&](const char* why) {
-            addRejected(
-                rejected,
-                rectShape({double(g.left), double(g.top)}, {double(g.right), double(g.bottom)}, {}),
-                why);
+            if (rejected)
+                addRejected(*rejected,
+                            rectShape({double(g.left), double(g.top)},
+                                      {double(g.right), double(g.bottom)}, {}),
+                            why);
         };
         if (g.base_y < bb.kinematic_horizon.yAt(g.base_x, w)) {
             reject_post("foot above the kinematic horizon");

@@ -119,9 +119,9 @@ void ObstacleDetector::run(Blackboard& bb)
                 if (standing && bottom - gh >= m_min_distance_from_horizon) {
                     best = {scan[0].x0, top, bottom};
                     have = true;
-                } else {
+                } else if (rejected) {
                     addRejected(
-                        rejected,
+                        *rejected,
                         lineShape({double(x), double(top)}, {double(x), double(bottom)}, {}),
                         standing ? "foot closer to the green horizon than "
                                    "min_distance_from_horizon"
@@ -214,10 +214,11 @@ void ObstacleDetector::run(Blackboard& bb)
     const std::vector<Ball>& balls = bb.percepts.list<Ball>();
     for (const Group& g : groups) {
         if (g.columns < m_min_columns) {
-            addRejected(rejected,
-                        rectShape({double(g.first_x), double(g.top)},
-                                  {double(g.last_x), double(g.bottom)}, {}),
-                        "on " + std::to_string(g.columns) + " scan line(s), under min_columns");
+            if (rejected)
+                addRejected(*rejected,
+                            rectShape({double(g.first_x), double(g.top)},
+                                      {double(g.last_x), double(g.bottom)}, {}),
+                            "on " + std::to_string(g.columns) + " scan line(s), under min_columns");
             continue;
         }
         Obstacle o{std::max(0, g.first_x - spacing / 2),
@@ -244,10 +245,11 @@ void ObstacleDetector::run(Blackboard& bb)
             return across > 0 && down > 0 && across * down > m_max_ball_overlap * area;
         };
         if (m_max_ball_overlap < 1 && std::any_of(balls.begin(), balls.end(), inside)) {
-            addRejected(
-                rejected,
-                rectShape({double(o.left), double(o.top)}, {double(o.right), double(o.bottom)}, {}),
-                "inside the ball (max_ball_overlap)");
+            if (rejected)
+                addRejected(*rejected,
+                            rectShape({double(o.left), double(o.top)},
+                                      {double(o.right), double(o.bottom)}, {}),
+                            "inside the ball (max_ball_overlap)");
             continue;
         }
         obstacles.push_back(o);
