@@ -372,44 +372,6 @@ private slots:
 
     /// A close ball's shading (a dark band through it) is no obstacle standing there: the box is
     /// drawn on the rejected layer instead.
-    void noObstacleInsideTheBall()
-    {
-        cv::Mat f = field(50);
-        fillCircle(f, 160.0, 170.0, 30, Colour::Orange);
-        fillRect(f, 150, 142, 170, 198, Colour::ShadowObject);
-        MemoryDataWrapper data(f, test::testLut());
-        test::RecordingSink sink;
-        sink.layers = {"obstacles.rejected"};
-        data.setDebugSink(&sink);
-        ControlWrapper core(data);
-        QVERIFY(core.setParam("obstacles", "max_ball_overlap", 1).ok());
-        const Blackboard& off = run(core);
-        QCOMPARE(off.percepts.list<Ball>().size(), std::size_t(1));
-        QVERIFY(!off.percepts.list<Obstacle>().empty()); // what the rule is for
-
-        QVERIFY(core.setParam("obstacles", "max_ball_overlap", 0.5).ok());
-        QVERIFY(run(core).percepts.list<Obstacle>().empty());
-        bool said = false;
-        for (const auto& [i, note] : sink.published.at("obstacles.rejected").notes)
-            said = said || note.find("inside the ball") != std::string::npos;
-        QVERIFY(said);
-    }
-
-    void robotInOpenFieldIsAnObstacle()
-    {
-        cv::Mat f = field(50);
-        fillRect(f, 60, 120, 79, 170, Colour::ShadowObject);
-        fillRect(f, 64, 130, 75, 136, Colour::Pink); // team marker
-        MemoryDataWrapper data(f, test::testLut());
-        ControlWrapper core(data);
-        const Blackboard& bb = run(core);
-        QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
-        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 60) <= 2);
-        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 79) <= 2);
-        QCOMPARE(bb.percepts.list<Obstacle>()[0].bottom, 170);
-        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].top - 120) <= 1);
-    }
-
     void compiledReplacementRulesMatchThePlainRules()
     {
         for (const ReplacementRule& r : defaultReplacementRules())

@@ -158,7 +158,8 @@ const FixtureRules kBhumanRules{40, true, true, {}};
 const FixtureRules kNubotsRules{3, false, false, {"obstacles"}};
 
 /// A stream folder over the B-Human frames that `truth` annotates, with the horizons of the
-/// fixture's manifest and the team's colour table; empty (and a warning) on failure.
+/// fixture's manifest that the log marks valid (as `fieldsight import` takes them) and the team's
+/// colour table; empty (and a warning) on failure.
 QString makeBhumanStream(const QString& folder, const QJsonObject& horizons)
 {
     const QString source = test::referencePath("bhuman2009_log_coltable");
@@ -166,9 +167,10 @@ QString makeBhumanStream(const QString& folder, const QJsonObject& horizons)
     QJsonArray frames;
     for (const QString& name : manifest.keys()) {
         const QJsonObject h = manifest.value(name).toObject();
-        frames.append(QJsonObject{{"file", name},
-                                  {"timestamp_ms", h.value("timestamp_ms")},
-                                  {"horizon", h.value("horizon")}});
+        QJsonObject frame{{"file", name}, {"timestamp_ms", h.value("timestamp_ms")}};
+        if (h.value("valid").toBool())
+            frame.insert("horizon", h.value("horizon"));
+        frames.append(frame);
     }
     QString problem = test::makeLinkedStream(
         folder, source + "/frames_ycbcr", frames,
@@ -394,20 +396,23 @@ private slots:
         checkFloor("ball", s.balls, 0.97, 0.97);
         checkFloor("goalpost", s.goalposts, 0.95, 0.95);
         // No box inside the ball (issue 23): 1/36/13; no edge dips on this stream: 1/25/13.
-        QVERIFY2(s.obstacles.tp + s.obstacles.concealed_found >= 1 && s.obstacles.fp <= 30,
-                 qPrintable(scoreLine("obstacle", s.obstacles)));
+        // White robots, the edge's band taken along each stretch of it, pieces within one
+        // robot's width joined and pieces narrower than a robot dropped (issue 23): 12/21/2.
+        // Most false boxes left are a red object close to the camera that the truth leaves out
+        // (f030, f031, f034) and things on the wall where the green horizon is above the carpet.
+        checkFloor("obstacle", s.obstacles, 0.30, 0.78);
         // Field lines (the centre circle is not annotated, so its chords count as false):
         // 42/111/18, and with green on both sides of a line point (issue 23) 43/65/17.
         QVERIFY2(s.field_lines.fp <= 75 && s.field_lines.recall() >= 0.68,
                  qPrintable(scoreLine("field line", s.field_lines)));
         // With the field's edge taken as the green connected to the field below (not green on the
         // wall above a wider gap) and dense (issue 23): mean 14.14 -> 5.42 px, median 4.83 ->
-        // 2.92 px.
+        // 2.92 px; with denser green and fewer high outliers kept: mean 3.29 px, median 1.58 px.
         std::sort(boundary_errors.begin(), boundary_errors.end());
         QVERIFY(!boundary_errors.empty());
         const double median = boundary_errors[boundary_errors.size() / 2];
         qInfo().noquote() << QString("field boundary: median error %1 px").arg(median, 0, 'f', 2);
-        QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 6.5 && median <= 3.5,
+        QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 4.0 && median <= 2.2,
                  qPrintable(QString("mean %1, median %2").arg(s.boundaryMeanError()).arg(median)));
     }
 

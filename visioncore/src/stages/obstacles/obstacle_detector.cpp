@@ -48,6 +48,59 @@ const StageInfo& ObstacleDetector::info() const
     return info;
 }
 
+void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask, bool band,
+                                   int spacing, const std::vector<char>& post)
+{
+    const auto field = [mask](Colour c) { return (mask >> unsigned(c)) & 1u; };
+    const std::size_t n = region.size();
+    // How far down each vertical scan's first run of obstacle colour reaches from the green
+    // horizon (with edge_band, short field-coloured bits inside it included, as in a run).
+    std::vector<int>& depth = m_edge_depth;
+    depth.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Scan& scan = region[i];
+        std::size_t k = 0;
+        while (k < scan.size() &&
+               (!field(scan[k].colour) || (band && scan[k].length() <= 3 && k + 1 < scan.size() &&
+                                           !field(scan[k + 1].colour))))
+            ++k;
+        if (k > 0)
+            depth[i] = scan[k - 1].y1 - scan[0].y0;
+    }
+    std::vector<int>& usual = m_usual_depth;
+    std::vector<int>& nearby = m_sorted_depth;
+    if (!band) {
+        // The field edge's own blend band is about the same everywhere: the median over the image.
+        nearby.assign(depth.begin(), depth.end());
+        const auto mid = nearby.begin() + std::ptrdiff_t(n / 2);
+        std::nth_element(nearby.begin(), mid, nearby.end());
+        usual.assign(n, *mid);
+        return;
+    }
+    // The band (the blend into the wall, the strip of wall or goal frame that the green horizon
+    // left above the carpet) changes along the edge: the median over edge_window around each
+    // column, leaving out goalposts (their colour starts no run) and not reaching past one (inside
+    // a goal the edge is the goal's back). A robot narrower than half the window stands out.
+    const std::size_t half = std::size_t(std::max(1, int(m_edge_window / (2 * spacing))));
+    usual.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::size_t from = i, to = i;
+        while (from > 0 && i - from < half && !post[from - 1])
+            --from;
+        while (to + 1 < n && to - i < half && !post[to + 1])
+            ++to;
+        nearby.clear();
+        for (std::size_t j = from; j <= to; ++j)
+            if (!post[j])
+                nearby.push_back(depth[j]);
+        if (nearby.empty())
+            continue;
+        const auto mid = nearby.begin() + std::ptrdiff_t(nearby.size() / 2);
+        std::nth_element(nearby.begin(), mid, nearby.end());
+        usual[i] = *mid;
+    }
+}
+
 void ObstacleDetector::run(Blackboard& bb)
 {
     std::vector<Obstacle>& obstacles = bb.percepts.output<Obstacle>();
@@ -66,34 +119,34 @@ void ObstacleDetector::run(Blackboard& bb)
     runs.clear();
     DebugDrawing* rejected = bb.debug.layer("obstacles.rejected");
     const int spacing = std::max(1, bb.verticalScanSpacing(1));
-    // How many non-field pixels each vertical scan starts with: the field edge's own blend band
-    // is about the same everywhere, so a column well deeper than the median is covered by
-    // something standing at the edge of the field (a robot behind the goal line, whose foot is
-    // barely below the green horizon and so too short for a run of its own).
-    std::vector<int>& edge_depth = m_edge_depth;
-    edge_depth.assign(region.size(), 0);
-    for (std::size_t i = 0; i < region.size(); ++i) {
-        const Scan& scan = region[i];
-        for (std::size_t k = 0; k < scan.size() && !isFieldColour(scan[k].colour); ++k)
-            edge_depth[i] += scan[k].length();
-    }
-    std::vector<int>& sorted_depth = m_sorted_depth;
-    sorted_depth.assign(edge_depth.begin(), edge_depth.end());
-    std::nth_element(sorted_depth.begin(),
-                     sorted_depth.begin() + std::ptrdiff_t(sorted_depth.size() / 2),
-                     sorted_depth.end());
-    const int usual_depth = sorted_depth[sorted_depth.size() / 2];
+    // White robots (white_robots): white is field colour to the runs below, so a white robot
+    // leaves none; a column without another run then takes one counting white as obstacle colour.
+    const bool white_robots = m_white_robots;
+    const unsigned white_mask = field_mask & ~(1u << unsigned(Colour::White));
+    const bool band = m_edge_band;
+    const auto atPost = [&](const Scan& scan) {
+        return !scan.empty() &&
+               std::any_of(goalposts.begin(), goalposts.end(), [&](const Goalpost& g) {
+                   return scan[0].x0 >= g.left - spacing && scan[0].x0 <= g.right + spacing;
+               });
+    };
+    std::vector<char>& at_post = m_at_post;
+    at_post.resize(region.size());
+    for (std::size_t i = 0; i < region.size(); ++i)
+        at_post[i] = atPost(region[i]);
+    measureEdge(region, white_robots ? white_mask : field_mask, band, spacing, at_post);
+    const std::vector<int>& edge_depth = m_edge_depth;
+    const std::vector<int>& usual_depth = m_usual_depth;
     const int min_edge_dip = m_min_edge_dip;
 
-    for (std::size_t i = 0; i < region.size(); ++i) {
-        const Scan& scan = region[i];
+    // The lowest run of obstacle colour on a scan that is long enough and stands (see below).
+    const auto lowestRun = [&](const Scan& scan, unsigned mask, bool report, Run& best) {
+        const auto field = [mask](Colour c) { return (mask >> unsigned(c)) & 1u; };
         bool have = false;
-        Run best{};
         int top = -1;
         int bottom = -1;
         for (std::size_t k = 0; k <= scan.size(); ++k) {
-            const bool field = k == scan.size() || isFieldColour(scan[k].colour);
-            if (!field) {
+            if (k < scan.size() && !field(scan[k].colour)) {
                 if (top < 0)
                     top = scan[k].y0;
                 bottom = scan[k].y1 - 1;
@@ -102,7 +155,7 @@ void ObstacleDetector::run(Blackboard& bb)
             // A run ends at field colour; short field-coloured bits inside a robot (a white
             // marking) are part of it when the run continues right after.
             if (top >= 0 && k < scan.size() && scan[k].length() <= 3 && k + 1 < scan.size() &&
-                !isFieldColour(scan[k + 1].colour))
+                !field(scan[k + 1].colour))
                 continue;
             // Something standing on the field as tall as the camera reaches the horizon, so its run
             // is tall for how far below the green horizon its foot is (a robot breaking the
@@ -117,9 +170,9 @@ void ObstacleDetector::run(Blackboard& bb)
             const bool standing = bottom - top + 1 - min_run >= m_min_height_ratio * foot_depth;
             if (top >= 0 && bottom - top + 1 >= min_run) {
                 if (standing && bottom - gh >= m_min_distance_from_horizon) {
-                    best = {scan[0].x0, top, bottom};
+                    best = {x, top, bottom};
                     have = true;
-                } else if (rejected) {
+                } else if (report && rejected) {
                     addRejected(
                         *rejected,
                         lineShape({double(x), double(top)}, {double(x), double(bottom)}, {}),
@@ -131,14 +184,30 @@ void ObstacleDetector::run(Blackboard& bb)
             }
             top = -1;
         }
+        return have;
+    };
+
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        const Scan& scan = region[i];
+        Run best{};
+        bool have = lowestRun(scan, field_mask, true, best);
+        if (!have && white_robots)
+            have = lowestRun(scan, white_mask, true, best);
+        const int dip = edge_depth[i] - usual_depth[i];
+        // A run from the green horizon that ends about where the field usually starts along this
+        // stretch is the edge's own band, not something standing on the field.
+        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= 3 && dip < min_edge_dip) {
+            have = false;
+            if (rejected)
+                addRejected(*rejected,
+                            lineShape({double(best.x), double(best.top)},
+                                      {double(best.x), double(best.bottom)}, {}),
+                            "from the green horizon to " + std::to_string(dip) +
+                                " px below where the field usually starts (min_edge_dip)");
+        }
         // A goalpost covers the field edge too.
-        const bool at_post =
-            !scan.empty() &&
-            std::any_of(goalposts.begin(), goalposts.end(), [&](const Goalpost& g) {
-                return scan[0].x0 >= g.left - spacing && scan[0].x0 <= g.right + spacing;
-            });
-        if (!have && !at_post && !scan.empty() && min_edge_dip > 0 &&
-            edge_depth[i] >= min_edge_dip && edge_depth[i] >= usual_depth + min_edge_dip) {
+        if (!have && !at_post[i] && !scan.empty() && min_edge_dip > 0 && edge_depth[i] > 0 &&
+            dip >= min_edge_dip) {
             best = {scan[0].x0, scan[0].y0, scan[0].y0 + edge_depth[i] - 1};
             have = true;
         }
@@ -180,13 +249,15 @@ void ObstacleDetector::run(Blackboard& bb)
     // standing (narrower than max_width_ratio of its height) and some horizontal scan line crosses
     // from one to the other without seeing field (the torso). Two robots side by side are not.
     const auto& rows = bb.horizontal_scan_ys;
+    const unsigned join_mask = white_robots ? white_mask : field_mask;
     const auto joined = [&](int x0, int x1, int top, int bottom) {
         for (std::size_t i = 0; i < rows.size() && i < bb.horizontal_filtered.size(); ++i) {
             if (rows[i] < top || rows[i] > bottom)
                 continue;
             bool open = false;
             for (const ColourSegment& s : bb.horizontal_filtered[i])
-                open = open || (s.x1 > x0 && s.x0 <= x1 && isFieldColour(s.colour));
+                open =
+                    open || (s.x1 > x0 && s.x0 <= x1 && ((join_mask >> unsigned(s.colour)) & 1u));
             if (!open)
                 return true;
         }
@@ -197,8 +268,20 @@ void ObstacleDetector::run(Blackboard& bb)
         const Group& b = groups[i + 1];
         const int top = std::min(a.top, b.top), bottom = std::max(a.bottom, b.bottom);
         const int width = b.last_x - a.first_x + spacing;
-        if (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
-            joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom))) {
+        // With the camera's horizon, how wide one robot may be is known from where it stands
+        // (robot_width of its foot's depth below the horizon): pieces on about the same row that
+        // fit in one robot's width are one robot, whether or not a scan line crosses between
+        // them (the crossing may be above the green horizon, where nothing is scanned).
+        bool one_robot = false;
+        if (m_robot_width > 0 && bb.kinematic_horizon.known()) {
+            const double depth =
+                bottom - bb.kinematic_horizon.yAt(0.5 * (a.first_x + b.last_x), bb.width());
+            one_robot = depth > 0 && width <= m_robot_width * depth &&
+                        std::abs(a.bottom - b.bottom) <= 0.25 * depth;
+        }
+        if (one_robot ||
+            (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
+             joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom)))) {
             a.last_x = b.last_x;
             a.top = top;
             a.bottom = bottom;
@@ -233,6 +316,27 @@ void ObstacleDetector::run(Blackboard& bb)
                     continue;
                 o.left = std::min(o.left, std::max(int(s.x0), g.first_x - spacing));
                 o.right = std::max(o.right, std::min(s.x1 - 1, g.last_x + spacing));
+            }
+        }
+        // Something standing is about as wide as half its height, and its height in the image
+        // is how far its foot is below the horizon (a robot is about as tall as the camera is
+        // high): pieces much narrower are a robot's part or the wall's, not a robot.
+        if (m_min_width_ratio > 0) {
+            const Horizon& k = bb.kinematic_horizon;
+            const double cx = 0.5 * (o.left + o.right);
+            const double horizon =
+                k.known() ? k.yAt(cx, bb.width()) : double(bb.green_horizon.yAt(int(cx)));
+            const double wanted = m_min_width_ratio * (o.bottom - horizon);
+            if (o.right - o.left + 1 < wanted) {
+                if (rejected)
+                    addRejected(*rejected,
+                                rectShape({double(o.left), double(o.top)},
+                                          {double(o.right), double(o.bottom)}, {}),
+                                std::to_string(o.right - o.left + 1) + " px wide, under the " +
+                                    oneDecimal(wanted) +
+                                    " px its foot's depth below the horizon wants "
+                                    "(min_width_ratio)");
+                continue;
             }
         }
         // A ball's shading and highlights leave runs of other colours inside it.

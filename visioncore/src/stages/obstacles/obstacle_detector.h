@@ -4,6 +4,7 @@
 // the horizon; a robot in front of open field is found too (the original missed those).
 #pragma once
 
+#include "visioncore/basics/segments.h"
 #include "visioncore/framework/stage.h"
 
 #include <vector>
@@ -30,11 +31,19 @@ private:
         int first_x, last_x, top, bottom, columns;
         int last_top, last_bottom;
     };
+    /// Fills m_edge_depth (how far each vertical scan's first run of obstacle colour reaches) and
+    /// m_usual_depth (where the field usually starts there; see edge_band).
+    /// `at_post`: per scan, whether a goalpost stands there.
+    void measureEdge(const SegmentedRegion& region, unsigned mask, bool band, int spacing,
+                     const std::vector<char>& at_post);
+
     // Per-frame scratch, kept so a frame allocates nothing once they have grown.
     std::vector<Run> m_runs;
     std::vector<int> m_edge_depth;
     std::vector<int> m_sorted_depth;
     std::vector<Group> m_groups;
+    std::vector<int> m_usual_depth;
+    std::vector<char> m_at_post;
 
     Param<int> m_min_run{this,
                          6,
@@ -68,6 +77,19 @@ private:
         0.75,
         {"max_width_ratio", "", 0, 5, 0.05,
          "Pieces of one robot merge while the whole is at most this wide for its height."}};
+    Param<double> m_min_width_ratio{
+        this,
+        0,
+        {"min_width_ratio", "", 0, 2, 0.05,
+         "An obstacle must be at least this wide, as a share of how far its foot is below the "
+         "horizon (the kinematic one where the stream has it, else the green horizon); 0: off."}};
+    Param<double> m_robot_width{
+        this,
+        0,
+        {"robot_width", "", 0, 3, 0.05,
+         "Where the stream gives the camera's horizon: the widest one robot can be, as a share "
+         "of how far its foot is below the horizon; pieces on about the same row within it are "
+         "one robot (0: off)."}};
     Param<double> m_max_ball_overlap{
         this,
         0.5,
@@ -80,6 +102,25 @@ private:
         {"min_edge_dip", "px", 0, 50, 1,
          "A column starting this many more non-field pixels than the usual one is covered by "
          "something at the field edge (0: off)."}};
+    Param<bool> m_edge_band{
+        this,
+        false,
+        {"edge_band", "", 0, 1, 1,
+         "The usual start of the field is taken along each column's stretch of the edge "
+         "(edge_window), not over the whole image, and a run from the green horizon must reach "
+         "min_edge_dip below it: less is the edge's own band (a wall strip, a goal's frame)."}};
+    Param<int> m_edge_window{
+        this,
+        120,
+        {"edge_window", "px", 10, 640, 5,
+         "With edge_band: the stretch of the edge over which the usual start of the field is "
+         "taken; a robot narrower than half of it stands out."}};
+    Param<bool> m_white_robots{
+        this,
+        false,
+        {"white_robots", "", 0, 1, 1,
+         "Robots may be white: a scan line with no run of other obstacle colour takes one "
+         "counting white, when it stands (not a field line)."}};
 };
 
 } // namespace fieldsight

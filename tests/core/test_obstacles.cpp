@@ -1,0 +1,187 @@
+// The obstacle stage's rules on small synthetic frames whose correct answer is known: robots in
+// the open and at the field's edge, white robots, the edge's own band, a robot in pieces.
+#include "support/recording_sink.h"
+#include "support/synthetic_frames.h"
+#include "visioncore/datawrappers/memory_data_wrapper.h"
+#include "visioncore/framework/control_wrapper.h"
+#include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/obstacle.h"
+
+#include <QtTest>
+
+#include <cmath>
+
+using namespace fieldsight;
+using test::fillCircle;
+using test::fillRect;
+
+namespace {
+
+/// Sky above row `edge`, field below.
+cv::Mat field(int edge = 60)
+{
+    cv::Mat f = test::filledFrame(320, 240, Colour::Unclassified);
+    fillRect(f, 0, edge, 319, 239, Colour::Green);
+    return f;
+}
+
+const Blackboard& run(ControlWrapper& core)
+{
+    auto r = core.runFrame();
+    if (!r.ok())
+        qFatal("runFrame failed: %s", r.error().message.c_str());
+    return core.blackboard();
+}
+
+const std::vector<Obstacle>& obstacles(ControlWrapper& core)
+{
+    return run(core).percepts.list<Obstacle>();
+}
+
+bool saidSo(const test::RecordingSink& sink, const char* words)
+{
+    const auto layer = sink.published.find("obstacles.rejected");
+    if (layer == sink.published.end())
+        return false;
+    for (const auto& [shape, note] : layer->second.notes)
+        if (note.find(words) != std::string::npos)
+            return true;
+    return false;
+}
+
+void set(ControlWrapper& core, const char* param, double value)
+{
+    const auto r = core.setParam("obstacles", param, value);
+    if (!r.ok())
+        qFatal("obstacles.%s: %s", param, r.error().message.c_str());
+}
+
+} // namespace
+
+class TestObstacles : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void noObstacleInsideTheBall()
+    {
+        cv::Mat f = field(50);
+        fillCircle(f, 160.0, 170.0, 30, Colour::Orange);
+        fillRect(f, 150, 142, 170, 198, Colour::ShadowObject);
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"obstacles.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("obstacles", "max_ball_overlap", 1).ok());
+        const Blackboard& off = run(core);
+        QCOMPARE(off.percepts.list<Ball>().size(), std::size_t(1));
+        QVERIFY(!off.percepts.list<Obstacle>().empty()); // what the rule is for
+
+        QVERIFY(core.setParam("obstacles", "max_ball_overlap", 0.5).ok());
+        QVERIFY(run(core).percepts.list<Obstacle>().empty());
+        bool said = false;
+        for (const auto& [i, note] : sink.published.at("obstacles.rejected").notes)
+            said = said || note.find("inside the ball") != std::string::npos;
+        QVERIFY(said);
+    }
+
+    void robotInOpenFieldIsAnObstacle()
+    {
+        cv::Mat f = field(50);
+        fillRect(f, 60, 120, 79, 170, Colour::ShadowObject);
+        fillRect(f, 64, 130, 75, 136, Colour::Pink); // team marker
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        const Blackboard& bb = run(core);
+        QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 60) <= 2);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 79) <= 2);
+        QCOMPARE(bb.percepts.list<Obstacle>()[0].bottom, 170);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].top - 120) <= 1);
+    }
+
+    void whiteRobotIsFoundOnlyWhenRobotsMayBeWhite()
+    {
+        cv::Mat f = field(60);
+        fillRect(f, 100, 20, 139, 110, Colour::White); // a white robot breaking the field's edge
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        QVERIFY(obstacles(core).empty()); // white is the lines' colour, so field colour
+
+        set(core, "white_robots", 1);
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(1));
+        QVERIFY(std::abs(found[0].left - 100) <= 2);
+        QVERIFY(std::abs(found[0].right - 139) <= 2);
+        QCOMPARE(found[0].bottom, 110);
+    }
+
+    void theEdgesOwnBandIsNoObstacle()
+    {
+        // The green horizon follows the carpet where it shows through (three gaps) and bridges
+        // a dark band below it elsewhere: the strip of wall it left above the carpet.
+        cv::Mat f = field(60);
+        fillRect(f, 0, 60, 319, 69, Colour::ShadowObject);
+        for (int x0 : {0, 150, 305})
+            fillRect(f, x0, 60, x0 + 14, 69, Colour::Green);
+        fillRect(f, 200, 20, 229, 100, Colour::ShadowObject); // a robot at the edge
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"obstacles.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(obstacles(core).size() >= 2); // the band's pieces are boxes too: the rule's case
+
+        set(core, "edge_band", 1);
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(1));
+        QVERIFY(std::abs(found[0].left - 200) <= 2);
+        QVERIFY(std::abs(found[0].right - 229) <= 2);
+        QCOMPARE(found[0].bottom, 100);
+        QVERIFY(saidSo(sink, "below where the field usually starts"));
+    }
+
+    void piecesWithinOneRobotsWidthAreOneRobot()
+    {
+        // Two legs with field between them, under a camera horizon at row 40: a robot whose foot
+        // is 110 px below the horizon may be that wide.
+        cv::Mat f = field(60);
+        fillRect(f, 100, 90, 111, 150, Colour::ShadowObject);
+        fillRect(f, 129, 90, 140, 150, Colour::ShadowObject);
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
+        ControlWrapper core(data);
+        QCOMPARE(obstacles(core).size(), std::size_t(2));
+
+        set(core, "robot_width", 1.0);
+        QCOMPARE(obstacles(core).size(), std::size_t(1));
+        QVERIFY(std::abs(obstacles(core)[0].left - 100) <= 2);
+        QVERIFY(std::abs(obstacles(core)[0].right - 140) <= 2);
+
+        set(core, "robot_width", 0.3); // 33 px: the two legs span more
+        QCOMPARE(obstacles(core).size(), std::size_t(2));
+    }
+
+    void somethingFarNarrowerThanARobotIsNone()
+    {
+        cv::Mat f = field(60);
+        fillRect(f, 200, 80, 207, 150, Colour::ShadowObject); // a pole 8 px wide
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
+        test::RecordingSink sink;
+        sink.layers = {"obstacles.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QCOMPARE(obstacles(core).size(), std::size_t(1));
+
+        set(core, "min_width_ratio", 0.3); // 33 px wanted 110 px below the horizon
+        QVERIFY(obstacles(core).empty());
+        QVERIFY(saidSo(sink, "min_width_ratio"));
+        set(core, "min_width_ratio", 0.05); // 5.5 px
+        QCOMPARE(obstacles(core).size(), std::size_t(1));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestObstacles)
+#include "test_obstacles.moc"
