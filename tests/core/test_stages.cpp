@@ -119,6 +119,31 @@ private slots:
         QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].bottom - 150) <= 1);
     }
 
+    void thrownGreenHorizonPointsSayWhy()
+    {
+        cv::Mat f = field(100);
+        fillRect(f, 0, 20, 319, 40, Colour::Green); // a green wall above a wide gap
+        // Green rising from the field near enough to the wall that two columns bridge the gap and
+        // start on the wall, far above all the others.
+        fillRect(f, 150, 70, 170, 99, Colour::Green);
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"green_horizon.thrown_points"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("green_horizon", "max_field_gap", 30).ok());
+        const Blackboard& bb = run(core);
+        QCOMPARE(bb.green_horizon.yAt(10), 100);
+        const DebugDrawing& thrown = sink.published.at("green_horizon.thrown_points");
+        QCOMPARE(thrown.shapes.size(), std::size_t(2));
+        QCOMPARE(thrown.shapes[0].points.size(), std::size_t(28)); // the wall, the other columns
+        QVERIFY(thrown.notes.at(0).find("max_field_gap") != std::string::npos);
+        QCOMPARE(thrown.shapes[1].points.size(), std::size_t(2));
+        for (const PointF& p : thrown.shapes[1].points)
+            QVERIFY(p.y == 20 && p.x >= 150 && p.x <= 170);
+        QVERIFY(thrown.notes.at(1).find("upper_threshold_mult") != std::string::npos);
+    }
+
     void greenHorizonIgnoresGreenAboveTheKinematicHorizon()
     {
         cv::Mat f = field(100);

@@ -148,6 +148,8 @@ void GreenHorizonDetector::run(Blackboard& bb)
         if (const auto start = fieldStart(bb, x, y0, horizon))
             points.push_back({x, *start});
     }
+    // The thrown points so far are green runs above a gap; those added below are outliers.
+    const std::size_t above_gaps = bb.gh_thrown_points.size();
 
     if (auto* d = bb.debug.layer("green_horizon.kinematic_horizon"))
         d->add(lineShape({0, bb.kinematic_horizon.y_left},
@@ -160,6 +162,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         // the scan points above are this frame's, never stale ones).
         bb.green_horizon.set({}, w, h);
         bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
+        drawThrown(bb, above_gaps);
         return;
     }
 
@@ -201,8 +204,27 @@ void GreenHorizonDetector::run(Blackboard& bb)
     bb.green_horizon.set(hull, w, h);
     bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 
-    if (auto* d = bb.debug.layer("green_horizon.thrown_points"))
-        d->add(pointsShape(bb.gh_thrown_points, debug_colour::kGrey, 3));
+    drawThrown(bb, above_gaps);
+}
+
+void GreenHorizonDetector::drawThrown(Blackboard& bb, std::size_t above_gaps) const
+{
+    DebugDrawing* d = bb.debug.layer("green_horizon.thrown_points");
+    if (!d)
+        return;
+    // One shape for each reason, its note saying which (the inspector shows it).
+    const std::vector<PixelPoint>& thrown = bb.gh_thrown_points;
+    const auto split = thrown.begin() + std::ptrdiff_t(std::min(above_gaps, thrown.size()));
+    const std::vector<PixelPoint> gaps(thrown.begin(), split), high(split, thrown.end());
+    if (!gaps.empty())
+        d->add(pointsShape(gaps, debug_colour::kGrey, 3),
+               "green above a gap wider than a field line there (max_field_gap): a wall, not "
+               "the field");
+    if (!high.empty())
+        d->add(pointsShape(high, debug_colour::kGrey, 3),
+               "more than " + oneDecimal(m_upper_threshold_mult) +
+                   " standard deviations above the other columns' field start "
+                   "(upper_threshold_mult)");
 }
 
 } // namespace fieldsight

@@ -27,6 +27,9 @@ private:
     /// kinematic horizon's row there; none when the stream gives none), if it has one. Green
     /// runs above the field it rejects are added to the thrown points.
     std::optional<int> fieldStart(Blackboard& bb, int x, int y0, std::optional<double> horizon);
+    /// The thrown-points layer, if asked for: the first `above_gaps` points were green above a
+    /// gap, the rest outliers.
+    void drawThrown(Blackboard& bb, std::size_t above_gaps) const;
 
     Param<int> m_scan_spacing{
         this,
