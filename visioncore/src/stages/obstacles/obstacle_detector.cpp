@@ -130,10 +130,13 @@ void ObstacleDetector::run(Blackboard& bb)
                    return scan[0].x0 >= g.left - spacing && scan[0].x0 <= g.right + spacing;
                });
     };
+    // Where goalposts stand: for every column when the edge's band is measured along its
+    // stretches, else only where a column has no run of its own (below).
     std::vector<char>& at_post = m_at_post;
-    at_post.resize(region.size());
-    for (std::size_t i = 0; i < region.size(); ++i)
-        at_post[i] = atPost(region[i]);
+    at_post.assign(region.size(), 0);
+    if (band)
+        for (std::size_t i = 0; i < region.size(); ++i)
+            at_post[i] = atPost(region[i]);
     measureEdge(region, white_robots ? white_mask : field_mask, band, spacing, at_post);
     const std::vector<int>& edge_depth = m_edge_depth;
     const std::vector<int>& usual_depth = m_usual_depth;
@@ -206,8 +209,8 @@ void ObstacleDetector::run(Blackboard& bb)
                                 " px below where the field usually starts (min_edge_dip)");
         }
         // A goalpost covers the field edge too.
-        if (!have && !at_post[i] && !scan.empty() && min_edge_dip > 0 && edge_depth[i] > 0 &&
-            dip >= min_edge_dip) {
+        if (!have && !scan.empty() && min_edge_dip > 0 && edge_depth[i] > 0 &&
+            dip >= min_edge_dip && !(band ? at_post[i] : atPost(scan))) {
             best = {scan[0].x0, scan[0].y0, scan[0].y0 + edge_depth[i] - 1};
             have = true;
         }
