@@ -5,6 +5,7 @@
 #include "visioncore/datawrappers/memory_data_wrapper.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/percepts/ball.h"
+#include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"
 
 #include <QtTest>
@@ -63,6 +64,8 @@ class TestObstacles : public QObject
     Q_OBJECT
 
 private slots:
+    /// A close ball's shading (a dark band through it) is no obstacle standing there: the box is
+    /// drawn on the rejected layer instead.
     void noObstacleInsideTheBall()
     {
         cv::Mat f = field(50);
@@ -140,6 +143,29 @@ private slots:
         QVERIFY(std::abs(found[0].right - 229) <= 2);
         QCOMPARE(found[0].bottom, 100);
         QVERIFY(saidSo(sink, "below where the field usually starts"));
+    }
+
+    void aRobotBesideAGoalpostStandsOutOfTheBand()
+    {
+        // The band as above; a post (not obstacle colour) and a robot right beside it. The
+        // stretch of edge around the robot's columns cannot reach past the post, so it reaches
+        // further the other way, past the robot.
+        cv::Mat f = field(60);
+        fillRect(f, 0, 60, 319, 69, Colour::ShadowObject);
+        for (int x0 : {0, 150, 305})
+            fillRect(f, x0, 60, x0 + 14, 69, Colour::Green);
+        fillRect(f, 200, 5, 209, 75, Colour::Yellow);         // the post, foot on the field
+        fillRect(f, 212, 20, 251, 100, Colour::ShadowObject); // a robot 40 px wide beside it
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        set(core, "edge_band", 1);
+        set(core, "edge_window", 80);
+        const Blackboard& bb = run(core);
+        QCOMPARE(bb.percepts.list<Goalpost>().size(), std::size_t(1));
+        const std::vector<Obstacle>& found = bb.percepts.list<Obstacle>();
+        QCOMPARE(found.size(), std::size_t(1));
+        QVERIFY(std::abs(found[0].left - 212) <= 2);
+        QVERIFY(std::abs(found[0].right - 251) <= 2);
     }
 
     void piecesWithinOneRobotsWidthAreOneRobot()

@@ -395,8 +395,6 @@ private slots:
             QVERIFY(shape.points[0].x >= 192 && shape.points[0].x <= 247);
     }
 
-    /// A close ball's shading (a dark band through it) is no obstacle standing there: the box is
-    /// drawn on the rejected layer instead.
     void compiledReplacementRulesMatchThePlainRules()
     {
         for (const ReplacementRule& r : defaultReplacementRules())

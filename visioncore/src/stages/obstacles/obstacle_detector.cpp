@@ -84,11 +84,15 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
     const std::size_t half = std::size_t(std::max(1, int(m_edge_window / (2 * spacing))));
     usual.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
+        // 2 half + 1 columns: where a goalpost or the image's side stops one side, the other
+        // side reaches further, so a robot beside a post still has field edge around it.
         std::size_t from = i, to = i;
         while (from > 0 && i - from < half && !post[from - 1])
             --from;
-        while (to + 1 < n && to - i < half && !post[to + 1])
+        while (to + 1 < n && to - from < 2 * half && !post[to + 1])
             ++to;
+        while (from > 0 && to - from < 2 * half && !post[from - 1])
+            --from;
         nearby.clear();
         for (std::size_t j = from; j <= to; ++j)
             if (!post[j])
@@ -193,7 +197,8 @@ void ObstacleDetector::run(Blackboard& bb)
     for (std::size_t i = 0; i < region.size(); ++i) {
         const Scan& scan = region[i];
         Run best{};
-        bool have = lowestRun(scan, field_mask, true, best);
+        // (With white robots the second look sees every run the first does: it alone reports.)
+        bool have = lowestRun(scan, field_mask, !white_robots, best);
         if (!have && white_robots)
             have = lowestRun(scan, white_mask, true, best);
         const int dip = edge_depth[i] - usual_depth[i];
@@ -205,7 +210,7 @@ void ObstacleDetector::run(Blackboard& bb)
                 addRejected(*rejected,
                             lineShape({double(best.x), double(best.top)},
                                       {double(best.x), double(best.bottom)}, {}),
-                            "from the green horizon to " + std::to_string(dip) +
+                            "from the green horizon to " + std::to_string(std::max(0, dip)) +
                                 " px below where the field usually starts (min_edge_dip)");
         }
         // A goalpost covers the field edge too.

@@ -114,13 +114,14 @@ private:
         120,
         {"edge_window", "px", 10, 640, 5,
          "With edge_band: the stretch of the edge over which the usual start of the field is "
-         "taken; a robot narrower than half of it stands out."}};
+         "taken (not past a goalpost); a robot narrower than half of it stands out."}};
     Param<bool> m_white_robots{
         this,
         false,
         {"white_robots", "", 0, 1, 1,
          "Robots may be white: a scan line with no run of other obstacle colour takes one "
-         "counting white, when it stands (not a field line)."}};
+         "counting white, when it stands (not a field line); white also counts as obstacle "
+         "colour for the edge's depth and for joining a robot's pieces."}};
 };
 
 } // namespace fieldsight
