@@ -1,6 +1,7 @@
 // The obstacle stage's rules on small synthetic frames whose correct answer is known: robots in
 // the open and at the field's edge, white robots, the edge's own band, a robot in pieces.
 #include "support/recording_sink.h"
+#include "support/field_frames.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/datawrappers/memory_data_wrapper.h"
 #include "visioncore/framework/control_wrapper.h"
@@ -18,25 +19,12 @@ using test::fillRect;
 
 namespace {
 
-/// Sky above row `edge`, field below.
-cv::Mat field(int edge = 60)
-{
-    cv::Mat f = test::filledFrame(320, 240, Colour::Unclassified);
-    fillRect(f, 0, edge, 319, 239, Colour::Green);
-    return f;
-}
-
-const Blackboard& run(ControlWrapper& core)
-{
-    auto r = core.runFrame();
-    if (!r.ok())
-        qFatal("runFrame failed: %s", r.error().message.c_str());
-    return core.blackboard();
-}
+using test::fieldFrame;
+using test::runOrDie;
 
 const std::vector<Obstacle>& obstacles(ControlWrapper& core)
 {
-    return run(core).percepts.list<Obstacle>();
+    return runOrDie(core).percepts.list<Obstacle>();
 }
 
 bool saidSo(const test::RecordingSink& sink, const char* words)
@@ -68,7 +56,7 @@ private slots:
     /// drawn on the rejected layer instead.
     void noObstacleInsideTheBall()
     {
-        cv::Mat f = field(50);
+        cv::Mat f = fieldFrame(50);
         fillCircle(f, 160.0, 170.0, 30, Colour::Orange);
         fillRect(f, 150, 142, 170, 198, Colour::ShadowObject);
         MemoryDataWrapper data(f, test::testLut());
@@ -77,12 +65,12 @@ private slots:
         data.setDebugSink(&sink);
         ControlWrapper core(data);
         QVERIFY(core.setParam("obstacles", "max_ball_overlap", 1).ok());
-        const Blackboard& off = run(core);
+        const Blackboard& off = runOrDie(core);
         QCOMPARE(off.percepts.list<Ball>().size(), std::size_t(1));
         QVERIFY(!off.percepts.list<Obstacle>().empty()); // what the rule is for
 
         QVERIFY(core.setParam("obstacles", "max_ball_overlap", 0.5).ok());
-        QVERIFY(run(core).percepts.list<Obstacle>().empty());
+        QVERIFY(runOrDie(core).percepts.list<Obstacle>().empty());
         bool said = false;
         for (const auto& [i, note] : sink.published.at("obstacles.rejected").notes)
             said = said || note.find("inside the ball") != std::string::npos;
@@ -91,12 +79,12 @@ private slots:
 
     void robotInOpenFieldIsAnObstacle()
     {
-        cv::Mat f = field(50);
+        cv::Mat f = fieldFrame(50);
         fillRect(f, 60, 120, 79, 170, Colour::ShadowObject);
         fillRect(f, 64, 130, 75, 136, Colour::Pink); // team marker
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
         QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 60) <= 2);
         QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 79) <= 2);
@@ -106,7 +94,7 @@ private slots:
 
     void whiteRobotIsFoundOnlyWhenRobotsMayBeWhite()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 100, 20, 139, 110, Colour::White); // a white robot breaking the field's edge
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
@@ -124,7 +112,7 @@ private slots:
     {
         // The green horizon follows the carpet where it shows through (three gaps) and bridges
         // a dark band below it elsewhere: the strip of wall it left above the carpet.
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 0, 60, 319, 69, Colour::ShadowObject);
         for (int x0 : {0, 150, 305})
             fillRect(f, x0, 60, x0 + 14, 69, Colour::Green);
@@ -150,7 +138,7 @@ private slots:
         // The band as above; a post (not obstacle colour) and a robot right beside it. The
         // stretch of edge around the robot's columns cannot reach past the post, so it reaches
         // further the other way, past the robot.
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 0, 60, 319, 69, Colour::ShadowObject);
         for (int x0 : {0, 150, 305})
             fillRect(f, x0, 60, x0 + 14, 69, Colour::Green);
@@ -160,7 +148,7 @@ private slots:
         ControlWrapper core(data);
         set(core, "edge_band", 1);
         set(core, "edge_window", 80);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<Goalpost>().size(), std::size_t(1));
         const std::vector<Obstacle>& found = bb.percepts.list<Obstacle>();
         QCOMPARE(found.size(), std::size_t(1));
@@ -172,7 +160,7 @@ private slots:
     {
         // Two legs with field between them, under a camera horizon at row 40: a robot whose foot
         // is 110 px below the horizon may be that wide.
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 100, 90, 111, 150, Colour::ShadowObject);
         fillRect(f, 129, 90, 140, 150, Colour::ShadowObject);
         MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
@@ -191,7 +179,7 @@ private slots:
 
     void somethingFarNarrowerThanARobotIsNone()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 200, 80, 207, 150, Colour::ShadowObject); // a pole 8 px wide
         MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
                                Horizon{40, 40});
@@ -206,6 +194,26 @@ private slots:
         QVERIFY(saidSo(sink, "min_width_ratio"));
         set(core, "min_width_ratio", 0.05); // 5.5 px
         QCOMPARE(obstacles(core).size(), std::size_t(1));
+    }
+
+    void theCamerasOwnBodyLowInTheViewIsNoObstacle()
+    {
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 20, 150, 99, 239, Colour::ShadowObject);  // a shoulder at the bottom
+        fillRect(f, 200, 30, 279, 239, Colour::ShadowObject); // a robot close by, standing
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
+        test::RecordingSink sink;
+        sink.layers = {"obstacles.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QCOMPARE(obstacles(core).size(), std::size_t(2));
+
+        set(core, "cut_reach", 0.3); // up to row 40 + 0.3 * 199 = 99.7
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(1));
+        QVERIFY(std::abs(found[0].left - 200) <= 2);
+        QVERIFY(saidSo(sink, "cut_reach"));
     }
 };
 

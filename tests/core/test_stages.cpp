@@ -3,6 +3,7 @@
 #include "stages/common/ransac.h"
 #include "stages/transitions/transition_filter.h"
 #include "support/recording_sink.h"
+#include "support/field_frames.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/datawrappers/memory_data_wrapper.h"
@@ -24,21 +25,8 @@ using test::fillRect;
 
 namespace {
 
-/// Sky above row `edge`, field below.
-cv::Mat field(int edge = 60)
-{
-    cv::Mat f = test::filledFrame(320, 240, Colour::Unclassified);
-    fillRect(f, 0, edge, 319, 239, Colour::Green);
-    return f;
-}
-
-const Blackboard& run(ControlWrapper& core)
-{
-    auto r = core.runFrame();
-    if (!r.ok())
-        qFatal("runFrame failed: %s", r.error().message.c_str());
-    return core.blackboard();
-}
+using test::fieldFrame;
+using test::runOrDie;
 
 bool partFits(const ReplacementRule::Part& part, const ColourSegment& s)
 {
@@ -90,9 +78,9 @@ class TestStages : public QObject
 private slots:
     void greenHorizonFollowsAStraightFieldEdge()
     {
-        MemoryDataWrapper data(field(60), test::testLut());
+        MemoryDataWrapper data(fieldFrame(60), test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         for (int x : {0, 77, 160, 319})
             QCOMPARE(bb.green_horizon.yAt(x), 60);
         QCOMPARE(bb.gh_scan_points.size(), std::size_t(30)); // every 11 px over 320
@@ -100,11 +88,11 @@ private slots:
 
     void greenHorizonBridgesTheDipOfAnObstacle()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 100, 30, 139, 150, Colour::ShadowObject); // a robot hiding the field edge
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         for (int x = 0; x < 320; x += 20)
             QVERIFY2(std::abs(bb.green_horizon.yAt(x) - 60) <= 1, qPrintable(QString::number(x)));
         // The columns behind the robot saw green only below it.
@@ -121,7 +109,7 @@ private slots:
 
     void thrownGreenHorizonPointsSayWhy()
     {
-        cv::Mat f = field(100);
+        cv::Mat f = fieldFrame(100);
         fillRect(f, 0, 20, 319, 40, Colour::Green); // a green wall above a wide gap
         // Green rising from the field near enough to the wall that two columns bridge the gap and
         // start on the wall, far above all the others.
@@ -132,7 +120,7 @@ private slots:
         data.setDebugSink(&sink);
         ControlWrapper core(data);
         QVERIFY(core.setParam("green_horizon", "max_field_gap", 30).ok());
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.green_horizon.yAt(10), 100);
         const DebugDrawing& thrown = sink.published.at("green_horizon.thrown_points");
         QCOMPARE(thrown.shapes.size(), std::size_t(2));
@@ -146,12 +134,12 @@ private slots:
 
     void greenHorizonIgnoresGreenAboveTheKinematicHorizon()
     {
-        cv::Mat f = field(100);
+        cv::Mat f = fieldFrame(100);
         fillRect(f, 0, 0, 319, 20, Colour::Green); // a green banner in the stands
         MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
                                Horizon{40, 40});
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.green_horizon.yAt(160), 100);
     }
 
@@ -159,10 +147,10 @@ private slots:
     {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         for (const Horizon& h : {Horizon{4, 6.9e65}, Horizon{nan, 40}, Horizon{-2e6, 40}}) {
-            MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), field(100),
-                                   h);
+            MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()),
+                                   fieldFrame(100), h);
             ControlWrapper core(data);
-            const Blackboard& bb = run(core);
+            const Blackboard& bb = runOrDie(core);
             QCOMPARE(bb.kinematic_horizon, Horizon{});
             QCOMPARE(bb.green_horizon.yAt(160), 100);
             QCOMPARE(bb.diagnostics.size(), std::size_t(1));
@@ -172,19 +160,19 @@ private slots:
                      bb.diagnostics[0].message.c_str());
         }
         // A plausible one, even far below the image, is taken as it is.
-        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), field(100),
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), fieldFrame(100),
                                Horizon{5e5, 5e5});
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.kinematic_horizon, (Horizon{5e5, 5e5}));
         QVERIFY(bb.diagnostics.empty());
     }
 
     void scanlinesCoverTheImageWithExclusiveEnds()
     {
-        MemoryDataWrapper data(field(60), test::testLut());
+        MemoryDataWrapper data(fieldFrame(60), test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.horizontal_scan_ys.size(), std::size_t(60)); // 239, 235, ..., 3
         QCOMPARE(bb.horizontal_scan_ys.front(), 239);
         QCOMPARE(bb.horizontal_scan_ys.back(), 3);
@@ -203,12 +191,12 @@ private slots:
 
     void replacementRulesRemoveFieldNoise()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         // One unclassified pixel in the middle of the field on scan line y = 203.
         f.at<cv::Vec3b>(203, 150) = cv::Vec3b(10, 10, 10);
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         std::size_t row = 0;
         while (bb.horizontal_scan_ys[row] != 203)
             ++row;
@@ -219,11 +207,11 @@ private slots:
 
     void ballIsFoundAtItsKnownCentre()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillCircle(f, 120.0, 160.0, 9, Colour::Orange);
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<Ball>().size(), std::size_t(1));
         QVERIFY2(std::abs(bb.percepts.list<Ball>()[0].x - 120.0) < 0.75,
                  qPrintable(QString::number(bb.percepts.list<Ball>()[0].x)));
@@ -235,12 +223,12 @@ private slots:
 
     void ballHalfHiddenByARobotIsStillCentred()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillCircle(f, 150.0, 170.0, 12, Colour::Orange);
         fillRect(f, 150, 100, 200, 200, Colour::ShadowObject); // hides the right half
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<Ball>().size(), std::size_t(1));
         QVERIFY(std::hypot(bb.percepts.list<Ball>()[0].x - 150,
                            bb.percepts.list<Ball>()[0].y - 170) < 2.0);
@@ -251,7 +239,7 @@ private slots:
     /// the rejected layer with the reason, and the same blob passes when the size fits.
     void ballTooSmallForItsDistanceIsRejected()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillCircle(f, 120.0, 160.0, 9, Colour::Orange);
         // Horizon at row 40: the ball's centre 120 px below it, 24.6 degrees at 262 px focal
         // length; a ball below the camera 48 px gives about 20 px there, 25 px about 10.
@@ -263,7 +251,7 @@ private slots:
         ControlWrapper core(data);
         QVERIFY(core.setParam("ball", "focal_length", 262).ok());
         QVERIFY(core.setParam("ball", "radius_at_nadir", 48).ok());
-        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(0));
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(0));
         const DebugDrawing& rejected = sink.published.at("ball.rejected");
         QVERIFY(!rejected.shapes.empty());
         bool said = false;
@@ -272,36 +260,36 @@ private slots:
         QVERIFY2(said, "no rejected circle says its size does not fit its distance");
 
         QVERIFY(core.setParam("ball", "radius_at_nadir", 25).ok());
-        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(1));
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
         // Without a horizon the distance is unknown: no size rule.
         QVERIFY(core.setParam("ball", "radius_at_nadir", 48).ok());
         data.setFrame(f, Horizon{});
-        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(1));
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
     }
 
     void ballCentreMustBeInTheImage()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillCircle(f, -4.0, 160.0, 10, Colour::Orange); // more than half cut by the left edge
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(0));
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(0));
     }
 
     void noBallWithoutBallColour()
     {
-        MemoryDataWrapper data(field(60), test::testLut());
+        MemoryDataWrapper data(fieldFrame(60), test::testLut());
         ControlWrapper core(data);
-        QCOMPARE(run(core).percepts.list<Ball>().size(), std::size_t(0));
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(0));
     }
 
     void goalpostIsFoundAtItsKnownColumn()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 200, 5, 209, 100, Colour::Yellow); // 10 px wide, foot at y = 100
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<Goalpost>().size(), std::size_t(1));
         const Goalpost& g = bb.percepts.list<Goalpost>()[0];
         QCOMPARE(g.left, 200);
@@ -313,12 +301,12 @@ private slots:
 
     void twoPostsFarApartAreLeftAndRight()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillRect(f, 60, 5, 69, 100, Colour::Yellow);
         fillRect(f, 240, 5, 249, 100, Colour::Yellow);
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<Goalpost>().size(), std::size_t(2));
         const auto& left =
             bb.percepts.list<Goalpost>()[0].base_x < bb.percepts.list<Goalpost>()[1].base_x
@@ -332,7 +320,7 @@ private slots:
     /// post: it is drawn on the rejected layer with the reason.
     void postStandingAboveTheFieldIsRejected()
     {
-        cv::Mat f = field(120);
+        cv::Mat f = fieldFrame(120);
         fillRect(f, 200, 5, 209, 60, Colour::Yellow); // foot 60 px above the field's edge
         MemoryDataWrapper data(f, test::testLut());
         test::RecordingSink sink;
@@ -340,24 +328,24 @@ private slots:
         data.setDebugSink(&sink);
         ControlWrapper core(data);
         QVERIFY(core.setParam("goalposts", "max_foot_above_field", -1).ok());
-        QCOMPARE(run(core).percepts.list<Goalpost>().size(), std::size_t(1));
+        QCOMPARE(runOrDie(core).percepts.list<Goalpost>().size(), std::size_t(1));
         QVERIFY(core.setParam("goalposts", "max_foot_above_field", 40).ok());
-        QCOMPARE(run(core).percepts.list<Goalpost>().size(), std::size_t(0));
+        QCOMPARE(runOrDie(core).percepts.list<Goalpost>().size(), std::size_t(0));
         const DebugDrawing& rejected = sink.published.at("goalposts.rejected");
         QCOMPARE(rejected.shapes.size(), std::size_t(1));
         QVERIFY(rejected.notes.at(0).find("field's edge") != std::string::npos);
         // Standing on the field it is a post again.
         fillRect(f, 200, 60, 209, 130, Colour::Yellow);
-        QCOMPARE(run(core).percepts.list<Goalpost>().size(), std::size_t(1));
+        QCOMPARE(runOrDie(core).percepts.list<Goalpost>().size(), std::size_t(1));
     }
 
     void straightFieldLineIsFound()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         drawLine(f, 0, 200, 319, 140, 3, Colour::White);
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<FieldLine>().size(), std::size_t(1));
         const FieldLine& l = bb.percepts.list<FieldLine>()[0];
         const double slope = (l.y2 - l.y1) / (l.x2 - l.x1);
@@ -372,7 +360,7 @@ private slots:
     /// are drawn on the rejected layer.
     void whiteWithoutGreenBesideItIsNoFieldLine()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         drawLine(f, 0, 200, 319, 140, 3, Colour::White);
         fillRect(f, 192, 70, 247, 130, Colour::ShadowObject);
         fillRect(f, 200, 70, 239, 130, Colour::White); // a dark rim on both sides
@@ -381,10 +369,10 @@ private slots:
         sink.layers = {"field_lines.rejected"};
         data.setDebugSink(&sink);
         ControlWrapper core(data);
-        QVERIFY(run(core).percepts.list<FieldLine>().size() >= 2); // the robot makes a "line"
+        QVERIFY(runOrDie(core).percepts.list<FieldLine>().size() >= 2); // the robot makes a "line"
 
         QVERIFY(core.setParam("field_lines", "green_sides", 1).ok());
-        const Blackboard& bb = run(core);
+        const Blackboard& bb = runOrDie(core);
         QCOMPARE(bb.percepts.list<FieldLine>().size(), std::size_t(1));
         const FieldLine& l = bb.percepts.list<FieldLine>()[0];
         QVERIFY(std::min(l.x1, l.x2) < 10 && std::max(l.x1, l.x2) > 309); // the carpet's line
@@ -513,21 +501,21 @@ private slots:
 
     void sameFrameTwiceGivesTheSameOutput()
     {
-        cv::Mat f = field(60);
+        cv::Mat f = fieldFrame(60);
         fillCircle(f, 100, 150, 7, Colour::Orange);
         drawLine(f, 0, 220, 319, 120, 3, Colour::White);
         drawLine(f, 30, 239, 200, 70, 3, Colour::White);
         MemoryDataWrapper data(f, test::testLut());
         ControlWrapper core(data);
-        run(core);
+        runOrDie(core);
         const std::vector<FieldLine> first = core.blackboard().percepts.list<FieldLine>();
         // Both drawn lines are found, so the comparison below compares something.
         QCOMPARE(first.size(), std::size_t(2));
         // The same core again, and a second core on the same frame (no state carried over).
         MemoryDataWrapper other_data(f, test::testLut());
         ControlWrapper other(other_data);
-        run(other);
-        run(core);
+        runOrDie(other);
+        runOrDie(core);
         for (const ControlWrapper* c : {&core, &other}) {
             const auto& again = c->blackboard().percepts.list<FieldLine>();
             QCOMPARE(again.size(), first.size());

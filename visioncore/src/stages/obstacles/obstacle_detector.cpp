@@ -347,6 +347,24 @@ void ObstacleDetector::run(Blackboard& bb)
                 continue;
             }
         }
+        // Cut by the image's bottom row, the foot is out of view: something close to the camera.
+        // A robot that close is taller than the camera is high, so it reaches up to about the
+        // horizon; the observing robot's own shoulder or foot, low in the view, does not.
+        const Horizon& camera = bb.kinematic_horizon;
+        if (m_cut_reach > 0 && g.bottom >= h - 1 && camera.known()) {
+            const double horizon = camera.yAt(0.5 * (o.left + o.right), bb.width());
+            const double reach = horizon + m_cut_reach * (h - 1 - horizon);
+            if (o.top > reach) {
+                if (rejected)
+                    addRejected(*rejected,
+                                rectShape({double(o.left), double(o.top)},
+                                          {double(o.right), double(o.bottom)}, {}),
+                                "cut by the image's bottom but reaching only to row " +
+                                    std::to_string(o.top) + ", not up to row " + oneDecimal(reach) +
+                                    " (the robot's own body? cut_reach)");
+                continue;
+            }
+        }
         // A ball's shading and highlights leave runs of other colours inside it.
         const double area = double(o.right - o.left + 1) * double(o.bottom - o.top + 1);
         const auto inside = [&](const Ball& b) {

@@ -90,6 +90,13 @@ private:
          "Where the stream gives the camera's horizon: the widest one robot can be, as a share "
          "of how far its foot is below the horizon; pieces on about the same row within it are "
          "one robot (0: off)."}};
+    Param<double> m_cut_reach{
+        this,
+        0,
+        {"cut_reach", "", 0, 1, 0.05,
+         "Where the stream gives the camera's horizon: an obstacle cut by the image's bottom row "
+         "must reach up to within this share of the image below the horizon (a robot that close "
+         "is taller than the camera is high; the observing robot's own body is not); 0: off."}};
     Param<double> m_max_ball_overlap{
         this,
         0.5,
