@@ -12,6 +12,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <memory>
 
 using namespace fieldsight;
 using test::fillCircle;
@@ -21,6 +22,21 @@ namespace {
 
 using test::fieldFrame;
 using test::runOrDie;
+
+/// A frame before the core, with the rejected-obstacles layer recorded (`horizon`: the camera's).
+struct Seen
+{
+    explicit Seen(const cv::Mat& frame, Horizon horizon = {})
+        : data(std::make_shared<const ColourLut>(test::testLut()), frame, horizon)
+    {
+        sink.layers = {"obstacles.rejected"};
+        data.setDebugSink(&sink);
+        core = std::make_unique<ControlWrapper>(data);
+    }
+    MemoryDataWrapper data;
+    test::RecordingSink sink;
+    std::unique_ptr<ControlWrapper> core;
+};
 
 const std::vector<Obstacle>& obstacles(ControlWrapper& core)
 {
@@ -59,11 +75,9 @@ private slots:
         cv::Mat f = fieldFrame(50);
         fillCircle(f, 160.0, 170.0, 30, Colour::Orange);
         fillRect(f, 150, 142, 170, 198, Colour::ShadowObject);
-        MemoryDataWrapper data(f, test::testLut());
-        test::RecordingSink sink;
-        sink.layers = {"obstacles.rejected"};
-        data.setDebugSink(&sink);
-        ControlWrapper core(data);
+        Seen seen(f);
+        ControlWrapper& core = *seen.core;
+        const test::RecordingSink& sink = seen.sink;
         QVERIFY(core.setParam("obstacles", "max_ball_overlap", 1).ok());
         const Blackboard& off = runOrDie(core);
         QCOMPARE(off.percepts.list<Ball>().size(), std::size_t(1));
@@ -117,11 +131,9 @@ private slots:
         for (int x0 : {0, 150, 305})
             fillRect(f, x0, 60, x0 + 14, 69, Colour::Green);
         fillRect(f, 200, 20, 229, 100, Colour::ShadowObject); // a robot at the edge
-        MemoryDataWrapper data(f, test::testLut());
-        test::RecordingSink sink;
-        sink.layers = {"obstacles.rejected"};
-        data.setDebugSink(&sink);
-        ControlWrapper core(data);
+        Seen seen(f);
+        ControlWrapper& core = *seen.core;
+        const test::RecordingSink& sink = seen.sink;
         QVERIFY(obstacles(core).size() >= 2); // the band's pieces are boxes too: the rule's case
 
         set(core, "edge_band", 1);
@@ -181,12 +193,9 @@ private slots:
     {
         cv::Mat f = fieldFrame(60);
         fillRect(f, 200, 80, 207, 150, Colour::ShadowObject); // a pole 8 px wide
-        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
-                               Horizon{40, 40});
-        test::RecordingSink sink;
-        sink.layers = {"obstacles.rejected"};
-        data.setDebugSink(&sink);
-        ControlWrapper core(data);
+        Seen seen(f, Horizon{40, 40});
+        ControlWrapper& core = *seen.core;
+        const test::RecordingSink& sink = seen.sink;
         QCOMPARE(obstacles(core).size(), std::size_t(1));
 
         set(core, "min_width_ratio", 0.3); // 33 px wanted 110 px below the horizon
@@ -201,12 +210,9 @@ private slots:
         cv::Mat f = fieldFrame(60);
         fillRect(f, 20, 150, 99, 239, Colour::ShadowObject);  // a shoulder at the bottom
         fillRect(f, 200, 30, 279, 239, Colour::ShadowObject); // a robot close by, standing
-        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
-                               Horizon{40, 40});
-        test::RecordingSink sink;
-        sink.layers = {"obstacles.rejected"};
-        data.setDebugSink(&sink);
-        ControlWrapper core(data);
+        Seen seen(f, Horizon{40, 40});
+        ControlWrapper& core = *seen.core;
+        const test::RecordingSink& sink = seen.sink;
         QCOMPARE(obstacles(core).size(), std::size_t(2));
 
         set(core, "cut_reach", 0.3); // up to row 40 + 0.3 * 199 = 99.7
