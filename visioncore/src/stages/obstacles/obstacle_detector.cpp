@@ -30,6 +30,22 @@ unsigned fieldColours(const Blackboard& bb)
     return mask;
 }
 
+bool inMask(unsigned mask, Colour c)
+{
+    return (mask >> unsigned(c)) & 1u;
+}
+
+/// Field-coloured bits this short inside a run of obstacle colour (a white marking on a robot)
+/// belong to the run.
+constexpr int kMaxBridged = 3;
+
+/// Whether segment `k` of `scan` is such a bit: short, with obstacle colour right after it.
+bool bridged(const Scan& scan, std::size_t k, unsigned field_mask)
+{
+    return scan[k].length() <= kMaxBridged && k + 1 < scan.size() &&
+           !inMask(field_mask, scan[k + 1].colour);
+}
+
 } // namespace
 
 const StageInfo& ObstacleDetector::info() const
@@ -51,7 +67,6 @@ const StageInfo& ObstacleDetector::info() const
 void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask, bool band,
                                    int spacing, const std::vector<char>& post)
 {
-    const auto field = [mask](Colour c) { return (mask >> unsigned(c)) & 1u; };
     const std::size_t n = region.size();
     // How far down each vertical scan's first run of obstacle colour reaches from the green
     // horizon (with edge_band, short field-coloured bits inside it included, as in a run).
@@ -61,8 +76,7 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
         const Scan& scan = region[i];
         std::size_t k = 0;
         while (k < scan.size() &&
-               (!field(scan[k].colour) || (band && scan[k].length() <= 3 && k + 1 < scan.size() &&
-                                           !field(scan[k + 1].colour))))
+               (!inMask(mask, scan[k].colour) || (band && bridged(scan, k, mask))))
             ++k;
         if (k > 0)
             depth[i] = scan[k - 1].y1 - scan[0].y0;
@@ -115,7 +129,6 @@ void ObstacleDetector::run(Blackboard& bb)
     if (region.size() == 0)
         return;
     const unsigned field_mask = fieldColours(bb);
-    const auto isFieldColour = [field_mask](Colour c) { return (field_mask >> unsigned(c)) & 1u; };
 
     // One run per scan line at most: the lowest long run of non-field colour, i.e. the nearest
     // object (its bottom is where it stands).
@@ -137,10 +150,11 @@ void ObstacleDetector::run(Blackboard& bb)
     // Where goalposts stand: for every column when the edge's band is measured along its
     // stretches, else only where a column has no run of its own (below).
     std::vector<char>& at_post = m_at_post;
-    at_post.assign(region.size(), 0);
-    if (band)
+    if (band) {
+        at_post.resize(region.size());
         for (std::size_t i = 0; i < region.size(); ++i)
             at_post[i] = atPost(region[i]);
+    }
     measureEdge(region, white_robots ? white_mask : field_mask, band, spacing, at_post);
     const std::vector<int>& edge_depth = m_edge_depth;
     const std::vector<int>& usual_depth = m_usual_depth;
@@ -148,12 +162,11 @@ void ObstacleDetector::run(Blackboard& bb)
 
     // The lowest run of obstacle colour on a scan that is long enough and stands (see below).
     const auto lowestRun = [&](const Scan& scan, unsigned mask, bool report, Run& best) {
-        const auto field = [mask](Colour c) { return (mask >> unsigned(c)) & 1u; };
         bool have = false;
         int top = -1;
         int bottom = -1;
         for (std::size_t k = 0; k <= scan.size(); ++k) {
-            if (k < scan.size() && !field(scan[k].colour)) {
+            if (k < scan.size() && !inMask(mask, scan[k].colour)) {
                 if (top < 0)
                     top = scan[k].y0;
                 bottom = scan[k].y1 - 1;
@@ -161,8 +174,7 @@ void ObstacleDetector::run(Blackboard& bb)
             }
             // A run ends at field colour; short field-coloured bits inside a robot (a white
             // marking) are part of it when the run continues right after.
-            if (top >= 0 && k < scan.size() && scan[k].length() <= 3 && k + 1 < scan.size() &&
-                !field(scan[k + 1].colour))
+            if (top >= 0 && k < scan.size() && bridged(scan, k, mask))
                 continue;
             // Something standing on the field as tall as the camera reaches the horizon, so its run
             // is tall for how far below the green horizon its foot is (a robot breaking the
@@ -204,7 +216,8 @@ void ObstacleDetector::run(Blackboard& bb)
         const int dip = edge_depth[i] - usual_depth[i];
         // A run from the green horizon that ends about where the field usually starts along this
         // stretch is the edge's own band, not something standing on the field.
-        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= 3 && dip < min_edge_dip) {
+        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= kMaxBridged &&
+            dip < min_edge_dip) {
             have = false;
             if (rejected)
                 addRejected(*rejected,
@@ -264,8 +277,7 @@ void ObstacleDetector::run(Blackboard& bb)
                 continue;
             bool open = false;
             for (const ColourSegment& s : bb.horizontal_filtered[i])
-                open =
-                    open || (s.x1 > x0 && s.x0 <= x1 && ((join_mask >> unsigned(s.colour)) & 1u));
+                open = open || (s.x1 > x0 && s.x0 <= x1 && inMask(join_mask, s.colour));
             if (!open)
                 return true;
         }
@@ -303,13 +315,19 @@ void ObstacleDetector::run(Blackboard& bb)
     // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
     // near its foot (it ends somewhere between two scan lines).
     const std::vector<Ball>& balls = bb.percepts.list<Ball>();
+    const Horizon& camera = bb.kinematic_horizon;
+    // A box thrown away, on the rejected layer if it is drawn; the note is put in words only then.
+    const auto rejectBox = [&](int left, int top, int right, int bottom, const auto& why) {
+        if (rejected)
+            addRejected(*rejected,
+                        rectShape({double(left), double(top)}, {double(right), double(bottom)}, {}),
+                        why());
+    };
     for (const Group& g : groups) {
         if (g.columns < m_min_columns) {
-            if (rejected)
-                addRejected(*rejected,
-                            rectShape({double(g.first_x), double(g.top)},
-                                      {double(g.last_x), double(g.bottom)}, {}),
-                            "on " + std::to_string(g.columns) + " scan line(s), under min_columns");
+            rejectBox(g.first_x, g.top, g.last_x, g.bottom, [&] {
+                return "on " + std::to_string(g.columns) + " scan line(s), under min_columns";
+            });
             continue;
         }
         Obstacle o{std::max(0, g.first_x - spacing / 2),
@@ -320,50 +338,39 @@ void ObstacleDetector::run(Blackboard& bb)
             if (y > g.bottom || y < g.bottom - 3 * spacing - 2 || y < g.top)
                 continue;
             for (const ColourSegment& s : bb.horizontal_filtered[i]) {
-                if (isFieldColour(s.colour) || s.x1 <= g.first_x || s.x0 > g.last_x)
+                if (inMask(field_mask, s.colour) || s.x1 <= g.first_x || s.x0 > g.last_x)
                     continue;
                 o.left = std::min(o.left, std::max(int(s.x0), g.first_x - spacing));
                 o.right = std::max(o.right, std::min(s.x1 - 1, g.last_x + spacing));
             }
         }
+        // The horizon above the box: the camera's where the stream gives it, else the green one.
+        const double cx = 0.5 * (o.left + o.right);
+        const double horizon =
+            camera.known() ? camera.yAt(cx, bb.width()) : double(bb.green_horizon.yAt(int(cx)));
         // Something standing is about as wide as half its height, and its height in the image
         // is how far its foot is below the horizon (a robot is about as tall as the camera is
         // high): pieces much narrower are a robot's part or the wall's, not a robot.
-        if (m_min_width_ratio > 0) {
-            const Horizon& k = bb.kinematic_horizon;
-            const double cx = 0.5 * (o.left + o.right);
-            const double horizon =
-                k.known() ? k.yAt(cx, bb.width()) : double(bb.green_horizon.yAt(int(cx)));
-            const double wanted = m_min_width_ratio * (o.bottom - horizon);
-            if (o.right - o.left + 1 < wanted) {
-                if (rejected)
-                    addRejected(*rejected,
-                                rectShape({double(o.left), double(o.top)},
-                                          {double(o.right), double(o.bottom)}, {}),
-                                std::to_string(o.right - o.left + 1) + " px wide, under the " +
-                                    oneDecimal(wanted) +
-                                    " px its foot's depth below the horizon wants "
-                                    "(min_width_ratio)");
-                continue;
-            }
+        const double wanted = m_min_width_ratio * (o.bottom - horizon);
+        if (m_min_width_ratio > 0 && o.right - o.left + 1 < wanted) {
+            rejectBox(o.left, o.top, o.right, o.bottom, [&] {
+                return std::to_string(o.right - o.left + 1) + " px wide, under the " +
+                       oneDecimal(wanted) +
+                       " px its foot's depth below the horizon wants (min_width_ratio)";
+            });
+            continue;
         }
         // Cut by the image's bottom row, the foot is out of view: something close to the camera.
         // A robot that close is taller than the camera is high, so it reaches up to about the
         // horizon; the observing robot's own shoulder or foot, low in the view, does not.
-        const Horizon& camera = bb.kinematic_horizon;
-        if (m_cut_reach > 0 && g.bottom >= h - 1 && camera.known()) {
-            const double horizon = camera.yAt(0.5 * (o.left + o.right), bb.width());
-            const double reach = horizon + m_cut_reach * (h - 1 - horizon);
-            if (o.top > reach) {
-                if (rejected)
-                    addRejected(*rejected,
-                                rectShape({double(o.left), double(o.top)},
-                                          {double(o.right), double(o.bottom)}, {}),
-                                "cut by the image's bottom but reaching only to row " +
-                                    std::to_string(o.top) + ", not up to row " + oneDecimal(reach) +
-                                    " (the robot's own body? cut_reach)");
-                continue;
-            }
+        const double reach = horizon + m_cut_reach * (h - 1 - horizon);
+        if (m_cut_reach > 0 && camera.known() && g.bottom >= h - 1 && o.top > reach) {
+            rejectBox(o.left, o.top, o.right, o.bottom, [&] {
+                return "cut by the image's bottom but reaching only to row " +
+                       std::to_string(o.top) + ", not up to row " + oneDecimal(reach) +
+                       " (the robot's own body? cut_reach)";
+            });
+            continue;
         }
         // A ball's shading and highlights leave runs of other colours inside it.
         const double area = double(o.right - o.left + 1) * double(o.bottom - o.top + 1);
@@ -375,11 +382,8 @@ void ObstacleDetector::run(Blackboard& bb)
             return across > 0 && down > 0 && across * down > m_max_ball_overlap * area;
         };
         if (m_max_ball_overlap < 1 && std::any_of(balls.begin(), balls.end(), inside)) {
-            if (rejected)
-                addRejected(*rejected,
-                            rectShape({double(o.left), double(o.top)},
-                                      {double(o.right), double(o.bottom)}, {}),
-                            "inside the ball (max_ball_overlap)");
+            rejectBox(o.left, o.top, o.right, o.bottom,
+                      [] { return std::string("inside the ball (max_ball_overlap)"); });
             continue;
         }
         obstacles.push_back(o);
