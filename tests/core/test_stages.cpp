@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 using namespace fieldsight;
 using test::drawLine;
@@ -76,98 +75,6 @@ class TestStages : public QObject
 {
     Q_OBJECT
 private slots:
-    void greenHorizonFollowsAStraightFieldEdge()
-    {
-        MemoryDataWrapper data(fieldFrame(60), test::testLut());
-        ControlWrapper core(data);
-        const Blackboard& bb = runOrDie(core);
-        for (int x : {0, 77, 160, 319})
-            QCOMPARE(bb.green_horizon.yAt(x), 60);
-        QCOMPARE(bb.gh_scan_points.size(), std::size_t(30)); // every 11 px over 320
-    }
-
-    void greenHorizonBridgesTheDipOfAnObstacle()
-    {
-        cv::Mat f = fieldFrame(60);
-        fillRect(f, 100, 30, 139, 150, Colour::ShadowObject); // a robot hiding the field edge
-        MemoryDataWrapper data(f, test::testLut());
-        ControlWrapper core(data);
-        const Blackboard& bb = runOrDie(core);
-        for (int x = 0; x < 320; x += 20)
-            QVERIFY2(std::abs(bb.green_horizon.yAt(x) - 60) <= 1, qPrintable(QString::number(x)));
-        // The columns behind the robot saw green only below it.
-        int low = 0;
-        for (const PixelPoint& p : bb.gh_scan_points)
-            low += p.y > 140;
-        QVERIFY(low >= 3);
-        // ...and the obstacle stage reports it where it is.
-        QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
-        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 100) <= 2);
-        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 139) <= 2);
-        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].bottom - 150) <= 1);
-    }
-
-    void thrownGreenHorizonPointsSayWhy()
-    {
-        cv::Mat f = fieldFrame(100);
-        fillRect(f, 0, 20, 319, 40, Colour::Green); // a green wall above a wide gap
-        // Green rising from the field near enough to the wall that two columns bridge the gap and
-        // start on the wall, far above all the others.
-        fillRect(f, 150, 70, 170, 99, Colour::Green);
-        MemoryDataWrapper data(f, test::testLut());
-        test::RecordingSink sink;
-        sink.layers = {"green_horizon.thrown_points"};
-        data.setDebugSink(&sink);
-        ControlWrapper core(data);
-        QVERIFY(core.setParam("green_horizon", "max_field_gap", 30).ok());
-        const Blackboard& bb = runOrDie(core);
-        QCOMPARE(bb.green_horizon.yAt(10), 100);
-        const DebugDrawing& thrown = sink.published.at("green_horizon.thrown_points");
-        QCOMPARE(thrown.shapes.size(), std::size_t(2));
-        QCOMPARE(thrown.shapes[0].points.size(), std::size_t(28)); // the wall, the other columns
-        QVERIFY(thrown.notes.at(0).find("max_field_gap") != std::string::npos);
-        QCOMPARE(thrown.shapes[1].points.size(), std::size_t(2));
-        for (const PointF& p : thrown.shapes[1].points)
-            QVERIFY(p.y == 20 && p.x >= 150 && p.x <= 170);
-        QVERIFY(thrown.notes.at(1).find("upper_threshold_mult") != std::string::npos);
-    }
-
-    void greenHorizonIgnoresGreenAboveTheKinematicHorizon()
-    {
-        cv::Mat f = fieldFrame(100);
-        fillRect(f, 0, 0, 319, 20, Colour::Green); // a green banner in the stands
-        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
-                               Horizon{40, 40});
-        ControlWrapper core(data);
-        const Blackboard& bb = runOrDie(core);
-        QCOMPARE(bb.green_horizon.yAt(160), 100);
-    }
-
-    void anImplausibleKinematicHorizonIsADiagnosticAndTheWholeImageIsSearched()
-    {
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        for (const Horizon& h : {Horizon{4, 6.9e65}, Horizon{nan, 40}, Horizon{-2e6, 40}}) {
-            MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()),
-                                   fieldFrame(100), h);
-            ControlWrapper core(data);
-            const Blackboard& bb = runOrDie(core);
-            QCOMPARE(bb.kinematic_horizon, Horizon{});
-            QCOMPARE(bb.green_horizon.yAt(160), 100);
-            QCOMPARE(bb.diagnostics.size(), std::size_t(1));
-            QCOMPARE(bb.diagnostics[0].stage, std::string("kinematic_horizon"));
-            QVERIFY2(bb.diagnostics[0].message.find("is not two rows within 1e6 px; the whole "
-                                                    "image was searched") != std::string::npos,
-                     bb.diagnostics[0].message.c_str());
-        }
-        // A plausible one, even far below the image, is taken as it is.
-        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), fieldFrame(100),
-                               Horizon{5e5, 5e5});
-        ControlWrapper core(data);
-        const Blackboard& bb = runOrDie(core);
-        QCOMPARE(bb.kinematic_horizon, (Horizon{5e5, 5e5}));
-        QVERIFY(bb.diagnostics.empty());
-    }
-
     void scanlinesCoverTheImageWithExclusiveEnds()
     {
         MemoryDataWrapper data(fieldFrame(60), test::testLut());

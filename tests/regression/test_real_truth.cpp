@@ -399,21 +399,23 @@ private slots:
         // White robots, the edge's band taken along each stretch of it, pieces within one
         // robot's width joined and pieces narrower than a robot dropped (issue 23): 12/21/2;
         // without the observing robot's own shoulder (cut by the bottom row, reaching up only
-        // half way, f030-f034): 12/17/2. The false boxes left are things beside the field
-        // where the green horizon is above the carpet, and pieces of robots found.
-        checkFloor("obstacle", s.obstacles, 0.36, 0.78);
+        // half way, f030-f034): 12/17/2. With the green horizon below the straight edge's lines
+        // (edge_lines): 12/13/2; the false boxes left are mostly inside goals beside a keeper.
+        checkFloor("obstacle", s.obstacles, 0.43, 0.78);
         // Field lines (the centre circle is not annotated, so its chords count as false):
-        // 42/111/18, and with green on both sides of a line point (issue 23) 43/65/17.
+        // 42/111/18, and with green on both sides of a line point (issue 23) 43/65/17; with the
+        // edge's lines and RANSAC's 100 samples a line (15 found none in f000): 42/67/18.
         QVERIFY2(s.field_lines.fp <= 75 && s.field_lines.recall() >= 0.68,
                  qPrintable(scoreLine("field line", s.field_lines)));
         // With the field's edge taken as the green connected to the field below (not green on the
         // wall above a wider gap) and dense (issue 23): mean 14.14 -> 5.42 px, median 4.83 ->
-        // 2.92 px; with denser green and fewer high outliers kept: mean 3.29 px, median 1.58 px.
+        // 2.92 px; with denser green and fewer high outliers kept: mean 3.29 px, median 1.58 px;
+        // with green above the straight edge's lines thrown (edge_lines): 2.05 and 1.32 px.
         std::sort(boundary_errors.begin(), boundary_errors.end());
         QVERIFY(!boundary_errors.empty());
         const double median = boundary_errors[boundary_errors.size() / 2];
         qInfo().noquote() << QString("field boundary: median error %1 px").arg(median, 0, 'f', 2);
-        QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 4.0 && median <= 2.2,
+        QVERIFY2(s.boundary_frames == s.frames && s.boundaryMeanError() <= 2.5 && median <= 1.6,
                  qPrintable(QString("mean %1, median %2").arg(s.boundaryMeanError()).arg(median)));
     }
 

@@ -2,11 +2,13 @@
 #include "stages/green_horizon/green_horizon_detector.h"
 
 #include "stages/common/stage_util.h"
+#include "stages/green_horizon/edge_lines.h"
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/percepts/field_boundary.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace fieldsight {
 
@@ -148,8 +150,11 @@ void GreenHorizonDetector::run(Blackboard& bb)
         if (const auto start = fieldStart(bb, x, y0, horizon))
             points.push_back({x, *start});
     }
-    // The thrown points so far are green runs above a gap; those added below are outliers.
+    // The thrown points so far are green runs above a gap; then those above the edge's lines;
+    // those added last are outliers.
     const std::size_t above_gaps = bb.gh_thrown_points.size();
+    throwAboveEdge(bb);
+    const std::size_t above_edge = bb.gh_thrown_points.size();
 
     if (auto* d = bb.debug.layer("green_horizon.kinematic_horizon"))
         d->add(lineShape({0, bb.kinematic_horizon.y_left},
@@ -162,7 +167,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         // the scan points above are this frame's, never stale ones).
         bb.green_horizon.set({}, w, h);
         bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
-        drawThrown(bb, above_gaps);
+        drawThrown(bb, above_gaps, above_edge);
         return;
     }
 
@@ -204,22 +209,64 @@ void GreenHorizonDetector::run(Blackboard& bb)
     bb.green_horizon.set(hull, w, h);
     bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 
-    drawThrown(bb, above_gaps);
+    drawThrown(bb, above_gaps, above_edge);
 }
 
-void GreenHorizonDetector::drawThrown(Blackboard& bb, std::size_t above_gaps) const
+void GreenHorizonDetector::throwAboveEdge(Blackboard& bb) const
+{
+    const double tolerance = m_edge_lines;
+    std::vector<PixelPoint>& points = bb.gh_scan_points;
+    // A line needs a few columns' agreement: two points make any line.
+    constexpr int kMinSupport = 4;
+    constexpr double kDeepDip = 0.25;
+    if (tolerance <= 0)
+        return;
+    const std::optional<EdgeModel> edge = fitEdge(points, tolerance, kMinSupport);
+    if (!edge)
+        return;
+    const auto above = [&](const PixelPoint& p) { return p.y < edge->at(p.x) - tolerance; };
+    std::copy_if(points.begin(), points.end(), std::back_inserter(bb.gh_thrown_points), above);
+    points.erase(std::remove_if(points.begin(), points.end(), above), points.end());
+    // Where something hides the edge at the image's side (a robot, the camera's own shoulder),
+    // the edge goes on as the lines say: a side column's point deep below them (more than a
+    // quarter of the way down to the bottom row), or none, is put on them, and the hull bridges
+    // the dip. A shallower dip is the edge curving away (a corner's far side, the lens).
+    const int last = (bb.width() - 1) / m_scan_spacing * m_scan_spacing; // the last column scanned
+    for (const int x : {0, last}) {
+        const int y = int(std::lround(std::clamp(edge->at(x), 0.0, double(bb.height() - 1))));
+        const bool left = x == 0;
+        PixelPoint* end = points.empty() ? nullptr : left ? &points.front() : &points.back();
+        if (end && end->x == x) {
+            if (end->y > y + std::max(tolerance, kDeepDip * (bb.height() - y)))
+                end->y = y;
+        } else {
+            points.insert(left ? points.begin() : points.end(), PixelPoint{x, y});
+        }
+    }
+}
+
+void GreenHorizonDetector::drawThrown(Blackboard& bb, std::size_t above_gaps,
+                                      std::size_t above_edge) const
 {
     DebugDrawing* d = bb.debug.layer("green_horizon.thrown_points");
     if (!d)
         return;
     // One shape for each reason, its note saying which (the inspector shows it).
     const std::vector<PixelPoint>& thrown = bb.gh_thrown_points;
-    const auto split = thrown.begin() + std::ptrdiff_t(std::min(above_gaps, thrown.size()));
-    const std::vector<PixelPoint> gaps(thrown.begin(), split), high(split, thrown.end());
+    const auto at = [&](std::size_t i) {
+        return thrown.begin() + std::ptrdiff_t(std::min(i, thrown.size()));
+    };
+    const std::vector<PixelPoint> gaps(thrown.begin(), at(above_gaps)),
+        edge(at(above_gaps), at(above_edge)), high(at(above_edge), thrown.end());
     if (!gaps.empty())
         d->add(pointsShape(gaps, debug_colour::kGrey, 3),
                "green above a gap wider than a field line there (max_field_gap): a wall, not "
                "the field");
+    if (!edge.empty())
+        d->add(pointsShape(edge, debug_colour::kGrey, 3),
+               "more than " + oneDecimal(m_edge_lines) +
+                   " px above the straight edge most columns agree on (edge_lines): green "
+                   "behind the field");
     if (!high.empty())
         d->add(pointsShape(high, debug_colour::kGrey, 3),
                "more than " + oneDecimal(m_upper_threshold_mult) +

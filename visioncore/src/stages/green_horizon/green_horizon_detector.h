@@ -28,8 +28,10 @@ private:
     /// runs above the field it rejects are added to the thrown points.
     std::optional<int> fieldStart(Blackboard& bb, int x, int y0, std::optional<double> horizon);
     /// The thrown-points layer, if asked for: the first `above_gaps` points were green above a
-    /// gap, the rest outliers.
-    void drawThrown(Blackboard& bb, std::size_t above_gaps) const;
+    /// gap, those up to `above_edge` above the edge's lines, the rest outliers.
+    void drawThrown(Blackboard& bb, std::size_t above_gaps, std::size_t above_edge) const;
+    /// With edge_lines: moves the scan points above the field's edge lines to the thrown points.
+    void throwAboveEdge(Blackboard& bb) const;
 
     Param<int> m_scan_spacing{
         this,
@@ -57,6 +59,13 @@ private:
          "The widest non-green gap (a field line) within the field at the image's bottom row, "
          "shrinking with the square of the depth below the horizon: green above a wider gap is "
          "a wall, not the field (0: the first green run from the top is the field)."}};
+    Param<double> m_edge_lines{
+        this,
+        0.0,
+        {"edge_lines", "px", 0, 20, 0.5,
+         "The carpet's edge is straight: scan points more than this far above the line through "
+         "most of them (two lines where a corner is in view) are green behind the field, a wall "
+         "or a seat, however many columns they span (0: off)."}};
     Param<double> m_upper_threshold_mult{
         this,
         2.5,

@@ -1,0 +1,216 @@
+// The green horizon's rules on small synthetic frames whose field edge is known: a straight
+// edge, a robot hiding it, green walls and seats behind the field, a corner, the camera's own body
+// at the image's side.
+#include "support/field_frames.h"
+#include "support/recording_sink.h"
+#include "support/synthetic_frames.h"
+#include "visioncore/datawrappers/memory_data_wrapper.h"
+#include "visioncore/framework/control_wrapper.h"
+#include "visioncore/percepts/obstacle.h"
+
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+using namespace fieldsight;
+using test::fillRect;
+
+namespace {
+
+using test::fieldFrame;
+using test::runOrDie;
+
+/// Field green from row edge(x) down in every column, unclassified above.
+template <class Edge> cv::Mat edgeFrame(Edge edge)
+{
+    cv::Mat f = test::filledFrame(320, 240, Colour::Unclassified);
+    for (int x = 0; x < 320; ++x)
+        fillRect(f, x, int(std::lround(edge(x))), x, 239, Colour::Green);
+    return f;
+}
+
+/// The green horizon of `frame` with edge_lines at `tolerance` (0: off); the thrown points'
+/// layer recorded into `sink` when given.
+int horizonAt(const cv::Mat& frame, double tolerance, int x, test::RecordingSink* sink = nullptr)
+{
+    MemoryDataWrapper data(frame, test::testLut());
+    if (sink) {
+        sink->layers = {"green_horizon.thrown_points"};
+        data.setDebugSink(sink);
+    }
+    ControlWrapper core(data);
+    if (!core.setParam("green_horizon", "edge_lines", tolerance).ok())
+        qFatal("edge_lines refused");
+    return runOrDie(core).green_horizon.yAt(x);
+}
+
+} // namespace
+
+class TestGreenHorizon : public QObject
+{
+    Q_OBJECT
+private slots:
+    void greenHorizonFollowsAStraightFieldEdge()
+    {
+        MemoryDataWrapper data(fieldFrame(60), test::testLut());
+        ControlWrapper core(data);
+        const Blackboard& bb = runOrDie(core);
+        for (int x : {0, 77, 160, 319})
+            QCOMPARE(bb.green_horizon.yAt(x), 60);
+        QCOMPARE(bb.gh_scan_points.size(), std::size_t(30)); // every 11 px over 320
+    }
+
+    void greenHorizonBridgesTheDipOfAnObstacle()
+    {
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 100, 30, 139, 150, Colour::ShadowObject); // a robot hiding the field edge
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        const Blackboard& bb = runOrDie(core);
+        for (int x = 0; x < 320; x += 20)
+            QVERIFY2(std::abs(bb.green_horizon.yAt(x) - 60) <= 1, qPrintable(QString::number(x)));
+        // The columns behind the robot saw green only below it.
+        int low = 0;
+        for (const PixelPoint& p : bb.gh_scan_points)
+            low += p.y > 140;
+        QVERIFY(low >= 3);
+        // ...and the obstacle stage reports it where it is.
+        QCOMPARE(bb.percepts.list<Obstacle>().size(), std::size_t(1));
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].left - 100) <= 2);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].right - 139) <= 2);
+        QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].bottom - 150) <= 1);
+    }
+
+    void thrownGreenHorizonPointsSayWhy()
+    {
+        cv::Mat f = fieldFrame(100);
+        fillRect(f, 0, 20, 319, 40, Colour::Green); // a green wall above a wide gap
+        // Green rising from the field near enough to the wall that two columns bridge the gap and
+        // start on the wall, far above all the others.
+        fillRect(f, 150, 70, 170, 99, Colour::Green);
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"green_horizon.thrown_points"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("green_horizon", "max_field_gap", 30).ok());
+        const Blackboard& bb = runOrDie(core);
+        QCOMPARE(bb.green_horizon.yAt(10), 100);
+        const DebugDrawing& thrown = sink.published.at("green_horizon.thrown_points");
+        QCOMPARE(thrown.shapes.size(), std::size_t(2));
+        QCOMPARE(thrown.shapes[0].points.size(), std::size_t(28)); // the wall, the other columns
+        QVERIFY(thrown.notes.at(0).find("max_field_gap") != std::string::npos);
+        QCOMPARE(thrown.shapes[1].points.size(), std::size_t(2));
+        for (const PointF& p : thrown.shapes[1].points)
+            QVERIFY(p.y == 20 && p.x >= 150 && p.x <= 170);
+        QVERIFY(thrown.notes.at(1).find("upper_threshold_mult") != std::string::npos);
+    }
+
+    void greenHorizonIgnoresGreenAboveTheKinematicHorizon()
+    {
+        cv::Mat f = fieldFrame(100);
+        fillRect(f, 0, 0, 319, 20, Colour::Green); // a green banner in the stands
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
+        ControlWrapper core(data);
+        const Blackboard& bb = runOrDie(core);
+        QCOMPARE(bb.green_horizon.yAt(160), 100);
+    }
+
+    void anImplausibleKinematicHorizonIsADiagnosticAndTheWholeImageIsSearched()
+    {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (const Horizon& h : {Horizon{4, 6.9e65}, Horizon{nan, 40}, Horizon{-2e6, 40}}) {
+            MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()),
+                                   fieldFrame(100), h);
+            ControlWrapper core(data);
+            const Blackboard& bb = runOrDie(core);
+            QCOMPARE(bb.kinematic_horizon, Horizon{});
+            QCOMPARE(bb.green_horizon.yAt(160), 100);
+            QCOMPARE(bb.diagnostics.size(), std::size_t(1));
+            QCOMPARE(bb.diagnostics[0].stage, std::string("kinematic_horizon"));
+            QVERIFY2(bb.diagnostics[0].message.find("is not two rows within 1e6 px; the whole "
+                                                    "image was searched") != std::string::npos,
+                     bb.diagnostics[0].message.c_str());
+        }
+        // A plausible one, even far below the image, is taken as it is.
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), fieldFrame(100),
+                               Horizon{5e5, 5e5});
+        ControlWrapper core(data);
+        const Blackboard& bb = runOrDie(core);
+        QCOMPARE(bb.kinematic_horizon, (Horizon{5e5, 5e5}));
+        QVERIFY(bb.diagnostics.empty());
+    }
+
+    void greenBehindTheFieldAboveTheEdgesLineIsThrown()
+    {
+        // A green seat behind the field, over seven columns: too many for the outlier rule.
+        cv::Mat f = fieldFrame(100);
+        fillRect(f, 100, 60, 180, 90, Colour::Green);
+        QCOMPARE(horizonAt(f, 0, 140), 60);
+        test::RecordingSink sink;
+        QCOMPARE(horizonAt(f, 3, 140), 100);
+        for (int x : {0, 90, 200, 319})
+            QCOMPARE(horizonAt(f, 3, x), 100);
+        horizonAt(f, 3, 0, &sink);
+        const DebugDrawing& thrown = sink.published.at("green_horizon.thrown_points");
+        QCOMPARE(thrown.shapes.size(), std::size_t(1));
+        QCOMPARE(thrown.shapes[0].points.size(), std::size_t(7)); // columns 110 to 176
+        QVERIFY(thrown.notes.at(0).find("edge_lines") != std::string::npos);
+    }
+
+    void aCornerKeepsBothSidesOfTheEdge()
+    {
+        // The field's corner is its farthest point: the edge rises to it from both sides.
+        const auto corner = [](int x) { return 60 + 0.25 * std::abs(x - 160); };
+        const cv::Mat f = edgeFrame(corner);
+        for (int x : {0, 80, 160, 240, 319})
+            QVERIFY2(std::abs(horizonAt(f, 3, x) - corner(x)) <= 1.5,
+                     qPrintable(QString::number(x)));
+        // A robot in front of one side leaves the points behind it low, in a line of their own
+        // that would cut the edge off: the edge is still the corner's.
+        cv::Mat robot = f.clone();
+        fillRect(robot, 200, 40, 260, 150, Colour::ShadowObject);
+        for (int x : {80, 160, 230, 300})
+            QVERIFY2(std::abs(horizonAt(robot, 3, x) - corner(x)) <= 1.5,
+                     qPrintable(QString::number(x)));
+    }
+
+    void ofTwoParallelLinesTheUpperIsTheEdge()
+    {
+        // In patches along the edge something else lies on the carpet (the field's border, a
+        // wall's foot): those columns start 10 rows lower, more of them (17 scan columns) than
+        // start at the edge (13). Green above a line counts against it, so the edge's line wins.
+        cv::Mat f = fieldFrame(100);
+        for (int i = 0; i < 30; ++i)
+            if (i % 2 == 1 || i > 24)
+                fillRect(f, std::max(0, 11 * i - 5), 100, std::min(319, 11 * i + 5), 109,
+                         Colour::Unclassified);
+        test::RecordingSink sink;
+        QCOMPARE(horizonAt(f, 3, 50, &sink), 100);
+        const DebugDrawing& thrown = sink.published.at("green_horizon.thrown_points");
+        QVERIFY2(thrown.shapes.empty(),
+                 thrown.notes.empty() ? "" : thrown.notes.begin()->second.c_str());
+    }
+
+    void aDeepDipAtTheImagesSideFollowsTheEdgesLine()
+    {
+        // The observing robot's shoulder over the lower left: the leftmost columns see the field
+        // only far below the edge, and the hull cannot bridge a dip at the image's side.
+        const auto slope = [](int x) { return 100 - 0.1 * x; };
+        cv::Mat f = edgeFrame(slope);
+        fillRect(f, 0, 90, 60, 200, Colour::ShadowObject);
+        QVERIFY(horizonAt(f, 0, 0) > 110);
+        QVERIFY(std::abs(horizonAt(f, 3, 0) - slope(0)) <= 1.5);
+        QVERIFY(std::abs(horizonAt(f, 3, 30) - slope(30)) <= 1.5);
+        // A shallow dip there is the edge curving away, and stays.
+        cv::Mat shallow = edgeFrame(slope);
+        fillRect(shallow, 0, 90, 30, 108, Colour::ShadowObject);
+        QVERIFY(horizonAt(shallow, 3, 0) >= 108);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestGreenHorizon)
+#include "test_green_horizon.moc"
