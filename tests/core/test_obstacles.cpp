@@ -145,6 +145,26 @@ private slots:
         QVERIFY(saidSo(sink, "below where the field usually starts"));
     }
 
+    void aBoxBelowAPlainWallIsNoObstacle()
+    {
+        // A white wall behind the field; a dark patch at the field's edge below it (the goal's
+        // inside, a wall's foot) and a robot of the same colour that rises above the edge.
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 0, 0, 319, 59, Colour::White);
+        fillRect(f, 60, 60, 119, 75, Colour::ShadowObject);   // the patch, nothing above it
+        fillRect(f, 200, 30, 239, 100, Colour::ShadowObject); // the robot
+        Seen seen(f);
+        ControlWrapper& core = *seen.core;
+        QCOMPARE(obstacles(core).size(), std::size_t(2)); // the rule's case: both are boxes
+
+        set(core, "plain_above", 0.9);
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(1));
+        QVERIFY(std::abs(found[0].left - 200) <= 2);
+        QCOMPARE(found[0].bottom, 100);
+        QVERIFY(saidSo(seen.sink, "% white above it, nothing standing (plain_above)"));
+    }
+
     void aRobotBesideAGoalpostStandsOutOfTheBand()
     {
         // The band as above; a post (not obstacle colour) and a robot right beside it. The

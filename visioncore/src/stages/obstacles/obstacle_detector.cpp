@@ -8,6 +8,7 @@
 #include "visioncore/percepts/obstacle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace fieldsight {
@@ -44,6 +45,22 @@ bool bridged(const Scan& scan, std::size_t k, unsigned field_mask)
 {
     return scan[k].length() <= kMaxBridged && k + 1 < scan.size() &&
            !inMask(field_mask, scan[k + 1].colour);
+}
+
+/// The colour covering most of the image's rows y0..y1 (clipped) over columns x0..x1, and its
+/// share of them (0 when the rectangle is empty).
+std::pair<Colour, double> plainestColour(const Blackboard& bb, int x0, int x1, int y0, int y1)
+{
+    y0 = std::max(0, y0);
+    x0 = std::max(0, x0);
+    x1 = std::min(bb.width() - 1, x1);
+    std::array<int, kColourCount> count{};
+    int n = 0;
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x, ++n)
+            ++count[std::size_t(bb.classify(x, y))];
+    const auto most = std::max_element(count.begin(), count.end());
+    return {Colour(most - count.begin()), n > 0 ? double(*most) / n : 0.0};
 }
 
 } // namespace
@@ -323,6 +340,11 @@ void ObstacleDetector::run(Blackboard& bb)
                         rectShape({double(left), double(top)}, {double(right), double(bottom)}, {}),
                         why());
     };
+    // The highest the green horizon reaches over columns x0..x1 (at their ends and middle).
+    const auto topOfField = [&](int x0, int x1) {
+        const auto& gh = bb.green_horizon;
+        return std::min({gh.yAt(x0), gh.yAt((x0 + x1) / 2), gh.yAt(x1)});
+    };
     for (const Group& g : groups) {
         if (g.columns < m_min_columns) {
             rejectBox(g.first_x, g.top, g.last_x, g.bottom, [&] {
@@ -385,6 +407,21 @@ void ObstacleDetector::run(Blackboard& bb)
             rejectBox(o.left, o.top, o.right, o.bottom,
                       [] { return std::string("inside the ball (max_ball_overlap)"); });
             continue;
+        }
+        // A box up to the green horizon may be the edge's band: something standing rises above
+        // the edge and shows itself there (a white robot in front of a white wall its joints and
+        // markers); one colour over nearly all of as much again above the box is the wall or the
+        // goal's net behind the band.
+        if (m_plain_above > 0 && o.top <= topOfField(o.left, o.right) + kMaxBridged) {
+            const auto [colour, share] =
+                plainestColour(bb, o.left, o.right, o.top - (o.bottom - o.top + 1), o.top - 1);
+            if (share > m_plain_above) {
+                rejectBox(o.left, o.top, o.right, o.bottom, [&, c = colour, sh = share] {
+                    return std::to_string(int(std::lround(100 * sh))) + "% " +
+                           std::string(colourName(c)) + " above it, nothing standing (plain_above)";
+                });
+                continue;
+            }
         }
         obstacles.push_back(o);
     }

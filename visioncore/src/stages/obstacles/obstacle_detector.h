@@ -122,6 +122,13 @@ private:
         {"edge_window", "px", 10, 640, 5,
          "With edge_band: the stretch of the edge over which the usual start of the field is "
          "taken (not past a goalpost); a robot narrower than half of it stands out."}};
+    Param<double> m_plain_above{
+        this,
+        0,
+        {"plain_above", "", 0, 1, 0.01,
+         "A box reaching up to the green horizon is the edge's band, not something standing, "
+         "when one colour covers more than this share of as much again above it (a plain wall, "
+         "a goal's net); 0: off."}};
     Param<bool> m_white_robots{
         this,
         false,
