@@ -8,7 +8,10 @@
 // feet (G labels): each foot becomes a post 7 px wide from the image top to the foot, so eval's
 // rule accepts a detected base within max(4, 7) px across and 6 px (or 10 % of the height) of
 // the foot. Every picture is "done" (a picture without G labels has no post foot to find).
-// Screenshots of the editor go to OUT_DIR/*.png.
+// Then, as a user who finds the QVGA pictures' posts missed (a darker, olive yellow in their
+// light), it opens that set with the table and clicks the posts on two of its pictures, 000009
+// and 000048, and wand-fills the carpet there; the other 24 are not touched, so they score the
+// table as a venue's new frames would. Screenshots of the editor go to OUT_DIR/*.png.
 #include "ui/document/edit_effect_scan.h"
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
@@ -80,8 +83,9 @@ int main(int argc, char** argv)
         std::cerr << "usage: lut_trial OUT_DIR\n";
         return 2;
     }
-    const QString source = QStringLiteral(
-        FIELDSIGHT_SHARED_DIR "/reference_data/dnt_uva_2013_fieldpictures/straightwalk");
+    const QString sets =
+        QStringLiteral(FIELDSIGHT_SHARED_DIR "/reference_data/dnt_uva_2013_fieldpictures");
+    const QString source = sets + "/straightwalk";
     if (!QFileInfo(source).isDir()) {
         std::cerr << "no reference data at " << source.toStdString() << "\n";
         return 2;
@@ -135,7 +139,7 @@ int main(int argc, char** argv)
         {2, "wand", Colour::Green, {18, 8, 8}, {250, 130}},
     };
     int edits = 0;
-    for (const Step& s : steps) {
+    const auto perform = [&](const Step& s) {
         w.session().stream().setCurrentIndex(std::size_t(s.frame - 1));
         waitFrame();
         w.view().setZoom(1);
@@ -147,14 +151,47 @@ int main(int argc, char** argv)
         QTest::mouseClick(&w.view(), Qt::LeftButton, {}, s.at);
         waitFrame();
         edits += w.session().lut().undoStack().count() - before;
-    }
-    for (int i = 0; i < 2000 && w.session().effectScan().running(); ++i)
-        QTest::qWait(10);
-    std::cout << edits << " edits\n";
-    if (Status s = w.session().lut().saveAs(out + "/dnt.lut"); !s) {
-        std::cerr << s.error().message << "\n";
+    };
+    const auto save = [&] {
+        for (int i = 0; i < 2000 && w.session().effectScan().running(); ++i)
+            QTest::qWait(10);
+        if (Status s = w.session().lut().saveAs(out + "/dnt.lut"); !s) {
+            std::cerr << s.error().message << "\n";
+            return false;
+        }
+        return true;
+    };
+    for (const Step& s : steps)
+        perform(s);
+    if (!save())
         return 1;
-    }
+
+    // The QVGA set with that table: its posts in a darker light, clicked on two pictures (1-based
+    // in the set's file order: 5 is 000009, 20 is 000048), a far post and a near one.
+    const QString qvga = out + "/qvga";
+    QDir(qvga).removeRecursively();
+    QDir().mkpath(qvga);
+    for (const QString& f : QDir(sets + "/qvga_goal_subset").entryList({"*.png"}))
+        QFile::link(sets + "/qvga_goal_subset/" + f, qvga + "/" + f);
+    opened.clear();
+    w.files().openStream(qvga, out + "/dnt.lut");
+    if (!opened.wait(20000) || !opened.front().front().toBool())
+        return 1;
+    waitFrame();
+    for (const Step& s : std::vector<Step>{
+             {5, "click", Colour::Yellow, {20, 8, 8}, {305, 60}},
+             {20, "click", Colour::Yellow, {20, 8, 8}, {290, 80}},
+             {20, "click", Colour::Yellow, {20, 8, 8}, {110, 180}},
+             // ...and, seeing the carpet speckled black in the side-by-side view, wand fills.
+             {5, "wand", Colour::Green, {18, 8, 8}, {160, 200}},
+             {20, "wand", Colour::Green, {18, 8, 8}, {220, 200}},
+         })
+        perform(s);
+    std::cout << edits << " edits\n";
+    if (!save())
+        return 1;
+    w.files().openStream(stream, out + "/dnt.lut");
+    QTest::qWait(500);
 
     // The editor as the user sees it at the end, on a middle picture, zoomed.
     w.session().stream().setCurrentIndex(12);
