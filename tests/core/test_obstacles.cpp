@@ -165,6 +165,26 @@ private slots:
         QVERIFY(saidSo(seen.sink, "% white above it, nothing standing (plain_above)"));
     }
 
+    void aBoxInsideAGoalBelowItsNetAndFrameIsNoObstacle()
+    {
+        // The same patch inside a goal: above it the white net and, a quarter of it, the goal's
+        // own yellow frame (a crossbar low in the view). Only with the goal's colour is it plain.
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 0, 0, 319, 59, Colour::White);
+        fillRect(f, 40, 5, 49, 75, Colour::Yellow);         // the post, foot on the field
+        fillRect(f, 40, 44, 200, 47, Colour::Yellow);       // the frame behind
+        fillRect(f, 60, 60, 119, 75, Colour::ShadowObject); // the patch
+        Seen seen(f);
+        ControlWrapper& core = *seen.core;
+        set(core, "plain_above", 0.9);
+        const Blackboard& bb = runOrDie(core);
+        QVERIFY(!bb.percepts.list<Goalpost>().empty());
+        QVERIFY(bb.percepts.list<Obstacle>().empty());
+        QVERIFY(saidSo(seen.sink, "% white and yellow above it, nothing standing (plain_above)"));
+        set(core, "plain_above", 0);
+        QCOMPARE(obstacles(core).size(), std::size_t(1)); // the rule's case
+    }
+
     void aRobotBesideAGoalpostStandsOutOfTheBand()
     {
         // The band as above; a post (not obstacle colour) and a robot right beside it. The

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace fieldsight {
 
@@ -47,9 +48,20 @@ bool bridged(const Scan& scan, std::size_t k, unsigned field_mask)
            !inMask(field_mask, scan[k + 1].colour);
 }
 
+/// The goal's colour if goal transitions were seen (the transition filter's parameter).
+std::optional<Colour> goalColour(const Blackboard& bb)
+{
+    for (const Transitions* t : {&bb.horizontal_transitions, &bb.vertical_transitions})
+        if (!(*t)[TransitionClass::Goal].empty())
+            return (*t)[TransitionClass::Goal].front().colour;
+    return std::nullopt;
+}
+
 /// The colour covering most of the image's rows y0..y1 (clipped) over columns x0..x1, and its
-/// share of them (0 when the rectangle is empty).
-std::pair<Colour, double> plainestColour(const Blackboard& bb, int x0, int x1, int y0, int y1)
+/// share of them together with `also` (another background colour; 0 when the rectangle is
+/// empty).
+std::pair<Colour, double> plainestColour(const Blackboard& bb, int x0, int x1, int y0, int y1,
+                                         std::optional<Colour> also)
 {
     y0 = std::max(0, y0);
     x0 = std::max(0, x0);
@@ -60,7 +72,9 @@ std::pair<Colour, double> plainestColour(const Blackboard& bb, int x0, int x1, i
         for (int x = x0; x <= x1; ++x, ++n)
             ++count[std::size_t(bb.classify(x, y))];
     const auto most = std::max_element(count.begin(), count.end());
-    return {Colour(most - count.begin()), n > 0 ? double(*most) / n : 0.0};
+    const Colour plainest = Colour(most - count.begin());
+    const int extra = also && *also != plainest ? count[std::size_t(*also)] : 0;
+    return {plainest, n > 0 ? double(*most + extra) / n : 0.0};
 }
 
 } // namespace
@@ -340,6 +354,7 @@ void ObstacleDetector::run(Blackboard& bb)
                         rectShape({double(left), double(top)}, {double(right), double(bottom)}, {}),
                         why());
     };
+    const std::optional<Colour> goal = goalColour(bb);
     // The highest the green horizon reaches over columns x0..x1 (at their ends and middle).
     const auto topOfField = [&](int x0, int x1) {
         const auto& gh = bb.green_horizon;
@@ -410,15 +425,18 @@ void ObstacleDetector::run(Blackboard& bb)
         }
         // A box up to the green horizon may be the edge's band: something standing rises above
         // the edge and shows itself there (a white robot in front of a white wall its joints and
-        // markers); one colour over nearly all of as much again above the box is the wall or the
+        // markers); one colour over nearly all of as much again above the box (with the goal's
+        // colour, its frame standing right behind a strip inside the goal) is the wall or the
         // goal's net behind the band.
         if (m_plain_above > 0 && o.top <= topOfField(o.left, o.right) + kMaxBridged) {
-            const auto [colour, share] =
-                plainestColour(bb, o.left, o.right, o.top - (o.bottom - o.top + 1), o.top - 1);
+            const auto [colour, share] = plainestColour(
+                bb, o.left, o.right, o.top - (o.bottom - o.top + 1), o.top - 1, goal);
             if (share > m_plain_above) {
                 rejectBox(o.left, o.top, o.right, o.bottom, [&, c = colour, sh = share] {
                     return std::to_string(int(std::lround(100 * sh))) + "% " +
-                           std::string(colourName(c)) + " above it, nothing standing (plain_above)";
+                           std::string(colourName(c)) +
+                           (goal && *goal != c ? " and " + std::string(colourName(*goal)) : "") +
+                           " above it, nothing standing (plain_above)";
                 });
                 continue;
             }

@@ -127,8 +127,8 @@ private:
         0,
         {"plain_above", "", 0, 1, 0.01,
          "A box reaching up to the green horizon is the edge's band, not something standing, "
-         "when one colour covers more than this share of as much again above it (a plain wall, "
-         "a goal's net); 0: off."}};
+         "when one colour (with the goal's) covers more than this share of as much again above "
+         "it (a plain wall, a goal's net and frame); 0: off."}};
     Param<bool> m_white_robots{
         this,
         false,
