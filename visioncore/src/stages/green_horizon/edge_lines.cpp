@@ -80,7 +80,7 @@ Fit bestLine(const std::vector<PixelPoint>& pool, double tolerance, Allowed allo
 } // namespace
 
 std::optional<EdgeModel> fitEdge(const std::vector<PixelPoint>& points, double tolerance,
-                                 int min_support)
+                                 int min_support, EdgeFitScratch& scratch)
 {
     const Fit first = bestLine(points, tolerance, [](const EdgeLine&) { return true; });
     if (first.support < std::max(2, min_support))
@@ -89,7 +89,10 @@ std::optional<EdgeModel> fitEdge(const std::vector<PixelPoint>& points, double t
     // Over a corner the far side's points lie below the first line. A line through them is the
     // edge's other side only if it leaves the first line's points on the edge (it passes above
     // them): a line through a robot's feet below the edge would cut the edge off.
-    std::vector<PixelPoint> on_first, below;
+    std::vector<PixelPoint>& on_first = scratch.on_first;
+    std::vector<PixelPoint>& below = scratch.below;
+    on_first.clear();
+    below.clear();
     for (const PixelPoint& p : points) {
         const double d = p.y - first.line.at(p.x);
         if (std::abs(d) <= tolerance)

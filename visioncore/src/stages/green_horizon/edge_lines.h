@@ -32,11 +32,17 @@ struct EdgeModel
     }
 };
 
+/// Scratch the fit reuses from frame to frame, so a frame allocates nothing once it has grown.
+struct EdgeFitScratch
+{
+    std::vector<PixelPoint> on_first, below;
+};
+
 /// The line through the most points within `tolerance` rows; a second line through at least
 /// `min_support` of the points below it, where that leaves every point on the first line on the
 /// edge (a corner, not a robot's feet). None with fewer than `min_support` points on a line.
 /// Deterministic: every pair of points is tried (a frame has a few dozen).
 std::optional<EdgeModel> fitEdge(const std::vector<PixelPoint>& points, double tolerance,
-                                 int min_support);
+                                 int min_support, EdgeFitScratch& scratch);
 
 } // namespace fieldsight

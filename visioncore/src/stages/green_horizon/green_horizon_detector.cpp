@@ -2,7 +2,6 @@
 #include "stages/green_horizon/green_horizon_detector.h"
 
 #include "stages/common/stage_util.h"
-#include "stages/green_horizon/edge_lines.h"
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/percepts/field_boundary.h"
 
@@ -212,7 +211,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
     drawThrown(bb, above_gaps, above_edge);
 }
 
-void GreenHorizonDetector::throwAboveEdge(Blackboard& bb) const
+void GreenHorizonDetector::throwAboveEdge(Blackboard& bb)
 {
     const double tolerance = m_edge_lines;
     std::vector<PixelPoint>& points = bb.gh_scan_points;
@@ -221,7 +220,7 @@ void GreenHorizonDetector::throwAboveEdge(Blackboard& bb) const
     constexpr double kDeepDip = 0.25;
     if (tolerance <= 0)
         return;
-    const std::optional<EdgeModel> edge = fitEdge(points, tolerance, kMinSupport);
+    const std::optional<EdgeModel> edge = fitEdge(points, tolerance, kMinSupport, m_edge_scratch);
     if (!edge)
         return;
     const auto above = [&](const PixelPoint& p) { return p.y < edge->at(p.x) - tolerance; };

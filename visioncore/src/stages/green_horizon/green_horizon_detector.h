@@ -3,6 +3,7 @@
 #pragma once
 
 #include "visioncore/framework/stage.h"
+#include "stages/green_horizon/edge_lines.h"
 #include "visioncore/basics/geometry.h"
 
 #include <optional>
@@ -22,6 +23,7 @@ private:
     std::vector<int> m_run_rows;      ///< the green rows of the run being scanned (scratch)
     using Span = std::pair<int, int>; ///< a green run's first and last row
     std::vector<Span> m_runs;         ///< a column's green runs (scratch)
+    EdgeFitScratch m_edge_scratch;    ///< the edge lines' fit (scratch)
 
     /// The row where the field starts in column `x` (scanned from `y0` down; `horizon`: the
     /// kinematic horizon's row there; none when the stream gives none), if it has one. Green
@@ -31,7 +33,7 @@ private:
     /// gap, those up to `above_edge` above the edge's lines, the rest outliers.
     void drawThrown(Blackboard& bb, std::size_t above_gaps, std::size_t above_edge) const;
     /// With edge_lines: moves the scan points above the field's edge lines to the thrown points.
-    void throwAboveEdge(Blackboard& bb) const;
+    void throwAboveEdge(Blackboard& bb);
 
     Param<int> m_scan_spacing{
         this,
