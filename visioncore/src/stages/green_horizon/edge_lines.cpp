@@ -108,7 +108,6 @@ std::optional<EdgeModel> fitEdge(const std::vector<PixelPoint>& points, double t
         });
     };
     const Fit second = bestLine(below, tolerance, keepsFirst);
-
     if (second.support >= std::max(2, min_support))
         model.second = second.line;
     return model;
