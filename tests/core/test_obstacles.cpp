@@ -185,6 +185,26 @@ private slots:
         QCOMPARE(obstacles(core).size(), std::size_t(1)); // the rule's case
     }
 
+    void aPostsBlurredSideIsNoObstacle()
+    {
+        // A dark strip beside a post's foot, no wider than the post: its blur into what stands
+        // behind it. A robot beside the other post is several posts wide and stays.
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 100, 5, 109, 75, Colour::Yellow);         // a post, foot on the field
+        fillRect(f, 110, 60, 118, 75, Colour::ShadowObject);  // its blurred side
+        fillRect(f, 250, 5, 259, 75, Colour::Yellow);         // the other post
+        fillRect(f, 262, 30, 291, 100, Colour::ShadowObject); // a robot beside it
+        Seen seen(f);
+        ControlWrapper& core = *seen.core;
+        set(core, "post_fringe", 0);
+        QCOMPARE(obstacles(core).size(), std::size_t(2)); // the rule's case: the strip is a box
+        set(core, "post_fringe", 1);
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(1));
+        QVERIFY(std::abs(found[0].left - 262) <= 2);
+        QVERIFY(saidSo(seen.sink, "beside a goalpost and no wider"));
+    }
+
     void aRobotBesideAGoalpostStandsOutOfTheBand()
     {
         // The band as above; a post (not obstacle colour) and a robot right beside it. The

@@ -409,6 +409,20 @@ void ObstacleDetector::run(Blackboard& bb)
             });
             continue;
         }
+        // A post's sides blur into what stands behind it: a box beside a post and no wider than
+        // it is that fringe, not a robot (a robot is several posts wide at the same distance).
+        const auto fringe = [&](const Goalpost& p) {
+            const int width = p.right - p.left + 1;
+            return o.right - o.left + 1 <= width && o.left <= p.right + spacing + width &&
+                   o.right >= p.left - spacing - width;
+        };
+        if (m_post_fringe && std::any_of(goalposts.begin(), goalposts.end(), fringe)) {
+            rejectBox(o.left, o.top, o.right, o.bottom, [] {
+                return std::string(
+                    "beside a goalpost and no wider: its blurred side (post_fringe)");
+            });
+            continue;
+        }
         // A ball's shading and highlights leave runs of other colours inside it.
         const double area = double(o.right - o.left + 1) * double(o.bottom - o.top + 1);
         const auto inside = [&](const Ball& b) {

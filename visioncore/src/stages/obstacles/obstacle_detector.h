@@ -129,6 +129,12 @@ private:
          "A box reaching up to the green horizon is the edge's band, not something standing, "
          "when one colour (with the goal's) covers more than this share of as much again above "
          "it (a plain wall, a goal's net and frame); 0: off."}};
+    Param<bool> m_post_fringe{
+        this,
+        true,
+        {"post_fringe", "", 0, 1, 1,
+         "A box beside a goalpost and no wider than it is the post's blurred side, not a robot "
+         "(a robot is several posts wide at the same distance)."}};
     Param<bool> m_white_robots{
         this,
         false,
