@@ -16,6 +16,16 @@ namespace fieldsight {
 
 namespace {
 
+/// The colour of a class of transitions, if any were seen (the goal's and the ball's are
+/// parameters of the transition filter: blue goals in 2009).
+std::optional<Colour> transitionColour(const Blackboard& bb, TransitionClass cls)
+{
+    for (const Transitions* t : {&bb.horizontal_transitions, &bb.vertical_transitions})
+        if (!(*t)[cls].empty())
+            return (*t)[cls].front().colour;
+    return std::nullopt;
+}
+
 /// Bit set of colours that belong to the field or to objects the other stages detect.
 unsigned fieldColours(const Blackboard& bb)
 {
@@ -23,12 +33,10 @@ unsigned fieldColours(const Blackboard& bb)
     for (Colour c : {Colour::Green, Colour::White, Colour::Orange, Colour::Yellow,
                      Colour::YellowOrange, Colour::PinkOrange})
         mask |= 1u << unsigned(c);
-    // The goal and ball colours are parameters of the transition filter (blue goals in 2009):
-    // whatever colour their transitions have is not an obstacle.
-    for (const Transitions* t : {&bb.horizontal_transitions, &bb.vertical_transitions})
-        for (TransitionClass cls : {TransitionClass::Goal, TransitionClass::Ball})
-            if (!(*t)[cls].empty())
-                mask |= 1u << unsigned((*t)[cls].front().colour);
+    // Whatever colour the goal's and the ball's transitions have is not an obstacle.
+    for (TransitionClass cls : {TransitionClass::Goal, TransitionClass::Ball})
+        if (const std::optional<Colour> c = transitionColour(bb, cls))
+            mask |= 1u << unsigned(*c);
     return mask;
 }
 
@@ -46,15 +54,6 @@ bool bridged(const Scan& scan, std::size_t k, unsigned field_mask)
 {
     return scan[k].length() <= kMaxBridged && k + 1 < scan.size() &&
            !inMask(field_mask, scan[k + 1].colour);
-}
-
-/// The goal's colour if goal transitions were seen (the transition filter's parameter).
-std::optional<Colour> goalColour(const Blackboard& bb)
-{
-    for (const Transitions* t : {&bb.horizontal_transitions, &bb.vertical_transitions})
-        if (!(*t)[TransitionClass::Goal].empty())
-            return (*t)[TransitionClass::Goal].front().colour;
-    return std::nullopt;
 }
 
 /// The colour covering most of the image's rows y0..y1 (clipped) over columns x0..x1, and its
@@ -354,7 +353,7 @@ void ObstacleDetector::run(Blackboard& bb)
                         rectShape({double(left), double(top)}, {double(right), double(bottom)}, {}),
                         why());
     };
-    const std::optional<Colour> goal = goalColour(bb);
+    const std::optional<Colour> goal = transitionColour(bb, TransitionClass::Goal);
     // The highest the green horizon reaches over columns x0..x1 (at their ends and middle).
     const auto topOfField = [&](int x0, int x1) {
         const auto& gh = bb.green_horizon;
