@@ -249,6 +249,58 @@ private slots:
         QCOMPARE(obstacles(core).size(), std::size_t(2));
     }
 
+    void aFarRobotsLegsBelowTheEdgeAreOneRobot()
+    {
+        // A far robot whose body is above the field's edge (row 60) shows only its legs below it,
+        // one foot forward (max_foot_jump), too short for their width to be one thing standing
+        // (max_width_ratio); their feet are 70-76 px below the camera horizon, where one robot
+        // may be 0.55 * 76 = 41.8 px wide. The same two legs starting below the edge are not such
+        // a robot.
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 100, 30, 125, 59, Colour::ShadowObject); // its body, above the edge
+        fillRect(f, 100, 60, 109, 90, Colour::ShadowObject);
+        fillRect(f, 116, 60, 125, 96, Colour::ShadowObject);
+        fillRect(f, 200, 70, 209, 100, Colour::ShadowObject); // two posts in the open
+        fillRect(f, 216, 70, 225, 106, Colour::ShadowObject);
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{20, 20});
+        ControlWrapper core(data);
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(3));
+        QVERIFY(std::abs(found[0].left - 100) <= 2);
+        QVERIFY(std::abs(found[0].right - 125) <= 2);
+
+        set(core, "edge_robot_width", 0.3); // 22.8 px: the legs span more
+        QCOMPARE(obstacles(core).size(), std::size_t(4));
+        set(core, "edge_robot_width", 0);
+        QCOMPARE(obstacles(core).size(), std::size_t(4));
+    }
+
+    void aRobotBehindANearerOneIsItsOwn()
+    {
+        // A near robot cut by the image's bottom (199 px below the camera horizon at row 40), its
+        // hand ending at row 150 on its left (0.55 of the way down), and a robot further away
+        // showing on its right, its foot at row 100 (0.3 of the way down).
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 100, 30, 180, 239, Colour::ShadowObject);
+        fillRect(f, 88, 30, 99, 150, Colour::ShadowObject);   // the hand
+        fillRect(f, 181, 30, 196, 100, Colour::ShadowObject); // the far robot
+        MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), f,
+                               Horizon{40, 40});
+        ControlWrapper core(data);
+        const std::vector<Obstacle>& found = obstacles(core);
+        QCOMPARE(found.size(), std::size_t(2));
+        QVERIFY(std::abs(found[0].left - 88) <= 2);
+        QVERIFY(std::abs(found[0].right - 180) <= 2);
+        QVERIFY(std::abs(found[1].left - 181) <= 2);
+        QVERIFY(std::abs(found[1].right - 196) <= 2);
+
+        set(core, "behind_ratio", 0.6); // the hand too stands apart
+        QCOMPARE(obstacles(core).size(), std::size_t(3));
+        set(core, "behind_ratio", 0); // one box over both robots
+        QCOMPARE(obstacles(core).size(), std::size_t(1));
+    }
+
     void somethingFarNarrowerThanARobotIsNone()
     {
         cv::Mat f = fieldFrame(60);

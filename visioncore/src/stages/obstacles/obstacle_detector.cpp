@@ -274,14 +274,28 @@ void ObstacleDetector::run(Blackboard& bb)
     const int max_step = spacing * (1 + m_max_column_gap);
     std::vector<Group>& groups = m_groups;
     groups.clear();
+    // With the camera's horizon, how far a foot is below it goes with one over the distance: a foot
+    // much higher than its neighbour's (behind_ratio of its depth) is a robot further away showing
+    // beside the nearer one; a part of the nearer robot ends lower (a hand about 0.6 of the way
+    // down to its foot).
+    const Horizon& camera = bb.kinematic_horizon;
+    const auto behind = [&](int foot, int other_foot, double x) {
+        if (m_behind_ratio <= 0 || !camera.known() ||
+            std::abs(foot - other_foot) <= m_max_foot_jump)
+            return false;
+        const double hz = camera.yAt(x, bb.width());
+        return std::min(foot, other_foot) - hz < m_behind_ratio * (std::max(foot, other_foot) - hz);
+    };
     for (const Run& r : runs) {
         if (!groups.empty()) {
             Group& g = groups.back();
             const bool adjacent = r.x - g.last_x <= max_step;
             const bool overlaps = r.top <= g.last_bottom && g.last_top <= r.bottom;
-            // Robots side by side at different distances stand on different rows.
+            // Robots side by side at different distances stand on different rows; beside one cut
+            // by the image's bottom, only one much further away is told apart.
             const bool same_foot = std::abs(r.bottom - g.last_bottom) <= m_max_foot_jump ||
-                                   r.bottom >= h - 1 || g.last_bottom >= h - 1;
+                                   ((r.bottom >= h - 1 || g.last_bottom >= h - 1) &&
+                                    !behind(r.bottom, g.last_bottom, r.x));
             if (adjacent && overlaps && same_foot) {
                 g.last_x = r.x;
                 g.top = std::min(g.top, r.top);
@@ -318,20 +332,32 @@ void ObstacleDetector::run(Blackboard& bb)
         const Group& b = groups[i + 1];
         const int top = std::min(a.top, b.top), bottom = std::max(a.bottom, b.bottom);
         const int width = b.last_x - a.first_x + spacing;
-        // With the camera's horizon, how wide one robot may be is known from where it stands
-        // (robot_width of its foot's depth below the horizon): pieces on about the same row that
-        // fit in one robot's width are one robot, whether or not a scan line crosses between
-        // them (the crossing may be above the green horizon, where nothing is scanned).
+        // With the camera's horizon, one robot's width in the image goes with how far its foot is
+        // below it: pieces on about the same row that fit in one robot's width (robot_width) are
+        // one robot, whether or not a scan line crosses between them; with edge_robot_width, only
+        // pieces that both reach up to the green horizon: the robot goes on above the edge, where
+        // nothing is scanned (a far robot's two legs).
         bool one_robot = false;
-        if (m_robot_width > 0 && bb.kinematic_horizon.known()) {
-            const double depth =
-                bottom - bb.kinematic_horizon.yAt(0.5 * (a.first_x + b.last_x), bb.width());
-            one_robot = depth > 0 && width <= m_robot_width * depth &&
-                        std::abs(a.bottom - b.bottom) <= 0.25 * depth;
+        const double mid = 0.5 * (a.first_x + b.last_x);
+        if (camera.known()) {
+            const double depth = bottom - camera.yAt(mid, bb.width());
+            const auto atEdge = [&](const Group& g) {
+                return g.top <=
+                       std::max(bb.green_horizon.yAt(g.first_x), bb.green_horizon.yAt(g.last_x)) +
+                           kMaxBridged;
+            };
+            one_robot = depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
+                        (width <= m_robot_width * depth ||
+                         (b.first_x - a.last_x <= max_step && width <= m_edge_robot_width * depth &&
+                          atEdge(a) && atEdge(b)));
         }
-        if (one_robot ||
-            (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
-             joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom)))) {
+        // A piece on two or more scan lines standing much further away is its own robot.
+        const bool apart =
+            (a.bottom < b.bottom ? a : b).columns >= 2 && behind(a.bottom, b.bottom, mid);
+        if (!apart &&
+            (one_robot ||
+             (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
+              joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom))))) {
             a.last_x = b.last_x;
             a.top = top;
             a.bottom = bottom;
@@ -345,7 +371,6 @@ void ObstacleDetector::run(Blackboard& bb)
     // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
     // near its foot (it ends somewhere between two scan lines).
     const std::vector<Ball>& balls = bb.percepts.list<Ball>();
-    const Horizon& camera = bb.kinematic_horizon;
     // A box thrown away, on the rejected layer if it is drawn; the note is put in words only then.
     const auto rejectBox = [&](int left, int top, int right, int bottom, const auto& why) {
         if (rejected)

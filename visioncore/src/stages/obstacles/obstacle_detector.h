@@ -90,6 +90,22 @@ private:
          "Where the stream gives the camera's horizon: the widest one robot can be, as a share "
          "of how far its foot is below the horizon; pieces on about the same row within it are "
          "one robot (0: off)."}};
+    Param<double> m_edge_robot_width{
+        this,
+        0.55,
+        {"edge_robot_width", "", 0, 3, 0.05,
+         "Where the stream gives the camera's horizon: pieces that both reach up to the green "
+         "horizon, on about the same row and together at most this share of their foot's depth "
+         "below the horizon wide, are one robot going on above the edge, where nothing is "
+         "scanned (a far robot's two legs); 0: off."}};
+    Param<double> m_behind_ratio{
+        this,
+        0.45,
+        {"behind_ratio", "", 0, 1, 0.01,
+         "Where the stream gives the camera's horizon: a piece on two or more scan lines whose "
+         "foot is under this share as far below the horizon as its neighbour's stands further "
+         "away, a robot behind the nearer one showing beside it (a hand ends about 0.6 of the "
+         "way down); 0: off."}};
     Param<double> m_cut_reach{
         this,
         0,
