@@ -284,7 +284,8 @@ void ObstacleDetector::run(Blackboard& bb)
             std::abs(foot - other_foot) <= m_max_foot_jump)
             return false;
         const double hz = camera.yAt(x, bb.width());
-        return std::min(foot, other_foot) - hz < m_behind_ratio * (std::max(foot, other_foot) - hz);
+        const double depth = std::max(foot, other_foot) - hz;
+        return depth > 0 && std::min(foot, other_foot) - hz < m_behind_ratio * depth;
     };
     for (const Run& r : runs) {
         if (!groups.empty()) {
