@@ -301,6 +301,31 @@ private slots:
         QCOMPARE(obstacles(core).size(), std::size_t(1));
     }
 
+    void aRobotBehindIsItsOwnOnEitherSideOfAHand()
+    {
+        // The robot further away (its foot 0.375 of the near robot's depth below the horizon)
+        // shows beside the near robot's hand (0.625): it is told apart by the deepest foot of the
+        // pieces around it, not by the hand's, on whichever side it is.
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 100, 30, 180, 200, Colour::ShadowObject);
+        fillRect(f, 181, 30, 192, 140, Colour::ShadowObject); // the hand
+        fillRect(f, 193, 30, 208, 100, Colour::ShadowObject); // the far robot
+        for (const bool mirrored : {false, true}) {
+            cv::Mat frame = f.clone();
+            if (mirrored)
+                cv::flip(f, frame, 1);
+            MemoryDataWrapper data(std::make_shared<const ColourLut>(test::testLut()), frame,
+                                   Horizon{40, 40});
+            ControlWrapper core(data);
+            const std::vector<Obstacle>& found = obstacles(core);
+            QCOMPARE(found.size(), std::size_t(2));
+            const Obstacle& far = mirrored ? found.front() : found.back();
+            const int far_left = mirrored ? 319 - 208 : 193;
+            QVERIFY2(std::abs(far.left - far_left) <= 2 && far.right - far.left <= 19,
+                     mirrored ? "mirrored" : "as drawn");
+        }
+    }
+
     void somethingFarNarrowerThanARobotIsNone()
     {
         cv::Mat f = fieldFrame(60);

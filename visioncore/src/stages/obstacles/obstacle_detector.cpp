@@ -284,8 +284,8 @@ void ObstacleDetector::run(Blackboard& bb)
             std::abs(foot - other_foot) <= m_max_foot_jump)
             return false;
         const double hz = camera.yAt(x, bb.width());
-        const double depth = std::max(foot, other_foot) - hz;
-        return depth > 0 && std::min(foot, other_foot) - hz < m_behind_ratio * depth;
+        const double near = std::max(foot, other_foot) - hz, far = std::min(foot, other_foot) - hz;
+        return far > 0 && far < m_behind_ratio * near;
     };
     for (const Run& r : runs) {
         if (!groups.empty()) {
@@ -308,6 +308,17 @@ void ObstacleDetector::run(Blackboard& bb)
             }
         }
         groups.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
+    }
+    // Which pieces stand far behind the deepest foot among the pieces next to each other around
+    // them (the nearer robot, whichever side of it they are on and whatever lies between).
+    for (std::size_t i = 0; i < groups.size();) {
+        std::size_t end = i + 1;
+        int deepest = groups[i].bottom;
+        while (end < groups.size() && groups[end].first_x - groups[end - 1].last_x <= max_step)
+            deepest = std::max(deepest, groups[end++].bottom);
+        for (; i < end; ++i)
+            groups[i].far =
+                behind(groups[i].bottom, deepest, 0.5 * (groups[i].first_x + groups[i].last_x));
     }
 
     // Pieces of one robot (arms ending above the legs, the gap between the legs) are split by the
@@ -352,9 +363,8 @@ void ObstacleDetector::run(Blackboard& bb)
                          (b.first_x - a.last_x <= max_step && width <= m_edge_robot_width * depth &&
                           atEdge(a) && atEdge(b)));
         }
-        // A piece on two or more scan lines standing much further away is its own robot.
-        const bool apart =
-            (a.bottom < b.bottom ? a : b).columns >= 2 && behind(a.bottom, b.bottom, mid);
+        // A piece on two or more scan lines standing far behind is its own robot.
+        const bool apart = a.far != b.far && (a.far ? a : b).columns >= 2;
         if (!apart &&
             (one_robot ||
              (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
@@ -363,6 +373,7 @@ void ObstacleDetector::run(Blackboard& bb)
             a.top = top;
             a.bottom = bottom;
             a.columns += b.columns;
+            a.far = a.far && b.far;
             groups.erase(groups.begin() + std::ptrdiff_t(i) + 1);
         } else {
             ++i;

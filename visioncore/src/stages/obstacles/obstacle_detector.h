@@ -30,6 +30,7 @@ private:
     {
         int first_x, last_x, top, bottom, columns;
         int last_top, last_bottom;
+        bool far = false; ///< far behind the deepest foot beside it (behind_ratio)
     };
     /// Fills m_edge_depth (how far each vertical scan's first run of obstacle colour reaches) and
     /// m_usual_depth (where the field usually starts there; see edge_band).
@@ -94,8 +95,9 @@ private:
         this,
         0.55,
         {"edge_robot_width", "", 0, 3, 0.05,
-         "Where the stream gives the camera's horizon: pieces that both reach up to the green "
-         "horizon, on about the same row and together at most this share of their foot's depth "
+         "Where the stream gives the camera's horizon: neighbouring pieces that both reach up to "
+         "the green horizon, on about the same row and together at most this share of their "
+         "foot's depth "
          "below the horizon wide, are one robot going on above the edge, where nothing is "
          "scanned (a far robot's two legs); 0: off."}};
     Param<double> m_behind_ratio{
@@ -103,9 +105,9 @@ private:
         0.45,
         {"behind_ratio", "", 0, 1, 0.01,
          "Where the stream gives the camera's horizon: a piece on two or more scan lines whose "
-         "foot is under this share as far below the horizon as its neighbour's stands further "
-         "away, a robot behind the nearer one showing beside it (a hand ends about 0.6 of the "
-         "way down); 0: off."}};
+         "foot is under this share as far below the horizon as the deepest foot of the pieces "
+         "next to each other around it stands further away, a robot behind the nearer one "
+         "showing beside it (a hand ends about 0.6 of the way down); 0: off."}};
     Param<double> m_cut_reach{
         this,
         0,
