@@ -339,6 +339,11 @@ void ObstacleDetector::run(Blackboard& bb)
         }
         return false;
     };
+    // The highest the green horizon reaches over columns x0..x1 (at their ends and middle).
+    const auto topOfField = [&](int x0, int x1) {
+        const auto& gh = bb.green_horizon;
+        return std::min({gh.yAt(x0), gh.yAt((x0 + x1) / 2), gh.yAt(x1)});
+    };
     for (std::size_t i = 0; i + 1 < groups.size();) {
         Group& a = groups[i];
         const Group& b = groups[i + 1];
@@ -349,25 +354,23 @@ void ObstacleDetector::run(Blackboard& bb)
         // one robot, whether or not a scan line crosses between them; with edge_robot_width, only
         // pieces that both reach up to the green horizon: the robot goes on above the edge, where
         // nothing is scanned (a far robot's two legs).
+        const bool neighbours = b.first_x - a.last_x <= max_step;
         bool one_robot = false;
-        const double mid = 0.5 * (a.first_x + b.last_x);
         if (camera.known()) {
-            const double depth = bottom - camera.yAt(mid, bb.width());
+            const double depth = bottom - camera.yAt(0.5 * (a.first_x + b.last_x), bb.width());
             const auto atEdge = [&](const Group& g) {
-                return g.top <=
-                       std::max(bb.green_horizon.yAt(g.first_x), bb.green_horizon.yAt(g.last_x)) +
-                           kMaxBridged;
+                return g.top <= topOfField(g.first_x, g.last_x) + kMaxBridged;
             };
-            one_robot = depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
-                        (width <= m_robot_width * depth ||
-                         (b.first_x - a.last_x <= max_step && width <= m_edge_robot_width * depth &&
-                          atEdge(a) && atEdge(b)));
+            one_robot =
+                depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
+                (width <= m_robot_width * depth ||
+                 (neighbours && width <= m_edge_robot_width * depth && atEdge(a) && atEdge(b)));
         }
         // A piece on two or more scan lines standing far behind is its own robot.
         const bool apart = a.far != b.far && (a.far ? a : b).columns >= 2;
         if (!apart &&
             (one_robot ||
-             (b.first_x - a.last_x <= max_step && width <= m_max_width_ratio * (bottom - top + 1) &&
+             (neighbours && width <= m_max_width_ratio * (bottom - top + 1) &&
               joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom))))) {
             a.last_x = b.last_x;
             a.top = top;
@@ -391,11 +394,6 @@ void ObstacleDetector::run(Blackboard& bb)
                         why());
     };
     const std::optional<Colour> goal = transitionColour(bb, TransitionClass::Goal);
-    // The highest the green horizon reaches over columns x0..x1 (at their ends and middle).
-    const auto topOfField = [&](int x0, int x1) {
-        const auto& gh = bb.green_horizon;
-        return std::min({gh.yAt(x0), gh.yAt((x0 + x1) / 2), gh.yAt(x1)});
-    };
     for (const Group& g : groups) {
         if (g.columns < m_min_columns) {
             rejectBox(g.first_x, g.top, g.last_x, g.bottom, [&] {
