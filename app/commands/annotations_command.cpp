@@ -35,7 +35,6 @@ int exportCommand(const QStringList& args, const Context& ctx)
     parser.setApplicationDescription(
         "Writes a stream's annotations as COCO JSON: one image per annotated frame, one category "
         "per drawn kind, boxes as [x, y, w, h]; the field boundary and lines as polylines.");
-    parser.addPositionalArgument("export", "The command.");
     parser.addPositionalArgument("STREAM", "Image folder or .strm file.");
     parser.addOption({"coco", "The COCO JSON file to write.", "FILE"});
     parser.addOption({"annotations",
@@ -53,7 +52,9 @@ int exportCommand(const QStringList& args, const Context& ctx)
         const std::string source = parser.isSet("annotations")
                                        ? toLocalPath(parser.value("annotations"))
                                        : defaultTruthPath(stream);
-        if (Status s = checkNotAnInput("annotations export", out, {stream, source}); !s)
+        if (Status s =
+                checkOutputFile("annotations export --coco", out, {stream, source}, kCocoFile);
+            !s)
             return badInput(ctx, s.error().message);
         auto reader = openFrames(parser, stream, ctx);
         if (!reader)
@@ -86,7 +87,6 @@ int importDntCommand(const QStringList& args, const Context& ctx)
         "Turns the Dutch Nao Team's hand labels of their field pictures (one line a picture, "
         "G<x,y> a post foot, U<x,y> a post top) into goalpost annotations of a stream of those "
         "pictures: each labelled frame is marked reviewed for goalposts (not done).");
-    parser.addPositionalArgument("import-dnt", "The command.");
     parser.addPositionalArgument("LABELS", "The label file (annotations_original.txt).");
     parser.addOption({"stream", "The stream of the labelled pictures.", "STREAM"});
     parser.addOption({"out",
@@ -111,7 +111,9 @@ int importDntCommand(const QStringList& args, const Context& ctx)
         if (!width)
             return badInput(ctx, ("annotations import-dnt: " + error).toStdString());
         model.default_width = int(*width);
-        if (Status s = checkNotAnInput("annotations import-dnt", out, {stream, labels}); !s)
+        if (Status s = checkOutputFile("annotations import-dnt --out", out, {stream, labels},
+                                       kAnnotationsFile);
+            !s)
             return badInput(ctx, s.error().message);
         auto reader = openFrames(parser, stream, ctx);
         if (!reader)
@@ -152,11 +154,9 @@ int annotationsCommand(const QStringList& args, const Context& ctx)
     if (command == "import-dnt")
         return importDntCommand(args, ctx);
     if (command == "--help" || command == "-h" || command == "help") {
-        ctx.out << "usage: fieldsight annotations export STREAM --coco FILE [--annotations FILE]\n"
-                   "                 [--orientation DEG]\n"
-                   "       fieldsight annotations import-dnt LABELS --stream STREAM [--out FILE]\n"
-                   "                 [--post-width PX] [--orientation DEG]\n"
-                   "'fieldsight annotations export --help' and 'fieldsight annotations "
+        ctx.out << "usage:\n"
+                << synopsisLines("annotations")
+                << "'fieldsight annotations export --help' and 'fieldsight annotations "
                    "import-dnt --help' describe them.\n";
         return kExitOk;
     }

@@ -276,6 +276,11 @@ int benchCommand(const QStringList& args, const Context& ctx)
         for (const QString& stream : parser.positionalArguments())
             streams.push_back(toLocalPath(stream));
         const std::string json_path = toLocalPath(parser.value("json")); // empty: no JSON
+        std::vector<std::string> read = streams;
+        read.push_back(toLocalPath(parser.value("lut")));
+        read.push_back(toLocalPath(parser.value("params")));
+        if (Status s = checkOutputFile("bench --json", json_path, read, kBenchFile); !s)
+            return badInput(ctx, s.error().message);
         BenchOptions options;
         QString error;
         const auto repeat = intOption(parser, "repeat", 1, 1, error);

@@ -85,7 +85,12 @@ std::optional<int> parseCommand(QCommandLineParser& parser, const QString& comma
     if (!parser.parse(args))
         return badInput(ctx, (command + ": " + parser.errorText()).toStdString());
     if (parser.isSet(help)) {
-        ctx.out << parser.helpText().toStdString();
+        // "Usage: fieldsight lut convert [options] IN OUT", not the program's path alone.
+        QString text = parser.helpText();
+        const qsizetype options = text.indexOf(" [options]");
+        if (text.startsWith("Usage: ") && options > 0)
+            text.replace(7, options - 7, "fieldsight " + command);
+        ctx.out << text.toStdString();
         return kExitOk;
     }
     const qsizetype count = parser.positionalArguments().size();

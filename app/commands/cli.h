@@ -58,6 +58,17 @@ inline int badInput(const Context& ctx, const char* message)
     return badInput(ctx, std::string_view(message));
 }
 
+/// What the commands write, for checkOutputFile: an existing file is replaced only when it is an
+/// earlier output of the same kind (reports also inside a stream folder, documents never there).
+inline const OutputFileKind kResultsFile{"fieldsight-results/1", {}, false, true};
+inline const OutputFileKind kBenchFile{"fieldsight-bench/1", {}, false, true};
+inline const OutputFileKind kEvalFile{"fieldsight-eval/1", {}, false, true};
+inline const OutputFileKind kCompareFile{"fieldsight-compare/1", {}, false, true};
+inline const OutputFileKind kCocoFile{{}, "categories", false, true};
+inline const OutputFileKind kTableFile{{}, {}, true, false};
+inline const OutputFileKind kAnnotationsFile{"fieldsight-annotations/1", {}, false, false};
+inline const OutputFileKind kSamplesFile{"fieldsight-lut-samples/1", {}, false, false};
+
 /// Writes `text` to `path` atomically, or to `out` when `path` is "-".
 Status writeOutput(const std::string& path, const std::string& text, std::ostream& out);
 

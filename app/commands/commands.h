@@ -5,6 +5,10 @@
 
 #include "commands/cli.h"
 
+#include <string>
+#include <string_view>
+#include <vector>
+
 namespace fieldsight::cli {
 
 int runCommand(const QStringList& args, const Context& ctx);
@@ -20,6 +24,20 @@ int lutCommand(const QStringList& args, const Context& ctx);
 /// The GUI: makes the QApplication from `argc` and `argv` (which hold the program name, then
 /// "gui" or nothing, then the GUI's arguments), opens the main window and runs it.
 int guiCommand(int& argc, char** argv, const Context& ctx);
+
+/// One command's line in the overview: its words ("lut build"), every argument and option, and
+/// what it is for (may be empty).
+struct Synopsis
+{
+    const char* command;
+    const char* synopsis;
+    const char* what;
+};
+/// Every command's synopsis: the one source of `fieldsight help` and of `fieldsight lut --help`
+/// and `fieldsight annotations --help`.
+const std::vector<Synopsis>& synopses();
+/// The overview's lines of the commands whose words start with `group` (empty: all), wrapped.
+std::string synopsisLines(std::string_view group);
 
 /// The overview `fieldsight help` prints, with the pipeline's stage ids.
 std::string usageText(const Pipeline& pipeline);

@@ -92,7 +92,8 @@ std::string compareTable(const AbComparison& c, const Sides& s)
             text += "\n";
         }
     }
-    text += "(fixed: a miss or false detection with A, none with B; broken: the reverse)\n";
+    text += "(per class, frames with fewer misses and false detections with B than with A are "
+            "fixed, with more broken)\n";
     return text;
 }
 
@@ -140,7 +141,7 @@ std::string compareJson(const AbComparison& c, const Sides& s)
     j["classes"] = std::move(classes);
     j["field_boundary"] = {{"a", boundary(c.boundary_a, c.boundary_frames_a)},
                            {"b", boundary(c.boundary_b, c.boundary_frames_b)}};
-    j["note"] = "fixed: a miss or false detection with A, none with B; broken: the reverse; "
+    j["note"] = "fixed: fewer misses and false detections with B than with A; broken: more; "
                 "precision = 1 when TP+FP = 0; recall = 1 when TP+FN = 0";
     return jsonText(j, 2) + "\n";
 }
@@ -224,11 +225,12 @@ int compareCommand(const QStringList& args, const Context& ctx)
         sides.truth = parser.isSet("truth") ? toLocalPath(parser.value("truth"))
                                             : defaultTruthPath(sides.stream);
         const std::string json_path = toLocalPath(parser.value("json"));
-        if (Status s = checkNotAnInput("compare", json_path,
+        if (Status s = checkOutputFile("compare --json", json_path,
                                        {sides.stream, sides.truth, toLocalPath(parser.value("lut")),
                                         toLocalPath(parser.value("lut-b")),
                                         toLocalPath(parser.value("params")),
-                                        toLocalPath(parser.value("params-b"))});
+                                        toLocalPath(parser.value("params-b"))},
+                                       kCompareFile);
             !s)
             return badInput(ctx, s.error().message);
         auto b = sideB(parser, ctx, input.value());

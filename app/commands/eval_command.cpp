@@ -148,9 +148,10 @@ int evalCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, input.error().message);
         const std::string truth_path =
             parser.isSet("truth") ? toLocalPath(parser.value("truth")) : defaultTruthPath(stream);
-        if (Status s = checkNotAnInput("eval", toLocalPath(parser.value("json")),
+        if (Status s = checkOutputFile("eval --json", toLocalPath(parser.value("json")),
                                        {stream, truth_path, toLocalPath(parser.value("lut")),
-                                        toLocalPath(parser.value("params"))});
+                                        toLocalPath(parser.value("params"))},
+                                       kEvalFile);
             !s)
             return badInput(ctx, s.error().message);
         auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds(),

@@ -5,38 +5,92 @@
 
 namespace fieldsight::cli {
 
+const std::vector<Synopsis>& synopses()
+{
+    // Every option of every command, as its --help lists them (test_cli checks both ways).
+    static const std::vector<Synopsis> all{
+        {"gui", "[STREAM] [--lut FILE] [--set STAGE.PARAM=VALUE] [--params FILE]", "open the GUI"},
+        {"run",
+         "STREAM [--lut FILE] [--out FILE|-] [--skip STAGE,...] [--threads N] [--limit N] "
+         "[--render DIR [--layers LIST] [--scale N]] [--overlays DIR] [--set STAGE.PARAM=VALUE] "
+         "[--params FILE] [--orientation DEG]",
+         ""},
+        {"bench",
+         "STREAM... [--lut FILE] [--repeat N] [--threads N] [--json FILE] [--limit N] "
+         "[--set STAGE.PARAM=VALUE] [--params FILE] [--orientation DEG]",
+         "several streams: a table as the paper's Table 1"},
+        {"eval",
+         "STREAM [--lut FILE] [--truth FILE] [--json FILE] [--threads N] "
+         "[--set STAGE.PARAM=VALUE] [--params FILE] [--orientation DEG]",
+         ""},
+        {"compare",
+         "STREAM [--lut A] --lut-b B [--params A] [--params-b B] [--truth FILE] [--json FILE|-] "
+         "[--threads N] [--set STAGE.PARAM=VALUE] [--orientation DEG]",
+         "frames fixed and broken by table or parameters B"},
+        {"synth",
+         "--out DIR [--scenario NAME] [--frames N|paper] [--seed S] [--width PX] [--height PX] "
+         "[--strm] [--no-png]",
+         "a generated stream with exact ground truth"},
+        {"lut convert", "IN OUT", "another team's table as a .lut"},
+        {"lut build",
+         "STREAM --out FILE [--samples FILE] [--truth FILE] [--save-samples FILE] "
+         "[--smoothing N] [--soft] [--goal-colour NAME] [--orientation DEG]",
+         "a table from samples or the annotations"},
+        {"annotations export", "STREAM --coco FILE [--annotations FILE] [--orientation DEG]",
+         "the annotations as COCO JSON"},
+        {"annotations import-dnt",
+         "LABELS --stream STREAM [--out FILE] [--post-width PX] [--orientation DEG]",
+         "the Dutch Nao Team's goal-post labels"},
+        {"import", "LOG --out DIR [--params FILE] [--set STAGE.PARAM=VALUE]",
+         "a B-Human log folder made a stream: frames, kinematic horizons, colour table"},
+    };
+    return all;
+}
+
+std::string synopsisLines(std::string_view group)
+{
+    constexpr std::size_t kWidth = 100;
+    std::string text;
+    for (const Synopsis& s : synopses()) {
+        const std::string command = s.command;
+        if (!group.empty() && command != group && command.rfind(std::string(group) + " ", 0) != 0)
+            continue;
+        const std::string head = "  fieldsight " + command + " ";
+        std::string line = head;
+        const std::string indent(head.size() + 2, ' ');
+        std::string words = std::string(s.synopsis) +
+                            (*s.what ? std::string("   (") + s.what + ")" : std::string());
+        // Wraps between bracketed groups, never inside one.
+        std::size_t depth = 0, start = 0;
+        for (std::size_t i = 0; i <= words.size(); ++i) {
+            if (i < words.size()) {
+                depth += words[i] == '[' || words[i] == '(';
+                depth -= (words[i] == ']' || words[i] == ')') && depth > 0;
+                if (words[i] != ' ' || depth > 0)
+                    continue;
+            }
+            const std::string word = words.substr(start, i - start);
+            start = i + 1;
+            if (word.empty())
+                continue;
+            if (line.size() + word.size() + 1 > kWidth && line.size() > indent.size()) {
+                text += line + "\n";
+                line = indent;
+            } else if (line.back() != ' ') {
+                line += ' ';
+            }
+            line += word;
+        }
+        text += line + "\n";
+    }
+    return text;
+}
+
 std::string usageText(const Pipeline& pipeline)
 {
     return "usage: fieldsight [COMMAND] [ARGS]\n"
-           "\n"
-           "  fieldsight [gui [STREAM] [--lut FILE]]   open the GUI\n"
-           "  fieldsight run   STREAM [--lut FILE] [--out FILE|-] [--skip STAGE,...] [--threads "
-           "N]\n"
-           "                          [--limit N] [--render DIR [--layers LIST] [--scale N]]\n"
-           "  fieldsight bench STREAM... [--lut FILE] [--repeat N] [--threads N] [--json FILE]\n"
-           "                          [--limit N]   (several streams: a table as the paper's "
-           "Table 1)\n"
-           "  fieldsight eval  STREAM [--lut FILE] [--truth FILE] [--json FILE] [--threads N]\n"
-           "  fieldsight compare STREAM [--lut A] --lut-b B [--params A] [--params-b B]\n"
-           "                          [--truth FILE] [--json FILE|-] [--threads N]\n"
-           "                          (frames fixed and broken by table or parameters B)\n"
-           "  (run, bench, eval and compare also take --set STAGE.PARAM=VALUE, e.g. "
-           "transitions.goal_colour=9,\n"
-           "   --params FILE with fieldsight-params/1, and --orientation DEG: 0, 90, 180 or 270\n"
-           "   degrees clockwise to turn the stored pictures upright, overriding stream.json's)\n"
-           "  fieldsight synth --out DIR [--scenario NAME] [--frames N] [--seed S] [--strm] "
-           "[--no-png]\n"
-           "  fieldsight lut convert IN OUT\n"
-           "  fieldsight lut build STREAM --out FILE [--samples FILE] [--smoothing N] [--soft]\n"
-           "                          [--goal-colour NAME] [--truth FILE] [--save-samples FILE]\n"
-           "                          [--orientation DEG]\n"
-           "  fieldsight annotations export STREAM --coco FILE [--annotations FILE] "
-           "[--orientation DEG]\n"
-           "  fieldsight annotations import-dnt LABELS --stream STREAM [--out FILE] "
-           "[--post-width PX]\n"
-           "  fieldsight import LOG --out DIR [--set STAGE.PARAM=VALUE]...   (a B-Human log "
-           "folder\n"
-           "                          made a stream: frames, kinematic horizons, colour table)\n"
+           "\n" +
+           synopsisLines({}) +
            "  fieldsight help\n"
            "\n"
            "STREAM is a folder of images, a .strm file, a video file or camera:N.\n"

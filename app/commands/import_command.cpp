@@ -87,8 +87,11 @@ int importCommand(const QStringList& args, const Context& ctx)
                                           "frames.csv and frames_ycbcr/, as a B-Human log); "
                                           "nothing was written");
         std::error_code ec;
-        if (fs::exists(fs::symlink_status(out, ec)) &&
-            !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
+        if (Status s = checkNotAnInput("import --out", out.string(),
+                                       {source, toLocalPath(parser.value("params"))});
+            !s)
+            return badInput(ctx, s.error().message);
+        if (fs::is_symlink(out, ec) || !checkNewOrEmptyFolder("import --out", out.string()))
             return badInput(ctx, out.string() + ": exists and is not an empty folder; nothing "
                                                 "was written (choose a new folder)");
         auto loaded = paramsFrom(parser, ctx.pipeline);
@@ -100,10 +103,14 @@ int importCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, log.error().message + "; nothing was written");
 
         // Made whole beside the output, then named: a stream folder is never half written.
-        const fs::path partial = out.parent_path() / ("." + out.filename().string() + ".partial");
-        fs::remove_all(partial, ec);
+        // A folder of that name already there is someone's: never removed, another name taken.
+        fs::path partial = out.parent_path() / ("." + out.filename().string() + ".partial");
+        for (int i = 2; fs::exists(fs::symlink_status(partial, ec)) && i < 1000; ++i)
+            partial = out.parent_path() /
+                      ("." + out.filename().string() + ".partial-" + std::to_string(i));
         if (!fs::create_directories(partial, ec) || ec) {
-            printError(ctx.err, partial.string() + ": cannot make the folder: " + ec.message());
+            printError(ctx.err, partial.string() + ": cannot make the folder: " +
+                                    (ec ? ec.message() : std::string("it exists")));
             return kExitFailure;
         }
         Status s = writeStream(partial, log.value(), params);

@@ -23,7 +23,6 @@ int convertCommand(const QStringList& args, const Context& ctx)
     parser.setApplicationDescription(
         "Converts another team's colour table (.c64, .nnmc.bz2, .raw, .lut) to a Fieldsight "
         ".lut.");
-    parser.addPositionalArgument("convert", "The command.");
     parser.addPositionalArgument("IN", "The table to import.");
     parser.addPositionalArgument("OUT", "The .lut file to write.");
     if (auto done = parseCommand(parser, "lut convert", args, 3, 3, ctx))
@@ -31,7 +30,7 @@ int convertCommand(const QStringList& args, const Context& ctx)
     const QStringList positional = parser.positionalArguments();
     const std::string in = toLocalPath(positional[1]);
     const std::string out = toLocalPath(positional[2]);
-    if (fieldsight::Status s = checkNotAnInput("lut convert", out, {in}); !s)
+    if (fieldsight::Status s = checkOutputFile("lut convert", out, {in}, kTableFile); !s)
         return badInput(ctx, s.error().message);
     auto lut = fieldsight::importLut(in);
     if (!lut) {
@@ -74,7 +73,6 @@ int buildCommand(const QStringList& args, const Context& ctx)
         "below the boundary green, field lines white, goalposts the goal colour, balls orange; "
         "above the boundary and obstacles unclassified. Prints one line: samples, frames, "
         "pixels and cells per class.");
-    parser.addPositionalArgument("build", "The command.");
     parser.addPositionalArgument("STREAM", "Image folder or .strm file the samples are from.");
     parser.addOption({"out", "The .lut file to write (required).", "FILE"});
     parser.addOption(
@@ -102,10 +100,15 @@ int buildCommand(const QStringList& args, const Context& ctx)
         if (!parser.isSet("out"))
             return badInput(ctx, "lut build: --out FILE is required");
         const std::string out = toLocalPath(parser.value("out"));
-        const std::vector<std::string> inputs{stream, toLocalPath(parser.value("samples"))};
-        for (const std::string& output : {out, toLocalPath(parser.value("save-samples"))})
-            if (Status s = checkNotAnInput("lut build", output, inputs); !s)
-                return badInput(ctx, s.error().message);
+        const std::vector<std::string> inputs{stream, toLocalPath(parser.value("samples")),
+                                              toLocalPath(parser.value("truth"))};
+        if (Status s = checkOutputFile("lut build --out", out, inputs, kTableFile); !s)
+            return badInput(ctx, s.error().message);
+        if (Status s =
+                checkOutputFile("lut build --save-samples",
+                                toLocalPath(parser.value("save-samples")), inputs, kSamplesFile);
+            !s)
+            return badInput(ctx, s.error().message);
         QString error;
         const auto smoothing = intOption(parser, "smoothing", -1, 0, error);
         if (!smoothing || *smoothing > 8)
@@ -194,11 +197,9 @@ int lutCommand(const QStringList& args, const Context& ctx)
     if (command == "build")
         return buildCommand(args, ctx);
     if (command == "--help" || command == "-h" || command == "help") {
-        ctx.out << "usage: fieldsight lut convert IN OUT\n"
-                   "       fieldsight lut build STREAM --out FILE [--samples FILE] [--truth FILE]\n"
-                   "                 [--save-samples FILE] [--smoothing N] [--soft] "
-                   "[--goal-colour NAME]\n"
-                   "'fieldsight lut convert --help' and 'fieldsight lut build --help' describe "
+        ctx.out << "usage:\n"
+                << synopsisLines("lut")
+                << "'fieldsight lut convert --help' and 'fieldsight lut build --help' describe "
                    "them.\n";
         return kExitOk;
     }

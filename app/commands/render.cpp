@@ -3,6 +3,9 @@
 
 #include "ui/adapters/overlay_painter.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/output_guard.h"
+
+#include <nlohmann/json.hpp>
 
 #include <QBuffer>
 #include <QImage>
@@ -11,13 +14,18 @@
 
 namespace fieldsight::cli {
 
-Status prepareRenderFolder(const std::string& dir)
+Status prepareRenderFolder(const std::string& dir, const std::string& stream)
 {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec)
         return Error{dir + ": cannot create folder: " + ec.message()};
-    return {};
+    // Marks the folder as a render, which a later render may replace (checkRenderFolder).
+    const std::string marker =
+        "{\"format\": \"fieldsight-render/1\", \"stream\": " +
+        nlohmann::json(stream).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) +
+        "}\n";
+    return writeFileAtomically((std::filesystem::path(dir) / kRenderMarker).string(), marker);
 }
 
 Status renderFrame(const RenderOptions& options, const FrameResult& result, const Frame& frame,

@@ -21,8 +21,9 @@ struct RenderOptions
     const Pipeline* pipeline = &Pipeline::standard();
 };
 
-/// Creates the folder; the message names it when that fails.
-Status prepareRenderFolder(const std::string& dir);
+/// Creates the folder and marks it as a render of `stream` (kRenderMarker); the message names it
+/// when that fails. Check it with checkRenderFolder first.
+Status prepareRenderFolder(const std::string& dir, const std::string& stream);
 /// Writes `frame` with its layers to DIR/<frame stem>.png (atomically). Safe to call from several
 /// worker threads at once.
 Status renderFrame(const RenderOptions& options, const FrameResult& result, const Frame& frame,

@@ -26,7 +26,7 @@ int runCommand(const QStringList& args, const Context& ctx)
     parser.addOption(orientationOption());
     parser.addOption({"out",
                       "Output file, or - for standard output (default "
-                      "fieldsight-results.json).",
+                      "fieldsight-results.json, with --render DIR/fieldsight-results.json).",
                       "FILE"});
     parser.addOption({"skip",
                       "Stages to switch off, comma separated (" +
@@ -55,20 +55,24 @@ int runCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, ("run: " + error).toStdString());
         if (*scale > 16)
             return badInput(ctx, "run: --scale: at most 16");
-        const std::string out_path =
-            parser.isSet("out") ? toLocalPath(parser.value("out")) : "fieldsight-results.json";
         const std::string render_dir =
             toLocalPath(parser.isSet("render") ? parser.value("render") : parser.value("overlays"));
         if (render_dir.empty() && (parser.isSet("layers") || parser.isSet("scale")))
             return badInput(ctx, "run: --layers and --scale need --render DIR");
+        // Without --out the results go beside the render, not into whatever folder this is.
+        const std::string out_path = parser.isSet("out")  ? toLocalPath(parser.value("out"))
+                                     : render_dir.empty() ? std::string("fieldsight-results.json")
+                                                          : render_dir + "/fieldsight-results.json";
         // Neither output goes over what the run reads (a render into the stream's own folder
-        // would replace its frames).
+        // would replace its frames), nor over another stream or anything but an earlier render.
         const std::vector<std::string> inputs{stream, toLocalPath(parser.value("lut")),
                                               toLocalPath(parser.value("params")),
                                               defaultTruthPath(stream)};
-        for (const std::string& output : {out_path, render_dir})
-            if (Status s = checkNotAnInput("run", output, inputs); !s)
-                return badInput(ctx, s.error().message);
+        if (Status s = checkRenderFolder("run --render", render_dir, inputs);
+            !render_dir.empty() && !s)
+            return badInput(ctx, s.error().message);
+        if (Status s = checkOutputFile("run --out", out_path, inputs, kResultsFile); !s)
+            return badInput(ctx, s.error().message);
 
         std::vector<std::string> skip;
         for (const QString& list : parser.values("skip"))
@@ -100,7 +104,7 @@ int runCommand(const QStringList& args, const Context& ctx)
                     return badInput(ctx, loaded.error().message);
                 truth = std::move(loaded).value();
             }
-            if (Status s = prepareRenderFolder(render_dir); !s) {
+            if (Status s = prepareRenderFolder(render_dir, stream); !s) {
                 printError(ctx.err, s.error().message);
                 return kExitFailure;
             }

@@ -63,12 +63,12 @@ int synthCommand(const QStringList& args, const Context& ctx)
     if (!options.write_png && !options.write_strm)
         return badInput(ctx, "synth: --no-png without --strm would write no frames");
 
-    // A folder that is someone's stream is refused before anything is written (bad input).
-    if (fieldsight::Status s = synth::clearEarlierOutput(options.out_dir); !s)
-        return badInput(ctx, s.error().message);
-    if (fieldsight::Status s = synth::generateStream(options); !s) {
+    // A folder that is someone's stream, or that holds edits since synth wrote it, is refused
+    // before anything in it is touched (bad input).
+    bool refused = false;
+    if (fieldsight::Status s = synth::generateStream(options, &refused); !s) {
         printError(ctx.err, s.error().message);
-        return kExitFailure;
+        return refused ? kExitBadInput : kExitFailure;
     }
     ctx.out << "wrote " << options.frames << " frames of " << synth::scenarioName(options.scenario)
             << " to " << options.out_dir << '\n';

@@ -14,6 +14,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
 
 #include <filesystem>
 #include <QTemporaryDir>
@@ -255,6 +257,95 @@ private slots:
         o = fieldsight({"help"});
         QCOMPARE(o.status, 0);
         QVERIFY(o.out.contains("fieldsight run"));
+    }
+
+    /// The options `--help` of the command `words` lists, and checks its usage line names it.
+    QSet<QString> helpOptions(const QStringList& words)
+    {
+        const Outcome o = fieldsight(words + QStringList{"--help"});
+        const QString help = QString::fromUtf8(o.out);
+        const QString command = words.join(' ');
+        [&] {
+            QCOMPARE(o.status, 0);
+            QVERIFY2(help.startsWith("Usage: fieldsight " + command + " [options]"),
+                     qPrintable(help.section('\n', 0, 0)));
+            QVERIFY2(!help.contains("The command."), qPrintable(command));
+        }();
+        QSet<QString> options;
+        static const QRegularExpression option(R"(^\s+(?:-\w, )?--([a-z][a-z-]*))",
+                                               QRegularExpression::MultilineOption);
+        for (auto it = option.globalMatch(help); it.hasNext();)
+            options.insert(it.next().captured(1));
+        options.remove("help");
+        return options;
+    }
+
+    void theOverviewAndTheReadmeNameEveryOptionAsEachCommandsHelpDoes()
+    {
+        // The overview's block of each command: its line and the indented lines after it.
+        const QString usage = QString::fromUtf8(fieldsight({"help"}).out);
+        std::map<QString, QString> blocks;
+        QString current;
+        for (const QString& line : usage.split('\n')) {
+            if (line.startsWith("  fieldsight ")) {
+                QStringList words;
+                for (const QString& w : line.mid(13).split(' ', Qt::SkipEmptyParts)) {
+                    if (!w.at(0).isLower())
+                        break;
+                    words << w;
+                }
+                current = words.join(' ');
+                if (current == "help")
+                    current.clear();
+            } else if (!line.startsWith("     ")) {
+                current.clear();
+            }
+            if (!current.isEmpty())
+                blocks[current] += line + "\n";
+        }
+        QVERIFY2(blocks.size() >= 11, qPrintable(usage));
+        static const QRegularExpression flag(R"(--([a-z][a-z-]*))");
+        std::map<QString, QSet<QString>> options;
+        for (const auto& [command, block] : blocks) {
+            options[command] = helpOptions(command.split(' '));
+            QSet<QString> named;
+            for (auto it = flag.globalMatch(block); it.hasNext();)
+                named.insert(it.next().captured(1));
+            QVERIFY2(named == options[command],
+                     qPrintable(command + ": the overview names " +
+                                QStringList(named.values()).join(',') + ", --help " +
+                                QStringList(options[command].values()).join(',')));
+        }
+        // `lut --help` and `annotations --help` are the overview's lines.
+        for (const QString group : {"lut", "annotations"}) {
+            const QString help = QString::fromUtf8(fieldsight({group, "--help"}).out);
+            for (const auto& [command, block] : blocks)
+                if (command.startsWith(group + " "))
+                    QVERIFY2(help.contains(block), qPrintable(group + ": " + help));
+        }
+        // Every option the README gives a command is one the command has.
+        QFile readme(QStringLiteral(FIELDSIGHT_SOURCE_DIR "/README.md"));
+        QVERIFY(readme.open(QIODevice::ReadOnly));
+        std::size_t checked = 0;
+        for (const QString& line : QString::fromUtf8(readme.readAll()).split('\n'))
+            for (const QString& span : line.split('`')) {
+                const qsizetype at = span.indexOf("fieldsight ");
+                if (at < 0)
+                    continue;
+                const QString rest = span.mid(at + 11);
+                QString command;
+                for (const auto& [c, o] : options)
+                    if ((rest == c || rest.startsWith(c + " ")) && c.size() > command.size())
+                        command = c;
+                if (command.isEmpty())
+                    continue;
+                for (auto it = flag.globalMatch(rest); it.hasNext(); ++checked) {
+                    const QString f = it.next().captured(1);
+                    QVERIFY2(f == "help" || options[command].contains(f),
+                             qPrintable("README: '" + span + "': " + command + " has no --" + f));
+                }
+            }
+        QVERIFY2(checked >= 12, qPrintable(QString::number(checked)));
     }
 
     void truncatedStrmExitsTwo()

@@ -176,6 +176,35 @@ private slots:
                  doc.at("classes").at("goalpost").at("b"));
     }
 
+    void aFrameWithFewerErrorsIsFixedEvenWhenNotPerfect()
+    {
+        // One line a frame at most on side A: frames of several lines keep misses on both sides,
+        // yet B (all ten) finds more of them. Fixed and broken count errors per class.
+        const std::string params = path("one_line.json");
+        test::writeBytes(params, R"({"format": "fieldsight-params/1",
+                                     "stages": {"field_lines": {"max_lines": 1}}})");
+        const std::string defaults = path("defaults.json");
+        test::writeBytes(defaults, R"({"format": "fieldsight-params/1", "stages": {}})");
+        const Outcome c = fieldsight(
+            {"compare", lab2(), "--params", params, "--params-b", defaults, "--json", "-"});
+        QVERIFY2(c.status == 0, c.err.c_str());
+        const Json lines = parsed(c.out).at("classes").at("field_line");
+        const int recall_gain =
+            lines.at("b").at("tp").get<int>() - lines.at("a").at("tp").get<int>();
+        QVERIFY2(recall_gain > 0, c.out.substr(0, 400).c_str());
+        int fixed_not_perfect = 0;
+        for (const Json& f : lines.at("fixed")) {
+            const int a = f.at("a").at("fp").get<int>() + f.at("a").at("fn").get<int>();
+            const int b = f.at("b").at("fp").get<int>() + f.at("b").at("fn").get<int>();
+            QVERIFY(b < a);
+            fixed_not_perfect += b > 0;
+        }
+        for (const Json& f : lines.at("broken"))
+            QVERIFY(f.at("b").at("fp").get<int>() + f.at("b").at("fn").get<int>() >
+                    f.at("a").at("fp").get<int>() + f.at("a").at("fn").get<int>());
+        QVERIFY2(fixed_not_perfect > 0, lines.dump().substr(0, 400).c_str());
+    }
+
     void aStreamsOwnParametersApplyUnderTheCommandLines()
     {
         // lab2 copied, its manifest naming a parameter file no ball passes.

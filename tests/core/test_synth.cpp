@@ -210,7 +210,8 @@ private slots:
         QVERIFY(generateStream(options).ok());
         const auto a = folderBytes(first);
         const auto b = folderBytes(options.out_dir);
-        QCOMPARE(a.size(), std::size_t(kFrames + 4)); // frames, json x 2, lut, strm
+        // frames, json x 2, lut, strm, synth-output.json
+        QCOMPARE(a.size(), std::size_t(kFrames + 5));
         QCOMPARE(b.size(), a.size());
         for (const auto& [name, bytes] : a) {
             QVERIFY2(b.count(name), name.c_str());

@@ -2,6 +2,7 @@
 #include "synth/synth.h"
 
 #include "synth/ideal_lut.h"
+#include "synth/output_folder.h"
 #include "synth/scenario_script.h"
 #include "synth/stream_frame.h"
 
@@ -77,55 +78,45 @@ int paperFrameCount(Scenario scenario)
 
 namespace {
 
-/// The files synth writes into its folder.
-bool isSynthFile(const std::string& name)
+/// The names of the files a stream of `options` has.
+std::set<std::string> outputNames(const SynthOptions& options)
 {
-    return name == "image.strm" || name == "default.lut" || name == "annotations.json" ||
-           name == "stream.json" ||
-           (name.rfind("frame_", 0) == 0 && name.size() > 10 &&
-            name.compare(name.size() - 4, 4, ".png") == 0);
+    std::set<std::string> names{"default.lut", "annotations.json"};
+    if (options.write_strm)
+        names.insert("image.strm");
+    if (options.write_png) {
+        names.insert("stream.json");
+        for (int i = 0; i < options.frames; ++i)
+            names.insert(frameFileName(i));
+    }
+    return names;
 }
 
-/// A folder synth wrote before: its stream.json names the generator, or (frames only in
-/// image.strm) it holds exactly image.strm, annotations.json and default.lut.
-bool isEarlierSynthOutput(const std::filesystem::path& dir)
+/// A new folder beside `out` to generate the stream into whole; never one that was there.
+Result<std::filesystem::path> makeStaging(const std::filesystem::path& out)
 {
+    namespace fs = std::filesystem;
     std::error_code ec;
-    if (auto text = readWholeFile((dir / "stream.json").string()); text) {
-        const auto manifest = nlohmann::json::parse(text.value(), nullptr, false);
-        return manifest.is_object() && manifest.contains("generator");
+    const fs::path parent = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    fs::create_directories(parent, ec);
+    for (int i = 0; i < 1000; ++i) {
+        const fs::path staging = parent / ("." + out.filename().string() + ".synth-partial" +
+                                           (i ? "-" + std::to_string(i) : std::string()));
+        if (fs::create_directory(staging, ec) && !ec)
+            return staging;
     }
-    std::set<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-        names.insert(entry.path().filename().string());
-    return !ec && names == std::set<std::string>{"annotations.json", "default.lut", "image.strm"};
+    return Error{out.string() + ": cannot make a folder beside it to write the stream into" +
+                 (ec ? ": " + ec.message() : std::string())};
 }
+
+Status writeStream(const SynthOptions& options, const std::filesystem::path& dir);
 
 } // namespace
 
-Status clearEarlierOutput(const std::string& folder)
+Status generateStream(const SynthOptions& options, bool* refused)
 {
     namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::exists(folder, ec))
-        return {};
-    if (!fs::is_directory(folder, ec))
-        return Error{folder + ": exists and is not a folder; nothing was written"};
-    if (fs::is_empty(folder, ec))
-        return {};
-    if (!isEarlierSynthOutput(folder))
-        return Error{folder + ": the folder is not empty and is not an earlier synth output; "
-                              "nothing was written (choose a new or empty folder)"};
-    // Its own earlier stream is replaced whole, never mixed with the new one.
-    for (const auto& entry : fs::directory_iterator(folder, ec))
-        if (entry.is_regular_file() && isSynthFile(entry.path().filename().string()))
-            fs::remove(entry.path(), ec);
-    return {};
-}
-
-Status generateStream(const SynthOptions& options)
-{
-    namespace fs = std::filesystem;
+    bool folder_refused = false;
     if (options.out_dir.empty())
         return Error{"synth: no output folder given"};
     if (options.frames < 1 || options.frames > kMaxFrames)
@@ -134,14 +125,36 @@ Status generateStream(const SynthOptions& options)
     if (options.width < 16 || options.height < 16 || options.width > 4096 || options.height > 4096)
         return Error{options.out_dir + ": image size " + std::to_string(options.width) + "x" +
                      std::to_string(options.height) + " is out of range (16x16..4096x4096)"};
-    if (Status s = clearEarlierOutput(options.out_dir); !s)
-        return s;
+    // Checked before the frames are rendered, and again (with the new bytes) before anything in
+    // the folder is touched.
     std::error_code ec;
-    fs::create_directories(options.out_dir, ec);
-    if (ec || !fs::is_directory(options.out_dir))
-        return Error{options.out_dir + ": cannot create the folder: " +
-                     (ec ? ec.message() : std::string("not a directory"))};
-    const fs::path dir(options.out_dir);
+    fs::path dir(options.out_dir); // as the user wrote it, for the messages
+    if (dir.filename().empty())
+        dir = dir.parent_path();
+    OutputFolder folder(dir);
+    if (Status s = folder.check(outputNames(options)); !s) {
+        if (refused)
+            *refused = true;
+        return s;
+    }
+    auto staging = makeStaging(fs::absolute(dir, ec).lexically_normal());
+    if (!staging)
+        return staging.error();
+    Status s = writeStream(options, staging.value());
+    if (s)
+        s = folder.commit(staging.value(), folder_refused);
+    fs::remove_all(staging.value(), ec); // made above, ours alone
+    if (refused)
+        *refused = folder_refused;
+    return s;
+}
+
+namespace {
+
+Status writeStream(const SynthOptions& options, const std::filesystem::path& dir)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
 
     const ScenarioScript script(options.scenario, options.seed, options.width, options.height);
     IdealLutBuilder lut;
@@ -212,5 +225,7 @@ Status generateStream(const SynthOptions& options)
                                      {"frames", frames}};
     return writeFileAtomically((dir / "stream.json").string(), manifest.dump(1) + "\n");
 }
+
+} // namespace
 
 } // namespace fieldsight::synth

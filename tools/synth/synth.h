@@ -33,11 +33,11 @@ std::string scenarioName(Scenario scenario);
 /// Frame counts of the paper's streams: 5090 / 470 / 175 / 2640 / 625.
 int paperFrameCount(Scenario scenario);
 
-/// Renders the stream into options.out_dir (created if needed, or empty, or an earlier synth
-/// output, which is replaced whole; any other folder is refused). Errors name the path.
-Status generateStream(const SynthOptions& options);
-/// Makes `folder` ready for a new stream: nothing to do when it is missing or empty; an earlier
-/// synth output loses its files; anything else is an Error naming it (nothing is removed).
-Status clearEarlierOutput(const std::string& folder);
+/// Renders the stream beside options.out_dir, then moves it in: into a new or empty folder, or
+/// over synth's own earlier output where nothing it wrote was changed since and no file of the
+/// user's would be replaced (synth/output_folder.h; files of the user's stay). Errors name the
+/// path; `refused` (when given) is set when the folder's content was the reason (nothing in it
+/// was touched), rather than the system.
+Status generateStream(const SynthOptions& options, bool* refused = nullptr);
 
 } // namespace fieldsight::synth

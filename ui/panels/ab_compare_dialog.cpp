@@ -103,8 +103,8 @@ AbCompareDialog::AbCompareDialog(EditingSession& session, QWidget* parent)
     m_tree->setColumnCount(3);
     m_tree->setHeaderLabels({tr("Class / frame"), tr("A"), tr("B")});
     m_tree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_tree->setToolTip(tr("Fixed: a miss or false detection with A, none with B. Broken: the "
-                          "reverse. Choose a frame to show it."));
+    m_tree->setToolTip(tr("Fixed: fewer misses and false detections with B than with A. Broken: "
+                          "more. Choose a frame to show it."));
     connect(m_tree, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
         if (!item || !item->data(0, kIndexRole).isValid())
             return;

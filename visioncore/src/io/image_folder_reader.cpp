@@ -6,6 +6,7 @@
 #include "io/nuview_folder.h"
 #include "io/stream_manifest.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/output_guard.h"
 #include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/core.hpp>
@@ -28,12 +29,6 @@ namespace fieldsight::io {
 namespace fs = std::filesystem;
 
 namespace {
-
-bool isImageFile(const fs::path& path)
-{
-    const std::string ext = lowercase(path.extension().string());
-    return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp";
-}
 
 /// Why the folder entry `path`, named as a frame, is not one, or nullopt when it is a regular
 /// file (after links): a dangling link, a link loop, a FIFO or a folder is skipped and reported.
@@ -153,7 +148,7 @@ ReaderResult openImageFolder(const std::string& folder_arg, const std::string& s
     if (ec)
         return Error{"cannot read " + folder_arg + ": " + ec.message()};
     for (; it != fs::directory_iterator(); it.increment(ec)) {
-        if (!isImageFile(it->path()))
+        if (!isImageFileName(it->path()))
             continue;
         if (auto problem = brokenFrameEntry(it->path().string()))
             skipped.push_back(std::move(*problem));

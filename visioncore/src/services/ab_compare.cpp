@@ -68,12 +68,14 @@ void addFrame(std::size_t index, const std::string& name, const FrameMatch& a, c
         ++out.frames;
         out.a += frame.a;
         out.b += frame.b;
-        const bool wrong_a = AbFrame::wrong(frame.a), wrong_b = AbFrame::wrong(frame.b);
-        if (wrong_a && !wrong_b)
+        // Per class, by the number of errors: a frame of many lines is rarely all right on either
+        // side, and B finding eight of its ten lines where A found one is a fix.
+        const int errors_a = AbFrame::errors(frame.a), errors_b = AbFrame::errors(frame.b);
+        if (errors_b < errors_a)
             out.fixed.push_back(frame);
-        else if (!wrong_a && wrong_b)
+        else if (errors_b > errors_a)
             out.broken.push_back(frame);
-        else if (wrong_a && wrong_b)
+        else if (errors_a > 0)
             ++out.wrong_both;
     }
 }

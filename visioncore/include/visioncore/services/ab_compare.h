@@ -34,8 +34,8 @@ struct AbFrame
     ClassScore a;
     ClassScore b;
 
-    /// A miss (of an object not concealed) or a false detection.
-    static bool wrong(const ClassScore& s) { return s.fp > 0 || s.fn > 0; }
+    /// Misses (of objects not concealed) and false detections.
+    static int errors(const ClassScore& s) { return s.fp + s.fn; }
 };
 
 /// One class (a percept kind with a matching rule) over the frames where its truth is complete.
@@ -46,9 +46,9 @@ struct AbClass
     std::size_t frames = 0;            ///< frames where the class's truth is complete
     ClassScore a;                      ///< summed over those frames
     ClassScore b;
-    std::vector<AbFrame> fixed;  ///< wrong with A, right with B; by frame index
-    std::vector<AbFrame> broken; ///< right with A, wrong with B; by frame index
-    std::size_t wrong_both = 0;  ///< frames wrong with both sides
+    std::vector<AbFrame> fixed;  ///< fewer errors (misses, false) with B than A; by frame index
+    std::vector<AbFrame> broken; ///< more errors with B than with A; by frame index
+    std::size_t wrong_both = 0;  ///< frames with as many errors, some, on both sides
 };
 
 struct AbComparison
