@@ -213,16 +213,14 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
-    // The stream's own parameters (and the command line's over them) replace those in use (one
-    // step: Undo brings them back); a stream without a parameter file runs with the pipeline's
-    // defaults.
-    if (params) {
-        ParamSet wanted = *params;
+    // The stream's own parameters (and the command line's over them) replace those in use; a
+    // stream without a parameter file runs with the pipeline's defaults, one whose file cannot
+    // be read with those in use. The state it opens in is the bottom of the parameters' history:
+    // no Undo goes back to the stream before's, or to the defaults.
+    ParamSet wanted = params ? *params : m_settings->paramChanges();
+    if (params)
         wanted.merge(m_param_overrides);
-        if (!(wanted.values == m_settings->paramChanges().values))
-            (void)m_settings->setParamChanges(
-                wanted, tr("Parameters of %1").arg(QFileInfo(spec).fileName()));
-    }
+    m_settings->reset(wanted);
     const StreamOptions options{m_stream->orientation()};
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
@@ -230,7 +228,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     m_evaluation->setTruth(truthVersion(), m_annotations->path());
     m_evaluation->setStream(spec, m_lut->version(), options);
-    // The settings keep their history across streams; Undo starts on the new stream's table.
+    // Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
 }
 
