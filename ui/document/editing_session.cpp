@@ -106,9 +106,48 @@ void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
     m_undo_documents.push_back({name, &stack});
     // The document edited last is the one Edit > Undo acts on.
     connect(&stack, &QUndoStack::indexChanged, this, [this, &stack] {
-        if (stack.count() > 0)
+        if (stack.count() > 0) {
+            m_touched[&stack] = ++m_touch_serial;
             m_undo_group.setActiveStack(&stack);
+        }
+        emit undoTargetChanged();
     });
+    connect(&stack, &QUndoStack::canUndoChanged, this, &EditingSession::undoTargetChanged);
+    connect(&stack, &QUndoStack::undoTextChanged, this, &EditingSession::undoTargetChanged);
+}
+
+QUndoStack* EditingSession::undoTarget() const
+{
+    QUndoStack* active = m_undo_group.activeStack();
+    if (active && active->canUndo())
+        return active;
+    // The active document has no step left: the one edited most recently that has.
+    QUndoStack* newest = nullptr;
+    quint64 when = 0;
+    for (const UndoDocument& d : m_undo_documents) {
+        const auto it = m_touched.find(d.stack);
+        if (d.stack->canUndo() && it != m_touched.end() && it->second >= when) {
+            newest = d.stack;
+            when = it->second;
+        }
+    }
+    return newest;
+}
+
+QString EditingSession::undoDocumentName(const QUndoStack* stack) const
+{
+    for (const UndoDocument& d : m_undo_documents)
+        if (d.stack == stack)
+            return d.name;
+    return {};
+}
+
+void EditingSession::undo()
+{
+    if (QUndoStack* target = undoTarget()) {
+        m_undo_group.setActiveStack(target);
+        target->undo();
+    }
 }
 
 bool EditingSession::openStream(const QString& spec, const QString& lut)
