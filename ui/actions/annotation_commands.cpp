@@ -57,6 +57,7 @@ bool AnnotationCommands::save()
     }
     if (d.path().isEmpty())
         return saveAs();
+    bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
     if (d.changedOnDisk()) {
         switch (askAboutDiskChange(&m_window, tr("the annotations"), d.path())) {
         case DiskChoice::Reload:
@@ -64,6 +65,7 @@ bool AnnotationCommands::save()
         case DiskChoice::SaveAs:
             return saveAs();
         case DiskChoice::Overwrite:
+            overwrite = true;
             break;
         case DiskChoice::Cancel:
             m_window.showMessage(tr("The annotations were not saved: %1 changed on disk (the "
@@ -72,7 +74,7 @@ bool AnnotationCommands::save()
             return false;
         }
     }
-    if (Status s = d.changedOnDisk() ? d.saveAs(d.path()) : d.save(); !s) {
+    if (Status s = overwrite ? d.saveAs(d.path()) : d.save(); !s) {
         m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
                                  .arg(qs(s.error().message)));
         return false;

@@ -6,6 +6,7 @@
 #include "ui/main_window.h"
 #include "ui/widgets/message_bar.h"
 
+#include <QEvent>
 #include <QFileInfo>
 #include <QGuiApplication>
 
@@ -53,9 +54,18 @@ DiskWatch::DiskWatch(MainWindow& window) : QObject(&window), m_window(window)
                 if (state == Qt::ApplicationActive)
                     later();
             });
+    // Another window of this process activated and left: no application state change.
+    m_window.installEventFilter(this);
     connect(&s.stream(), &StreamDocument::streamChanged, this, &DiskWatch::watchPaths);
     connect(&s.lut(), &LutDocument::modifiedChanged, this, &DiskWatch::watchPaths);
     connect(&s.annotations(), &AnnotationsDocument::modifiedChanged, this, &DiskWatch::watchPaths);
+}
+
+bool DiskWatch::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == &m_window && event->type() == QEvent::WindowActivate)
+        QMetaObject::invokeMethod(this, &DiskWatch::check, Qt::QueuedConnection);
+    return false;
 }
 
 void DiskWatch::watchPaths()

@@ -1,8 +1,8 @@
 // Noticing, while the window is open, that another window or a program wrote a file of an open
-// document (the annotations, the LUT, the bookmarks, the LUT samples): when the window is
-// activated again or the file system says a file or its folder changed, a bar above the view
-// offers to reload it. Keeping one's own leaves the annotations and the LUT to ask again at the
-// next save; the bookmarks and samples (saved at every change) are then written over.
+// document (the annotations, the LUT, the bookmarks, the LUT samples): when the window or the
+// application is activated again or the file system says a file or its folder changed, a bar above
+// the view offers to reload it. Keeping one's own leaves the annotations and the LUT to ask again
+// at the next save; the bookmarks and samples (saved at every change) are then written over.
 #pragma once
 
 #include "visioncore/basics/file_fingerprint.h"
@@ -28,6 +28,9 @@ public:
     void check();
     /// The files changed on disk, as the bar names them.
     QStringList changed() const;
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     struct Watched

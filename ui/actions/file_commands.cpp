@@ -219,6 +219,7 @@ bool FileCommands::saveLut()
     LutDocument& lut = m_window.session().lut();
     if (lut.path().isEmpty() || !lut.path().endsWith(QLatin1String(".lut")))
         return saveLutAs();
+    bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
     if (lut.changedOnDisk()) {
         switch (askAboutDiskChange(&m_window, tr("the LUT"), lut.path())) {
         case DiskChoice::Reload:
@@ -226,6 +227,7 @@ bool FileCommands::saveLut()
         case DiskChoice::SaveAs:
             return saveLutAs();
         case DiskChoice::Overwrite:
+            overwrite = true;
             break;
         case DiskChoice::Cancel:
             m_window.showMessage(
@@ -234,7 +236,7 @@ bool FileCommands::saveLut()
             return false;
         }
     }
-    if (Status s = lut.changedOnDisk() ? lut.saveAs(lut.path()) : lut.save(); !s) {
+    if (Status s = overwrite ? lut.saveAs(lut.path()) : lut.save(); !s) {
         m_window.showMessage(
             tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));
         return false;
