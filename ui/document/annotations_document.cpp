@@ -212,6 +212,9 @@ Status AnnotationsDocument::save()
 
 Status AnnotationsDocument::reload(std::size_t frames)
 {
+    // Noted before reading: a write during the read is a change still to be seen.
+    DiskState read;
+    read.remember(m_path);
     Annotations disk;
     if (!m_path.isEmpty() && localPathExists(m_path)) {
         auto loaded = Annotations::load(toLocalPath(m_path), m_kinds, frames);
@@ -228,7 +231,7 @@ Status AnnotationsDocument::reload(std::size_t frames)
     edit(tr("Reload annotations from disk"), std::move(edits));
     m_top_merge = 0;
     m_load_problem.clear();
-    m_disk.remember(m_path);
+    m_disk = read;
     m_recovered = false;
     m_undo.setClean();
     m_autosave.stop();

@@ -131,13 +131,16 @@ Status LutDocument::reload()
 {
     if (m_path.isEmpty())
         return Error{"the LUT has no file to reload"};
+    // Noted before reading: a write during the read is a change still to be seen.
+    DiskState read;
+    read.remember(m_path);
     auto disk = importLut(toLocalPath(m_path));
     if (!disk)
         return disk.error();
     edit(tr("Reload LUT from disk"), diffLuts(m_table, disk.value()).cells);
     m_top_stroke = 0;
     m_saved = version();
-    m_disk.remember(m_path);
+    m_disk = read;
     m_recovered = false;
     m_undo.setClean();
     m_autosave.stop();
