@@ -216,6 +216,32 @@ private slots:
         QVERIFY(!doc.modified());
     }
 
+    /// A command writes the annotations and the table while the stream is being opened (after
+    /// the background open read them): the window still sees them as changed on disk.
+    void aWriteDuringTheOpenIsAChangeOnDisk()
+    {
+        const QString stream = copyStream("written_while_opening");
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        const Pipeline* pipeline = &w.session().pipeline();
+        w.session().setSourceOpener([pipeline, stream](const QString& spec, const QString& lut) {
+            auto opened = ui::StreamDocument::openSource(spec, lut, *pipeline);
+            Annotations theirs;
+            theirs.frames["frame_000001.png"] = doneFrame();
+            (void)theirs.save((stream + "/annotations.json").toStdString(),
+                              pipeline->perceptKinds());
+            ColourLut table = ColourLut::load((stream + "/default.lut").toStdString()).value();
+            table.setCell(11, Colour(4));
+            (void)table.save((stream + "/default.lut").toStdString());
+            return opened;
+        });
+        QVERIFY(openAndWait(w, stream));
+        QVERIFY(w.session().annotations().annotations().frames.empty()); // read before the write
+        QVERIFY(w.session().annotations().changedOnDisk());
+        QVERIFY(w.session().lut().changedOnDisk());
+    }
+
     /// The LUT written by someone else: Ctrl+S asks; closing the window asks too.
     void ctrlSAndClosingAskWhenTheLutChangedOnDisk()
     {

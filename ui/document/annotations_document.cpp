@@ -89,13 +89,17 @@ void AnnotationsDocument::reset()
 }
 
 void AnnotationsDocument::adopt(const QString& stream, const QString& path, Annotations annotations,
-                                const QString& load_problem)
+                                const QString& load_problem,
+                                const std::optional<FileFingerprint>& read)
 {
     m_stream = stream;
     m_path = path;
     m_load_problem = load_problem;
     m_annotations = std::move(annotations);
-    m_disk.remember(path);
+    if (read)
+        m_disk.remember(path, *read);
+    else
+        m_disk.remember(path);
     reset();
     m_offered_recovery = findRecovery().has_value();
     emit changed({});

@@ -52,9 +52,11 @@ public:
 
     /// The annotations of `stream` as read from `path` (clean, new history). `load_problem` says
     /// why the file could not be read: the document is then empty, and the damaged file is
-    /// never written over (save() asks for saveAs()).
+    /// never written over (save() asks for saveAs()). `read` is the file as it was before it was
+    /// read (default: as it is now), what changedOnDisk() compares with.
     void adopt(const QString& stream, const QString& path, Annotations annotations,
-               const QString& load_problem = {});
+               const QString& load_problem = {},
+               const std::optional<FileFingerprint>& read = std::nullopt);
     /// Reads `stream`'s annotations file here (tests, scripts): absent is empty; an Error names
     /// a damaged file (kept as loadProblem()).
     Status setStream(const QString& stream, std::size_t frames = 0);

@@ -19,6 +19,12 @@ public:
         m_path = path;
         m_print = path.isEmpty() ? FileFingerprint{} : fingerprintFile(toLocalPath(path));
     }
+    /// Notes `print` as what the file at `path` was (taken before it was read elsewhere).
+    void remember(const QString& path, const FileFingerprint& print)
+    {
+        m_path = path;
+        m_print = print;
+    }
     /// The file noted is no longer as it was (its bytes, or whether it is there).
     bool changed() const
     {

@@ -235,17 +235,19 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     const QString lut_path = opened->lut_path;
     const std::optional<ParamSet> params = opened->params;
     std::shared_ptr<const ColourLut> table = opened->lut;
+    const FileFingerprint lut_read = opened->lut_read;
     // Its annotations just before it, so its first frame is drawn with its own truth. Unsaved
     // annotation edits of the stream before are the window's to save or drop before it opens
     // another; a recovery of them stays for their own stream.
     m_annotations->adopt(sessionStreamName(spec), opened->annotations_path,
-                         std::move(opened->annotations), opened->annotations_problem);
+                         std::move(opened->annotations), opened->annotations_problem,
+                         opened->annotations_read);
     // The stream first: the table's change then runs the new stream's frame, never the old one.
     m_stream->adopt(std::move(opened));
     // Edits are never dropped silently: a table opened under unsaved edits (an open finishing
     // after a recovery) gives way to the edited one.
     if (!m_lut->modified())
-        m_lut->reset(std::move(table), lut_path);
+        m_lut->reset(std::move(table), lut_path, lut_read);
     // The recovery file names the stream its edits belong to, wherever the next session runs.
     m_lut->setStream(sessionStreamName(spec));
     if (Status s = m_bookmarks->setStream(spec); !s)

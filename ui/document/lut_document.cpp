@@ -57,13 +57,17 @@ LutDocument::~LutDocument()
     blockSignals(true);
 }
 
-void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path)
+void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path,
+                        const std::optional<FileFingerprint>& read)
 {
     m_table = lut ? *lut : ColourLut();
     m_version = lut;
     m_saved = std::move(lut);
     m_path = path;
-    m_disk.remember(path);
+    if (read)
+        m_disk.remember(path, *read);
+    else
+        m_disk.remember(path);
     m_recovered = false;
     m_undo.clear();
     m_autosave.stop();

@@ -37,7 +37,10 @@ public:
     ~LutDocument() override;
 
     /// A table loaded from `path` (empty: not from a file): clean, with an empty undo stack.
-    void reset(std::shared_ptr<const ColourLut> lut, const QString& path);
+    /// `read` is the file as it was before it was read (default: as it is now), what
+    /// changedOnDisk() compares with.
+    void reset(std::shared_ptr<const ColourLut> lut, const QString& path,
+               const std::optional<FileFingerprint>& read = std::nullopt);
     /// Drops the unsaved edits: back to the table as loaded or last saved.
     void revert();
     const ColourLut& table() const { return m_table; }
