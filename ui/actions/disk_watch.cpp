@@ -30,13 +30,13 @@ DiskWatch::DiskWatch(MainWindow& window) : QObject(&window), m_window(window)
     m_watched.push_back({tr("the bookmarks"),
                          [&s] { return s.bookmarks().path(); },
                          [&s] { return s.bookmarks().changedOnDisk(); },
-                         [&s] { (void)s.bookmarks().reload(); },
+                         [this, &s] { say(s.bookmarks().reload()); },
                          [&s] { s.bookmarks().overwrite(); },
                          {}});
     m_watched.push_back({tr("the LUT samples"),
                          [&s] { return s.samples().path(); },
                          [&s] { return s.samples().changedOnDisk(); },
-                         [&s] { (void)s.samples().reload(); },
+                         [this, &s] { say(s.samples().reload()); },
                          [&s] { s.samples().overwrite(); },
                          {}});
 
@@ -95,6 +95,12 @@ void DiskWatch::watchPaths()
             added << p;
     if (!added.isEmpty())
         m_files.addPaths(added);
+}
+
+void DiskWatch::say(const Status& reloaded)
+{
+    if (!reloaded)
+        m_window.showMessage(QString::fromStdString(reloaded.error().message));
 }
 
 bool DiskWatch::pending(const Watched& w) const

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "visioncore/basics/file_fingerprint.h"
+#include "visioncore/basics/result.h"
 
 #include <QFileSystemWatcher>
 #include <QObject>
@@ -43,6 +44,8 @@ private:
         FileFingerprint declined;       ///< the change the user chose to keep theirs over
     };
     bool pending(const Watched& w) const;
+    /// A reload that could not read the file says why in the window.
+    void say(const Status& reloaded);
     void reloadChanged();
     void keepMine();
     void watchPaths();
