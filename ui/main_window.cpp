@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/actions/annotation_commands.h"
+#include "ui/actions/disk_watch.h"
 #include "ui/actions/file_commands.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/image_adapter.h"
@@ -19,6 +20,7 @@
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/frame_marks_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
+#include "ui/widgets/bar_overlay.h"
 #include "ui/widgets/message_bar.h"
 
 #include <QCloseEvent>
@@ -49,6 +51,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     buildCentre();
     m_files = new FileCommands(*this);
     m_annotation_files = new AnnotationCommands(*this);
+    m_disk_watch = new DiskWatch(*this);
     buildStatusBar();
     buildDocks();
     addFileMenu(*this);
@@ -115,20 +118,25 @@ void MainWindow::buildCentre()
     auto* column = new QVBoxLayout(central);
     column->setContentsMargins(0, 0, 0, 0);
     column->setSpacing(0);
-    m_message_bar = new MessageBar(central);
-    column->addWidget(m_message_bar);
-    // Unsaved LUT edits of a session that ended without saving them: offered, never forced.
-    m_recovery_bar = new OfferBar(tr("Recover"), tr("Discard"), central);
-    m_recovery_bar->setObjectName(QStringLiteral("recovery_bar"));
-    column->addWidget(m_recovery_bar);
-    m_annotations_recovery_bar = new OfferBar(tr("Recover"), tr("Discard"), central);
-    m_annotations_recovery_bar->setObjectName(QStringLiteral("annotations_recovery_bar"));
-    column->addWidget(m_annotations_recovery_bar);
     m_view = new FrameView(central);
     m_view->setObjectName(QStringLiteral("frame_view"));
     m_view->setTools(m_tools);
     m_view->setStream(m_session->stream());
     column->addWidget(m_view, 1);
+    // The bars float over the view's top: one appearing never moves the frame under the mouse.
+    auto* bars = new BarOverlay(m_view);
+    m_message_bar = new MessageBar(bars);
+    bars->addBar(m_message_bar);
+    // Unsaved LUT edits of a session that ended without saving them: offered, never forced.
+    m_recovery_bar = new OfferBar(tr("Recover"), tr("Discard"), bars);
+    m_recovery_bar->setObjectName(QStringLiteral("recovery_bar"));
+    bars->addBar(m_recovery_bar);
+    m_annotations_recovery_bar = new OfferBar(tr("Recover"), tr("Discard"), bars);
+    m_annotations_recovery_bar->setObjectName(QStringLiteral("annotations_recovery_bar"));
+    bars->addBar(m_annotations_recovery_bar);
+    m_disk_bar = new OfferBar(tr("Reload"), tr("Keep mine"), bars);
+    m_disk_bar->setObjectName(QStringLiteral("disk_bar"));
+    bars->addBar(m_disk_bar);
     m_navigator = new StreamNavigator(m_session->stream(), central);
     column->addWidget(m_navigator);
     setCentralWidget(central);
@@ -138,6 +146,10 @@ void MainWindow::buildCentre()
     m_scores_change->setObjectName(QStringLiteral("scores_change"));
     m_scores_change->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_scores_change->setContentsMargins(4, 1, 4, 1);
+    // Its line is kept while hidden: its showing never shrinks the view above.
+    QSizePolicy keep = m_scores_change->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    m_scores_change->setSizePolicy(keep);
     m_scores_change->hide();
     m_navigator->addTimelineStrip(m_scores_change);
     m_effect_strip = new EffectStrip(m_session->effectScan(), *m_navigator->slider(), m_navigator);

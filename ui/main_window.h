@@ -23,6 +23,7 @@ class AnnotationCommands;
 class AnnotationStrip;
 class BookmarksPanel;
 class DetectionsPanel;
+class DiskWatch;
 class EffectStrip;
 class EvaluationPanel;
 class FrameMarksStrip;
@@ -70,6 +71,9 @@ public:
     /// The offer of unsaved annotation edits kept for the open stream (beside the LUT's: a crash
     /// can leave both).
     OfferBar& annotationsRecoveryBar() { return *m_annotations_recovery_bar; }
+    /// The offer to reload a document's file another window or a program changed (DiskWatch).
+    OfferBar& diskBar() { return *m_disk_bar; }
+    DiskWatch& diskWatch() { return *m_disk_watch; }
     AnnotationStrip& annotationStrip() { return *m_annotation_strip; }
     QMenu& docksMenu() { return *m_docks_menu; }
 
@@ -120,6 +124,8 @@ private:
     MessageBar* m_message_bar = nullptr;
     OfferBar* m_recovery_bar = nullptr;
     OfferBar* m_annotations_recovery_bar = nullptr;
+    OfferBar* m_disk_bar = nullptr;
+    DiskWatch* m_disk_watch = nullptr;
     AnnotationStrip* m_annotation_strip = nullptr;
     LayersPanel* m_layers = nullptr;
     PipelinePanel* m_pipeline = nullptr;

@@ -284,8 +284,14 @@ private slots:
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
         FakeTool::presses = FakeTool::moves = FakeTool::releases = 0;
-        QTest::mouseMove(&w.view(), at(QPoint(40, 30)));
-        QTRY_COMPARE(w.tools().preview().text, QStringLiteral("Fake at 40,30"));
+        // Sent to the view itself: QTest::mouseMove without a button moves the cursor and lets
+        // the platform deliver the move later, mapped through whatever the layout is by then
+        // (on a loaded machine once "Fake at 41,30").
+        QMouseEvent hover(QEvent::MouseMove, QPointF(at(QPoint(40, 30))),
+                          QPointF(w.view().mapToGlobal(at(QPoint(40, 30)))), Qt::NoButton,
+                          Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(&w.view(), &hover);
+        QCOMPARE(w.tools().preview().text, QStringLiteral("Fake at 40,30"));
         QCOMPARE(w.statusBar()->currentMessage(), QStringLiteral("Fake at 40,30"));
         const QImage& lit = w.view().highlight(QStringLiteral("preview"));
         QVERIFY(!lit.isNull());
@@ -424,8 +430,8 @@ private slots:
     }
 
     /// Pipeline > Save parameters to the stream writes them beside its frames and names them in
-    /// its manifest; opening the stream applies them (one undo step); a params.json the stream
-    /// does not name is not written over.
+    /// its manifest; opening the stream applies them (the bottom of the history, no undo step); a
+    /// params.json the stream does not name is not written over.
     void aStreamsOwnParametersAreSavedToItAndApplied()
     {
         const QString stream = copyStream("own_params");
@@ -448,9 +454,8 @@ private slots:
         QVERIFY(settings.paramChanges().empty());
         QVERIFY(openAndWait(w, stream));
         QCOMPARE(settings.paramValue("ball", "min_radius"), 4.0);
-        settings.undoStack().undo(); // the stream's parameters were one step
-        QVERIFY(settings.paramChanges().empty());
-        settings.undoStack().redo();
+        // Opening is no step: nothing undoes back to the stream before's (the defaults).
+        QVERIFY(!settings.undoStack().canUndo());
 
         // Saved again: to the file the manifest names.
         QVERIFY(settings.setParam("ball", "min_radius", 5).ok());

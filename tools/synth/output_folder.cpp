@@ -1,6 +1,7 @@
 #include "synth/output_folder.h"
 
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/file_fingerprint.h"
 
 #include <nlohmann/json.hpp>
 
@@ -94,20 +95,12 @@ OutputFolder::OutputFolder(fs::path dir) : m_dir(std::move(dir))
 
 std::optional<std::string> OutputFolder::fileHash(const fs::path& file)
 {
-    std::ifstream in(file, std::ios::binary);
-    if (!in)
-        return std::nullopt;
-    std::uint64_t hash = 14695981039346656037ull;
-    std::vector<char> buffer(1 << 16);
-    while (in) {
-        in.read(buffer.data(), std::streamsize(buffer.size()));
-        for (std::streamsize i = 0; i < in.gcount(); ++i)
-            hash = (hash ^ std::uint8_t(buffer[std::size_t(i)])) * 1099511628211ull;
-    }
-    if (!in.eof())
+    const FileFingerprint print = fingerprintFile(file.string());
+    std::ifstream readable(file, std::ios::binary);
+    if (!print.exists || !readable)
         return std::nullopt;
     char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(print.hash));
     return std::string(text);
 }
 

@@ -1,5 +1,6 @@
 #include "ui/actions/annotation_commands.h"
 
+#include "ui/actions/disk_conflict.h"
 #include "ui/actions/file_commands.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
@@ -56,12 +57,44 @@ bool AnnotationCommands::save()
     }
     if (d.path().isEmpty())
         return saveAs();
-    if (Status s = d.save(); !s) {
+    bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
+    if (d.changedOnDisk()) {
+        switch (askAboutDiskChange(&m_window, tr("the annotations"), d.path())) {
+        case DiskChoice::Reload:
+            return reload();
+        case DiskChoice::SaveAs:
+            return saveAs();
+        case DiskChoice::Overwrite:
+            overwrite = true;
+            break;
+        case DiskChoice::Cancel:
+            m_window.showMessage(tr("The annotations were not saved: %1 changed on disk (the "
+                                    "edits are kept)")
+                                     .arg(d.path()));
+            return false;
+        }
+    }
+    if (Status s = overwrite ? d.saveAs(d.path()) : d.save(); !s) {
         m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
                                  .arg(qs(s.error().message)));
         return false;
     }
     m_window.showMessage(tr("Saved the annotations to %1").arg(d.path()), false);
+    return true;
+}
+
+bool AnnotationCommands::reload()
+{
+    AnnotationsDocument& d = doc();
+    if (Status s = d.reload(m_window.session().stream().frameCount()); !s) {
+        m_window.showMessage(tr("The annotations were not reloaded (the edits are kept): %1")
+                                 .arg(qs(s.error().message)));
+        return false;
+    }
+    m_window.showMessage(tr("Reloaded the annotations from %1 (Edit > Undo brings your edits "
+                            "back)")
+                             .arg(d.path()),
+                         false);
     return true;
 }
 

@@ -20,8 +20,13 @@ public:
     explicit AnnotationCommands(MainWindow& window);
 
     /// Saves the annotations to their file, atomically; asks for another file (Save As) when
-    /// they have none or theirs could not be read. False with a message when not saved.
+    /// they have none or theirs could not be read, and what to do when another window or
+    /// program changed it since (reload, Save As, overwrite, cancel). False with a message when
+    /// edits are left unsaved.
     bool save();
+    /// Reads the annotations file again as one undo step (the edits before it are dropped,
+    /// Undo brings them back); false with a message when it cannot be read.
+    bool reload();
     /// Saves them to `path` (asks for one when empty); the file becomes theirs.
     bool saveAs(const QString& path = {});
     /// File > Save (Ctrl+S): the annotations when they have unsaved edits, and the LUT as

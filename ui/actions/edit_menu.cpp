@@ -5,6 +5,7 @@
 
 #include <QMenuBar>
 #include <QUndoGroup>
+#include <QUndoStack>
 
 namespace fieldsight::ui {
 
@@ -12,9 +13,27 @@ void addEditMenu(MainWindow& w)
 {
     QMenu* edit = w.menuBar()->addMenu(QObject::tr("&Edit"));
     QUndoGroup& group = w.session().undoGroup();
-    QAction* undo = group.createUndoAction(&w, QObject::tr("Undo"));
+    // Undo takes back the active document's steps, then those of the document edited before it
+    // (the text names that document), so Ctrl+Z walks back through every edit left.
+    EditingSession& session = w.session();
+    auto* undo = new QAction(QObject::tr("Undo"), &w);
     undo->setObjectName(QStringLiteral("edit.undo"));
     undo->setShortcuts(QKeySequence::Undo);
+    const auto follow = [&session, undo] {
+        QUndoStack* target = session.undoTarget();
+        undo->setEnabled(target != nullptr);
+        if (!target)
+            undo->setText(QObject::tr("Undo"));
+        else if (target == session.undoGroup().activeStack())
+            undo->setText(QObject::tr("Undo %1").arg(target->undoText()));
+        else
+            undo->setText(QObject::tr("Undo %1 (%2)")
+                              .arg(target->undoText(), session.undoDocumentName(target)));
+    };
+    QObject::connect(&session, &EditingSession::undoTargetChanged, undo, follow);
+    QObject::connect(&group, &QUndoGroup::activeStackChanged, undo, follow);
+    QObject::connect(undo, &QAction::triggered, &session, &EditingSession::undo);
+    follow();
     QAction* redo = group.createRedoAction(&w, QObject::tr("Redo"));
     redo->setObjectName(QStringLiteral("edit.redo"));
     // Both Ctrl+Shift+Z and Ctrl+Y, whatever the platform's own binding is.

@@ -1,6 +1,7 @@
 #include "ui/actions/file_commands.h"
 
 #include "ui/actions/annotation_commands.h"
+#include "ui/actions/disk_conflict.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
@@ -218,12 +219,42 @@ bool FileCommands::saveLut()
     LutDocument& lut = m_window.session().lut();
     if (lut.path().isEmpty() || !lut.path().endsWith(QLatin1String(".lut")))
         return saveLutAs();
-    if (Status s = lut.save(); !s) {
+    bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
+    if (lut.changedOnDisk()) {
+        switch (askAboutDiskChange(&m_window, tr("the LUT"), lut.path())) {
+        case DiskChoice::Reload:
+            return reloadLut();
+        case DiskChoice::SaveAs:
+            return saveLutAs();
+        case DiskChoice::Overwrite:
+            overwrite = true;
+            break;
+        case DiskChoice::Cancel:
+            m_window.showMessage(
+                tr("The LUT was not saved: %1 changed on disk (the edits are kept)")
+                    .arg(lut.path()));
+            return false;
+        }
+    }
+    if (Status s = overwrite ? lut.saveAs(lut.path()) : lut.save(); !s) {
         m_window.showMessage(
             tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));
         return false;
     }
     m_window.showMessage(tr("Saved %1").arg(lut.path()), false);
+    return true;
+}
+
+bool FileCommands::reloadLut()
+{
+    LutDocument& lut = m_window.session().lut();
+    if (Status s = lut.reload(); !s) {
+        m_window.showMessage(
+            tr("The LUT was not reloaded (the edits are kept): %1").arg(qs(s.error().message)));
+        return false;
+    }
+    m_window.showMessage(
+        tr("Reloaded %1 from disk (Edit > Undo brings your edits back)").arg(lut.path()), false);
     return true;
 }
 

@@ -49,9 +49,12 @@ public:
     /// Starts an empty, untitled table (after asking about unsaved edits); false when the user
     /// kept them.
     bool newLut();
-    /// Saves the edited LUT to its file (Save As when it has no .lut file yet); false with a
-    /// message in the window when it could not (the edits stay).
+    /// Saves the edited LUT to its file (Save As when it has no .lut file yet; a question when
+    /// another window or program changed the file since: reload, Save As, overwrite, cancel);
+    /// false with a message in the window when edits are left unsaved.
     bool saveLut();
+    /// Reads the LUT's file again as one undo step (Undo brings the edits before it back).
+    bool reloadLut();
     /// Saves the edited LUT to `path` (asks for one when empty).
     bool saveLutAs(const QString& path = {});
     /// Asks what to do with unsaved LUT edits (save, discard, cancel); true to go on.

@@ -89,12 +89,17 @@ void AnnotationsDocument::reset()
 }
 
 void AnnotationsDocument::adopt(const QString& stream, const QString& path, Annotations annotations,
-                                const QString& load_problem)
+                                const QString& load_problem,
+                                const std::optional<FileFingerprint>& read)
 {
     m_stream = stream;
     m_path = path;
     m_load_problem = load_problem;
     m_annotations = std::move(annotations);
+    if (read)
+        m_disk.remember(path, *read);
+    else
+        m_disk.remember(path);
     reset();
     m_offered_recovery = findRecovery().has_value();
     emit changed({});
@@ -202,7 +207,41 @@ Status AnnotationsDocument::save()
         return Error{toLocalPath(m_path) +
                      ": could not be read when the stream opened, so it is not written over; "
                      "save the annotations under another name"};
+    if (changedOnDisk())
+        return Error{toLocalPath(m_path) +
+                     ": changed on disk since it was read (another window or program wrote "
+                     "it), so it is not written over; reload it or save under another name"};
     return saveAs(m_path);
+}
+
+Status AnnotationsDocument::reload(std::size_t frames)
+{
+    // Noted before reading: a write during the read is a change still to be seen.
+    DiskState read;
+    read.remember(m_path);
+    Annotations disk;
+    if (!m_path.isEmpty() && localPathExists(m_path)) {
+        auto loaded = Annotations::load(toLocalPath(m_path), m_kinds, frames);
+        if (!loaded)
+            return loaded.error();
+        disk = std::move(loaded).value();
+    }
+    FrameEdits edits;
+    for (const auto& [name, annotation] : m_annotations.frames)
+        if (!disk.frames.count(name))
+            edits.emplace(name, std::nullopt);
+    for (auto& [name, annotation] : disk.frames)
+        edits.emplace(name, std::move(annotation));
+    edit(tr("Reload annotations from disk"), std::move(edits));
+    m_top_merge = 0;
+    m_load_problem.clear();
+    m_disk = read;
+    m_recovered = false;
+    m_undo.setClean();
+    m_autosave.stop();
+    discardOwnRecovery();
+    emit modifiedChanged(false);
+    return {};
 }
 
 Status AnnotationsDocument::saveAs(const QString& path)
@@ -212,6 +251,7 @@ Status AnnotationsDocument::saveAs(const QString& path)
     if (path != m_path)
         m_load_problem.clear();
     m_path = path;
+    m_disk.remember(path);
     m_recovered = false;
     m_undo.setClean();
     m_autosave.stop();
@@ -290,6 +330,7 @@ Status AnnotationsDocument::recover(const AnnotationsRecovery& recovery)
     m_annotations = std::move(annotations).value();
     m_path = recovery.path;
     m_load_problem.clear();
+    m_disk.remember(m_path);
     reset();
     m_offered_recovery = false;
     m_recovered = true;

@@ -5,6 +5,7 @@
 // edit, and offered again only when that stream is opened.
 #pragma once
 
+#include "ui/document/disk_state.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
 
@@ -51,9 +52,11 @@ public:
 
     /// The annotations of `stream` as read from `path` (clean, new history). `load_problem` says
     /// why the file could not be read: the document is then empty, and the damaged file is
-    /// never written over (save() asks for saveAs()).
+    /// never written over (save() asks for saveAs()). `read` is the file as it was before it was
+    /// read (default: as it is now), what changedOnDisk() compares with.
     void adopt(const QString& stream, const QString& path, Annotations annotations,
-               const QString& load_problem = {});
+               const QString& load_problem = {},
+               const std::optional<FileFingerprint>& read = std::nullopt);
     /// Reads `stream`'s annotations file here (tests, scripts): absent is empty; an Error names
     /// a damaged file (kept as loadProblem()).
     Status setStream(const QString& stream, std::size_t frames = 0);
@@ -86,9 +89,17 @@ public:
     int newMerge() { return ++m_last_merge; }
 
     /// Saves to path() (atomically); an Error names the file and keeps the edits in memory. A
-    /// file that could not be read when the stream opened is not written over: use saveAs().
+    /// file that could not be read when the stream opened is not written over, nor one another
+    /// window or program changed since it was read or saved here (changedOnDisk()): use
+    /// saveAs() (the same path overwrites) or reload().
     Status save();
     Status saveAs(const QString& path);
+    /// The file was written (or made, or removed) by someone else since it was read or saved.
+    bool changedOnDisk() const { return m_disk.changed(); }
+    /// Reads path() again as one undo step ("Reload annotations from disk"; Undo brings the
+    /// edits before it back, unsaved): the document is then clean and what is on disk. An absent
+    /// file reads as empty; a damaged one is an Error and changes nothing.
+    Status reload(std::size_t frames = 0);
 
     /// Where the recovery files go; the app data folder by default. The autosave runs `delay_ms`
     /// after the first unsaved edit (30 s by default).
@@ -129,6 +140,7 @@ private:
     QString m_stream;
     QString m_path;
     QString m_load_problem;
+    DiskState m_disk; ///< the file as read or last saved
     QUndoStack m_undo;
     QTimer m_autosave;
     QString m_recovery_dir;

@@ -36,7 +36,9 @@ Status BookmarksDocument::setStream(const QString& spec)
     m_undo.clear();
     m_marks = Bookmarks{};
     m_unreadable = false;
+    m_spec = spec;
     m_path = fromLocalPath(Bookmarks::sidecarPath(toLocalPath(spec)));
+    m_disk.remember(m_path);
     Status status;
     if (!m_path.isEmpty()) {
         auto marks = Bookmarks::load(toLocalPath(m_path));
@@ -72,6 +74,17 @@ void BookmarksDocument::removeBookmark(std::size_t frame)
                                      std::move(after)));
 }
 
+Status BookmarksDocument::reload()
+{
+    return setStream(m_spec);
+}
+
+void BookmarksDocument::overwrite()
+{
+    if (!m_path.isEmpty())
+        write();
+}
+
 void BookmarksDocument::store(const Bookmarks& marks)
 {
     m_marks = marks;
@@ -81,8 +94,22 @@ void BookmarksDocument::store(const Bookmarks& marks)
                         "kept until the window closes)"));
         return;
     }
+    if (changedOnDisk()) {
+        emit problem(tr("%1 changed on disk since this window read it (another window or a "
+                        "program wrote it): the bookmarks are kept here, not written over it; "
+                        "reload it or keep yours")
+                         .arg(m_path));
+        return;
+    }
+    write();
+}
+
+void BookmarksDocument::write()
+{
     const std::string path = toLocalPath(m_path);
     auto saved = saveReplacingUnreadable(path, m_unreadable, [&] { return m_marks.save(path); });
+    if (saved)
+        m_disk.remember(m_path);
     if (!saved)
         emit problem(QString::fromStdString(saved.error().message) +
                      tr(" (the bookmarks are kept until the window closes)"));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ui/document/bookmarks.h"
+#include "ui/document/disk_state.h"
 
 #include <QObject>
 #include <QString>
@@ -31,6 +32,15 @@ public:
     /// Removes the mark of `frame`, if any; undoable.
     void removeBookmark(std::size_t frame);
 
+    /// The sidecar was written (or made, or removed) by someone else since it was read or saved
+    /// here; a change is then kept in memory, not written over it, until reload() or overwrite().
+    bool changedOnDisk() const { return m_disk.changed(); }
+    /// Reads the sidecar again (a clean reload: the marks made here since are dropped and the
+    /// history starts again).
+    Status reload();
+    /// Writes the marks in memory over the sidecar, whatever it holds now.
+    void overwrite();
+
 signals:
     void changed();
     /// A save failed (the marks stay in memory), or the damaged sidecar was set aside.
@@ -40,8 +50,11 @@ signals:
 private:
     friend class BookmarksCommand;
     void store(const Bookmarks& marks);
+    void write();
 
     QString m_path;
+    QString m_spec;
+    DiskState m_disk;          ///< the sidecar as read or last saved
     bool m_unreadable = false; ///< the sidecar was refused: set aside before a save
     Bookmarks m_marks;
     QUndoStack m_undo;

@@ -106,9 +106,48 @@ void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
     m_undo_documents.push_back({name, &stack});
     // The document edited last is the one Edit > Undo acts on.
     connect(&stack, &QUndoStack::indexChanged, this, [this, &stack] {
-        if (stack.count() > 0)
+        if (stack.count() > 0) {
+            m_touched[&stack] = ++m_touch_serial;
             m_undo_group.setActiveStack(&stack);
+        }
+        emit undoTargetChanged();
     });
+    connect(&stack, &QUndoStack::canUndoChanged, this, &EditingSession::undoTargetChanged);
+    connect(&stack, &QUndoStack::undoTextChanged, this, &EditingSession::undoTargetChanged);
+}
+
+QUndoStack* EditingSession::undoTarget() const
+{
+    QUndoStack* active = m_undo_group.activeStack();
+    if (active && active->canUndo())
+        return active;
+    // The active document has no step left: the one edited most recently that has.
+    QUndoStack* newest = nullptr;
+    quint64 when = 0;
+    for (const UndoDocument& d : m_undo_documents) {
+        const auto it = m_touched.find(d.stack);
+        if (d.stack->canUndo() && it != m_touched.end() && it->second >= when) {
+            newest = d.stack;
+            when = it->second;
+        }
+    }
+    return newest;
+}
+
+QString EditingSession::undoDocumentName(const QUndoStack* stack) const
+{
+    for (const UndoDocument& d : m_undo_documents)
+        if (d.stack == stack)
+            return d.name;
+    return {};
+}
+
+void EditingSession::undo()
+{
+    if (QUndoStack* target = undoTarget()) {
+        m_undo_group.setActiveStack(target);
+        target->undo();
+    }
 }
 
 bool EditingSession::openStream(const QString& spec, const QString& lut)
@@ -196,33 +235,33 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     const QString lut_path = opened->lut_path;
     const std::optional<ParamSet> params = opened->params;
     std::shared_ptr<const ColourLut> table = opened->lut;
+    const FileFingerprint lut_read = opened->lut_read;
     // Its annotations just before it, so its first frame is drawn with its own truth. Unsaved
     // annotation edits of the stream before are the window's to save or drop before it opens
     // another; a recovery of them stays for their own stream.
     m_annotations->adopt(sessionStreamName(spec), opened->annotations_path,
-                         std::move(opened->annotations), opened->annotations_problem);
+                         std::move(opened->annotations), opened->annotations_problem,
+                         opened->annotations_read);
     // The stream first: the table's change then runs the new stream's frame, never the old one.
     m_stream->adopt(std::move(opened));
     // Edits are never dropped silently: a table opened under unsaved edits (an open finishing
     // after a recovery) gives way to the edited one.
     if (!m_lut->modified())
-        m_lut->reset(std::move(table), lut_path);
+        m_lut->reset(std::move(table), lut_path, lut_read);
     // The recovery file names the stream its edits belong to, wherever the next session runs.
     m_lut->setStream(sessionStreamName(spec));
     if (Status s = m_bookmarks->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
     if (Status s = m_samples->setStream(spec); !s)
         m_warnings << QString::fromStdString(s.error().message);
-    // The stream's own parameters (and the command line's over them) replace those in use (one
-    // step: Undo brings them back); a stream without a parameter file runs with the pipeline's
-    // defaults.
-    if (params) {
-        ParamSet wanted = *params;
+    // The stream's own parameters (and the command line's over them) replace those in use; a
+    // stream without a parameter file runs with the pipeline's defaults, one whose file cannot
+    // be read with those in use. The state it opens in is the bottom of the parameters' history:
+    // no Undo goes back to the stream before's, or to the defaults.
+    ParamSet wanted = params ? *params : m_settings->paramChanges();
+    if (params)
         wanted.merge(m_param_overrides);
-        if (!(wanted.values == m_settings->paramChanges().values))
-            (void)m_settings->setParamChanges(
-                wanted, tr("Parameters of %1").arg(QFileInfo(spec).fileName()));
-    }
+    m_settings->reset(wanted);
     const StreamOptions options{m_stream->orientation()};
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
@@ -230,7 +269,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     m_evaluation->setTruth(truthVersion(), m_annotations->path());
     m_evaluation->setStream(spec, m_lut->version(), options);
-    // The settings keep their history across streams; Undo starts on the new stream's table.
+    // Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
 }
 

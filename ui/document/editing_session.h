@@ -20,6 +20,7 @@
 #include <QUndoGroup>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -63,6 +64,13 @@ public:
     /// Edit > Undo and Redo act on the active stack; the document edited last becomes active.
     QUndoGroup& undoGroup() { return m_undo_group; }
     const std::vector<UndoDocument>& undoDocuments() const { return m_undo_documents; }
+    /// What Edit > Undo takes back: the active document's last step, or, when it has none left,
+    /// that of the document edited most recently that has one (null: nothing to undo anywhere).
+    QUndoStack* undoTarget() const;
+    /// The history dock's name of the document of `stack`.
+    QString undoDocumentName(const QUndoStack* stack) const;
+    /// Undoes undoTarget()'s last step; its document becomes the active one.
+    void undo();
 
     /// Opens `spec` in the background (with the table `lut`, or the stream's own); opened()
     /// tells how it went. False, with the reason in `why`, while another open runs.
@@ -86,6 +94,8 @@ public:
     void setParamOverrides(const ParamSet& params) { m_param_overrides = params; }
 
 signals:
+    /// undoTarget() or its step's text may have changed.
+    void undoTargetChanged();
     /// A background open ended: the stream is in (ok), or `error` says why not (or that the
     /// user cancelled it).
     void opened(bool ok, bool cancelled, const QString& error);
@@ -119,6 +129,8 @@ private:
     EvaluationScan* m_evaluation = nullptr;
     QUndoGroup m_undo_group;
     std::vector<UndoDocument> m_undo_documents;
+    std::map<const QUndoStack*, quint64> m_touched; ///< when each stack last changed
+    quint64 m_touch_serial = 0;
     QStringList m_warnings;
     std::shared_ptr<OpenJob> m_job;
     SourceOpener m_opener;

@@ -5,6 +5,8 @@
 
 #include "visioncore/basics/json_text.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/io/lut_import.h"
+#include "visioncore/services/lut_compare.h"
 
 #include <QDir>
 #include <QFile>
@@ -55,12 +57,17 @@ LutDocument::~LutDocument()
     blockSignals(true);
 }
 
-void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path)
+void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path,
+                        const std::optional<FileFingerprint>& read)
 {
     m_table = lut ? *lut : ColourLut();
     m_version = lut;
     m_saved = std::move(lut);
     m_path = path;
+    if (read)
+        m_disk.remember(path, *read);
+    else
+        m_disk.remember(path);
     m_recovered = false;
     m_undo.clear();
     m_autosave.stop();
@@ -72,7 +79,9 @@ void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& pat
 
 void LutDocument::revert()
 {
+    const DiskState disk = m_disk; // the file as read: a change since is still one
     reset(m_saved, m_path);
+    m_disk = disk;
 }
 
 std::shared_ptr<const ColourLut> LutDocument::version() const
@@ -115,7 +124,32 @@ Status LutDocument::save()
 {
     if (m_path.isEmpty())
         return Error{"the LUT has no file yet: use Save As"};
+    if (changedOnDisk())
+        return Error{toLocalPath(m_path) +
+                     ": changed on disk since it was read (another window or program wrote "
+                     "it), so it is not written over; reload it or save under another name"};
     return saveAs(m_path);
+}
+
+Status LutDocument::reload()
+{
+    if (m_path.isEmpty())
+        return Error{"the LUT has no file to reload"};
+    // Noted before reading: a write during the read is a change still to be seen.
+    DiskState read;
+    read.remember(m_path);
+    auto disk = importLut(toLocalPath(m_path));
+    if (!disk)
+        return disk.error();
+    edit(tr("Reload LUT from disk"), diffLuts(m_table, disk.value()).cells);
+    m_top_stroke = 0;
+    m_saved = version();
+    m_disk = read;
+    m_recovered = false;
+    m_undo.setClean();
+    m_autosave.stop();
+    emit modifiedChanged(false);
+    return {};
 }
 
 Status LutDocument::saveAs(const QString& path)
@@ -126,6 +160,7 @@ Status LutDocument::saveAs(const QString& path)
     if (Status s = m_table.save(toLocalPath(path)); !s)
         return s; // the edits stay in memory, and modified
     m_path = path;
+    m_disk.remember(path);
     m_saved = version();
     m_recovered = false;
     m_undo.setClean();
@@ -182,6 +217,7 @@ Status LutDocument::recover(const LutRecovery& recovery)
     m_table = std::move(table).value();
     m_version.reset();
     m_path = recovery.path;
+    m_disk.remember(m_path);
     m_undo.clear();
     m_recovered = true;
     m_edit_base.reset();

@@ -3,6 +3,7 @@
 // an autosave to a recovery file at most 30 s after an edit, offered again after a crash.
 #pragma once
 
+#include "ui/document/disk_state.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/basics/result.h"
 #include "visioncore/services/lut_editing.h"
@@ -36,7 +37,10 @@ public:
     ~LutDocument() override;
 
     /// A table loaded from `path` (empty: not from a file): clean, with an empty undo stack.
-    void reset(std::shared_ptr<const ColourLut> lut, const QString& path);
+    /// `read` is the file as it was before it was read (default: as it is now), what
+    /// changedOnDisk() compares with.
+    void reset(std::shared_ptr<const ColourLut> lut, const QString& path,
+               const std::optional<FileFingerprint>& read = std::nullopt);
     /// Drops the unsaved edits: back to the table as loaded or last saved.
     void revert();
     const ColourLut& table() const { return m_table; }
@@ -55,9 +59,17 @@ public:
     /// null after a reset. What the whole-stream effect compares the current table with.
     std::shared_ptr<const ColourLut> editBase() const { return m_edit_base; }
 
-    /// Saves to path() (atomically); an Error names the file and keeps the edits in memory.
+    /// Saves to path() (atomically); an Error names the file and keeps the edits in memory. A
+    /// file another window or program changed since it was read or saved here (changedOnDisk())
+    /// is not written over: saveAs() (the same path overwrites) or reload().
     Status save();
     Status saveAs(const QString& path);
+    /// The file was written (or made, or removed) by someone else since it was read or saved.
+    bool changedOnDisk() const { return m_disk.changed(); }
+    /// Reads path() again as one undo step ("Reload LUT from disk", the cells that differ; Undo
+    /// brings the edits before it back, unsaved): the table is then clean and what is on disk.
+    /// A file gone or unreadable is an Error and changes nothing.
+    Status reload();
 
     /// Where the recovery files go (<dir>/lut-recovery.lut and .json); the app data folder by
     /// default. The autosave runs `delay_ms` after the first unsaved edit (30 s by default).
@@ -92,6 +104,7 @@ private:
     mutable std::shared_ptr<const ColourLut> m_version;
     std::shared_ptr<const ColourLut> m_saved; ///< as loaded or last saved
     QString m_path;
+    DiskState m_disk; ///< the file as read or last saved
     QString m_stream;
     QUndoStack m_undo;
     QTimer m_autosave;

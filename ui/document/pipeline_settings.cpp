@@ -99,7 +99,8 @@ void PipelineSettings::store(const State& state)
 void PipelineSettings::reset(const ParamSet& params)
 {
     m_undo.clear();
-    store(State{std::make_shared<ParamSet>(params), m_skip});
+    if (params.values != m_params->values) // the same again: nothing to run again
+        store(State{std::make_shared<ParamSet>(params), m_skip});
 }
 
 Status PipelineSettings::setStageEnabled(std::string_view stage_id, bool enabled)

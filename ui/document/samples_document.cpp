@@ -109,6 +109,7 @@ Status SamplesDocument::setStream(const QString& spec)
     m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
                  ? QString()
                  : fromLocalPath(defaultLutSamplesPath(toLocalPath(spec)));
+    m_disk.remember(m_path);
     Status status;
     if (localPathExists(m_path)) {
         auto loaded = loadLutSamples(toLocalPath(m_path));
@@ -128,17 +129,35 @@ Status SamplesDocument::setStream(const QString& spec)
 void SamplesDocument::store(std::vector<LutSample> samples)
 {
     m_samples.samples = std::move(samples);
-    if (!m_path.isEmpty()) {
-        const std::string path = toLocalPath(m_path);
-        auto saved = saveReplacingUnreadable(path, m_path_unreadable,
-                                             [&] { return saveLutSamples(path, m_samples); });
-        if (!saved)
-            emit problem(QString::fromStdString(saved.error().message) +
-                         tr(" (the samples stay in memory)"));
-        else if (!saved.value().empty())
-            emit problem(QString::fromStdString(saved.value()));
-    }
+    if (changedOnDisk())
+        emit problem(tr("%1 changed on disk since this window read it (another window or a "
+                        "program wrote it): the samples are kept here, not written over it; "
+                        "reload it or keep yours")
+                         .arg(m_path));
+    else
+        write();
     emit samplesChanged();
+}
+
+void SamplesDocument::overwrite()
+{
+    write();
+}
+
+void SamplesDocument::write()
+{
+    if (m_path.isEmpty())
+        return;
+    const std::string path = toLocalPath(m_path);
+    auto saved = saveReplacingUnreadable(path, m_path_unreadable,
+                                         [&] { return saveLutSamples(path, m_samples); });
+    if (saved)
+        m_disk.remember(m_path);
+    if (!saved)
+        emit problem(QString::fromStdString(saved.error().message) +
+                     tr(" (the samples stay in memory)"));
+    else if (!saved.value().empty())
+        emit problem(QString::fromStdString(saved.value()));
 }
 
 void SamplesDocument::addRect(const QString& frame, Colour colour, const QRect& rect)

@@ -5,6 +5,7 @@
 // background, with progress and cancel, and the new table becomes one undoable LUT edit.
 #pragma once
 
+#include "ui/document/disk_state.h"
 #include "ui/document/lut_document.h"
 #include "visioncore/services/lut_building.h"
 
@@ -41,6 +42,16 @@ public:
     void addRect(const QString& frame, Colour colour, const QRect& rect);
     /// Replaces every sample (undoable; saved at once).
     void setSamples(std::vector<LutSample> samples, const QString& text);
+
+    /// The samples file was written (or made, or removed) by someone else since it was read or
+    /// saved here; a change is then kept in memory, not written over it, until reload() or
+    /// overwrite().
+    bool changedOnDisk() const { return m_disk.changed(); }
+    /// Reads the samples file again (a clean reload: the samples made here since are dropped
+    /// and the history starts again).
+    Status reload() { return setStream(m_stream); }
+    /// Writes the samples in memory over the file, whatever it holds now.
+    void overwrite();
 
     /// Builds from the samples (and the stream's annotations as samples) on a worker thread;
     /// buildReady() then says a built table waits to be applied (or dropped).
@@ -90,11 +101,13 @@ signals:
 private:
     friend class SamplesCommand;
     void store(std::vector<LutSample> samples);
+    void write();
 
     LutDocument& m_lut;
     QString m_stream;
     StreamOptions m_options;
     QString m_path;
+    DiskState m_disk;               ///< the samples file as read or last saved
     bool m_path_unreadable = false; ///< the file there was refused: set aside before a save
     QString m_load_problem;
     LutSamples m_samples;

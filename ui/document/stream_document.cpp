@@ -134,7 +134,8 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
         opened->warnings << spec + QStringLiteral(": no LUT given and none beside the stream; "
                                                   "every pixel is unclassified");
         opened->lut_problem = true;
-    } else if (auto table = importLut(local(opened->lut_path)); table) {
+    } else if (opened->lut_read = fingerprintFile(local(opened->lut_path));
+               auto table = importLut(local(opened->lut_path))) {
         opened->lut = std::make_shared<const ColourLut>(std::move(table).value());
     } else if (lut.isEmpty()) {
         // The stream's own table is damaged: the stream still opens, with an empty table that
@@ -163,6 +164,8 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
                                 tr("; the stream opened with the parameters in use");
 
     opened->annotations_path = AnnotationsDocument::defaultPath(spec);
+    if (!opened->annotations_path.isEmpty())
+        opened->annotations_read = fingerprintFile(local(opened->annotations_path));
     std::error_code ec;
     if (!opened->annotations_path.isEmpty() &&
         std::filesystem::exists(local(opened->annotations_path), ec)) {

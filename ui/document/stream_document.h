@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ui/document/frame_worker.h"
+#include "visioncore/basics/file_fingerprint.h"
 
 #include <QObject>
 #include <QString>
@@ -31,6 +32,10 @@ struct OpenedStream
     QString annotations_path; ///< where the stream keeps its annotations (empty: a camera)
     Annotations annotations;  ///< as read from there (none when absent or damaged)
     QString annotations_problem; ///< why the file there could not be read
+    /// The table's and the annotations' files as they were just before they were read, so a
+    /// write during the open is still a change to the window's documents.
+    FileFingerprint lut_read;
+    FileFingerprint annotations_read;
     /// The stream's own stage parameters (its manifest's "params"; empty: none), or none when
     /// its file could not be used (said in the warnings).
     std::optional<ParamSet> params;

@@ -6,11 +6,22 @@
 #include <QAbstractSpinBox>
 #include <QComboBox>
 #include <QEvent>
+#include <QKeyEvent>
+#include <QKeySequence>
 #include <QWidget>
 
 namespace fieldsight::ui {
 
 namespace {
+
+bool isUndoKey(const QKeyEvent& key)
+{
+    const QKeySequence pressed(key.keyCombination());
+    if (key.matches(QKeySequence::Undo) || key.matches(QKeySequence::Redo))
+        return true;
+    return pressed == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z) ||
+           pressed == QKeySequence(Qt::CTRL | Qt::Key_Y);
+}
 
 class WheelGuard final : public QObject
 {
@@ -20,6 +31,14 @@ public:
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override
     {
+        if (event->type() == QEvent::ShortcutOverride) {
+            // Not taken by the box's own text undo: the window's undo shortcut fires instead.
+            if (isUndoKey(*static_cast<QKeyEvent*>(event))) {
+                event->ignore();
+                return true;
+            }
+            return false;
+        }
         if (event->type() != QEvent::Wheel)
             return false;
         auto* widget = qobject_cast<QWidget*>(watched);

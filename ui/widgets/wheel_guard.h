@@ -1,6 +1,7 @@
 // Spin boxes, sliders and combo boxes in a scrolled panel take the mouse wheel only when they
 // have focus (a click or Tab gives it); otherwise the wheel scrolls the panel, so scrolling past
-// a parameter never changes it.
+// a parameter never changes it. A spin box with focus leaves the undo keys (Ctrl+Z, Ctrl+Shift+Z,
+// Ctrl+Y) to the window's Edit > Undo and Redo: its value is a document's, undone there.
 #pragma once
 
 class QWidget;
