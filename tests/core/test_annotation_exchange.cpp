@@ -342,6 +342,58 @@ private slots:
         QVERIFY(unquoted.error().message.find("line 1") != std::string::npos);
     }
 
+    void dntLabelsNameWhatTheyRefuseAndTakeABom()
+    {
+        // A byte order mark before the first line is no part of it.
+        auto bom = parseDntLabels("\xEF\xBB\xBF'000001 a.png [G<1,2>;U<1,0>]'\n", "l.txt");
+        QVERIFY2(bom.ok(), bom ? "" : bom.error().message.c_str());
+        QCOMPARE(bom.value().at(0).name, std::string("000001 a.png"));
+        // An item of another letter is refused naming the line, not dropped.
+        auto unknown =
+            parseDntLabels("'000001 a.png []'\n'000002 b.png [G<1,2>;Q<3,4>]'\n", "l.txt");
+        QVERIFY(!unknown.ok());
+        QVERIFY2(unknown.error().message.starts_with("l.txt: line 2: 'Q<3,4>': unknown label 'Q'"),
+                 unknown.error().message.c_str());
+        // A NUL inside an item is written escaped.
+        auto nul = parseDntLabels(std::string("'000001 a.png [G<1,\0>]'\n", 24), "l.txt");
+        QVERIFY(!nul.ok());
+        QVERIFY2(nul.error().message.find("G<1,\\0>") != std::string::npos &&
+                     nul.error().message.find('\0') == std::string::npos,
+                 nul.error().message.c_str());
+        // Many post labels on one line: refused by a bound, not paired each with each (which
+        // grew with their square: 10,000 took 8 s and 842 MB); other items any number.
+        std::string posts = "'000001 a.png [";
+        for (int i = 0; i < 65; ++i)
+            posts += "G<" + std::to_string(i) + ",100>;";
+        auto crowded = parseDntLabels(posts + "]'\n", "l.txt");
+        QVERIFY(!crowded.ok());
+        QVERIFY2(crowded.error().message.starts_with("l.txt: line 1: more than 64 post labels"),
+                 crowded.error().message.c_str());
+        std::string crossings = "'000001 a.png [";
+        for (int i = 0; i < 200000; ++i)
+            crossings += "L<" + std::to_string(i % 320) + ",5>;";
+        QVERIFY(crossings.size() < (std::size_t(4) << 20));
+        auto many = parseDntLabels(crossings + "]'\n", "l.txt");
+        QVERIFY(many.ok());
+        QCOMPARE(many.value().at(0).points.size(), std::size_t(200000));
+    }
+
+    void dntLabelsOfOneFrameTwiceAreRefused()
+    {
+        const std::string stream = path("dnt_twice");
+        makeFrames(stream, 1, 320, 240, numbered);
+        const std::string labels = path("twice_labels.txt");
+        test::writeBytes(labels, "'000001 0 0 0 QVGA.png [G<100,100>;]'\n"
+                                 "'000001.png [G<200,100>;]'\n");
+        const Outcome o = fieldsight(
+            {"annotations", "import-dnt", labels, "--stream", stream, "--out", path("t.json")});
+        QCOMPARE(o.status, 2);
+        QVERIFY2(o.err.find("line 2") != std::string::npos &&
+                     o.err.find("line 1 labels already") != std::string::npos,
+                 o.err.c_str());
+        QVERIFY(!std::filesystem::exists(path("t.json")));
+    }
+
     void dntLabelsBecomeGoalpostBoxes()
     {
         const std::string stream = path("dnt_made_up");
