@@ -11,6 +11,7 @@
 #include <cstdlib>
 
 #include <optional>
+#include <set>
 #include <string>
 
 namespace fieldsight {
@@ -59,6 +60,30 @@ inline Result<nlohmann::json> parseFormattedJson(const std::string& text, const 
     if (auto problem = formatProblem(root, source, format))
         return *problem;
     return root;
+}
+
+/// The keys of `object` not in `known`, as the text of a JSON object ("" none): what a reader
+/// keeps of a file it does not understand, to write back (addUnknownKeys) so that a newer
+/// Fieldsight's or another tool's fields survive a save.
+inline std::string unknownKeys(const nlohmann::json& object, const std::set<std::string>& known)
+{
+    nlohmann::ordered_json unknown = nlohmann::ordered_json::object();
+    for (const auto& item : object.items())
+        if (known.find(item.key()) == known.end())
+            unknown[item.key()] = item.value();
+    return unknown.empty() ? std::string() : jsonText(unknown);
+}
+
+/// Adds the keys of `unknown` (unknownKeys()' text) to `object` after its own; a key `object`
+/// has already is not replaced.
+inline void addUnknownKeys(const std::string& unknown, nlohmann::ordered_json& object)
+{
+    if (unknown.empty())
+        return;
+    nlohmann::ordered_json kept = nlohmann::ordered_json::parse(unknown);
+    for (auto& item : kept.items())
+        if (!object.contains(item.key()))
+            object[item.key()] = std::move(item.value());
 }
 
 } // namespace fieldsight

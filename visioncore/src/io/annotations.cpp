@@ -37,16 +37,6 @@ std::set<std::string> knownKeys(const PerceptEntry& entry)
     return keys;
 }
 
-/// The keys of `object` not in `known`, as the text of a JSON object ("" none).
-std::string unknownKeys(const Json& object, const std::set<std::string>& known)
-{
-    OrderedJson unknown = OrderedJson::object();
-    for (const auto& item : object.items())
-        if (known.find(item.key()) == known.end())
-            unknown[item.key()] = item.value();
-    return unknown.empty() ? std::string() : jsonText(unknown);
-}
-
 /// The keys each kind's objects are read from, found once a kind's first list is read.
 using KnownKeys = std::map<const PerceptKind*, std::set<std::string>>;
 
@@ -117,18 +107,6 @@ std::optional<std::string> readReviewed(const Json& json, const std::string& whe
     return std::nullopt;
 }
 
-/// Adds the keys of the JSON object text `unknown` to `object`, after its own (a key it has
-/// already is not replaced).
-void addUnknown(const std::string& unknown, OrderedJson& object)
-{
-    if (unknown.empty())
-        return;
-    OrderedJson kept = OrderedJson::parse(unknown);
-    for (auto& item : kept.items())
-        if (!object.contains(item.key()))
-            object[item.key()] = std::move(item.value());
-}
-
 void writeFlags(const FrameAnnotation& frame, OrderedJson& out)
 {
     for (const auto& [key, list] : frame.flags) {
@@ -150,7 +128,7 @@ void writeFlags(const FrameAnnotation& frame, OrderedJson& out)
                 object["interpolate"] = false;
             if (f.interpolated)
                 object["interpolated"] = true;
-            addUnknown(f.unknown, object);
+            addUnknownKeys(f.unknown, object);
         }
     }
 }
@@ -335,13 +313,13 @@ std::string Annotations::toJson(const std::vector<const PerceptKind*>& order) co
             out["reviewed"] = frame.reviewed;
         frame.truth.toJson(out, PerceptNames::Truth, order);
         writeFlags(frame, out);
-        addUnknown(frame.unknown, out);
+        addUnknownKeys(frame.unknown, out);
         frames_json[name] = std::move(out);
     }
     OrderedJson root;
     root["format"] = kFormat;
     root["frames"] = std::move(frames_json);
-    addUnknown(unknown, root);
+    addUnknownKeys(unknown, root);
     return jsonText(root, 1) + "\n";
 }
 

@@ -27,7 +27,7 @@ struct ObjectFlags
     /// The object's keys this version does not read, as the text of a JSON object ("" none):
     /// written back after the known ones, so a newer file's fields survive a save. An edit of
     /// the object keeps them (they go with its flags).
-    std::string unknown;
+    std::string unknown = {};
 
     bool isDefault() const { return *this == ObjectFlags{}; }
     friend bool operator==(const ObjectFlags&, const ObjectFlags&) = default;
@@ -44,7 +44,7 @@ struct FrameAnnotation
     std::set<std::string, std::less<>> reviewed;
     /// The frame's keys this version does not read (a kind it does not know, another field), as
     /// the text of a JSON object ("" none): written back after the known ones.
-    std::string unknown;
+    std::string unknown = {};
 
     ObjectFlags flagsOf(std::string_view truth_key, std::size_t index) const;
     /// Sets the flags of object `index` of kind `truth_key` (the list grows with defaults).
@@ -81,7 +81,7 @@ struct Annotations
     std::map<std::string, FrameAnnotation> frames; ///< by frame name
     /// The file's top-level keys other than "format" and "frames", as the text of a JSON object
     /// ("" none): written back after them.
-    std::string unknown;
+    std::string unknown = {};
 
     /// Reads the lists of `kinds` (a pipeline's perceptKinds()); every other key of the file, a
     /// frame or an object is kept as it is (FrameAnnotation::unknown, ObjectFlags::unknown) and
