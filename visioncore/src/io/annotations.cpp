@@ -133,19 +133,6 @@ void writeFlags(const FrameAnnotation& frame, OrderedJson& out)
     }
 }
 
-/// Parses `text` as JSON, a value of the file at `source`, calling `each(depth, event, value)` as
-/// nlohmann's parser callback (a value it returns false for is not kept); a syntax error is an
-/// Error saying where.
-template <class Each>
-Result<Json> parseEach(const std::string& text, const std::string& source, Each each)
-{
-    try {
-        return Json::parse(text, Json::parser_callback_t(each));
-    } catch (const nlohmann::json::exception& e) { // a syntax error, or a number overflow
-        return Error{jsonSyntaxError(source, e.what())};
-    }
-}
-
 /// Reads the frames of one annotations file as the parser finishes each, checking their names.
 class FrameReader
 {
@@ -248,29 +235,11 @@ Result<Annotations> Annotations::fromJson(const std::string& text, const std::st
     Annotations annotations;
     FrameReader reader(source, kinds, annotations);
     std::optional<Error> problem;
-    std::string top_key, frame_name;
-    bool in_frames = false;
-    using Event = Json::parse_event_t;
-    auto parsed = parseEach(text, source, [&](int depth, Event event, Json& value) {
-        if (depth == 1) {
-            if (event == Event::key)
-                top_key = value.get<std::string>();
-            else if (event == Event::object_start)
-                in_frames = top_key == "frames";
-            else if (event == Event::object_end)
-                in_frames = false;
-            return true;
-        }
-        if (depth != 2 || !in_frames || event == Event::object_start || event == Event::array_start)
-            return true;
-        if (event == Event::key) {
-            frame_name = value.get<std::string>();
-            return true;
-        }
-        if (!problem) // the frame's whole value: an object's or array's end, or a plain value
-            problem = reader.add(frame_name, value);
-        return false;
-    });
+    auto parsed = parseJsonMembers(text, source, "frames",
+                                   [&](const std::string& name, std::size_t, const Json& frame) {
+                                       if (!problem)
+                                           problem = reader.add(name, frame);
+                                   });
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();

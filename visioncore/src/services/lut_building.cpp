@@ -222,12 +222,24 @@ std::string defaultLutSamplesPath(const std::string& stream)
 
 Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string& source)
 {
-    auto parsed = parseFormattedJson(text, source, kLutSamplesFormat);
+    // Each sample is read as soon as the parser has it and then dropped (parseJsonMembers).
+    LutSamples out;
+    std::optional<Error> problem;
+    auto parsed = parseJsonMembers(text, source, "samples",
+                                   [&](const std::string&, std::size_t i, const Json& json) {
+                                       if (problem)
+                                           return;
+                                       auto sample = sampleFromJson(json, sampleWhere(i));
+                                       if (!sample)
+                                           problem = Error{source + ": " + sample.error().message};
+                                       else
+                                           out.samples.push_back(std::move(sample).value());
+                                   });
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();
-
-    LutSamples out;
+    if (auto bad = formatProblem(root, source, kLutSamplesFormat))
+        return *bad;
     if (const auto smoothing = root.find("smoothing"); smoothing != root.end()) {
         if (!smoothing->is_number_integer() || smoothing->get<long long>() < 0 ||
             smoothing->get<long long>() > kMaxSmoothing)
@@ -238,12 +250,8 @@ Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string
     const auto samples = root.find("samples");
     if (samples == root.end() || !samples->is_array())
         return Error{source + ": \"samples\" must be a list of samples"};
-    for (std::size_t i = 0; i < samples->size(); ++i) {
-        auto sample = sampleFromJson((*samples)[i], sampleWhere(i));
-        if (!sample)
-            return Error{source + ": " + sample.error().message};
-        out.samples.push_back(std::move(sample).value());
-    }
+    if (problem)
+        return *problem;
     out.unknown = unknownKeys(root, {"format", "smoothing", "samples"});
     return out;
 }
