@@ -150,15 +150,14 @@ public:
     /// Reads frame `name` from `json`; on bad input, the Error.
     std::optional<Error> add(const std::string& name, const Json& json)
     {
-        const std::string shown = "frames[\"" + messageText(name) + "\"]";
+        const std::string where = "frames[\"" + messageText(name) + "\"]";
         if (auto problem = frameNameProblem(name))
-            return Error{m_source + ": " + shown + ": the frame name " + *problem +
+            return Error{m_source + ": " + where + ": the frame name " + *problem +
                          "; a frame is named by its file name alone"};
         const auto [same, fresh] = m_by_stem.emplace(frameStem(name), name);
         if (!fresh)
-            return Error{m_source + ": " + shown + " and frames[\"" + messageText(same->second) +
+            return Error{m_source + ": " + where + " and frames[\"" + messageText(same->second) +
                          "\"] name the same frame; keep one of them"};
-        const std::string& where = shown;
         if (!json.is_object())
             return Error{m_source + ": " + where + " must be an object"};
         FrameAnnotation frame;
