@@ -11,6 +11,8 @@
 
 #include <QtTest>
 
+#include <nlohmann/json.hpp>
+
 #include <fstream>
 
 using namespace fieldsight;
@@ -259,6 +261,125 @@ private slots:
         QVERIFY2(newer.error().message.find("new.json") != std::string::npos &&
                      newer.error().message.find("newer") != std::string::npos,
                  newer.error().message.c_str());
+    }
+
+    void unknownKeysAreKeptAndWrittenBackAfterTheKnownOnes()
+    {
+        // What a newer Fieldsight or another tool adds: a top-level key, a frame's key, a kind
+        // this version does not know, a key on a goalpost and on a ball.
+        const char* text = R"({"format": "fieldsight-annotations/1", "author": {"name": "kim"},
+            "frames": {"f1.png": {"note": "blurry", "done": true,
+                "robots_3d": [{"x": 1, "z": 2}],
+                "goalposts": [{"left": 1, "right": 4, "top": 0, "bottom": 9, "side": "left",
+                               "concealed": true}],
+                "balls": [{"x": 10, "y": 20, "radius": 5, "colour": [255, 128, 0]}]}}})";
+        auto parsed = Annotations::fromJson(text, "a.json", kinds());
+        QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
+        const std::string saved = parsed.value().toJson(kinds());
+        const auto out = nlohmann::ordered_json::parse(saved);
+        QCOMPARE(out.at("author"), nlohmann::ordered_json::parse(R"({"name": "kim"})"));
+        const auto& frame = out.at("frames").at("f1.png");
+        QCOMPARE(frame.at("note").get<std::string>(), std::string("blurry"));
+        QCOMPARE(frame.at("robots_3d"), nlohmann::ordered_json::parse(R"([{"x": 1, "z": 2}])"));
+        QCOMPARE(frame.at("goalposts").at(0).at("side").get<std::string>(), std::string("left"));
+        QVERIFY(frame.at("goalposts").at(0).at("concealed").get<bool>());
+        QCOMPARE(frame.at("balls").at(0).at("colour"),
+                 nlohmann::ordered_json::parse("[255,128,0]"));
+        // The known keys first, in the documented order (done, the lists in the pipeline's
+        // order), then the ones kept; "format" and "frames" first at the top.
+        std::vector<std::string> keys, top;
+        for (const auto& item : frame.items())
+            keys.push_back(item.key());
+        for (const auto& item : out.items())
+            top.push_back(item.key());
+        QCOMPARE(keys,
+                 (std::vector<std::string>{"done", "goalposts", "balls", "note", "robots_3d"}));
+        QCOMPARE(top, (std::vector<std::string>{"format", "frames", "author"}));
+        // Read again, the same file.
+        auto again = Annotations::fromJson(saved, "b.json", kinds());
+        QVERIFY(again.ok());
+        QCOMPARE(again.value().toJson(kinds()), saved);
+
+        // An edit of the object keeps its own unknown keys (they go with its flags); removing
+        // the object removes them.
+        Annotations edited = parsed.value();
+        FrameAnnotation& f = edited.frames.at("f1.png");
+        f.truth.output<Goalpost>()[0].left = 2;
+        f.setFlags("goalposts", 0, [&] {
+            ObjectFlags flags = f.flagsOf("goalposts", 0);
+            flags.concealed = false;
+            return flags;
+        }());
+        const auto moved = nlohmann::json::parse(edited.toJson(kinds()));
+        const auto& post = moved.at("frames").at("f1.png").at("goalposts").at(0);
+        QCOMPARE(post.at("left").get<int>(), 2);
+        QCOMPARE(post.at("side").get<std::string>(), std::string("left"));
+        QVERIFY(!post.contains("concealed"));
+        f.truth.output<Goalpost>().clear();
+        f.eraseFlags("goalposts", 0);
+        QVERIFY(f.flagsOf("goalposts", 0).isDefault());
+    }
+
+    void aFrameHasOneNameThatIsAFileName()
+    {
+        const auto problem = [](const std::string& frames) {
+            auto parsed = Annotations::fromJson(
+                "{\"format\": \"fieldsight-annotations/1\", \"frames\": " + frames + "}", "a.json",
+                kinds());
+            return parsed.ok() ? std::string() : parsed.error().message;
+        };
+        // One frame under two names would be scored twice, and exported once.
+        const std::string twice = problem(R"({"frame_000000.png": {"done": true},
+                                              "frame_000000": {"done": true}})");
+        QVERIFY2(twice.starts_with("a.json: ") &&
+                     twice.find("\"frame_000000\"") != std::string::npos &&
+                     twice.find("\"frame_000000.png\"") != std::string::npos &&
+                     twice.find("same frame") != std::string::npos,
+                 twice.c_str());
+        const std::string outside = problem(R"({"../lab2/frame_000000.png": {"done": true}})");
+        QVERIFY2(outside.starts_with("a.json: frames[\"../lab2/frame_000000.png\"]") &&
+                     outside.find("path separator") != std::string::npos,
+                 outside.c_str());
+        QVERIFY(problem(R"({"..": {}})").find("'..'") != std::string::npos);
+        QVERIFY(problem(R"({"sub\\f.png": {}})").find("path separator") != std::string::npos);
+        // A NUL inside is named escaped, never printed raw.
+        const std::string nul = problem(R"({"frame_000000.png\u0000x": {"done": true}})");
+        QVERIFY2(nul.find("frame_000000.png\\0x") != std::string::npos &&
+                     nul.find('\0') == std::string::npos && nul.find("NUL") != std::string::npos,
+                 nul.c_str());
+        QVERIFY(problem(R"({"a\nb.png": {}})").find("a\\nb.png") != std::string::npos);
+        // A 10,000-character name is shortened, not echoed whole.
+        const std::string long_name =
+            problem("{\"" + std::string(5000, 'a') + "/" + std::string(4999, 'b') + "\": {}}");
+        QVERIFY2(long_name.size() < 200 && long_name.find("…") != std::string::npos &&
+                     long_name.find("path separator") != std::string::npos,
+                 long_name.c_str());
+        QVERIFY(problem(R"({"f.png": {}, "g.png": {}, "f.jpg.png": {}})").empty());
+    }
+
+    void aWrongTypeOfFormatIsNamedNotCalledMissing()
+    {
+        auto number = Annotations::fromJson(R"({"format": 1, "frames": {}})", "a.json", kinds());
+        QVERIFY(!number.ok());
+        QVERIFY2(number.error().message.starts_with("a.json: \"format\" must be the string "
+                                                    "\"fieldsight-annotations/1\", not a number") &&
+                     number.error().message.find("missing") == std::string::npos,
+                 number.error().message.c_str());
+    }
+
+    void aLargeFileReadsFrameByFrameWithEveryFrame()
+    {
+        // (No raw strings with unbalanced braces here: moc would lose the class.)
+        std::string text = "{\"format\": \"fieldsight-annotations/1\", \"frames\": {";
+        constexpr int kCount = 20000;
+        for (int i = 0; i < kCount; ++i)
+            text += (i ? "," : "") + std::string("\"f") + std::to_string(i) +
+                    ".png\": {\"done\": true, \"balls\": [{\"x\": 1, \"y\": 2, \"radius\": 3}]}";
+        text += "}}";
+        auto parsed = Annotations::fromJson(text, "a.json", kinds());
+        QVERIFY(parsed.ok());
+        QCOMPARE(parsed.value().frames.size(), std::size_t(kCount));
+        QCOMPARE(parsed.value().frames.at("f19999.png").truth.list<Ball>().at(0).radius, 3.0);
     }
 
     void everyDrawnKindRoundTripsThroughItsEditShape()

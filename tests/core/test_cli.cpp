@@ -670,6 +670,28 @@ private slots:
         verifyOneLineError(nothing, none_done);
         QVERIFY(nothing.err.contains("nothing to score"));
     }
+    void evalRefusesAFrameUnderTwoNamesOrOutsideTheStream()
+    {
+        // Once scored twice; once scored as this stream's frame_000000.png.
+        const std::pair<QByteArray, QString> cases[] = {
+            {R"({"frame_000000.png": {"done": true}, "frame_000000": {"done": true}})",
+             "name the same frame"},
+            {R"({"../lab2/frame_000000.png": {"done": true}})", "path separator"},
+            {R"({"frame_000000.png\u0000": {"done": true}})", "frame_000000.png\\0"},
+        };
+        for (const auto& [frames, reason] : cases) {
+            const QString truth = path("named.json");
+            QFile file(truth);
+            QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            file.write(R"({"format": "fieldsight-annotations/1", "frames": )" + frames + "}");
+            file.close();
+            const Outcome o = fieldsight({"eval", m_stream, "--truth", truth});
+            QCOMPARE(o.status, 2);
+            verifyOneLineError(o, truth);
+            QVERIFY2(o.err.contains(reason.toUtf8()) && !o.err.contains('\0'), o.err.constData());
+        }
+    }
+
     void lutBuildWritesATableFromSamples()
     {
         // The stream's frames are solid green (40, 150 + 10 i, 40): samples of frames 0 and 2.

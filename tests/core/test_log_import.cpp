@@ -18,6 +18,8 @@
 
 #include <filesystem>
 
+#include <sys/stat.h>
+
 using namespace fieldsight;
 using Json = nlohmann::json;
 using fieldsight::test::Outcome;
@@ -136,6 +138,61 @@ private slots:
         o = fieldsight({"import", path("taken"), "--out", path("x")});
         QCOMPARE(o.status, 2);
         QVERIFY2(o.err.find("not a log folder") != std::string::npos, o.err.c_str());
+    }
+
+    void aByteOrderMarkBeforeTheHeaderIsNoPartOfIt()
+    {
+        const std::string log = makeLog("bom");
+        test::writeBytes(log + "/frames.csv",
+                         std::string("\xEF\xBB\xBF") + kHeader + "0,1000,5,1,15.5,10.0,1.0,0.0\n");
+        const Outcome o = fieldsight({"import", log, "--out", path("from_bom")});
+        QVERIFY2(o.status == 0, o.err.c_str());
+        QVERIFY2(o.out.find("1 frames") != std::string::npos, o.out.c_str());
+    }
+
+    void rowsAndFramesThatCannotMakeAStreamAreNamedNothingWritten()
+    {
+        const auto refused = [&](const std::string& log, const std::string& out) {
+            const Outcome o = fieldsight({"import", log, "--out", path(out)});
+            if (o.status != 2 || std::filesystem::exists(path(out)))
+                return std::string("exit ") + std::to_string(o.status);
+            return o.err;
+        };
+        // A frame listed twice: the CSV's line, not a hidden folder the copy failed in.
+        const std::string twice =
+            refused(makeLog("twice", "0,1000,5,1,15.5,10,1,0\n1,1040,5,1,15.5,10,1,0\n"
+                                     "0,1080,5,1,15.5,10,1,0\n"),
+                    "from_twice");
+        QVERIFY2(twice.find("frames.csv: line 4: frame 0 again (line 2 has it already)") !=
+                         std::string::npos &&
+                     twice.find(".partial") == std::string::npos,
+                 twice.c_str());
+
+        // A frame that is a FIFO is no regular file (not "missing"; and nothing waits on it).
+        const std::string fifo_log = makeLog("fifo");
+        std::filesystem::remove(fifo_log + "/frames_ycbcr/f001.png");
+        QCOMPARE(::mkfifo((fifo_log + "/frames_ycbcr/f001.png").c_str(), 0600), 0);
+        const std::string fifo = refused(fifo_log, "from_fifo");
+        QVERIFY2(fifo.find("line 3: its frame") != std::string::npos &&
+                     fifo.find("f001.png is a FIFO, not a regular file") != std::string::npos,
+                 fifo.c_str());
+
+        // Each frame decodes, at the first one's size: checked here, not found by `eval` later.
+        const std::string small_log = makeLog("small");
+        cv::imwrite(small_log + "/frames_ycbcr/f002.png", cv::Mat(12, 16, CV_8UC3));
+        const std::string small = refused(small_log, "from_small");
+        QVERIFY2(small.find("line 4") != std::string::npos &&
+                     small.find("f002.png: frame size 16x12 differs from the stream's 32x24") !=
+                         std::string::npos,
+                 small.c_str());
+        const std::string cut_log = makeLog("cut");
+        const std::string f1 = cut_log + "/frames_ycbcr/f001.png";
+        const std::string bytes = test::readAll(f1);
+        test::writeBytes(f1, bytes.substr(0, bytes.size() / 2));
+        const std::string cut = refused(cut_log, "from_cut");
+        QVERIFY2(cut.find("line 3") != std::string::npos &&
+                     cut.find("f001.png") != std::string::npos,
+                 cut.c_str());
     }
 
     void theRealLogKeepsEveryLoggedHorizon()

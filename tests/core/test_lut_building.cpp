@@ -7,6 +7,8 @@
 #include "visioncore/services/lut_building.h"
 #include "visioncore/services/lut_editing.h"
 
+#include <nlohmann/json.hpp>
+
 #include <QtTest>
 
 #include <QTemporaryDir>
@@ -90,6 +92,29 @@ private slots:
         QCOMPARE(defaultLutSamplesPath(lab2()), lab2() + "/lut_samples.json");
     }
 
+    void unknownKeysOfASamplesFileSurviveASave()
+    {
+        const std::string file = path("newer.json");
+        writeText(file, R"({"format": "fieldsight-lut-samples/1", "smoothing": 1, "samples": [
+            {"frame": "f.png", "colour": "orange", "polygon": [[0, 0], [4, 0], [0, 4]],
+             "author": "kim", "confidence": 0.5}], "camera": {"id": 3}})");
+        auto loaded = loadLutSamples(file);
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
+        const std::string saved = lutSamplesToJson(loaded.value());
+        const auto json = nlohmann::ordered_json::parse(saved);
+        const auto& sample = json.at("samples").at(0);
+        QCOMPARE(sample.at("author").get<std::string>(), std::string("kim"));
+        QCOMPARE(sample.at("confidence").get<double>(), 0.5);
+        QCOMPARE(json.at("camera").at("id").get<int>(), 3);
+        std::vector<std::string> keys;
+        for (const auto& item : json.items())
+            keys.push_back(item.key());
+        QCOMPARE(keys, (std::vector<std::string>{"format", "smoothing", "samples", "camera"}));
+        auto again = lutSamplesFromJson(saved, "again.json");
+        QVERIFY(again.ok());
+        QCOMPARE(lutSamplesToJson(again.value()), saved);
+    }
+
     void badSamplesFilesNameTheFileAndTheProblem_data()
     {
         QTest::addColumn<QString>("text");
@@ -120,6 +145,12 @@ private slots:
                                   << "samples[0].frame";
         QTest::newRow("no colour")
             << file("{\"frame\": \"f.png\", " + tri + "}") << "samples[0]: missing \"colour\"";
+        QTest::newRow("frame of another stream")
+            << file(R"({"frame": "../lab2/f.png", "colour": "orange", )" + tri + "}")
+            << "samples[0].frame \"../lab2/f.png\": the frame name has a path separator";
+        QTest::newRow("format of the wrong type")
+            << R"({"format": 1, "samples": []})"
+            << "\"format\" must be the string \"fieldsight-lut-samples/1\", not a number";
         QTest::newRow("second sample")
             << file("{" + ok + ", " + tri + "}, {" + ok + "}") << "samples[1].polygon";
     }

@@ -2,6 +2,7 @@
 #include "visioncore/framework/param_set.h"
 
 #include "visioncore/basics/json_text.h"
+#include "basics/json_format.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/basics/atomic_file.h"
 
@@ -100,8 +101,8 @@ Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& 
     if (!parsed)
         return parsed.error();
     const nlohmann::json root = std::move(parsed).value();
-    if (!root.is_object() || !root.contains("format") || root["format"] != kFormat)
-        return Error{source + ": expected \"format\": \"" + kFormat + "\""};
+    if (auto problem = formatProblem(root, source, kFormat))
+        return *problem;
     ParamSet set;
     const auto stages = root.find("stages");
     if (stages == root.end())

@@ -5,10 +5,12 @@
 #include "basics/json_format.h"
 
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/message_text.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <set>
 
 namespace fieldsight {
 
@@ -17,15 +19,45 @@ constexpr const char* kFormat = "fieldsight-annotations/1";
 using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
-/// Reads the optional flags of each object of every list of `kinds` in frame `json`. Lists that
-/// are not lists of objects (the field boundary's bare polyline) have none.
+constexpr const char* kFlagKeys[] = {"concealed", "keyframe", "interpolate", "interpolated",
+                                     "track"};
+
+/// The keys an object of the kind of `entry` (a list read from the file) is read from: those
+/// its list is written with, under either names (a goalpost's base in results), and the flags.
+std::set<std::string> knownKeys(const PerceptEntry& entry)
+{
+    std::set<std::string> keys(std::begin(kFlagKeys), std::end(kFlagKeys));
+    for (PerceptNames names : {PerceptNames::Truth, PerceptNames::Results}) {
+        OrderedJson written;
+        entry.toJson(names, written);
+        if (written.is_array() && !written.empty() && written.front().is_object())
+            for (const auto& item : written.front().items())
+                keys.insert(item.key());
+    }
+    return keys;
+}
+
+/// The keys each kind's objects are read from, found once a kind's first list is read.
+using KnownKeys = std::map<const PerceptKind*, std::set<std::string>>;
+
+/// Reads the optional flags of each object of every list of `kinds` in frame `json`, and keeps
+/// the keys it does not know. Lists that are not lists of objects (the field boundary's bare
+/// polyline) have none.
 std::optional<std::string> readFlags(const Json& json, const std::vector<const PerceptKind*>& kinds,
-                                     const std::string& where, FrameAnnotation& frame)
+                                     const std::string& where, FrameAnnotation& frame,
+                                     KnownKeys& known_keys)
 {
     for (const PerceptKind* kind : kinds) {
         const auto list = json.find(std::string(kind->truth_key));
-        if (list == json.end() || !list->is_array())
+        if (list == json.end() || !list->is_array() || list->empty())
             continue;
+        auto known = known_keys.find(kind);
+        if (known == known_keys.end()) {
+            const PerceptEntry* entry = frame.truth.find(*kind);
+            if (!entry || entry->size() == 0)
+                continue;
+            known = known_keys.emplace(kind, knownKeys(*entry)).first;
+        }
         for (std::size_t i = 0; i < list->size(); ++i) {
             const Json& object = (*list)[i];
             if (!object.is_object())
@@ -50,6 +82,7 @@ std::optional<std::string> readFlags(const Json& json, const std::vector<const P
                     return at + "track must be a whole number from 0 to 1000000000";
                 flags.track = int(it->get<long long>());
             }
+            flags.unknown = unknownKeys(object, known->second);
             if (!flags.isDefault())
                 frame.setFlags(kind->truth_key, i, flags);
         }
@@ -95,9 +128,63 @@ void writeFlags(const FrameAnnotation& frame, OrderedJson& out)
                 object["interpolate"] = false;
             if (f.interpolated)
                 object["interpolated"] = true;
+            addUnknownKeys(f.unknown, object);
         }
     }
 }
+
+/// Reads the frames of one annotations file as the parser finishes each, checking their names.
+class FrameReader
+{
+public:
+    FrameReader(const std::string& source, const std::vector<const PerceptKind*>& kinds,
+                Annotations& out)
+        : m_source(source), m_kinds(kinds), m_out(out)
+    {
+        for (const PerceptKind* kind : kinds)
+            m_known.insert(std::string(kind->truth_key));
+        m_known.insert("done");
+        m_known.insert("reviewed");
+    }
+
+    /// Reads frame `name` from `json`; on bad input, the Error.
+    std::optional<Error> add(const std::string& name, const Json& json)
+    {
+        const std::string where = "frames[\"" + messageText(name) + "\"]";
+        if (auto problem = frameNameProblem(name))
+            return Error{m_source + ": " + where + ": the frame name " + *problem +
+                         "; a frame is named by its file name alone"};
+        const auto [same, fresh] = m_by_stem.emplace(frameStem(name), name);
+        if (!fresh)
+            return Error{m_source + ": " + where + " and frames[\"" + messageText(same->second) +
+                         "\"] name the same frame; keep one of them"};
+        if (!json.is_object())
+            return Error{m_source + ": " + where + " must be an object"};
+        FrameAnnotation frame;
+        if (const auto done = json.find("done"); done != json.end()) {
+            if (!done->is_boolean())
+                return Error{m_source + ": " + where + ".done must be true or false"};
+            frame.done = done->get<bool>();
+        }
+        if (auto problem = frame.truth.fromJson(json, m_kinds, PerceptNames::Truth, where))
+            return Error{m_source + ": " + *problem};
+        if (auto problem = readFlags(json, m_kinds, where, frame, m_known_keys))
+            return Error{m_source + ": " + *problem};
+        if (auto problem = readReviewed(json, where, frame))
+            return Error{m_source + ": " + *problem};
+        frame.unknown = unknownKeys(json, m_known);
+        m_out.frames.emplace(name, std::move(frame));
+        return std::nullopt;
+    }
+
+private:
+    const std::string& m_source;
+    const std::vector<const PerceptKind*>& m_kinds;
+    Annotations& m_out;
+    std::set<std::string> m_known;                ///< a frame's keys that are read
+    std::map<std::string, std::string> m_by_stem; ///< the names read, by frameStem()
+    KnownKeys m_known_keys;
+};
 } // namespace
 
 ObjectFlags FrameAnnotation::flagsOf(std::string_view truth_key, std::size_t index) const
@@ -128,7 +215,7 @@ void FrameAnnotation::eraseFlags(std::string_view truth_key, std::size_t index)
 
 bool operator==(const FrameAnnotation& a, const FrameAnnotation& b)
 {
-    if (a.done != b.done || a.reviewed != b.reviewed)
+    if (a.done != b.done || a.reviewed != b.reviewed || a.unknown != b.unknown)
         return false;
     OrderedJson ja, jb;
     a.truth.toJson(ja, PerceptNames::Truth);
@@ -142,35 +229,26 @@ bool operator==(const FrameAnnotation& a, const FrameAnnotation& b)
 Result<Annotations> Annotations::fromJson(const std::string& text, const std::string& source,
                                           const std::vector<const PerceptKind*>& kinds)
 {
-    auto parsed = parseFormattedJson(text, source, kFormat);
+    // Each frame is read as soon as the parser has it and then dropped, so the whole file is
+    // never held as parsed JSON (15 to 25 times its text).
+    Annotations annotations;
+    FrameReader reader(source, kinds, annotations);
+    std::optional<Error> problem;
+    auto parsed = parseJsonMembers(text, source, "frames",
+                                   [&](const std::string& name, std::size_t, const Json& frame) {
+                                       if (!problem)
+                                           problem = reader.add(name, frame);
+                                   });
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();
-
-    Annotations annotations;
-    const auto frames = root.find("frames");
-    if (frames == root.end())
-        return annotations;
-    if (!frames->is_object())
+    if (auto bad = formatProblem(root, source, kFormat))
+        return *bad;
+    if (const auto frames = root.find("frames"); frames != root.end() && !frames->is_object())
         return Error{source + ": \"frames\" must be an object keyed by frame name"};
-    for (const auto& [name, json] : frames->items()) {
-        const std::string where = "frames[\"" + name + "\"]";
-        if (!json.is_object())
-            return Error{source + ": " + where + " must be an object"};
-        FrameAnnotation frame;
-        if (const auto done = json.find("done"); done != json.end()) {
-            if (!done->is_boolean())
-                return Error{source + ": " + where + ".done must be true or false"};
-            frame.done = done->get<bool>();
-        }
-        if (auto problem = frame.truth.fromJson(json, kinds, PerceptNames::Truth, where))
-            return Error{source + ": " + *problem};
-        if (auto problem = readFlags(json, kinds, where, frame))
-            return Error{source + ": " + *problem};
-        if (auto problem = readReviewed(json, where, frame))
-            return Error{source + ": " + *problem};
-        annotations.frames.emplace(name, std::move(frame));
-    }
+    if (problem)
+        return *problem;
+    annotations.unknown = unknownKeys(root, {"format", "frames"});
     return annotations;
 }
 
@@ -203,12 +281,28 @@ std::string Annotations::toJson(const std::vector<const PerceptKind*>& order) co
             out["reviewed"] = frame.reviewed;
         frame.truth.toJson(out, PerceptNames::Truth, order);
         writeFlags(frame, out);
+        addUnknownKeys(frame.unknown, out);
         frames_json[name] = std::move(out);
     }
     OrderedJson root;
     root["format"] = kFormat;
     root["frames"] = std::move(frames_json);
+    addUnknownKeys(unknown, root);
     return jsonText(root, 1) + "\n";
+}
+
+std::optional<std::string> frameNameProblem(const std::string& name)
+{
+    if (name.empty())
+        return "is empty";
+    if (name == "." || name == "..")
+        return "is '" + name + "', a folder";
+    if (name.find_first_of("/\\") != std::string::npos)
+        return "has a path separator ('/' or '\\')";
+    for (const char c : name)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            return std::string(c == 0 ? "has a NUL byte inside" : "has a control character");
+    return std::nullopt;
 }
 
 std::string frameStem(const std::string& name)

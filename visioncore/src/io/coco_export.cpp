@@ -3,6 +3,7 @@
 #include "visioncore/io/coco_export.h"
 
 #include "visioncore/basics/json_text.h"
+#include "visioncore/basics/message_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -39,25 +40,73 @@ double tidy(double v)
     return std::round(v * 1e6) / 1e6;
 }
 
-/// [x, y, w, h], tidied.
-Json bbox(double x, double y, double w, double h)
+/// An axis-aligned box in continuous image coordinates (px from the top-left corner).
+struct Span
 {
-    return Json::array({tidy(x), tidy(y), tidy(w), tidy(h)});
+    double x0, y0, x1, y1;
+};
+
+/// `span` clipped to the W x H image, at least 1 px wide and high and inside the image (an
+/// object wholly outside it keeps a 1 px box at the nearest edge, so it is not lost).
+Span clipped(Span span, int width, int height)
+{
+    const auto axis = [](double& lo, double& hi, double size) {
+        lo = std::clamp(lo, 0.0, size);
+        hi = std::clamp(hi, 0.0, size);
+        if (hi - lo < 1) {
+            hi = std::min(size, lo + 1);
+            lo = std::max(0.0, hi - 1);
+        }
+    };
+    axis(span.x0, span.x1, std::max(1, width));
+    axis(span.y0, span.y1, std::max(1, height));
+    return span;
 }
 
-/// The COCO fields of one shape: bbox, area and, by form, the exact geometry.
-void addGeometry(ShapeForm form, const EditShape& shape, Json& out)
+/// COCO's [x, y, w, h] of `span`, tidied.
+Json bbox(const Span& span)
+{
+    return Json::array(
+        {tidy(span.x0), tidy(span.y0), tidy(span.x1 - span.x0), tidy(span.y1 - span.y0)});
+}
+
+/// The area of the disc at `c` of radius `r` inside [0, W] x [0, H]: π r² when it is all inside.
+double discArea(PointF c, double r, int width, int height)
+{
+    if (r <= 0)
+        return 0;
+    if (c.x - r >= 0 && c.x + r <= width && c.y - r >= 0 && c.y + r <= height)
+        return std::numbers::pi * r * r;
+    // The chord's part inside the rows, integrated over the columns inside (midpoint rule; a
+    // thousand steps is far finer than a pixel for any ball).
+    const double x0 = std::max(0.0, c.x - r), x1 = std::min(double(width), c.x + r);
+    if (x1 <= x0)
+        return 0;
+    constexpr int kSteps = 1000;
+    const double dx = (x1 - x0) / kSteps;
+    double area = 0;
+    for (int k = 0; k < kSteps; ++k) {
+        const double u = x0 + (k + 0.5) * dx - c.x;
+        const double half = std::sqrt(std::max(0.0, r * r - u * u));
+        area += std::max(0.0, std::min(double(height), c.y + half) - std::max(0.0, c.y - half));
+    }
+    return area * dx;
+}
+
+/// The COCO fields of one shape in a W x H image: bbox (clipped to the image, at least 1 px
+/// each way), area and, by form, the exact geometry as annotated.
+void addGeometry(ShapeForm form, const EditShape& shape, int width, int height, Json& out)
 {
     if (form == ShapeForm::Circle) {
         const PointF c = shape.points.empty() ? PointF{} : shape.points.front();
         const double r = shape.radius;
-        out["bbox"] = bbox(c.x - r, c.y - r, 2 * r, 2 * r);
-        out["area"] = tidy(std::numbers::pi * r * r);
+        out["bbox"] = bbox(clipped({c.x - r, c.y - r, c.x + r, c.y + r}, width, height));
+        out["area"] = tidy(discArea(c, r, width, height));
         out["circle"] = {c.x, c.y, r};
         return;
     }
     if (shape.points.empty()) {
-        out["bbox"] = bbox(0, 0, 0, 0);
+        out["bbox"] = bbox(clipped({0, 0, 0, 0}, width, height));
         out["area"] = 0;
         return;
     }
@@ -70,11 +119,12 @@ void addGeometry(ShapeForm form, const EditShape& shape, Json& out)
     }
     if (form == ShapeForm::Box) {
         // Inclusive pixel rows and columns: the box covers [left, right + 1) x [top, bottom + 1).
-        out["bbox"] = bbox(x0, y0, x1 - x0 + 1, y1 - y0 + 1);
-        out["area"] = tidy((x1 - x0 + 1) * (y1 - y0 + 1));
+        const Span box = clipped({x0, y0, x1 + 1, y1 + 1}, width, height);
+        out["bbox"] = bbox(box);
+        out["area"] = tidy((box.x1 - box.x0) * (box.y1 - box.y0));
         return;
     }
-    out["bbox"] = bbox(x0, y0, x1 - x0, y1 - y0);
+    out["bbox"] = bbox(clipped({x0, y0, x1, y1}, width, height));
     out["area"] = 0;
     Json line = Json::array();
     for (const PointF& p : shape.points) {
@@ -137,20 +187,29 @@ Result<std::string> cocoJson(const Annotations& annotations, const CocoStream& s
     std::map<std::size_t, const std::pair<const std::string, FrameAnnotation>*> frames;
     for (const auto& entry : annotations.frames) {
         auto it = by_name.find(entry.first);
-        if (it == by_name.end())
+        if (it == by_name.end()) {
             it = by_stem.find(frameStem(entry.first));
-        if (it == by_stem.end())
-            return Error{source + ": frame '" + entry.first + "' is annotated but " + stream.path +
-                         " has no such frame"};
-        frames.emplace(it->second, &entry);
+            if (it == by_stem.end())
+                return Error{source + ": frame '" + messageText(entry.first) +
+                             "' is annotated but " + stream.path + " has no such frame"};
+        }
+        // Two names of one frame are refused when the annotations are read.
+        if (!frames.emplace(it->second, &entry).second)
+            return Error{source + ": frames '" + messageText(frames.at(it->second)->first) +
+                         "' and '" + messageText(entry.first) + "' are one frame of " +
+                         stream.path};
     }
 
-    Json images = Json::array();
-    Json objects = Json::array();
+    // Written an image or an object a line into the one text, each as it is made: the whole
+    // file is never held as a JSON tree (several times its text), nor copied.
+    const Json info{{"description", "Fieldsight annotations of " + stream.path},
+                    {"version", "fieldsight-coco/1"},
+                    {"orientation", degrees(stream.orientation)}};
+    std::string text = "{\n \"info\": " + jsonText(info) + ",\n \"images\": [";
+    const char* separator = "\n  ";
     for (const auto& [index, entry] : frames) {
         const auto& [name, frame] = *entry;
-        const std::size_t image_id = index + 1;
-        Json image{{"id", image_id},
+        Json image{{"id", index + 1},
                    {"file_name", stream.frame_names[index]},
                    {"width", stream.width},
                    {"height", stream.height}};
@@ -158,33 +217,37 @@ Result<std::string> cocoJson(const Annotations& annotations, const CocoStream& s
         if (!frame.reviewed.empty())
             extra["reviewed"] = frame.reviewed;
         image["fieldsight"] = std::move(extra);
-        images.push_back(std::move(image));
+        text += separator + jsonText(image);
+        separator = ",\n  ";
+    }
+    text += "\n ],\n \"annotations\": [";
+    separator = "\n  ";
+    std::size_t object_count = 0;
+    for (const auto& [index, entry] : frames) {
+        const FrameAnnotation& frame = entry->second;
         for (std::size_t k = 0; k < drawn.size(); ++k) {
             const PerceptEntry* list = frame.truth.find(*drawn[k]);
             if (!list || !list->present())
                 continue;
             const std::vector<EditShape> shapes = list->shapes();
             for (std::size_t i = 0; i < shapes.size(); ++i) {
-                Json object{{"id", objects.size() + 1},
-                            {"image_id", image_id},
+                Json object{{"id", ++object_count},
+                            {"image_id", index + 1},
                             {"category_id", k + 1},
                             {"iscrowd", 0},
                             {"segmentation", Json::array()}};
-                addGeometry(drawn[k]->form, shapes[i], object);
+                addGeometry(drawn[k]->form, shapes[i], stream.width, stream.height, object);
                 object["attributes"] = attributesOf(frame.flagsOf(drawn[k]->truth_key, i));
-                objects.push_back(std::move(object));
+                text += separator + jsonText(object);
+                separator = ",\n  ";
             }
         }
     }
-
-    Json root;
-    root["info"] = {{"description", "Fieldsight annotations of " + stream.path},
-                    {"version", "fieldsight-coco/1"},
-                    {"orientation", degrees(stream.orientation)}};
-    root["images"] = std::move(images);
-    root["annotations"] = std::move(objects);
-    root["categories"] = std::move(categories);
-    return jsonText(root, 1) + "\n";
+    text += "\n ],\n \"categories\": [";
+    for (std::size_t k = 0; k < categories.size(); ++k)
+        text += (k ? ",\n  " : "\n  ") + jsonText(categories[k]);
+    text += "\n ]\n}\n";
+    return text;
 }
 
 } // namespace fieldsight

@@ -3,6 +3,7 @@
 #include "visioncore/io/dnt_labels.h"
 
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/message_text.h"
 #include "visioncore/percepts/goalpost.h"
 
 #include <algorithm>
@@ -15,6 +16,12 @@ namespace fieldsight {
 namespace {
 
 constexpr std::size_t kMaxLabelBytes = std::size_t(4) << 20;
+/// The most post labels (feet and tops) one picture may have: a goal has two posts and a
+/// picture shows at most two goals (the real files have at most 4). Pairing them looks at every
+/// foot and top, so a bound per line keeps a file's import linear in its size.
+constexpr std::size_t kMaxPostLabels = 64;
+/// The labels the files use: a post's foot and top, and the three line crossings.
+constexpr std::string_view kKnownLabels = "GULTX";
 
 std::string_view trimmed(std::string_view s)
 {
@@ -159,7 +166,8 @@ Result<std::vector<DntPicture>> parseDntLabels(const std::string& text, const st
 {
     std::vector<DntPicture> pictures;
     std::size_t line_number = 0;
-    std::size_t start = 0;
+    // A UTF-8 byte order mark (an editor on Windows writes one) is no part of the first line.
+    std::size_t start = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
     while (start < text.size()) {
         std::size_t end = text.find('\n', start);
         if (end == std::string::npos)
@@ -170,10 +178,12 @@ Result<std::vector<DntPicture>> parseDntLabels(const std::string& text, const st
         if (line.empty())
             continue;
         const std::string where = source + ": line " + std::to_string(line_number) + ": ";
+        std::size_t post_labels = 0;
         const auto open = line.rfind('[');
         if (line.size() < 4 || line.front() != '\'' || line.back() != '\'' ||
             open == std::string_view::npos || line[line.size() - 2] != ']')
-            return Error{where + "expected '<picture name> [<labels>]'"};
+            return Error{where + "expected '<picture name> [<labels>]', not '" + messageText(line) +
+                         "'"};
         DntPicture picture;
         picture.line = line_number;
         picture.name = std::string(trimmed(line.substr(1, open - 1)));
@@ -189,8 +199,16 @@ Result<std::vector<DntPicture>> parseDntLabels(const std::string& text, const st
                 continue;
             const auto p = point(item);
             if (!p)
-                return Error{where + "'" + std::string(item) +
+                return Error{where + "'" + messageText(item) +
                              "' is not a label such as G<125,68>"};
+            if (kKnownLabels.find(p->label) == std::string_view::npos)
+                return Error{where + "'" + messageText(item) + "': unknown label '" +
+                             std::string(1, p->label) +
+                             "' (G a post's foot, U its top; L, T, X line crossings)"};
+            if ((p->label == 'G' || p->label == 'U') && ++post_labels > kMaxPostLabels)
+                return Error{where + "more than " + std::to_string(kMaxPostLabels) +
+                             " post labels (G, U) in one picture; a picture shows at most two "
+                             "goals"};
             picture.points.push_back(*p);
         }
         pictures.push_back(std::move(picture));
@@ -216,15 +234,21 @@ Result<DntImport> importDntGoalposts(const std::vector<DntPicture>& pictures,
         by_stem.emplace(frameStem(reader.frameName(i)), reader.frameName(i));
     }
     DntImport out;
+    std::map<std::string, std::size_t> labelled; ///< frames labelled, by name: their line
     const std::string key(perceptKind<Goalpost>().truth_key);
     for (const DntPicture& picture : pictures) {
         auto it = by_name.find(picture.name);
-        if (it == by_name.end())
+        if (it == by_name.end()) {
             it = by_stem.find(picture.number());
-        if (it == by_stem.end()) {
-            out.not_in_stream.push_back(picture.name);
-            continue;
+            if (it == by_stem.end()) {
+                out.not_in_stream.push_back(picture.name);
+                continue;
+            }
         }
+        if (const auto [first, fresh] = labelled.emplace(it->second, picture.line); !fresh)
+            return Error{source + ": line " + std::to_string(picture.line) + ": '" +
+                         messageText(picture.name) + "' is frame " + messageText(it->second) +
+                         ", which line " + std::to_string(first->second) + " labels already"};
         FrameAnnotation frame;
         frame.reviewed.insert(key);
         std::vector<Goalpost>& posts = frame.truth.output<Goalpost>();

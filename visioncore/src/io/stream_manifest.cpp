@@ -3,6 +3,8 @@
 
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/json_text.h"
+#include "visioncore/basics/message_text.h"
+#include "basics/json_format.h"
 
 #include <nlohmann/json.hpp>
 
@@ -49,27 +51,67 @@ std::string shortText(const nlohmann::json& value)
     return text;
 }
 
+/// Reads entry `i` of the manifest's "frames" into `manifest`; on bad input, "frames[i]... must
+/// be ...".
+std::optional<std::string> readFrameEntry(const nlohmann::json& entry, std::size_t i,
+                                          Manifest& manifest)
+{
+    const std::string where = "frames[" + std::to_string(i) + "]";
+    if (!entry.is_object())
+        return where + " must be an object";
+    const auto file = entry.find("file");
+    if (file == entry.end() || !file->is_string())
+        return where + ".file must be a string";
+    if (manifest.frames.count(file->get<std::string>()))
+        return where + ".file \"" + messageText(file->get<std::string>()) + "\" is listed twice";
+    FrameMeta meta;
+    if (const auto t = entry.find("timestamp_ms"); t != entry.end()) {
+        if (!t->is_number())
+            return where + ".timestamp_ms must be a number";
+        meta.timestamp_ms = t->get<double>();
+    }
+    if (const auto h = entry.find("horizon"); h != entry.end()) {
+        const auto pair = numberPair(*h);
+        if (!pair)
+            return where + ".horizon must be [y at x = 0, y at x = width-1]";
+        meta.horizon = Horizon{(*pair)[0], (*pair)[1]};
+        if (!meta.horizon->isPlausible())
+            return where + ".horizon must be two image rows from -1e6 to 1e6";
+    }
+    manifest.frames[file->get<std::string>()] = meta;
+    return std::nullopt;
+}
+
 Result<Manifest> readManifest(const std::string& path, std::size_t frames)
 {
     auto text = readWholeFile(path, maxManifestBytes(frames),
                               "a stream.json of " + std::to_string(frames) + " frames");
     if (!text)
         return text.error();
-    auto parsed = parseJson(text.value(), path);
+    auto bad = [&](const std::string& problem) { return Error{path + ": " + problem}; };
+    // Each frame entry is read as the parser completes it and its JSON dropped: the whole
+    // manifest is never held parsed (15 to 25 times its text).
+    Manifest manifest;
+    std::optional<Error> entry_problem;
+    auto parsed =
+        parseJsonMembers(text.value(), path, "frames",
+                         [&](const std::string&, std::size_t i, const nlohmann::json& entry) {
+                             if (!entry_problem)
+                                 if (auto problem = readFrameEntry(entry, i, manifest))
+                                     entry_problem = bad(*problem);
+                         });
     if (!parsed)
         return parsed.error();
     const nlohmann::json root = std::move(parsed).value();
-    auto bad = [&](const std::string& problem) { return Error{path + ": " + problem}; };
     if (!root.is_object())
         return bad("expected a JSON object at the top level");
 
-    Manifest manifest;
     if (const auto it = root.find("format"); it != root.end()) {
         if (!it->is_string())
             return bad("\"format\" must be a string");
         if (it->get<std::string>() != kManifestFormat)
-            return bad("unsupported format \"" + it->get<std::string>() + "\" (expected \"" +
-                       kManifestFormat + "\")");
+            return bad("unsupported format \"" + messageText(it->get<std::string>()) +
+                       "\" (expected \"" + kManifestFormat + "\")");
     }
     if (const auto it = root.find("pixel_format"); it != root.end()) {
         const std::string value = it->is_string() ? it->get<std::string>() : std::string();
@@ -118,36 +160,10 @@ Result<Manifest> readManifest(const std::string& path, std::size_t frames)
                 return bad("\"camera.fov_deg\" must be an array of two numbers");
         }
     }
-    if (const auto it = root.find("frames"); it != root.end()) {
-        if (!it->is_array())
-            return bad("\"frames\" must be an array");
-        for (std::size_t i = 0; i < it->size(); ++i) {
-            const nlohmann::json& entry = (*it)[i];
-            const std::string where = "frames[" + std::to_string(i) + "]";
-            if (!entry.is_object())
-                return bad(where + " must be an object");
-            const auto file = entry.find("file");
-            if (file == entry.end() || !file->is_string())
-                return bad(where + ".file must be a string");
-            if (manifest.frames.count(file->get<std::string>()))
-                return bad(where + ".file \"" + file->get<std::string>() + "\" is listed twice");
-            FrameMeta meta;
-            if (const auto t = entry.find("timestamp_ms"); t != entry.end()) {
-                if (!t->is_number())
-                    return bad(where + ".timestamp_ms must be a number");
-                meta.timestamp_ms = t->get<double>();
-            }
-            if (const auto h = entry.find("horizon"); h != entry.end()) {
-                const auto pair = numberPair(*h);
-                if (!pair)
-                    return bad(where + ".horizon must be [y at x = 0, y at x = width-1]");
-                meta.horizon = Horizon{(*pair)[0], (*pair)[1]};
-                if (!meta.horizon->isPlausible())
-                    return bad(where + ".horizon must be two image rows from -1e6 to 1e6");
-            }
-            manifest.frames[file->get<std::string>()] = meta;
-        }
-    }
+    if (const auto it = root.find("frames"); it != root.end() && !it->is_array())
+        return bad("\"frames\" must be an array");
+    if (entry_problem)
+        return *entry_problem;
     return manifest;
 }
 

@@ -7,6 +7,7 @@
 #include "services/polygon_fill.h"
 
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/message_text.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/percepts/field_line.h"
@@ -49,6 +50,10 @@ Result<LutSample> sampleFromJson(const Json& json, const std::string& where)
     if (frame == json.end() || !frame->is_string() || frame->get<std::string>().empty())
         return Error{where + ".frame must be a frame's file name"};
     sample.frame = frame->get<std::string>();
+    // The same rule as the annotations': "../lab2/frame_000000.png" is no frame of this stream.
+    if (auto problem = frameNameProblem(sample.frame))
+        return Error{where + ".frame \"" + messageText(sample.frame) + "\": the frame name " +
+                     *problem + "; a frame is named by its file name alone"};
     if (const auto exclude = json.find("exclude"); exclude != json.end()) {
         if (!exclude->is_boolean())
             return Error{where + ".exclude must be true or false"};
@@ -60,8 +65,8 @@ Result<LutSample> sampleFromJson(const Json& json, const std::string& where)
             return Error{where + ".colour must be a colour class name"};
         const auto parsed = colourFromName(colour->get<std::string>());
         if (!parsed)
-            return Error{where + ".colour: unknown colour class \"" + colour->get<std::string>() +
-                         "\""};
+            return Error{where + ".colour: unknown colour class \"" +
+                         messageText(colour->get<std::string>()) + "\""};
         sample.colour = *parsed;
     } else if (!sample.exclude) {
         return Error{where + ": missing \"colour\" (or \"exclude\": true)"};
@@ -83,6 +88,7 @@ Result<LutSample> sampleFromJson(const Json& json, const std::string& where)
     if (sample.polygon.size() < 3)
         return Error{where + ".polygon has " + std::to_string(sample.polygon.size()) +
                      " points; a region needs at least 3"};
+    sample.unknown = unknownKeys(json, {"frame", "exclude", "colour", "polygon"});
     return sample;
 }
 
@@ -216,12 +222,24 @@ std::string defaultLutSamplesPath(const std::string& stream)
 
 Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string& source)
 {
-    auto parsed = parseFormattedJson(text, source, kLutSamplesFormat);
+    // Each sample is read as soon as the parser has it and then dropped (parseJsonMembers).
+    LutSamples out;
+    std::optional<Error> problem;
+    auto parsed = parseJsonMembers(text, source, "samples",
+                                   [&](const std::string&, std::size_t i, const Json& json) {
+                                       if (problem)
+                                           return;
+                                       auto sample = sampleFromJson(json, sampleWhere(i));
+                                       if (!sample)
+                                           problem = Error{source + ": " + sample.error().message};
+                                       else
+                                           out.samples.push_back(std::move(sample).value());
+                                   });
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();
-
-    LutSamples out;
+    if (auto bad = formatProblem(root, source, kLutSamplesFormat))
+        return *bad;
     if (const auto smoothing = root.find("smoothing"); smoothing != root.end()) {
         if (!smoothing->is_number_integer() || smoothing->get<long long>() < 0 ||
             smoothing->get<long long>() > kMaxSmoothing)
@@ -232,12 +250,9 @@ Result<LutSamples> lutSamplesFromJson(const std::string& text, const std::string
     const auto samples = root.find("samples");
     if (samples == root.end() || !samples->is_array())
         return Error{source + ": \"samples\" must be a list of samples"};
-    for (std::size_t i = 0; i < samples->size(); ++i) {
-        auto sample = sampleFromJson((*samples)[i], sampleWhere(i));
-        if (!sample)
-            return Error{source + ": " + sample.error().message};
-        out.samples.push_back(std::move(sample).value());
-    }
+    if (problem)
+        return *problem;
+    out.unknown = unknownKeys(root, {"format", "smoothing", "samples"});
     return out;
 }
 
@@ -276,10 +291,17 @@ std::string lutSamplesToJson(const LutSamples& samples)
         for (const cv::Point& p : s.polygon)
             polygon.push_back({p.x, p.y});
         json["polygon"] = std::move(polygon);
+        addUnknownKeys(s.unknown, json);
         text += (i == 0 ? "\n  " : ",\n  ") + jsonText(json);
     }
-    text += samples.samples.empty() ? "]\n}\n" : "\n ]\n}\n";
-    return text;
+    text += samples.samples.empty() ? "]" : "\n ]";
+    if (!samples.unknown.empty()) {
+        // The top level's keys this version does not read, after its own.
+        const std::string kept = jsonText(OrderedJson::parse(samples.unknown), 1);
+        if (kept.size() > 4) // "{\n ... \n}": its keys, one a line, without the braces
+            text += ",\n" + kept.substr(2, kept.size() - 4);
+    }
+    return text + "\n}\n";
 }
 
 Status saveLutSamples(const std::string& path, const LutSamples& samples)
@@ -432,7 +454,7 @@ Result<LutVoteRun> collectLutVotes(StreamReader& reader, const std::vector<LutSa
     }
     for (const auto& [stem, list] : by_stem)
         if (!found[stem])
-            return Error{reader.info().path + ": no frame \"" + list.front()->frame +
+            return Error{reader.info().path + ": no frame \"" + messageText(list.front()->frame) +
                          "\", which a sample names"};
 
     LutVoteRun run;

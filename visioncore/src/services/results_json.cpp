@@ -2,6 +2,7 @@
 #include "visioncore/services/results_json.h"
 
 #include "visioncore/basics/json_text.h"
+#include "basics/json_format.h"
 
 #include <nlohmann/json.hpp>
 
@@ -116,8 +117,8 @@ Result<ResultsFile> readResults(const std::string& text, const std::string& sour
     if (!parsed)
         return parsed.error();
     const OrderedJson root = std::move(parsed).value();
-    if (!root.is_object() || !root.contains("format") || root["format"] != kFormat)
-        return Error{source + ": expected \"format\": \"" + std::string(kFormat) + "\""};
+    if (auto problem = formatProblem(root, source, std::string(kFormat)))
+        return *problem;
     ResultsFile file;
     const auto str = [&](const char* key) {
         const auto it = root.find(key);

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
@@ -23,6 +24,10 @@ struct ObjectFlags
     bool interpolate = true;   ///< (keyframes) the frames since the track's previous keyframe are
                                ///< interpolated
     bool interpolated = false; ///< made by interpolating between two keyframes of its track
+    /// The object's keys this version does not read, as the text of a JSON object ("" none):
+    /// written back after the known ones, so a newer file's fields survive a save. An edit of
+    /// the object keeps them (they go with its flags).
+    std::string unknown = {};
 
     bool isDefault() const { return *this == ObjectFlags{}; }
     friend bool operator==(const ObjectFlags&, const ObjectFlags&) = default;
@@ -37,6 +42,9 @@ struct FrameAnnotation
     /// Truth keys whose list is complete on this frame although the frame is not done: reviewed,
     /// and (when the list is empty) "nothing here".
     std::set<std::string, std::less<>> reviewed;
+    /// The frame's keys this version does not read (a kind it does not know, another field), as
+    /// the text of a JSON object ("" none): written back after the known ones.
+    std::string unknown = {};
 
     ObjectFlags flagsOf(std::string_view truth_key, std::size_t index) const;
     /// Sets the flags of object `index` of kind `truth_key` (the list grows with defaults).
@@ -53,6 +61,11 @@ struct FrameAnnotation
     friend bool operator==(const FrameAnnotation& a, const FrameAnnotation& b);
 };
 
+/// Why `name` cannot be a frame's name in an annotations file (a frame is named by its file
+/// name alone), or nothing: empty, "." or "..", a path separator ('/', '\\'), or a control
+/// character (a NUL, a newline).
+std::optional<std::string> frameNameProblem(const std::string& name);
+
 /// A frame's name without its extension: annotations name frames by file ("frame_000000.png")
 /// where a .strm of the same frames names them "frame_000000"; the two match by stem.
 std::string frameStem(const std::string& name);
@@ -66,17 +79,25 @@ std::size_t maxAnnotationsBytes(std::size_t frames);
 struct Annotations
 {
     std::map<std::string, FrameAnnotation> frames; ///< by frame name
+    /// The file's top-level keys other than "format" and "frames", as the text of a JSON object
+    /// ("" none): written back after them.
+    std::string unknown = {};
 
-    /// Reads the lists of `kinds` (a pipeline's perceptKinds()); other keys of a frame are
-    /// ignored. A file over maxAnnotationsBytes(`frames`) is refused unread, and running out
-    /// of memory is an Error naming the file.
+    /// Reads the lists of `kinds` (a pipeline's perceptKinds()); every other key of the file, a
+    /// frame or an object is kept as it is (FrameAnnotation::unknown, ObjectFlags::unknown) and
+    /// written back. A frame name frameNameProblem() refuses, or two names of one frame (the
+    /// same frameStem(): "f.png" and "f"), is an Error naming the file and the name. A file
+    /// over maxAnnotationsBytes(`frames`) is refused unread, and running out of memory is an
+    /// Error naming the file. The text is parsed a frame at a time, so a file takes little more
+    /// memory than its text and what is read from it.
     static Result<Annotations> load(const std::string& path,
                                     const std::vector<const PerceptKind*>& kinds,
                                     std::size_t frames = 0);
     static Result<Annotations> fromJson(const std::string& text, const std::string& source,
                                         const std::vector<const PerceptKind*>& kinds);
     /// Each frame's lists of `order` (a pipeline's perceptKinds()) first, in that order, then
-    /// the rest, so the file does not depend on the order the lists were made in.
+    /// the rest, so the file does not depend on the order the lists were made in; then the keys
+    /// kept unknown. Top level: "format", "frames", then the unknown keys.
     std::string toJson(const std::vector<const PerceptKind*>& order) const;
     /// The true percepts of every frame by frameStem(), to look frames of any stream up in.
     std::map<std::string, const PerceptSet*> truthByStem() const;

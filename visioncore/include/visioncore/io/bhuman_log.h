@@ -40,8 +40,11 @@ bool isBhumanLogFolder(const std::string& folder);
 
 /// Reads the log folder: every row of frames.csv (frame, timestamp_ms, ..., cam_matrix_valid,
 /// horizon_origin_x, horizon_origin_y, horizon_dir_x, horizon_dir_y: columns found by their
-/// header names) with its frame frames_ycbcr/fNNN.png. Errors name the file, the line and the
-/// problem (a missing column or frame, a value that is not a number).
+/// header names; a UTF-8 byte order mark before them is skipped) with its frame
+/// frames_ycbcr/fNNN.png, which must decode whole at the first frame's size. Errors name the
+/// file, the line and the problem (a missing column, a value that is not a number, a frame on
+/// a second row, a frame missing, not a regular file, damaged or of another size). The text is
+/// read in place: memory is the file's size and the frames' list.
 Result<BhumanLog> readBhumanLog(const std::string& folder);
 
 } // namespace fieldsight

@@ -15,7 +15,7 @@ namespace fieldsight {
 
 struct DntPoint
 {
-    char label = 0; ///< G, U, L, T or X (any capital letter is kept)
+    char label = 0; ///< G, U, L, T or X (another letter is refused)
     int x = 0;      ///< px
     int y = 0;      ///< px
 };
@@ -32,8 +32,10 @@ struct DntPicture
     std::string number() const;
 };
 
-/// Parses a label file's text; a line that is not `'<name> [<points>]'` is an Error naming
-/// `source`, the line and what is wrong. Blank lines are skipped.
+/// Parses a label file's text; a line that is not `'<name> [<points>]'`, a label of another
+/// letter than G, U, L, T, X, or more than 64 post labels (G, U) on a line is an Error naming
+/// `source`, the line and what is wrong (escaped). Blank lines and a leading UTF-8 byte order
+/// mark are skipped. Linear in the text.
 Result<std::vector<DntPicture>> parseDntLabels(const std::string& text, const std::string& source);
 /// Reads and parses the label file at `path` (at most 4 MiB; the two files are 3 and 10 KB).
 Result<std::vector<DntPicture>> loadDntLabels(const std::string& path);
@@ -58,8 +60,8 @@ struct DntImport
 /// "<number>.<any extension>", or its full name): each foot G paired with the top U above it
 /// (nearest in x, within max(8 px, a quarter of the height)), made a box (docs/formats.md), and
 /// every labelled frame marked reviewed for goalposts (not done: other kinds are not labelled).
-/// A picture the stream lacks is listed, not an error; none in the stream is an Error naming
-/// `source`.
+/// A picture the stream lacks is listed, not an error; none in the stream, or two lines of one
+/// frame, is an Error naming `source`.
 Result<DntImport> importDntGoalposts(const std::vector<DntPicture>& pictures,
                                      const StreamReader& reader, const std::string& source,
                                      const DntPostModel& model = {});

@@ -31,6 +31,9 @@ struct LutSample
     Colour colour = Colour::Unclassified; ///< Unclassified: background, which votes against classes
     std::vector<cv::Point> polygon;       ///< px, >= 3 vertices; edges and vertices are inside
     bool exclude = false; ///< a hole: its pixels vote for nothing (`colour` is ignored)
+    /// The sample's keys this version does not read, as the text of a JSON object ("" none):
+    /// written back after the known ones.
+    std::string unknown = {};
 };
 
 /// The contents of a samples file.
@@ -38,6 +41,9 @@ struct LutSamples
 {
     int smoothing = 1; ///< cells, the smoothing the table was (or is to be) built with
     std::vector<LutSample> samples;
+    /// The file's top-level keys this version does not read, as the text of a JSON object (""
+    /// none): written back after "samples".
+    std::string unknown = {};
 };
 
 inline constexpr const char* kLutSamplesFormat = "fieldsight-lut-samples/1";
