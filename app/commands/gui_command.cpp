@@ -74,7 +74,7 @@ int guiCommand(int& argc, char** argv, const Context& ctx)
     if (!positional.isEmpty())
         window.files().openStream(positional.front(), lut);
     else if (!lut.isEmpty())
-        window.files().openStream(ui::FileCommands::bundledSampleStream(), lut);
+        window.files().openStream(ui::FileCommands::sampleStreamCopy(), lut);
     else if (const ui::WindowSettings last = ui::WindowSettings::load(); true)
         window.files().openLastSession(last.stream, last.lut);
     return QApplication::exec();

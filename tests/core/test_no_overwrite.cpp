@@ -277,11 +277,12 @@ private slots:
 
     void synthKeepsAStreamItDidNotWriteOrThatWasEditedSince()
     {
-        // A stream synth wrote before it kept a record (the bundled ones), copied, with a file of
-        // the user's: refused, and not one file gone.
+        // A stream synth wrote before it kept a record, with a file of the user's: refused, and
+        // not one file gone.
         const std::string copy = path("copy");
         fs::copy(std::string(FIELDSIGHT_SAMPLE_STREAMS_DIR) + "/lab2", copy,
                  fs::copy_options::recursive);
+        fs::remove(copy + "/synth-output.json"); // as synth wrote it before it kept one
         writeBytes(copy + "/notes.txt", "mine\n");
         const auto before = snapshot(copy);
         const Outcome o = fieldsight({"synth", "--frames", "2", "--out", copy});

@@ -219,6 +219,25 @@ private slots:
         }
     }
 
+    void theBundledStreamIsWhatSynthWritesNow()
+    {
+        // The sample streams' README promises the same options give the same bytes.
+        QTemporaryDir dir;
+        SynthOptions options;
+        options.scenario = Scenario::Lab2;
+        options.frames = 30;
+        options.seed = 1;
+        options.out_dir = dir.path().toStdString();
+        QVERIFY(generateStream(options).ok());
+        const auto bundled = folderBytes(FIELDSIGHT_SAMPLE_STREAMS_DIR "/lab2");
+        const auto now = folderBytes(options.out_dir);
+        QCOMPARE(now.size(), bundled.size());
+        for (const auto& [name, bytes] : now) {
+            QVERIFY2(bundled.count(name), name.c_str());
+            QVERIFY2(bundled.at(name) == bytes, name.c_str());
+        }
+    }
+
     void differentSeedGivesDifferentFrames()
     {
         const fs::path& first = stream(Scenario::Lab2);

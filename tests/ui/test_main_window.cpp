@@ -654,6 +654,41 @@ private slots:
                  QFileInfo(sampleStream()).canonicalFilePath());
     }
 
+    void aFirstRunOpensTheUsersCopyOfTheSampleNotTheBundledOne()
+    {
+        const QString bundled = ui::FileCommands::bundledSampleStream();
+        QVERIFY2(!bundled.isEmpty(), "the bundled sample stream is part of the project");
+        const QString copy = ui::FileCommands::sampleStreamCopy();
+        QDir(copy).removeRecursively(); // as on a first run
+        MainWindow w(m_pipeline);
+        w.show();
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        w.files().openLastSession({}, {});
+        QVERIFY(opened.wait(5000));
+        const QString shown = QFileInfo(w.session().stream().streamSpec()).canonicalFilePath();
+        QCOMPARE(shown, QFileInfo(copy).canonicalFilePath());
+        QVERIFY(shown != QFileInfo(bundled).canonicalFilePath());
+        QCOMPARE(QDir(copy).entryList(QDir::Files), QDir(bundled).entryList(QDir::Files));
+        // A save goes into the copy; the next run keeps that copy as it is.
+        QVERIFY(w.session().lut().saveAs(copy + "/mine.lut").ok());
+        QCOMPARE(ui::FileCommands::sampleStreamCopy(), copy);
+        QVERIFY(QFileInfo::exists(copy + "/mine.lut"));
+        QVERIFY(!QFileInfo::exists(bundled + "/mine.lut"));
+    }
+
+    void theLastStreamIsRememberedWhenItOpensNotOnlyOnAQuit()
+    {
+        const QString other = m_dir.filePath("remembered");
+        copyStream(other, 2);
+        {
+            MainWindow w(m_pipeline);
+            w.show();
+            QVERIFY(openAndWait(w, other));
+        } // gone without closing, as after a crash
+        QCOMPARE(QFileInfo(ui::WindowSettings::load().stream).canonicalFilePath(),
+                 QFileInfo(other).canonicalFilePath());
+    }
+
     void aFolderNamedInAnotherEncodingKeepsItsBytes()
     {
         // "café ÿ" in Latin-1: bytes that are not UTF-8. The window opens the stream, saves a LUT

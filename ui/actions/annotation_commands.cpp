@@ -165,8 +165,10 @@ bool AnnotationCommands::confirmChanges()
         return false;
     if (answer == QMessageBox::Save)
         return save();
-    revert();
+    // Before the revert: reading the file again puts a recovery file there back on offer, and
+    // edits recovered from it and now discarded must not be offered again at the next start.
     d.discardOwnRecovery();
+    revert();
     return true;
 }
 

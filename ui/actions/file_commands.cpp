@@ -22,9 +22,11 @@
 #include <QLocale>
 #include <QMenu>
 #include <QProgressDialog>
+#include <QStandardPaths>
 #include <QStatusBar>
 
 #include <algorithm>
+#include <filesystem>
 #include <utility>
 
 namespace fieldsight::ui {
@@ -89,6 +91,8 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
     if (const int frame = m_frames.value(recentKey(stream.streamSpec()), 0);
         frame > 0 && std::size_t(frame) < stream.frameCount())
         stream.setCurrentIndex(std::size_t(frame));
+    // Remembered now, not only on a clean quit: after a crash the next start reopens it.
+    m_window.saveSettings();
     QObject::disconnect(m_until_classified);
     if (const QStringList warnings = m_window.session().warnings(); !warnings.isEmpty()) {
         const QString shown = warnings.join('\n');
@@ -172,19 +176,52 @@ QString FileCommands::bundledSampleStream(const QString& exe_dir)
     return {};
 }
 
+QString FileCommands::sampleStreamCopy(QString* problem)
+{
+    const QString sample = bundledSampleStream();
+    if (sample.isEmpty())
+        return {};
+    const QString data = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    const QString copy = data + QStringLiteral("/sample_streams/lab1");
+    if (QFileInfo(copy + QStringLiteral("/stream.json")).isFile())
+        return copy;
+    // Copied beside, then named: a half-made copy is never taken for the sample.
+    const QString partial = copy + QStringLiteral(".partial");
+    QDir(partial).removeRecursively(); // our own leftover, made only here
+    std::error_code ec;
+    std::filesystem::create_directories(toLocalPath(partial), ec);
+    if (!ec)
+        std::filesystem::copy(toLocalPath(sample), toLocalPath(partial),
+                              std::filesystem::copy_options::recursive, ec);
+    if (!ec)
+        std::filesystem::rename(toLocalPath(partial), toLocalPath(copy), ec);
+    if (ec) {
+        QDir(partial).removeRecursively();
+        if (problem)
+            *problem = tr("Could not copy the sample stream to %1 (%2): it opens where it is "
+                          "bundled; Save As somewhere else to keep your edits")
+                           .arg(copy, QString::fromStdString(ec.message()));
+        return sample;
+    }
+    return copy;
+}
+
 void FileCommands::openLastSession(const QString& stream, const QString& lut)
 {
     if (localPathExists(stream)) {
         openStream(stream, localPathExists(lut) ? lut : QString());
         return;
     }
-    const QString sample = bundledSampleStream();
+    QString problem;
+    const QString sample = sampleStreamCopy(&problem);
     if (sample.isEmpty()) {
         m_window.showMessage(tr("The bundled sample stream was not found; open a stream with "
                                 "File > Open stream folder"));
         return;
     }
     openStream(sample);
+    if (!problem.isEmpty())
+        m_window.showMessage(problem);
 }
 
 bool FileCommands::newLut()

@@ -45,6 +45,11 @@ public:
     /// (../share/fieldsight/sample_streams/lab1), else the build tree's source tree; empty when
     /// not found. `exe_dir` defaults to the running executable's folder.
     static QString bundledSampleStream(const QString& exe_dir = {});
+    /// The user's own copy of the bundled sample stream, in the app data folder, made from it
+    /// the first time (a later copy is the user's, kept as it is): a first run's saved table or
+    /// annotations never edit the project's or the installed sample. Empty when there is no
+    /// sample; the bundled one itself (and `problem` says why) when it cannot be copied.
+    static QString sampleStreamCopy(QString* problem = nullptr);
 
     /// Starts an empty, untitled table (after asking about unsaved edits); false when the user
     /// kept them.
