@@ -409,6 +409,36 @@ private slots:
         QCOMPARE(settings.paramValue(stage, "scan_spacing"), own);
     }
 
+    /// The stream's params.json written by another writer since it opened: Save parameters to
+    /// the stream asks; Cancel keeps their file, Reload takes it (one undo step), and what the
+    /// file holds beyond the parameters survives a save.
+    void savingParametersToTheStreamAsksWhenTheFileChanged()
+    {
+        const QString stream = copyStream("params_changed");
+        MainWindow w;
+        QVERIFY(showOn(w, stream));
+        ui::PipelineSettings& settings = w.session().settings();
+        QVERIFY(settings.setParam("ball", "min_radius", 4).ok());
+        action(w, "pipeline.save_params_to_stream")->trigger(); // names params.json
+        const QString file = stream + "/params.json";
+        const QByteArray theirs = R"({"format": "fieldsight-params/1", "note": "venue B",
+            "stages": {"ball": {"min_radius": 6}}})";
+        QVERIFY(writeAll(file, theirs));
+        QVERIFY(settings.setParam("ball", "min_radius", 5).ok());
+        ScriptedDialogs dialogs;
+        dialogs.choices = {-1, 0}; // Cancel, then Reload
+        action(w, "pipeline.save_params_to_stream")->trigger();
+        QCOMPARE(readAll(file), theirs);
+        action(w, "pipeline.save_params_to_stream")->trigger();
+        QCOMPARE(settings.paramValue("ball", "min_radius"), 6.0);
+        QTest::keySequence(&w, QKeySequence::Undo);
+        QCOMPARE(settings.paramValue("ball", "min_radius"), 5.0);
+        action(w, "pipeline.save_params_to_stream")->trigger(); // unchanged since the reload
+        QVERIFY(dialogs.unanswered.isEmpty());
+        QVERIFY2(readAll(file).contains("\"note\": \"venue B\""), readAll(file).constData());
+        QCOMPARE(ParamSet::load(file.toStdString()).value().values, settings.paramChanges().values);
+    }
+
     /// Typing a value and Return in a parameter box, then Ctrl+Z: Edit > Undo takes it back,
     /// Ctrl+Shift+Z and Ctrl+Y bring it again.
     void undoKeysInAParameterBoxReachEditUndo()

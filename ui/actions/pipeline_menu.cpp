@@ -1,11 +1,13 @@
 // Pipeline: run the frame again, reset, parameter files (loading one is an undoable edit), and
 // comparing the table and parameters in use with others over the annotated frames.
+#include "ui/actions/disk_conflict.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
 #include "ui/panels/ab_compare_dialog.h"
 
+#include "visioncore/basics/output_guard.h"
 #include "visioncore/io/orientation.h"
 
 #include <QMenuBar>
@@ -19,6 +21,8 @@ namespace {
 /// Saves the parameters in use as the stream's own: to the file its manifest names, or to a new
 /// params.json in its folder, which the manifest then names (so the stream opens with them, in
 /// the window and on the command line). Never over a file the stream does not name.
+void saveParams(MainWindow& w);
+
 void saveParamsToStream(MainWindow& w)
 {
     StreamDocument& stream = w.session().stream();
@@ -38,6 +42,29 @@ void saveParamsToStream(MainWindow& w)
                           .arg(fromLocalPath(file)));
         return;
     }
+    // Another window or a command wrote the stream's parameters since it opened: never dropped
+    // silently.
+    if (named && stream.paramsFileChanged()) {
+        switch (askAboutDiskChange(&w, QObject::tr("the parameters"), fromLocalPath(file))) {
+        case DiskChoice::Reload:
+            if (auto read = ParamSet::load(file); !read)
+                w.showMessage(QString::fromStdString(read.error().message));
+            else if (Status s = w.session().settings().setParamChanges(
+                         read.value(), QObject::tr("Reload parameters from disk"));
+                     !s)
+                w.showMessage(QString::fromStdString(s.error().message));
+            else
+                stream.setParamsFile(file);
+            return;
+        case DiskChoice::SaveAs:
+            saveParams(w);
+            return;
+        case DiskChoice::Cancel:
+            return;
+        case DiskChoice::Overwrite:
+            break;
+        }
+    }
     Status s = w.session().settings().paramChanges().save(file);
     if (s && !named)
         s = writeStreamParams(info.path, file);
@@ -49,6 +76,25 @@ void saveParamsToStream(MainWindow& w)
     w.showMessage(QObject::tr("Saved the parameters as the stream's own (%1): it opens with them")
                       .arg(fromLocalPath(file)),
                   false);
+}
+
+/// Pipeline > Save parameters…: the parameters in use to a file the user names, through the
+/// output guard (never over a frame, a table or another command's file).
+void saveParams(MainWindow& w)
+{
+    const QString path = Dialogs::current().saveFile(&w, QObject::tr("Save parameters"),
+                                                     QStringLiteral("params.json"),
+                                                     QObject::tr("Parameter sets (*.json)"));
+    if (path.isEmpty())
+        return;
+    const OutputFileKind params{"fieldsight-params/1", {}, false, true};
+    Status s = checkOutputFile("Save parameters", toLocalPath(path), {}, params);
+    if (s)
+        s = w.session().settings().paramChanges().save(toLocalPath(path));
+    if (!s)
+        w.showMessage(QString::fromStdString(s.error().message));
+    else
+        w.showMessage(QObject::tr("Saved the parameters to %1").arg(path), false);
 }
 
 } // namespace
@@ -64,17 +110,7 @@ void addPipelineMenu(MainWindow& w)
     });
     pipe->addAction(QObject::tr("Reset the running means"), &session.stream(),
                     &StreamDocument::resetMeans);
-    pipe->addAction(QObject::tr("Save parameters…"), &w, [&w, &session] {
-        const QString path = Dialogs::current().saveFile(&w, QObject::tr("Save parameters"),
-                                                         QStringLiteral("params.json"),
-                                                         QObject::tr("Parameter sets (*.json)"));
-        if (path.isEmpty())
-            return;
-        if (Status s = session.settings().paramChanges().save(toLocalPath(path)); !s)
-            w.showMessage(QString::fromStdString(s.error().message));
-        else
-            w.showMessage(QObject::tr("Saved the parameters to %1").arg(path), false);
-    });
+    pipe->addAction(QObject::tr("Save parameters…"), &w, [&w] { saveParams(w); });
     pipe->addAction(QObject::tr("Save parameters to the stream"), &w,
                     [&w] { saveParamsToStream(w); })
         ->setObjectName(QStringLiteral("pipeline.save_params_to_stream"));

@@ -157,6 +157,8 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
         opened->source->reader = std::move(r);
 
     // The stream's own parameters: a bad file is said, and the stream opens without them.
+    if (!opened->info.params.empty())
+        opened->params_read = fingerprintFile(opened->info.params);
     if (auto params = streamParams(opened->info, pipeline); params)
         opened->params = std::move(params).value();
     else if (opened->info.kind != StreamKind::Camera)
@@ -208,8 +210,16 @@ const StreamInfo& StreamDocument::info() const
 
 void StreamDocument::setParamsFile(const std::string& path)
 {
-    if (m_stream)
-        m_stream->info.params = path;
+    if (!m_stream)
+        return;
+    m_stream->info.params = path;
+    m_stream->params_read = fingerprintFile(path);
+}
+
+bool StreamDocument::paramsFileChanged() const
+{
+    return m_stream && !m_stream->info.params.empty() &&
+           fileChangedSince(m_stream->info.params, m_stream->params_read);
 }
 
 QString StreamDocument::frameName(std::size_t index) const

@@ -36,6 +36,7 @@ struct OpenedStream
     /// write during the open is still a change to the window's documents.
     FileFingerprint lut_read;
     FileFingerprint annotations_read;
+    FileFingerprint params_read; ///< the stream's own parameter file (info.params), likewise
     /// The stream's own stage parameters (its manifest's "params"; empty: none), or none when
     /// its file could not be used (said in the warnings).
     std::optional<ParamSet> params;
@@ -78,6 +79,9 @@ public:
     const StreamInfo& info() const;
     /// The stream's manifest now names `path` as its parameter file (it was just written there).
     void setParamsFile(const std::string& path);
+    /// The stream's own parameter file is no longer what it was when the stream opened or the
+    /// window last saved it there (another window or a command wrote it).
+    bool paramsFileChanged() const;
     bool live() const { return m_stream && m_stream->info.kind == StreamKind::Camera; }
     /// Frames of the stream (0 for a camera).
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <filesystem>
 
 #include <cstdlib>
 
@@ -139,7 +140,19 @@ Result<ParamSet> ParamSet::load(const std::string& path)
 
 Status ParamSet::save(const std::string& path) const
 {
-    return writeFileAtomically(path, toJson());
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        return writeFileAtomically(path, toJson());
+    // What this version does not read is written back as it was.
+    nlohmann::ordered_json root = nlohmann::ordered_json::parse(toJson());
+    if (auto old = readWholeFile(path, std::size_t(1) << 20); old) {
+        const auto before = nlohmann::ordered_json::parse(old.value(), nullptr, false);
+        if (before.is_object() && before.value("format", nlohmann::ordered_json()) == kFormat)
+            for (const auto& [key, value] : before.items())
+                if (key != "format" && key != "stages")
+                    root[key] = value;
+    }
+    return writeFileAtomically(path, jsonText(root, 2) + "\n");
 }
 
 } // namespace fieldsight

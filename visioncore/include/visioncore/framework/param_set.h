@@ -35,7 +35,9 @@ struct ParamSet
     std::string toJson() const;
     static Result<ParamSet> fromJson(const std::string& text, const std::string& source);
     static Result<ParamSet> load(const std::string& path);
-    Status save(const std::string& path) const; ///< atomic
+    /// Writes toJson() atomically; the top-level keys other than "format" and "stages" of a
+    /// parameters file already there (another tool's notes) are kept, after those two.
+    Status save(const std::string& path) const;
 };
 
 } // namespace fieldsight
