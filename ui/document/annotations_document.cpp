@@ -236,12 +236,17 @@ Status AnnotationsDocument::reload(std::size_t frames)
     m_top_merge = 0;
     m_load_problem.clear();
     m_disk = read;
+    markClean();
+    return {};
+}
+
+void AnnotationsDocument::markClean()
+{
     m_recovered = false;
     m_undo.setClean();
     m_autosave.stop();
     discardOwnRecovery();
     emit modifiedChanged(false);
-    return {};
 }
 
 Status AnnotationsDocument::saveAs(const QString& path)
@@ -252,11 +257,7 @@ Status AnnotationsDocument::saveAs(const QString& path)
         m_load_problem.clear();
     m_path = path;
     m_disk.remember(path);
-    m_recovered = false;
-    m_undo.setClean();
-    m_autosave.stop();
-    discardOwnRecovery();
-    emit modifiedChanged(false);
+    markClean();
     return {};
 }
 

@@ -132,6 +132,8 @@ private:
     void apply(const FrameEdits& edits);
     QString recoveryFile(const QString& stream) const;
     void reset();
+    /// What the document holds is what its file holds (saved, or read again).
+    void markClean();
 
     std::vector<const PerceptKind*> m_kinds;
     Annotations m_annotations;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
 
 namespace fieldsight {
 
@@ -106,6 +107,16 @@ bool isStreamFolder(const std::filesystem::path& folder)
 
 namespace {
 
+/// What is at `path` (after links), or nothing when nothing is there.
+std::optional<std::filesystem::file_status> existing(const std::string& path)
+{
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status))
+        return std::nullopt;
+    return status;
+}
+
 /// The largest existing output file read to tell what it is (a results file of the paper's
 /// longest stream is a few MiB).
 constexpr std::size_t kLargestRecognised = std::size_t(64) << 20;
@@ -151,15 +162,14 @@ Status checkOutputFile(std::string_view who, const std::string& output,
         return {};
     if (Status s = checkNotAnInput(who, output, inputs); !s)
         return s;
-    std::error_code ec;
-    const auto status = std::filesystem::status(output, ec);
-    if (!std::filesystem::exists(status))
+    const auto status = existing(output);
+    if (!status)
         return {};
     const std::string prefix = std::string(who) + ": the output " + output + " ";
     const std::string keep = "; nothing was written (choose a new file name)";
-    if (std::filesystem::is_directory(status))
+    if (std::filesystem::is_directory(*status))
         return Error{prefix + "is a folder" + keep};
-    if (!std::filesystem::is_regular_file(status))
+    if (!std::filesystem::is_regular_file(*status))
         return {}; // a device or a pipe (/dev/stdout) is written to, never replaced
     const std::filesystem::path folder = resolvedPath(output).parent_path();
     if (!kind.report && isStreamFolder(folder))
@@ -174,12 +184,12 @@ Status checkRenderFolder(std::string_view who, const std::string& folder,
 {
     if (Status s = checkNotAnInput(who, folder, inputs); !s)
         return s;
-    std::error_code ec;
-    const auto status = std::filesystem::status(folder, ec);
-    if (!std::filesystem::exists(status))
+    const auto status = existing(folder);
+    if (!status)
         return {};
-    if (!std::filesystem::is_directory(status))
+    if (!std::filesystem::is_directory(*status))
         return Error{std::string(who) + ": " + folder + " is not a folder; nothing was written"};
+    std::error_code ec;
     if (std::filesystem::exists(std::filesystem::path(folder) / kRenderMarker, ec))
         return {};
     return checkNewOrEmptyFolder(who, folder);
