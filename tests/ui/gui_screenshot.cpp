@@ -29,9 +29,9 @@
 #include <QApplication>
 #include <QMenuBar>
 #include <QRegularExpression>
+#include <QTabBar>
 #include <QSaveFile>
 #include <QToolBar>
-#include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
 #include <QCommandLineParser>
 #include <QDockWidget>
@@ -60,16 +60,21 @@ QString windowSignature(ui::MainWindow& w)
         if (a->isVisible() && !a->text().isEmpty())
             menus << withoutMnemonic(a->text());
     lines << "menus: " + menus.join(" | ");
-    for (QDockWidget* d : w.findChildren<QDockWidget*>()) {
-        if (!d->toggleViewAction()->isChecked())
-            continue;
+    // Docks alone, and each group of tabbed docks as its tab bar shows it (* the tab in front).
+    QStringList docks;
+    for (QDockWidget* d : w.findChildren<QDockWidget*>())
+        if (d->toggleViewAction()->isChecked() && w.tabifiedDockWidgets(d).isEmpty())
+            docks << "dock: " + d->windowTitle();
+    for (QTabBar* bar : w.findChildren<QTabBar*>()) {
+        if (!bar->isVisible() || bar->parentWidget() != &w)
+            continue; // a tab bar of a widget inside a dock, or one left over from a regrouping
         QStringList tabs;
-        for (QDockWidget* t : w.tabifiedDockWidgets(d))
-            tabs << t->windowTitle();
-        lines << "dock: " + d->windowTitle() +
-                     (tabs.isEmpty() ? QString() : " (tabbed with " + tabs.join(", ") + ")") +
-                     (d->isVisible() ? QString() : " [behind]");
+        for (int i = 0; i < bar->count(); ++i)
+            tabs << (i == bar->currentIndex() ? "*" : "") + bar->tabText(i);
+        docks << "tabs: " + tabs.join(" | ");
     }
+    docks.sort();
+    lines << docks;
     for (QToolBar* bar : w.findChildren<QToolBar*>()) {
         if (bar->isHidden())
             continue;
@@ -79,8 +84,8 @@ QString windowSignature(ui::MainWindow& w)
                 ids << (a->objectName().isEmpty() ? withoutMnemonic(a->text()) : a->objectName());
         lines << "toolbar " + bar->objectName() + ": " + ids.join(' ');
     }
-    if (auto* tree = w.layersPanel().findChild<QTreeWidget*>()) {
-        for (QTreeWidgetItemIterator it(tree); *it; ++it) {
+    {
+        for (QTreeWidgetItemIterator it(&w.layersPanel()); *it; ++it) {
             const bool checkable = (*it)->flags() & Qt::ItemIsUserCheckable;
             const QString mark = !checkable                                     ? "   "
                                  : (*it)->checkState(0) == Qt::Unchecked        ? "[ ]"
