@@ -1,7 +1,7 @@
 // The live camera's DataWrapper: the newest frame wins (frames that came while the core was busy
 // are dropped, not queued), the core runs through it, and a failing or silent camera is an error,
-// never a hang. A stand-in camera (a reader with a frame period) replaces the device; a real
-// camera:0 is tried when the machine has one.
+// never a hang. A stand-in camera (frames handed over when the test allows them) replaces the
+// device; a real camera:0 is tried when the machine has one.
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/datawrappers/camera_data_wrapper.h"
@@ -12,7 +12,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 using namespace fieldsight;
@@ -20,13 +22,65 @@ using namespace std::chrono_literals;
 
 namespace {
 
-/// A camera stand-in: frame_<i> every `period`, failing after `count` frames. The ball is drawn
-/// into every frame so the core has something to find.
+/// What the test lets the stand-in camera deliver: read() of frame i waits until i frames have
+/// been allowed, so the test decides when frames come and waits on the camera asking for the next
+/// one, not on the clock. Releasing unplugs the camera (every read() from then on fails).
+class Gate
+{
+public:
+    void allow(std::size_t frames)
+    {
+        std::lock_guard lock(m_mutex);
+        m_allowed += frames;
+        m_changed.notify_all();
+    }
+    void release()
+    {
+        std::lock_guard lock(m_mutex);
+        m_released = true;
+        m_changed.notify_all();
+    }
+    /// True once the camera waits for frame `index`: frames 0 to index - 1 were all handed over
+    /// (the capture thread stores a frame before it reads the next). False after 10 s, so a
+    /// frame that never comes fails the test rather than hanging it.
+    bool waitUntilReading(std::size_t index)
+    {
+        std::unique_lock lock(m_mutex);
+        return m_changed.wait_for(lock, 10s, [&] { return m_reading >= index; });
+    }
+    /// Called by the camera: false when the camera is unplugged.
+    bool waitForTurn(std::size_t index)
+    {
+        std::unique_lock lock(m_mutex);
+        m_reading = index;
+        m_changed.notify_all();
+        m_changed.wait(lock, [&] { return m_released || index < m_allowed; });
+        return !m_released;
+    }
+
+private:
+    std::mutex m_mutex;
+    std::condition_variable m_changed;
+    std::size_t m_allowed = 0;
+    std::size_t m_reading = 0;
+    bool m_released = false;
+};
+
+/// Releases the gate when the test's scope ends, before the camera (declared earlier) is
+/// destroyed, so its capture thread is not left waiting for a frame.
+struct ReleaseOnExit
+{
+    Gate& gate;
+    ~ReleaseOnExit() { gate.release(); }
+};
+
+/// A camera stand-in: frame_<i> when the gate allows it, failing after `count` frames. The ball
+/// is drawn into every frame so the core has something to find.
 class FakeCamera : public StreamReader
 {
 public:
-    FakeCamera(std::chrono::milliseconds period, std::size_t count, std::atomic<int>* alive)
-        : m_period(period), m_count(count), m_alive(alive)
+    FakeCamera(Gate& gate, std::size_t count, std::atomic<int>* alive = nullptr)
+        : m_gate(gate), m_count(count), m_alive(alive)
     {
         m_info.path = "camera:fake";
         m_info.kind = StreamKind::Camera;
@@ -47,8 +101,7 @@ public:
     }
     Result<Frame> read(std::size_t) override
     {
-        std::this_thread::sleep_for(m_period);
-        if (m_next >= m_count)
+        if (!m_gate.waitForTurn(m_next) || m_next >= m_count)
             return Error{"camera:fake: the camera was unplugged"};
         Frame frame;
         frame.ycbcr = test::filledFrame(320, 240, Colour::Unclassified);
@@ -60,8 +113,8 @@ public:
     }
 
 private:
+    Gate& m_gate;
     StreamInfo m_info;
-    std::chrono::milliseconds m_period;
     std::size_t m_count;
     std::size_t m_next = 0;
     std::atomic<int>* m_alive;
@@ -86,31 +139,35 @@ class TestCameraDataWrapper : public QObject
 private slots:
     void theNewestFrameWinsAndOlderOnesAreDropped()
     {
-        CameraDataWrapper camera(std::make_unique<FakeCamera>(2ms, 100000, nullptr), lut());
+        Gate gate;
+        CameraDataWrapper camera(std::make_unique<FakeCamera>(gate, 100000), lut());
+        ReleaseOnExit release{gate};
+        gate.allow(1);
         QVERIFY(camera.latch(2000ms));
-        const std::size_t first = frameNumber(camera);
-        std::this_thread::sleep_for(60ms); // a slow consumer: about 30 frames come meanwhile
-        const std::size_t captured_before = camera.captured();
+        QCOMPARE(frameNumber(camera), std::size_t(0));
+        // A slow consumer: 30 frames come before the next latch.
+        gate.allow(30);
+        QVERIFY(gate.waitUntilReading(31));
+        QCOMPARE(camera.captured(), std::size_t(31));
         QVERIFY(camera.latch(2000ms));
-        // The latched frame is at least as new as the newest captured before the latch.
-        QVERIFY2(frameNumber(camera) + 1 >= captured_before,
-                 qPrintable(QStringLiteral("latched %1, captured %2")
-                                .arg(frameNumber(camera))
-                                .arg(captured_before)));
-        QVERIFY(frameNumber(camera) > first + 5);
-        QVERIFY2(camera.dropped() >= 5, qPrintable(QString::number(camera.dropped())));
+        QCOMPARE(frameNumber(camera), std::size_t(30)); // the newest, not the next in line
+        QCOMPARE(camera.dropped(), std::size_t(29));    // frames 1 to 29 were never latched
         // The latched frame stays as it is while capture goes on.
-        const std::size_t held = frameNumber(camera);
-        std::this_thread::sleep_for(20ms);
-        QCOMPARE(frameNumber(camera), held);
+        gate.allow(5);
+        QVERIFY(gate.waitUntilReading(36));
+        QCOMPARE(frameNumber(camera), std::size_t(30));
     }
 
     void theCoreRunsThroughIt()
     {
-        CameraDataWrapper camera(std::make_unique<FakeCamera>(5ms, 100000, nullptr), lut());
+        Gate gate;
+        CameraDataWrapper camera(std::make_unique<FakeCamera>(gate, 100000), lut());
+        ReleaseOnExit release{gate};
         ControlWrapper core(camera);
-        for (int i = 0; i < 3; ++i) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            gate.allow(1);
             QVERIFY(camera.latch(2000ms));
+            QCOMPARE(frameNumber(camera), i);
             auto report = core.runFrame();
             QVERIFY2(report, report ? "" : report.error().message.c_str());
             const auto& balls = core.blackboard().percepts.list<Ball>();
@@ -121,16 +178,33 @@ private slots:
 
     void anUnpluggedCameraIsAnErrorNotAHang()
     {
-        CameraDataWrapper camera(std::make_unique<FakeCamera>(1ms, 3, nullptr), lut());
+        Gate gate;
+        CameraDataWrapper camera(std::make_unique<FakeCamera>(gate, 100000), lut());
+        ReleaseOnExit release{gate};
+        for (std::size_t i = 0; i < 3; ++i) {
+            gate.allow(1);
+            QVERIFY(camera.latch(2000ms));
+        }
+        QVERIFY(gate.waitUntilReading(3));
+        // The camera is unplugged while latch() waits for its next frame. The pause only makes
+        // it likely that latch() is waiting by then (so a latch() that misses the failure shows);
+        // the test passes the same when the camera fails first.
+        std::thread unplug([&gate] {
+            std::this_thread::sleep_for(100ms);
+            gate.release();
+        });
         QElapsedTimer clock;
         clock.start();
-        Status status;
-        for (int i = 0; i < 10 && status; ++i)
-            status = camera.latch(2000ms);
+        const Status status = camera.latch(10000ms);
+        const qint64 ms = clock.elapsed();
+        unplug.join();
+        // The error is the camera's own, not "no frame within 10000 ms", and latch() woke when
+        // the camera failed: one that waited out its 10 s timeout first takes that long (the
+        // bound tells the two apart, it is not a speed target).
         QVERIFY(!status);
         QVERIFY2(status.error().message.find("unplugged") != std::string::npos,
                  status.error().message.c_str());
-        QVERIFY(clock.elapsed() < 2000);
+        QVERIFY2(ms < 10000, qPrintable(QString::number(ms)));
         QVERIFY(!camera.latch(10ms)); // and stays an error
     }
 
@@ -138,9 +212,13 @@ private slots:
     {
         std::atomic<int> alive = 0;
         {
-            CameraDataWrapper camera(std::make_unique<FakeCamera>(300ms, 100000, &alive), lut());
+            Gate gate;
+            CameraDataWrapper camera(std::make_unique<FakeCamera>(gate, 100000, &alive), lut());
+            ReleaseOnExit release{gate};
+            gate.allow(1);
             QVERIFY(camera.latch(2000ms));
             const std::size_t held = frameNumber(camera);
+            QVERIFY(gate.waitUntilReading(1)); // the camera waits for a frame that never comes
             const Status late = camera.latch(20ms);
             QVERIFY(!late);
             QVERIFY(late.error().message.find("within 20 ms") != std::string::npos);

@@ -452,10 +452,12 @@ private slots:
         QVERIFY2(made.isEmpty(), qPrintable(made));
         const EvaluationScores s = evaluateAndReport(stream, truth, truth_path, ParamSet{});
         QCOMPARE(int(s.frames), 3);
-        // Measured: ball 3/0/0, goalposts 5/0/1, obstacles 0/15/0, boundary 76.69 px.
+        // Measured: ball 3/0/0, goalposts 5/0/1, obstacles 0/15/0, boundary 76.69 px (23.8,
+        // 129.0 and 77.2 px per frame). The boundary's bound is 3 px above that: a change that
+        // moves it by a few pixels on these pictures shows here.
         checkFloor("ball", s.balls, 0.95, 0.95);
         checkFloor("goalpost", s.goalposts, 0.95, 0.8);
-        QVERIFY2(s.boundaryMeanError() <= 85.0, qPrintable(QString::number(s.boundaryMeanError())));
+        QVERIFY2(s.boundaryMeanError() <= 80.0, qPrintable(QString::number(s.boundaryMeanError())));
     }
 
     void dntGoalpostsAgainstLabels_data()

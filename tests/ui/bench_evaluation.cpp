@@ -16,7 +16,10 @@
 #include "ui/panels/evaluation_panel.h"
 #include "visioncore/services/lut_editing.h"
 
+#include "tool_platform.h"
+
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QSettings>
@@ -122,12 +125,28 @@ bool clickEdit(MainWindow& w, QPoint p, Colour colour)
 
 int main(int argc, char** argv)
 {
+    tools::useOffscreenWithoutDisplay();
     QApplication app(argc, argv);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "Times the window's evaluation, offscreen, on a 9,000-frame stream with 1,000 annotated "
+        "frames (made in DIR, or in a temporary folder, on the first run): the first evaluation "
+        "after the open, the re-score after a LUT edit and after an annotation edit, and the same "
+        "evaluation headless. Prints the times; asserts nothing.");
+    parser.addHelpOption();
+    parser.addPositionalArgument("DIR", "where the generated streams are kept between runs",
+                                 "[DIR]");
+    parser.process(app);
+    if (parser.positionalArguments().size() > 1) {
+        std::cerr << "usage: bench_evaluation [DIR] (bench_evaluation --help says more)\n";
+        return 2;
+    }
     QStandardPaths::setTestModeEnabled(true);
     QCoreApplication::setOrganizationName("FieldsightBench");
     QSettings().clear();
     QTemporaryDir tmp;
-    const QString dir = argc > 1 ? QString::fromLocal8Bit(argv[1]) : tmp.path();
+    const QString dir =
+        parser.positionalArguments().isEmpty() ? tmp.path() : parser.positionalArguments().front();
     const QString small = dir + "/eval_small";
     const QString big = dir + "/eval_big";
     if (!QFileInfo::exists(small + "/annotations.json") && !synth(small))

@@ -5,13 +5,15 @@
 //                  [--zoom Z] [--focus LABEL] [--hover X,Y] [--dock OBJECT_NAME]...
 //                  [--colour NAME] [--tool ID] [--click X,Y]... [--drag X0,Y0,X1,Y1]...
 //                  [--preview X,Y] [--uv-select CB0,CR0,CB1,CR1] [--y-range LO,HI]
-//                  [--orientation 0|90|180|270] [--disagreement ROW]
+//                  [--orientation 0|90|180|270] [--disagreement ROW] [--signature FILE]
 // --click presses the tool at image pixel X,Y (the LUT tools edit the table there, the annotation
 // tools select), --drag drags it from X0,Y0 to X1,Y1 (draws or moves an annotated object);
 // --preview hovers the tool there (all at zoom 1 unless --zoom); the whole-stream scan is waited
 // for before the shot. --orientation turns the stream's pictures as View > Orientation does,
 // before anything else. The evaluation is waited for; --disagreement chooses a row of its list
 // of disagreements (go there, culprits drawn; --dock evaluation_dock shows the list).
+// --signature writes what the shot shows of the window's make-up (menus, docks, tool bars, layers)
+// beside it, so a check can tell a screenshot made from an older window (docs/make_screenshots.sh).
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
@@ -22,7 +24,15 @@
 #include "ui/document/edit_effect_scan.h"
 #include "ui/panels/evaluation_panel.h"
 
+#include "tool_platform.h"
+
 #include <QApplication>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QTabBar>
+#include <QSaveFile>
+#include <QToolBar>
+#include <QTreeWidgetItemIterator>
 #include <QCommandLineParser>
 #include <QDockWidget>
 #include <QSignalSpy>
@@ -32,22 +42,114 @@
 
 using namespace fieldsight;
 
+namespace {
+
+QString withoutMnemonic(QString text)
+{
+    return text.remove(QRegularExpression("&(?!&)"));
+}
+
+/// What a screenshot shows of the window's make-up, one fact a line, in the window's own order:
+/// when the window gains a menu, a dock, a tool bar button or a layer, this changes and the
+/// screenshot made before is out of date.
+QString windowSignature(ui::MainWindow& w)
+{
+    QStringList lines;
+    QStringList menus;
+    for (QAction* a : w.menuBar()->actions())
+        if (a->isVisible() && !a->text().isEmpty())
+            menus << withoutMnemonic(a->text());
+    lines << "menus: " + menus.join(" | ");
+    // Docks alone, and each group of tabbed docks as its tab bar shows it (* the tab in front).
+    QStringList docks;
+    for (QDockWidget* d : w.findChildren<QDockWidget*>())
+        if (d->toggleViewAction()->isChecked() && w.tabifiedDockWidgets(d).isEmpty())
+            docks << "dock: " + d->windowTitle();
+    for (QTabBar* bar : w.findChildren<QTabBar*>()) {
+        if (!bar->isVisible() || bar->parentWidget() != &w)
+            continue; // a tab bar of a widget inside a dock, or one left over from a regrouping
+        QStringList tabs;
+        for (int i = 0; i < bar->count(); ++i)
+            tabs << (i == bar->currentIndex() ? "*" : "") + bar->tabText(i);
+        docks << "tabs: " + tabs.join(" | ");
+    }
+    docks.sort();
+    lines << docks;
+    for (QToolBar* bar : w.findChildren<QToolBar*>()) {
+        if (bar->isHidden())
+            continue;
+        QStringList ids;
+        for (QAction* a : bar->actions())
+            if (!a->isSeparator() && a->isVisible())
+                ids << (a->objectName().isEmpty() ? withoutMnemonic(a->text()) : a->objectName());
+        lines << "toolbar " + bar->objectName() + ": " + ids.join(' ');
+    }
+    {
+        for (QTreeWidgetItemIterator it(&w.layersPanel()); *it; ++it) {
+            const bool checkable = (*it)->flags() & Qt::ItemIsUserCheckable;
+            const QString mark = !checkable                                     ? "   "
+                                 : (*it)->checkState(0) == Qt::Unchecked        ? "[ ]"
+                                 : (*it)->checkState(0) == Qt::PartiallyChecked ? "[~]"
+                                                                                : "[x]";
+            lines << "layer " + mark + " " + (*it)->text(0);
+        }
+    }
+    return lines.join('\n') + '\n';
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
+    tools::useOffscreenWithoutDisplay();
     QApplication app(argc, argv);
     QApplication::setOrganizationName("FieldsightScreenshots");
     QCommandLineParser p;
-    p.addPositionalArgument("out", "PNG to write");
-    p.addPositionalArgument("stream", "stream");
-    for (const char* o : {"lut", "set", "frame", "size", "layers", "mode", "zoom", "hover", "dock",
-                          "colour", "tool", "click", "drag", "preview", "uv-select", "y-range",
-                          "orientation", "disagreement"})
-        p.addOption({o, o, "value"});
-    p.addOption({"focus", "centre the first detection whose label starts with TEXT", "TEXT"});
+    p.setApplicationDescription(
+        "Saves a screenshot of the main window with STREAM open, in the state the options set "
+        "(applied in the order listed). Runs offscreen when no display is set. The user guide's "
+        "screenshots are made with it: docs/make_screenshots.sh.");
+    p.addHelpOption();
+    p.addPositionalArgument("OUT.png", "the PNG to write");
+    p.addPositionalArgument("STREAM", "the stream to open (a folder, a .strm, a video)");
+    const struct
+    {
+        const char* name;
+        const char* value;
+        const char* help;
+    } options[] = {
+        {"lut", "FILE", "the colour table (default: the stream's)"},
+        {"set", "STAGE.PARAM=VALUE", "a stage parameter (repeatable)"},
+        {"orientation", "0|90|180|270", "turn the pictures as View > Orientation does"},
+        {"frame", "N", "the frame to show (default 0)"},
+        {"size", "WxH", "the window's size (default 1280x800)"},
+        {"layers", "all|default|ID,...",
+         "the layers shown (stage ids, truth, percepts, layer ids)"},
+        {"mode", "raw|classified|side|blend", "the view mode (default raw)"},
+        {"zoom", "Z", "the view's zoom"},
+        {"focus", "TEXT", "with --zoom: centre the first detection whose label starts with TEXT"},
+        {"hover", "X,Y", "the Pixel inspector on image pixel X,Y"},
+        {"dock", "OBJECT_NAME", "bring a tabbed dock to the front, e.g. lut_dock (repeatable)"},
+        {"colour", "NAME", "the LUT editor's class"},
+        {"tool", "ID", "the active tool (click, brush, erase, wand, sample, an annotation tool)"},
+        {"y-range", "LO,HI", "the UV plane's Y range"},
+        {"click", "X,Y", "press the tool at image pixel X,Y (repeatable)"},
+        {"drag", "X0,Y0,X1,Y1", "drag the tool from X0,Y0 to X1,Y1 (repeatable)"},
+        {"uv-select", "CB0,CR0,CB1,CR1", "select UV plane cells (right-drag)"},
+        {"preview", "X,Y", "hover the tool at image pixel X,Y (its preview)"},
+        {"disagreement", "ROW", "choose a row of the evaluation's disagreements"},
+        {"signature", "FILE",
+         "also write the window's structure (menu titles, docks and their tabs, tool bars' action "
+         "ids, the layer list) to FILE; docs/make_screenshots.sh --check compares it with the "
+         "one committed beside each screenshot"},
+    };
+    for (const auto& o : options)
+        p.addOption({o.name, o.help, o.value});
     p.process(app);
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2) {
-        std::cerr << "usage: gui_screenshot OUT.png STREAM [options]\n";
+        std::cerr << "usage: gui_screenshot OUT.png STREAM [options] (gui_screenshot --help says "
+                     "more)\n";
         return 2;
     }
     ui::MainWindow w;
@@ -202,6 +304,14 @@ int main(int argc, char** argv)
     if (!shot.save(pos[0])) {
         std::cerr << "cannot write " << pos[0].toStdString() << "\n";
         return 1;
+    }
+    if (p.isSet("signature")) {
+        QSaveFile file(p.value("signature"));
+        if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+            file.write(windowSignature(w).toUtf8()) < 0 || !file.commit()) {
+            std::cerr << "cannot write " << p.value("signature").toStdString() << "\n";
+            return 1;
+        }
     }
     std::cout << pos[0].toStdString() << " " << shot.width() << "x" << shot.height() << "\n";
     return 0;

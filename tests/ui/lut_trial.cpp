@@ -19,7 +19,10 @@
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 
+#include "tool_platform.h"
+
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -77,10 +80,23 @@ bool writeAnnotations(const QString& labels, const QString& out)
 
 int main(int argc, char** argv)
 {
+    tools::useOffscreenWithoutDisplay();
     QApplication app(argc, argv);
     QApplication::setOrganizationName("FieldsightTrial");
-    if (argc != 2) {
-        std::cerr << "usage: lut_trial OUT_DIR\n";
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "Builds a colour table for the Dutch Nao Team's straight-walk pictures in the main window, "
+        "from an empty LUT, with scripted clicks and wand fills, and writes OUT_DIR/stream (the "
+        "pictures, linked, with annotations.json), OUT_DIR/dnt.lut and screenshots of the editor "
+        "(OUT_DIR/*.png). Score the table with\n"
+        "  fieldsight eval OUT_DIR/stream --lut OUT_DIR/dnt.lut\n"
+        "Needs ../shared/reference_data/dnt_uva_2013_fieldpictures. Runs offscreen when no display "
+        "is set.");
+    parser.addHelpOption();
+    parser.addPositionalArgument("OUT_DIR", "the folder to write (its stream/ is replaced)");
+    parser.process(app);
+    if (parser.positionalArguments().size() != 1) {
+        std::cerr << "usage: lut_trial OUT_DIR (lut_trial --help says more)\n";
         return 2;
     }
     const QString sets =
@@ -90,7 +106,7 @@ int main(int argc, char** argv)
         std::cerr << "no reference data at " << source.toStdString() << "\n";
         return 2;
     }
-    const QString out = QString::fromLocal8Bit(argv[1]);
+    const QString out = parser.positionalArguments().front();
     const QString stream = out + "/stream";
     QDir(stream).removeRecursively();
     QDir().mkpath(stream);

@@ -60,8 +60,9 @@ private slots:
         QCoreApplication::setOrganizationName("FieldsightTest");
         QCoreApplication::setApplicationName("test_ab_compare_window");
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo(lab2()).isDir())
-            QSKIP("the bundled sample streams are missing");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo(lab2()).isDir(),
+                 qPrintable("the bundled sample stream is missing: " + lab2()));
         auto lut = ColourLut::load((lab2() + "/default.lut").toStdString());
         QVERIFY(lut.ok());
         ColourLut table = std::move(lut).value();

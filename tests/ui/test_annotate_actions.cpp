@@ -134,8 +134,9 @@ private slots:
         QCoreApplication::setOrganizationName("FieldsightTest");
         QCoreApplication::setApplicationName("test_annotate_actions");
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo(sampleStream()).isDir())
-            QSKIP("the bundled sample stream is missing");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo(sampleStream()).isDir(),
+                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init()

@@ -162,8 +162,9 @@ private slots:
         QCoreApplication::setApplicationName("test_annotate_tools");
         QSettings().clear();
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo(sampleStream()).isDir())
-            QSKIP("the bundled sample streams are missing");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo(sampleStream()).isDir(),
+                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init() { QSettings().clear(); }

@@ -58,8 +58,9 @@ private slots:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo(sampleStream()).isDir())
-            QSKIP("the sample stream is not there");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo(sampleStream()).isDir(),
+                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
         m_a = copyOfSample(m_dir, "a");
         m_b = copyOfSample(m_dir, "b");
     }

@@ -175,8 +175,9 @@ private slots:
         QCoreApplication::setApplicationName("test_main_window");
         QSettings().clear();
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo(sampleStream()).isDir())
-            QSKIP("the bundled sample streams are missing");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo(sampleStream()).isDir(),
+                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init() { QSettings().clear(); }
@@ -475,6 +476,7 @@ private slots:
         opened->info = camera->info();
         opened->source->camera =
             std::make_unique<CameraDataWrapper>(std::move(camera), opened->lut);
+        const CameraDataWrapper* capture = opened->source->camera.get(); // the session owns it
 
         MainWindow w(m_pipeline);
         w.show();
@@ -491,7 +493,9 @@ private slots:
         // Each step shows a newer camera frame: frames that came meanwhile are skipped.
         std::size_t last = liveNumber(*w.session().stream().current());
         for (std::size_t i = 1; i <= 3; ++i) {
-            QTest::qWait(30); // about six camera frames
+            // Wait until the camera has two frames newer than the one shown (frames last + 1 and
+            // last + 2 captured): the step must skip the older.
+            QTRY_VERIFY(capture->captured() > last + 2);
             QTest::keyClick(&w, Qt::Key_Right);
             QVERIFY(waitForFrame(w, i));
             const std::size_t now = liveNumber(*w.session().stream().current());
@@ -513,7 +517,8 @@ private slots:
         std::vector<cv::Mat> shown;
         for (std::size_t i = 0; i < 3; ++i) {
             const std::uint64_t serial = w.session().stream().lastSerial();
-            QTest::qWait(20);
+            const std::size_t shown_now = liveNumber(*w.session().stream().current());
+            QTRY_VERIFY(capture->captured() > shown_now + 1); // a newer frame is there to take
             QTest::keyClick(&w, Qt::Key_Right);
             QTRY_VERIFY(w.session().stream().current()->serial > serial &&
                         !w.session().stream().waiting());

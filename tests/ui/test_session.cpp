@@ -123,8 +123,9 @@ private slots:
         QCoreApplication::setApplicationName("test_session");
         QSettings().clear();
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo(sampleStream()).isDir())
-            QSKIP("the bundled sample streams are missing");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo(sampleStream()).isDir(),
+                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init()
@@ -228,6 +229,38 @@ private slots:
         const QByteArray marks_after = marks();
         QVERIFY(marks_after.contains("ball lost"));
         QVERIFY(undoRedo(w, marks, marks_before, marks_after));
+
+        // The annotations: Annotate > Frame done.
+        const auto truth = [&] {
+            const ui::AnnotationsDocument& doc = w.session().annotations();
+            return QByteArray::fromStdString(doc.annotations().toJson(doc.kinds()));
+        };
+        const QByteArray truth_before = truth();
+        QAction* done = menuAction(w, "annotate.done");
+        QVERIFY(done && done->isEnabled());
+        done->trigger();
+        const QByteArray truth_after = truth();
+        QVERIFY(truth_after != truth_before);
+        QVERIFY(undoRedo(w, truth, truth_before, truth_after));
+
+        // The orientation: View > Orientation > Turn 180°; the frame follows both ways.
+        const auto turned = [&] {
+            return QByteArray::number(degrees(w.session().stream().info().orientation));
+        };
+        const QByteArray turned_before = turned();
+        QAction* half = menuAction(w, "view.orientation.180");
+        QVERIFY(half && half->isEnabled());
+        half->trigger();
+        QVERIFY(waitForFrame(w, 0));
+        const QImage upside_down = w.session().stream().current()->raw;
+        const QByteArray turned_after = turned();
+        QCOMPARE(turned_after, QByteArray("180"));
+        QVERIFY(undoRedo(w, turned, turned_before, turned_after));
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.session().stream().current()->raw, upside_down);
+        menuAction(w, "edit.undo")->trigger();
+        QVERIFY(waitForFrame(w, 0));
+        QCOMPARE(w.session().stream().current()->raw, upside_down.mirrored(true, true));
     }
 
     void undoFollowsTheDocumentEditedLast()
@@ -350,7 +383,10 @@ private slots:
         w.session().stream().rerun();
         w.navigator().step(1);
         QVERIFY(waitForFrame(w, 2));
-        QTest::qWait(50);
+        // Once the worker has run ahead to frame 3 it owes no answer; deliver what it sent: an
+        // older answer would show now.
+        QTRY_COMPARE(w.session().stream().preparedAhead(), std::optional<std::size_t>(3));
+        QCoreApplication::processEvents();
         QCOMPARE(w.session().stream().current()->index, std::size_t(2));
         QCOMPARE(QString::fromStdString(w.session().stream().current()->frame.name),
                  w.session().stream().frameName(2));

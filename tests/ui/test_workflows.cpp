@@ -154,8 +154,10 @@ private slots:
         QCoreApplication::setOrganizationName("FieldsightTest");
         QCoreApplication::setApplicationName("test_workflows");
         QVERIFY(m_dir.isValid());
-        if (!QFileInfo::exists(QString::fromStdString(sampleStreamsDir() + "/lab1")))
-            QSKIP("the bundled sample streams are missing");
+        // The bundled streams are part of the project: a wrong path must fail, not skip.
+        QVERIFY2(QFileInfo::exists(QString::fromStdString(sampleStreamsDir() + "/lab1")),
+                 qPrintable("the bundled sample stream is missing: " +
+                            QString::fromStdString(sampleStreamsDir() + "/lab1")));
     }
 
     void init()
