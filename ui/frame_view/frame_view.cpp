@@ -19,6 +19,15 @@ namespace fieldsight::ui {
 
 namespace {
 
+/// The detections' opacity while an annotation tool is active: the truth being drawn stands out.
+constexpr double kDimmedDetections = 0.35;
+
+bool isPerceptLayer(const std::string& layer)
+{
+    return layer.starts_with(kPerceptLayerPrefix) && layer.size() > kPerceptLayerPrefix.size() &&
+           layer[kPerceptLayerPrefix.size()] == '.';
+}
+
 /// Zoom steps of the wheel and the zoom actions: whole multiples above 1 keep every image pixel
 /// the same size on screen.
 constexpr std::array<double, 14> kZoomSteps{0.25, 0.5, 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
@@ -271,8 +280,11 @@ void FrameView::paintEvent(QPaintEvent*)
             const double margin = 3 / m_zoom;
             p.setClipRect(
                 QRectF(-margin, -margin, image.width() + 2 * margin, image.height() + 2 * margin));
-            for (const DebugDrawing* d : layers)
+            const bool dim = detectionsDimmed();
+            for (const DebugDrawing* d : layers) {
+                p.setOpacity(dim && isPerceptLayer(d->layer) ? kDimmedDetections : 1.0);
                 paintDrawing(p, *d);
+            }
             p.restore();
         }
         if (m_labels) {
@@ -431,6 +443,11 @@ void FrameView::setTools(ToolManager* tools)
                      pixels.empty() ? QImage() : maskToQImage(pixels, QColor(255, 0, 255, 150)));
     });
     follow();
+}
+
+bool FrameView::detectionsDimmed() const
+{
+    return m_tools && m_tools->active().info().group == QLatin1String("annotate");
 }
 
 bool FrameView::toolPans() const
