@@ -481,6 +481,8 @@ ToolEvent FrameView::toolEvent(const QMouseEvent& event, QPoint pixel) const
 {
     ToolEvent e = ToolEvent::of(ToolSurface::Image, event, pixel);
     e.zoom = m_zoom;
+    if (const std::optional<QPointF> at = imagePoint(event.position()))
+        e.position = *at;
     return e;
 }
 
