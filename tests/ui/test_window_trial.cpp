@@ -35,6 +35,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QTextDocument>
 #include <QtTest>
 
 using namespace fieldsight;
@@ -508,6 +509,7 @@ private slots:
                                   .section(QLatin1String(", "), 0, 0)));
         QVERIFY2(!html.contains(QLatin1String("F14")), qPrintable(html));
         QVERIFY(html.contains(QLatin1String("Ctrl+Shift+Z")));
+        QVERIFY(html.contains(QLatin1String("Detections to annotations: All kinds")));
         std::unique_ptr<QDialog> dialog(ui::makeDocumentDialog(&w, "Keyboard shortcuts", html));
         dialog->show();
         QVERIFY(QTest::qWaitForWindowExposed(dialog.get()));
@@ -515,6 +517,21 @@ private slots:
         QVERIFY2(dialog->height() <= std::max(800, screen.height()) * 0.9 + 1,
                  qPrintable(QString::number(dialog->height())));
         QVERIFY(dialog->height() <= 720);
+        // On a 1280x800 screen it needs no scrolling: the text unwrapped, with Close, within
+        // 90% of it.
+        auto* view = dialog->findChild<QTextBrowser*>();
+        QVERIFY(view);
+        QTextDocument text;
+        text.setDefaultFont(view->font());
+        text.setHtml(html);
+        const QSize chrome = dialog->size() - view->viewport()->size();
+        QVERIFY2(text.size().width() + chrome.width() <= 1280 * 0.9 &&
+                     text.size().height() + chrome.height() <= 800 * 0.9,
+                 qPrintable(QStringLiteral("%1x%2 and %3x%4 around it")
+                                .arg(text.size().width())
+                                .arg(text.size().height())
+                                .arg(chrome.width())
+                                .arg(chrome.height())));
         auto* buttons = dialog->findChild<QDialogButtonBox*>();
         QVERIFY(buttons && buttons->isVisible());
         QVERIFY(dialog->rect().contains(buttons->geometry()));

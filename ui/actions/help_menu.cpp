@@ -27,7 +27,11 @@ bool pressable(const QKeySequence& sequence)
 QString shortcutsHtml(const MainWindow& w)
 {
     QStringList rows;
-    for (QMenu* menu : w.menuBar()->findChildren<QMenu*>())
+    for (QMenu* menu : w.menuBar()->findChildren<QMenu*>()) {
+        // An item of a submenu is named with it ("Detections to annotations: All kinds").
+        const QString within = qobject_cast<QMenu*>(menu->parentWidget())
+                                   ? menu->title().remove('&') + QStringLiteral(": ")
+                                   : QString();
         for (QAction* a : menu->actions()) {
             QStringList keys;
             for (const QKeySequence& k : a->shortcuts())
@@ -36,11 +40,12 @@ QString shortcutsHtml(const MainWindow& w)
             if (!keys.isEmpty())
                 rows << QStringLiteral("<td><b>%1</b></td><td>%2</td>")
                             .arg(keys.join(QStringLiteral(", ")).toHtmlEscaped(),
-                                 a->text().remove('&').toHtmlEscaped());
+                                 (within + a->text().remove('&')).toHtmlEscaped());
         }
+    }
     // Two columns of keys side by side, so the list is half as tall.
     const qsizetype half = (rows.size() + 1) / 2;
-    QString text = QStringLiteral("<table cellspacing=\"0\" cellpadding=\"3\">");
+    QString text = QStringLiteral("<table cellspacing=\"0\" cellpadding=\"1\">");
     for (qsizetype r = 0; r < half; ++r) {
         text += QStringLiteral("<tr>") + rows[r];
         if (r + half < rows.size())

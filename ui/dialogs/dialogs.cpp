@@ -8,6 +8,7 @@
 #include <QPushButton>
 #include <QScreen>
 #include <QTextBrowser>
+#include <QTextDocument>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -104,9 +105,12 @@ QDialog* makeDocumentDialog(QWidget* parent, const QString& title, const QString
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
     QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::reject);
     column->addWidget(buttons);
-    // As large as the text wants, within 90% of the screen: the rest scrolls, Close stays on it.
-    view->document()->setTextWidth(-1);
-    const QSize wanted = view->document()->size().toSize() + QSize(40, 40);
+    // As large as the text wants unwrapped, within 90% of the screen: the rest scrolls, Close
+    // stays on it.
+    QTextDocument unwrapped;
+    unwrapped.setDefaultFont(view->font());
+    unwrapped.setHtml(html);
+    const QSize wanted = unwrapped.size().toSize() + QSize(40, 40);
     QSize room(1280, 800);
     if (const QScreen* screen = parent ? parent->screen() : QGuiApplication::primaryScreen())
         room = screen->availableSize();
