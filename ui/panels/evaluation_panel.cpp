@@ -140,6 +140,8 @@ EvaluationPanel::EvaluationPanel(EvaluationScan& scan, StreamDocument& stream, Q
     m_scores->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_scores->setSelectionMode(QAbstractItemView::NoSelection);
     m_scores->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // The class names take the room left over, so the table spans the dock.
+    m_scores->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_scores->horizontalHeader()->setMinimumSectionSize(fontMetrics().horizontalAdvance('0') * 2);
     QFont compact = m_scores->font();
     compact.setPointSizeF(compact.pointSizeF() * 0.9);
