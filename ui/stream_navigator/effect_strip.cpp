@@ -95,9 +95,9 @@ QString EffectStrip::summary() const
                             locale.toString(qulonglong(effects.size())))
                  : tr("over %1 frames").arg(locale.toString(qulonglong(effects.size())));
     const QString detections = deltaText(total);
-    const QString detections_text = !detections.isEmpty() ? detections
-                                    : scanning            ? tr("no detection changed so far")
-                                                          : tr("no detection changed");
+    QString detections_text = detections.isEmpty() ? tr("no detection changed") : detections;
+    if (scanning)
+        detections_text += tr(" so far");
     QString text;
     if (m_scan.showsEdit() && m_scan.showsSettingsChange() && m_scan.changedCells() == 0) {
         text = tr("Last parameter change, %1: %2").arg(frames, detections_text);
