@@ -250,8 +250,8 @@ QString EditingSession::missingAnnotatedFrames() const
                              : QFileInfo(m_annotations->path()).fileName();
     const QString count =
         missing == 1 ? tr("1 frame") : tr("%1 frames").arg(QLocale().toString(qulonglong(missing)));
-    return tr("%1 names %2 this stream lacks, the first %3: the window keeps them as they are, "
-              "but fieldsight eval refuses a file with a done or reviewed frame the stream lacks")
+    return tr("%1 names %2 this stream lacks (the first: %3); fieldsight eval refuses it while "
+              "a done or reviewed one is missing")
         .arg(file, count, QString::fromStdString(first));
 }
 
