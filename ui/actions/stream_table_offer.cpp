@@ -34,14 +34,12 @@ void FileCommands::offerAsStreamTable(const QString& path)
         const int choice = Dialogs::current().choice(
             &m_window, title,
             text + QStringLiteral("\n\n") +
-                tr("The frames are shown turned %1°, which its stream.json does not say: "
-                   "without it, `fieldsight run` reads them as stored, not as the table was "
-                   "made.")
+                tr("The frames are shown turned %1°, which its stream.json does not say. Save "
+                   "the orientation with the table, so fieldsight run reads the frames as the "
+                   "table was made on them?")
                     .arg(deg),
-            {tr("Use it, and save orientation %1°").arg(deg), tr("Use it, orientation as stored"),
-             tr("Don't use it")},
-            0);
-        if (choice < 0 || choice == 2)
+            {tr("Table and orientation %1°").arg(deg), tr("Table only")}, 0);
+        if (choice < 0) // Cancel: neither
             return;
         with_orientation = choice == 0;
     } else if (Dialogs::current().question(&m_window, title, text,
