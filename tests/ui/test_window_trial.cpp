@@ -10,6 +10,7 @@
 #include "support/test_files.h"
 #include "support/window_waits.h"
 
+#include "ui/actions/annotation_commands.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/overlay_painter.h"
 #include "ui/dialogs/dialogs.h"
@@ -563,6 +564,12 @@ private slots:
             message.contains(QStringLiteral("%1 frames this stream lacks").arg(lacking.size())),
             qPrintable(message));
         QVERIFY2(message.contains(lacking.front()), qPrintable(message));
+        // Reloaded from disk: named again.
+        w.clearMessage();
+        QVERIFY(w.annotationFiles().reload());
+        QVERIFY2(w.lastMessage().contains(
+                     QStringLiteral("%1 frames this stream lacks").arg(lacking.size())),
+                 qPrintable(w.lastMessage()));
         // A stream with every annotated frame says nothing of the kind.
         MainWindow all;
         QVERIFY(showOn(all, copyStream("every", 0, true)));
