@@ -22,6 +22,7 @@
 #include "ui/stream_navigator/stream_navigator.h"
 #include "ui/widgets/bar_overlay.h"
 #include "ui/widgets/message_bar.h"
+#include "ui/widgets/scroll_area.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -212,8 +213,8 @@ void MainWindow::buildDocks()
     connect(m_layers, &LayersPanel::visibleLayersChanged, m_view, &FrameView::setVisibleLayers);
     QDockWidget* layers = dock(m_layers, tr("Layers"), "layers_dock", Qt::LeftDockWidgetArea);
     m_inspector = new InspectorPanel(s.pipeline(), this);
-    QDockWidget* inspector =
-        dock(m_inspector, tr("Pixel inspector"), "inspector_dock", Qt::LeftDockWidgetArea);
+    QDockWidget* inspector = dock(inScrollArea(m_inspector), tr("Pixel inspector"),
+                                  "inspector_dock", Qt::LeftDockWidgetArea);
     m_bookmarks = new BookmarksPanel(s.bookmarks(), s.stream(), this);
     QDockWidget* bookmarks =
         dock(m_bookmarks, tr("Bookmarks"), "bookmarks_dock", Qt::LeftDockWidgetArea);
@@ -221,12 +222,8 @@ void MainWindow::buildDocks()
     QDockWidget* history = dock(m_history, tr("History"), "history_dock", Qt::LeftDockWidgetArea);
     m_evaluation = new EvaluationPanel(s.evaluation(), s.stream(), this);
     // Tabbed with the layers, where there is height for its list; scrolled all the same.
-    auto* evaluation_scroll = new QScrollArea(this);
-    evaluation_scroll->setWidget(m_evaluation);
-    evaluation_scroll->setWidgetResizable(true);
-    evaluation_scroll->setFrameShape(QFrame::NoFrame);
-    QDockWidget* evaluation =
-        dock(evaluation_scroll, tr("Evaluation"), "evaluation_dock", Qt::LeftDockWidgetArea);
+    QDockWidget* evaluation = dock(inScrollArea(m_evaluation), tr("Evaluation"), "evaluation_dock",
+                                   Qt::LeftDockWidgetArea);
     // The chosen disagreement's culprits over the frame; its frames on the timeline.
     connect(m_evaluation, &EvaluationPanel::highlightChanged, m_view, [this](const QImage& image) {
         m_view->setHighlight(QStringLiteral("evaluation"), image);

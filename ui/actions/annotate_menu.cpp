@@ -1,8 +1,9 @@
 // Annotate: the frame-level annotation edits, a key each so a stream is annotated without leaving
 // the keyboard: copy the previous annotated frame's objects here (V), this frame's detections as
-// its annotations (A), done / not done (D), "reviewed, nothing here" per kind (Ctrl+Alt+1...,
-// in the kinds' order), and the next / previous frame not done (N / Shift+N). Each edit is one
-// undo step on the annotations document; the rules are services/annotation_editing's.
+// its annotations (A; or one kind's alone, from its submenu), done / not done (D), "reviewed,
+// nothing here" per kind (Ctrl+Alt+1..., in the kinds' order), and the next / previous frame not
+// done (N / Shift+N). Each edit is one undo step on the annotations document; the rules are
+// services/annotation_editing's.
 #include "ui/actions/menus.h"
 #include "ui/document/annotations_document.h"
 #include "ui/main_window.h"
@@ -84,7 +85,10 @@ void copyPrevious(MainWindow& w)
                 .arg(*index));
 }
 
-void detectionsToTruth(MainWindow& w)
+/// Makes the detections of `kinds` this frame's annotations; the other kinds keep theirs (a
+/// keyframed track of another kind survives).
+void detectionsToTruth(MainWindow& w, const std::vector<const PerceptKind*>& kinds,
+                       const QString& which)
 {
     const auto index = shownFrame(w);
     if (!index)
@@ -103,14 +107,16 @@ void detectionsToTruth(MainWindow& w)
     const std::string name = nameOf(w, *index);
     const FrameAnnotation* now = doc.frame(name);
     const FrameAnnotation after =
-        detectionsAsTruth(now ? *now : FrameAnnotation{}, out->result.percepts, doc.kinds());
-    if (!doc.editFrame(name, after, tr("Detections to annotations (frame %1)").arg(*index))) {
-        tell(w, tr("This frame's annotations already equal its detections"));
+        detectionsAsTruth(now ? *now : FrameAnnotation{}, out->result.percepts, kinds);
+    if (!doc.editFrame(name, after,
+                       tr("Detections to annotations: %1 (frame %2)").arg(which).arg(*index))) {
+        tell(w, tr("This frame's annotations (%1) already equal its detections").arg(which));
         return;
     }
-    tell(w, tr("This frame's detections are its annotations now (%n object(s)): correct them, "
-               "then mark the frame done (D)",
-               int(objectCount(after))));
+    tell(w, tr("This frame's detections (%1) are its annotations now (%n object(s) on the frame): "
+               "correct them, then mark the frame done (D)",
+               int(objectCount(after)))
+                .arg(which));
 }
 
 void toggleDone(MainWindow& w)
@@ -193,8 +199,27 @@ void addAnnotateMenu(MainWindow& w)
     QList<QAction*> edits;
     edits << item(tr("Copy the previous annotated frame here"), QKeySequence(Qt::Key_V),
                   "annotate.copy_previous", [&w] { copyPrevious(w); });
-    edits << item(tr("Detections to annotations"), QKeySequence(Qt::Key_A), "annotate.detections",
-                  [&w] { detectionsToTruth(w); });
+    // One item per kind drawn by hand, from the registry, and all of them (A): taking one kind
+    // leaves the others' annotations (a keyframed track) as they are.
+    QMenu* take = menu->addMenu(tr("Detections to annotations"));
+    take->setObjectName(QStringLiteral("annotate.detections_menu"));
+    QAction* all = addMenuItem(take, tr("All kinds"), QKeySequence(Qt::Key_A), &w, [&w] {
+        detectionsToTruth(w, w.session().annotations().kinds(), tr("all kinds"));
+    });
+    all->setObjectName(QStringLiteral("annotate.detections"));
+    edits << all;
+    take->addSeparator();
+    for (const PerceptKind* kind : w.session().annotations().kinds()) {
+        if (kind->form == ShapeForm::None)
+            continue;
+        QAction* a = take->addAction(tr("%1 only").arg(titleOf(*kind)));
+        a->setObjectName(
+            QStringLiteral("annotate.detections.") +
+            QString::fromUtf8(kind->truth_key.data(), qsizetype(kind->truth_key.size())));
+        QObject::connect(a, &QAction::triggered, &w,
+                         [&w, kind] { detectionsToTruth(w, {kind}, titleOf(*kind)); });
+        edits << a;
+    }
     QAction* done =
         item(tr("Frame done"), QKeySequence(Qt::Key_D), "annotate.done", [&w] { toggleDone(w); });
     done->setCheckable(true);

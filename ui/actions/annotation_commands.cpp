@@ -91,10 +91,13 @@ bool AnnotationCommands::reload()
                                  .arg(qs(s.error().message)));
         return false;
     }
+    // Frames the stream lacks are named as when the stream opened: eval refuses them.
+    const QString missing = m_window.session().missingAnnotatedFrames();
     m_window.showMessage(tr("Reloaded the annotations from %1 (Edit > Undo brings your edits "
                             "back)")
-                             .arg(d.path()),
-                         false);
+                                 .arg(d.path()) +
+                             (missing.isEmpty() ? QString() : QStringLiteral(". ") + missing),
+                         !missing.isEmpty());
     return true;
 }
 

@@ -327,32 +327,6 @@ bool FileCommands::saveLutAs(const QString& given)
     return true;
 }
 
-void FileCommands::offerAsStreamTable(const QString& path)
-{
-    // A table saved under another name is not what the stream opens with next time, unless
-    // its manifest names it: offer that.
-    const StreamDocument& stream = m_window.session().stream();
-    if (!stream.hasStream() || !QFileInfo(stream.streamSpec()).isDir())
-        return;
-    const QString own = fromLocalPath(stream.info().default_lut);
-    if (!own.isEmpty() && QFileInfo(own).absoluteFilePath() == QFileInfo(path).absoluteFilePath())
-        return;
-    const auto answer = Dialogs::current().question(
-        &m_window, tr("Use as this stream's table"),
-        tr("Use %1 as the table of the stream %2? Its stream.json then names it, and the stream "
-           "opens with it next time (in the window and on the command line).")
-            .arg(QFileInfo(path).fileName(), stream.streamSpec()),
-        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
-    if (answer != QMessageBox::Yes)
-        return;
-    if (Status s = writeStreamLut(toLocalPath(streamFolder()), toLocalPath(path)); !s) {
-        m_window.showMessage(qs(s.error().message));
-        return;
-    }
-    m_window.showMessage(
-        tr("Saved %1; the stream %2 now opens with it").arg(path, stream.streamSpec()), false);
-}
-
 bool FileCommands::confirmLutChanges()
 {
     LutDocument& lut = m_window.session().lut();

@@ -8,25 +8,60 @@
 
 namespace fieldsight::ui {
 
+namespace {
+
+/// A key a user can press on an ordinary keyboard: not F13-F35 nor the media and launch keys
+/// (Qt adds F14 to Undo, the Undo key of some platforms).
+bool pressable(const QKeySequence& sequence)
+{
+    for (int i = 0; i < sequence.count(); ++i) {
+        const Qt::Key key = sequence[i].key();
+        if ((key >= Qt::Key_F13 && key <= Qt::Key_F35) || key >= Qt::Key_Back)
+            return false;
+    }
+    return !sequence.isEmpty();
+}
+
+} // namespace
+
+QString shortcutsHtml(const MainWindow& w)
+{
+    QStringList rows;
+    for (QMenu* menu : w.menuBar()->findChildren<QMenu*>()) {
+        // An item of a submenu is named with it ("Detections to annotations: All kinds").
+        const QString within = qobject_cast<QMenu*>(menu->parentWidget())
+                                   ? menu->title().remove('&') + QStringLiteral(": ")
+                                   : QString();
+        for (QAction* a : menu->actions()) {
+            QStringList keys;
+            for (const QKeySequence& k : a->shortcuts())
+                if (pressable(k))
+                    keys << k.toString(QKeySequence::NativeText);
+            if (!keys.isEmpty())
+                rows << QStringLiteral("<td><b>%1</b></td><td>%2</td>")
+                            .arg(keys.join(QStringLiteral(", ")).toHtmlEscaped(),
+                                 (within + a->text().remove('&')).toHtmlEscaped());
+        }
+    }
+    // Two columns of keys side by side, so the list is half as tall.
+    const qsizetype half = (rows.size() + 1) / 2;
+    QString text = QStringLiteral("<table cellspacing=\"0\" cellpadding=\"1\">");
+    for (qsizetype r = 0; r < half; ++r) {
+        text += QStringLiteral("<tr>") + rows[r];
+        if (r + half < rows.size())
+            text += QStringLiteral("<td width=\"24\"></td>") + rows[r + half];
+        text += QStringLiteral("</tr>");
+    }
+    return text + QStringLiteral("</table>");
+}
+
 void addHelpMenu(MainWindow& w)
 {
     QMenu* help = w.menuBar()->addMenu(QObject::tr("&Help"));
-    help->addAction(QObject::tr("Keyboard shortcuts"), &w, [&w] {
-        // A table: the keys in one column, what they do in the other.
-        QString text = QStringLiteral("<table cellspacing=\"2\">");
-        for (QMenu* menu : w.menuBar()->findChildren<QMenu*>())
-            for (QAction* a : menu->actions())
-                if (!a->shortcut().isEmpty()) {
-                    QStringList keys;
-                    for (const QKeySequence& k : a->shortcuts())
-                        keys << k.toString(QKeySequence::NativeText);
-                    text += QStringLiteral("<tr><td><b>%1</b></td><td>&nbsp;&nbsp;%2</td></tr>")
-                                .arg(keys.join(QStringLiteral(", ")).toHtmlEscaped(),
-                                     a->text().remove('&').toHtmlEscaped());
-                }
-        text += QStringLiteral("</table>");
-        Dialogs::current().information(&w, QObject::tr("Keyboard shortcuts"), text);
+    QAction* keys = help->addAction(QObject::tr("Keyboard shortcuts"), &w, [&w] {
+        Dialogs::current().document(&w, QObject::tr("Keyboard shortcuts"), shortcutsHtml(w));
     });
+    keys->setObjectName(QStringLiteral("help.shortcuts"));
     help->addAction(QObject::tr("About Fieldsight"), &w, [&w] {
         Dialogs::current().information(
             &w, QObject::tr("About Fieldsight"),

@@ -19,6 +19,9 @@ void addObjectMenu(MainWindow& window);
 void addPipelineMenu(MainWindow& window);
 void addAnnotateMenu(MainWindow& window);
 void addHelpMenu(MainWindow& window);
+/// Help > Keyboard shortcuts' text: every key a user can press for a menu item (not Qt's
+/// platform keys, F14 for Undo), as an HTML table two pairs of columns wide.
+QString shortcutsHtml(const MainWindow& window);
 
 /// A menu item with a shortcut, calling `fn` on `receiver`.
 template <class Receiver, class Fn>

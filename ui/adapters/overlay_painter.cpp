@@ -3,6 +3,8 @@
 
 #include "ui/adapters/image_adapter.h"
 
+#include "visioncore/percepts/percept_set.h"
+
 #include <QList>
 #include <QPainter>
 #include <QPen>
@@ -40,13 +42,20 @@ QPointF at(const PointF& p, double centre)
     return {p.x + centre, p.y + centre};
 }
 
-QPen cosmeticPen(const QColor& colour, double width)
+/// Device px of a dash and of the gap after it (ground truth): the same at every pen width, so a
+/// truth outline's dark rim and its white line have their dashes in the same places.
+constexpr double kDash = 5;
+constexpr double kGap = 3;
+
+QPen cosmeticPen(const QColor& colour, double width, bool dashed = false)
 {
     QPen pen(colour, width);
     pen.setCosmetic(true);
     // A square cap keeps both end pixels of a thin line at any zoom; with a flat cap one can drop.
-    pen.setCapStyle(Qt::SquareCap);
+    pen.setCapStyle(dashed ? Qt::FlatCap : Qt::SquareCap);
     pen.setJoinStyle(Qt::MiterJoin);
+    if (dashed)
+        pen.setDashPattern({kDash / width, kGap / width}); // in pen widths
     return pen;
 }
 
@@ -64,7 +73,7 @@ void paintPoints(QPainter& painter, const DebugShape& shape, const QColor& colou
 }
 
 void paintPolyline(QPainter& painter, const DebugShape& shape, const QColor& colour,
-                   std::size_t count, double centre)
+                   std::size_t count, double centre, bool dashed)
 {
     if (shape.points.size() < 2)
         return;
@@ -72,21 +81,23 @@ void paintPolyline(QPainter& painter, const DebugShape& shape, const QColor& col
     points.reserve(qsizetype(count));
     for (std::size_t i = 0; i < count; ++i)
         points.append(at(shape.points[i], centre));
-    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width)));
+    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width), dashed));
     painter.setBrush(Qt::NoBrush);
     painter.drawPolyline(points.constData(), int(points.size()));
 }
 
-void paintCircle(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre)
+void paintCircle(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre,
+                 bool dashed)
 {
     if (shape.points.empty())
         return;
-    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width)));
+    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width), dashed));
     painter.setBrush(shape.filled ? QBrush(colour) : QBrush(Qt::NoBrush));
     painter.drawEllipse(at(shape.points[0], centre), shape.size, shape.size);
 }
 
-void paintRect(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre)
+void paintRect(QPainter& painter, const DebugShape& shape, const QColor& colour, double centre,
+               bool dashed)
 {
     if (shape.points.size() < 2)
         return;
@@ -99,14 +110,20 @@ void paintRect(QPainter& painter, const DebugShape& shape, const QColor& colour,
         painter.drawRect(centres.adjusted(-0.5, -0.5, 0.5, 0.5));
         return;
     }
-    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width)));
+    painter.setPen(cosmeticPen(colour, std::max(1.0, shape.width), dashed));
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(centres);
 }
 
 } // namespace
 
-void paintShape(QPainter& painter, const DebugShape& shape)
+bool isTruthLayer(std::string_view layer)
+{
+    return layer.size() > kTruthLayerPrefix.size() && layer.starts_with(kTruthLayerPrefix) &&
+           layer[kTruthLayerPrefix.size()] == '.';
+}
+
+void paintShape(QPainter& painter, const DebugShape& shape, bool dashed)
 {
     painter.setRenderHint(QPainter::Antialiasing, false);
     const QColor colour = toQColor(shape.colour);
@@ -116,16 +133,16 @@ void paintShape(QPainter& painter, const DebugShape& shape)
         paintPoints(painter, shape, colour, centre);
         break;
     case ShapeKind::Line:
-        paintPolyline(painter, shape, colour, 2, centre);
+        paintPolyline(painter, shape, colour, 2, centre, dashed);
         break;
     case ShapeKind::Polyline:
-        paintPolyline(painter, shape, colour, shape.points.size(), centre);
+        paintPolyline(painter, shape, colour, shape.points.size(), centre, dashed);
         break;
     case ShapeKind::Circle:
-        paintCircle(painter, shape, colour, centre);
+        paintCircle(painter, shape, colour, centre, dashed);
         break;
     case ShapeKind::Rect:
-        paintRect(painter, shape, colour, centre);
+        paintRect(painter, shape, colour, centre, dashed);
         break;
     }
 }
@@ -141,7 +158,8 @@ void paintDrawing(QPainter& painter, const DebugDrawing& drawing)
     // each end), mapped to device px by hand: with no transform left, fillRect() takes the raster
     // engine's fast path, about 7 times faster than stroking, with the same pixels
     // (tests/ui/test_overlay_painter.cpp). A rotating transform keeps stroking.
-    const bool by_hand = transform.type() <= QTransform::TxScale;
+    const bool dashed = isTruthLayer(drawing.layer);
+    const bool by_hand = transform.type() <= QTransform::TxScale && !dashed;
     bool device_space = false; // the painter's transform is reset for hand-mapped rectangles
     for (const DebugShape& shape : drawing.shapes) {
         const bool axis_line =
@@ -151,7 +169,7 @@ void paintDrawing(QPainter& painter, const DebugDrawing& drawing)
             if (device_space)
                 painter.setWorldTransform(transform);
             device_space = false;
-            paintShape(painter, shape);
+            paintShape(painter, shape, dashed);
             continue;
         }
         if (!device_space)

@@ -7,6 +7,7 @@
 
 #include <opencv2/core/mat.hpp>
 
+#include <string_view>
 #include <vector>
 
 class QPainter;
@@ -31,11 +32,18 @@ namespace fieldsight::ui {
 //   the corner pixels; a filled Rect covers every pixel from one corner to the other, both
 //   included, without an outline.
 // - A shape with fewer points than its kind needs is skipped; so is a null drawing.
+// - Ground truth (a layer "truth.<key>") is drawn dashed, 5 device px on and 3 off at any pen
+//   width, flat-capped; detections solid. The truth goes over the detections (layers.h), so where
+//   a detection lies on its true object both show.
 // - No fonts or text, so painting needs no QGuiApplication and no display, only a QImage.
 
-/// Paints one shape with the conventions above. Sets the painter's pen, brush and antialiasing
-/// hint and leaves them set (it is called in loops; paintDrawing() saves and restores around them).
-void paintShape(QPainter& painter, const DebugShape& shape);
+/// A ground-truth layer id ("truth.balls"): painted dashed.
+bool isTruthLayer(std::string_view layer);
+
+/// Paints one shape with the conventions above (outlines `dashed`, as ground truth's). Sets the
+/// painter's pen, brush and antialiasing hint and leaves them set (it is called in loops;
+/// paintDrawing() saves and restores around them).
+void paintShape(QPainter& painter, const DebugShape& shape, bool dashed = false);
 
 /// Paints the drawing's shapes in order; the painter's state is unchanged afterwards.
 void paintDrawing(QPainter& painter, const DebugDrawing& drawing);

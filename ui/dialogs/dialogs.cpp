@@ -1,10 +1,18 @@
 #include "ui/dialogs/dialogs.h"
 
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QFileDialog>
+#include <QGuiApplication>
 #include <QInputDialog>
 #include <QPushButton>
+#include <QScreen>
+#include <QTextBrowser>
+#include <QTextDocument>
+#include <QVBoxLayout>
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 #include <utility>
@@ -56,6 +64,11 @@ public:
     {
         QMessageBox::information(parent, title, text);
     }
+    void document(QWidget* parent, const QString& title, const QString& html) override
+    {
+        std::unique_ptr<QDialog> dialog(makeDocumentDialog(parent, title, html));
+        dialog->exec();
+    }
     int choice(QWidget* parent, const QString& title, const QString& text,
                const QStringList& options, int preferred) override
     {
@@ -78,6 +91,36 @@ QtDialogs g_qt_dialogs;
 Dialogs* g_installed = nullptr;
 
 } // namespace
+
+QDialog* makeDocumentDialog(QWidget* parent, const QString& title, const QString& html)
+{
+    auto* dialog = new QDialog(parent);
+    dialog->setWindowTitle(title);
+    auto* column = new QVBoxLayout(dialog);
+    auto* view = new QTextBrowser(dialog);
+    view->setObjectName(QStringLiteral("document.text"));
+    view->setHtml(html);
+    view->setFrameShape(QFrame::NoFrame);
+    column->addWidget(view);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::reject);
+    column->addWidget(buttons);
+    // As large as the text wants unwrapped, within 90% of the screen: the rest scrolls, Close
+    // stays on it.
+    QTextDocument unwrapped;
+    unwrapped.setDefaultFont(view->font());
+    unwrapped.setHtml(html);
+    const QSize wanted = unwrapped.size().toSize() + QSize(40, 40);
+    QSize room(1280, 800);
+    if (const QScreen* screen = parent ? parent->screen() : QGuiApplication::primaryScreen())
+        room = screen->availableSize();
+    room = room * 0.9;
+    const int buttons_height = buttons->sizeHint().height() + column->spacing() +
+                               column->contentsMargins().top() + column->contentsMargins().bottom();
+    dialog->resize(std::min(wanted.width(), room.width()),
+                   std::min(wanted.height() + buttons_height, room.height()));
+    return dialog;
+}
 
 Dialogs& Dialogs::current()
 {

@@ -9,6 +9,7 @@
 
 #include <optional>
 
+class QDialog;
 class QWidget;
 
 namespace fieldsight::ui {
@@ -40,9 +41,19 @@ public:
                                                  QMessageBox::StandardButtons buttons,
                                                  QMessageBox::StandardButton preferred) = 0;
     virtual void information(QWidget* parent, const QString& title, const QString& text) = 0;
+    /// A long text (rich text: a table of the shortcuts) in a window that scrolls and fits the
+    /// screen, with Close; by default as information().
+    virtual void document(QWidget* parent, const QString& title, const QString& html)
+    {
+        information(parent, title, html);
+    }
     /// One of `options` (its index), or -1 when the user cancelled; `preferred` is the default.
     virtual int choice(QWidget* parent, const QString& title, const QString& text,
                        const QStringList& options, int preferred) = 0;
 };
+
+/// The window Qt's document() shows (not yet shown): `html` in a scrolling text view, at most
+/// 90% of the available screen high and wide, with a Close button.
+QDialog* makeDocumentDialog(QWidget* parent, const QString& title, const QString& html);
 
 } // namespace fieldsight::ui

@@ -5,12 +5,14 @@
 
 #include <QFileInfo>
 #include <QFutureWatcherBase>
+#include <QLocale>
 
 #include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <new>
+#include <set>
 #include <thread>
 
 namespace fieldsight::ui {
@@ -226,6 +228,33 @@ Status EditingSession::open(const QString& spec, const QString& lut)
     return {};
 }
 
+QString EditingSession::missingAnnotatedFrames() const
+{
+    if (!m_stream->hasStream() || m_stream->live())
+        return {};
+    std::set<std::string, std::less<>> present; // the annotation keys the stream's frames have
+    for (std::size_t i = 0; i < m_stream->frameCount(); ++i)
+        present.insert(m_annotations->keyOf(m_stream->frameName(i).toStdString()));
+    std::size_t missing = 0;
+    std::string first;
+    for (const auto& [name, frame] : m_annotations->annotations().frames) {
+        if (present.count(name))
+            continue;
+        if (missing++ == 0)
+            first = name;
+    }
+    if (missing == 0)
+        return {};
+    const QString file = m_annotations->path().isEmpty()
+                             ? tr("The annotations")
+                             : QFileInfo(m_annotations->path()).fileName();
+    const QString count =
+        missing == 1 ? tr("1 frame") : tr("%1 frames").arg(QLocale().toString(qulonglong(missing)));
+    return tr("%1 names %2 this stream lacks (the first: %3); fieldsight eval refuses it while "
+              "a done or reviewed one is missing")
+        .arg(file, count, QString::fromStdString(first));
+}
+
 void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
 {
     m_effect->setStream({}, nullptr); // scanned again once its table is in
@@ -244,6 +273,8 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
                          opened->annotations_read);
     // The stream first: the table's change then runs the new stream's frame, never the old one.
     m_stream->adopt(std::move(opened));
+    if (const QString missing = missingAnnotatedFrames(); !missing.isEmpty())
+        m_warnings << missing;
     // Edits are never dropped silently: a table opened under unsaved edits (an open finishing
     // after a recovery) gives way to the edited one.
     if (!m_lut->modified())

@@ -83,8 +83,12 @@ public:
     QString openingSpec() const { return m_opening; }
     /// Makes an opened stream the session's: every document follows it.
     void adopt(std::shared_ptr<OpenedStream> opened);
-    /// What the last open could not find or read (the stream still opened).
+    /// What the last open could not find or read (the stream still opened), and the annotated
+    /// frames the stream lacks (missingAnnotatedFrames()).
     QStringList warnings() const { return m_warnings; }
+    /// "annotations.json names 2 frames this stream lacks, the first frame_000099.png …" (empty
+    /// when the stream has every annotated frame): `fieldsight eval` refuses such a file.
+    QString missingAnnotatedFrames() const;
 
     /// Loads a table in any importable format as the LUT document's (clean, new history).
     Status openLut(const QString& path);

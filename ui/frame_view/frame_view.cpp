@@ -2,6 +2,7 @@
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/overlay_painter.h"
+#include "ui/frame_view/percept_labels.h"
 
 #include <QElapsedTimer>
 #include <QHelpEvent>
@@ -18,6 +19,15 @@
 namespace fieldsight::ui {
 
 namespace {
+
+/// The detections' opacity while an annotation tool is active: the truth being drawn stands out.
+constexpr double kDimmedDetections = 0.35;
+
+bool isPerceptLayer(const std::string& layer)
+{
+    return layer.starts_with(kPerceptLayerPrefix) && layer.size() > kPerceptLayerPrefix.size() &&
+           layer[kPerceptLayerPrefix.size()] == '.';
+}
 
 /// Zoom steps of the wheel and the zoom actions: whole multiples above 1 keep every image pixel
 /// the same size on screen.
@@ -271,40 +281,16 @@ void FrameView::paintEvent(QPaintEvent*)
             const double margin = 3 / m_zoom;
             p.setClipRect(
                 QRectF(-margin, -margin, image.width() + 2 * margin, image.height() + 2 * margin));
-            for (const DebugDrawing* d : layers)
+            const bool dim = detectionsDimmed();
+            for (const DebugDrawing* d : layers) {
+                p.setOpacity(dim && isPerceptLayer(d->layer) ? kDimmedDetections : 1.0);
                 paintDrawing(p, *d);
+            }
             p.restore();
         }
-        if (m_labels) {
-            p.setPen(Qt::white);
-            QFont font = p.font();
-            font.setPointSizeF(8);
-            p.setFont(font);
-            // On a crowded frame a label that would cover another moves down a line, so every
-            // one stays readable.
-            std::vector<QRectF> placed;
-            for (const PerceptItem& item : m_output->items) {
-                if (!m_visible.count(item.layer))
-                    continue;
-                QPointF at(panelX(0) + (item.bounds.left() + 0.5) * m_zoom,
-                           m_origin.y() + (item.bounds.top() + 0.5) * m_zoom - 4);
-                QRectF box = p.fontMetrics()
-                                 .boundingRect(item.label)
-                                 .translated(at.toPoint())
-                                 .adjusted(-2, 0, 2, 0);
-                const auto covers = [&placed](const QRectF& r) {
-                    return std::any_of(placed.begin(), placed.end(),
-                                       [&r](const QRectF& q) { return q.intersects(r); });
-                };
-                for (int line = 0; line < 12 && covers(box); ++line) {
-                    box.translate(0, box.height() + 1);
-                    at.ry() += box.height() + 1;
-                }
-                placed.push_back(box);
-                p.fillRect(box, QColor(0, 0, 0, 160));
-                p.drawText(at, item.label);
-            }
-        }
+        if (m_labels)
+            paintPerceptLabels(p, m_output->items, m_visible, QPointF(panelX(0), m_origin.y()),
+                               m_zoom, detectionsDimmed() ? kDimmedDetections : 1.0);
     }
     // The tool's shapes (sample regions, annotated objects): a dark edge under the colour, so a
     // shape shows on any background; the selected one thicker, its handles marked.
@@ -433,6 +419,11 @@ void FrameView::setTools(ToolManager* tools)
     follow();
 }
 
+bool FrameView::detectionsDimmed() const
+{
+    return m_tools && m_tools->active().info().group == QLatin1String("annotate");
+}
+
 bool FrameView::toolPans() const
 {
     return !m_tools || m_tools->active().pans();
@@ -464,6 +455,8 @@ ToolEvent FrameView::toolEvent(const QMouseEvent& event, QPoint pixel) const
 {
     ToolEvent e = ToolEvent::of(ToolSurface::Image, event, pixel);
     e.zoom = m_zoom;
+    if (const std::optional<QPointF> at = imagePoint(event.position()))
+        e.position = *at;
     return e;
 }
 

@@ -67,6 +67,9 @@ public:
     void setHighlight(const QString& id, const QImage& image);
     const QImage& highlight(const QString& id) const;
 
+    /// The detections are drawn faint: an annotation tool is active.
+    bool detectionsDimmed() const;
+
     /// The serial of the output painted last.
     std::uint64_t paintedSerial() const { return m_painted_serial; }
     /// How long the last paint took, ms.

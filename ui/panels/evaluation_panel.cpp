@@ -122,8 +122,10 @@ EvaluationPanel::EvaluationPanel(EvaluationScan& scan, StreamDocument& stream, Q
     m_scores = new QTableWidget(this);
     m_scores->setObjectName(QStringLiteral("evaluation.scores"));
     m_scores->setColumnCount(7);
+    // Short headers (their tooltips say the rest) and compact rows: the table fits the dock's
+    // default width at 1280x800 with no scroll bar hiding a row or a column.
     m_scores->setHorizontalHeaderLabels(
-        {tr("Class"), tr("TP"), tr("FP"), tr("FN"), tr("Prec."), tr("Recall"), tr("Concealed")});
+        {tr("Class"), tr("TP"), tr("FP"), tr("FN"), tr("Prec."), tr("Rec."), tr("Conc.")});
     m_scores->horizontalHeaderItem(1)->setToolTip(
         tr("True positives: detections of a true object"));
     m_scores->horizontalHeaderItem(2)->setToolTip(
@@ -138,15 +140,24 @@ EvaluationPanel::EvaluationPanel(EvaluationScan& scan, StreamDocument& stream, Q
     m_scores->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_scores->setSelectionMode(QAbstractItemView::NoSelection);
     m_scores->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_scores->horizontalHeader()->setStretchLastSection(true);
+    // The class names take the room left over, so the table spans the dock.
+    m_scores->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_scores->horizontalHeader()->setMinimumSectionSize(fontMetrics().horizontalAdvance('0') * 2);
+    QFont compact = m_scores->font();
+    compact.setPointSizeF(compact.pointSizeF() * 0.9);
+    m_scores->setFont(compact);
+    m_scores->horizontalHeader()->setFont(compact);
+    m_scores->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_scores->verticalHeader()->setDefaultSectionSize(QFontMetrics(compact).height() + 4);
+    m_scores->setWordWrap(false);
     m_scores->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_scores->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_scores->setRowCount(int(scoredKinds().size()));
     for (int r = 0; r < m_scores->rowCount(); ++r)
         m_scores->setItem(r, 0,
                           new QTableWidgetItem(QString::fromUtf8(
                               scoredKinds()[std::size_t(r)]->title.data(),
                               qsizetype(scoredKinds()[std::size_t(r)]->title.size()))));
-    m_scores->resizeRowsToContents();
     int height = m_scores->horizontalHeader()->sizeHint().height() + 2 * m_scores->frameWidth();
     for (int r = 0; r < m_scores->rowCount(); ++r)
         height += m_scores->rowHeight(r);

@@ -86,21 +86,28 @@ QString EffectStrip::summary() const
         total += e.delta;
     }
     const QLocale locale;
+    // Until every frame is in, the sums are partial: say how far the scan is and never call a
+    // count final ("no detection changed" before the frames that change are scanned).
+    const bool scanning = m_scan.framesDone() < effects.size();
+    const QString frames =
+        scanning ? tr("scanning %1 of %2 frames")
+                       .arg(locale.toString(qulonglong(m_scan.framesDone())),
+                            locale.toString(qulonglong(effects.size())))
+                 : tr("over %1 frames").arg(locale.toString(qulonglong(effects.size())));
+    const QString detections = deltaText(total);
+    QString detections_text = detections.isEmpty() ? tr("no detection changed") : detections;
+    if (scanning)
+        detections_text += tr(" so far");
     QString text;
     if (m_scan.showsEdit() && m_scan.showsSettingsChange() && m_scan.changedCells() == 0) {
-        const QString detections = deltaText(total);
-        text = tr("Last parameter change, over %1 frames: %2")
-                   .arg(locale.toString(qulonglong(effects.size())),
-                        detections.isEmpty() ? tr("no detection changed") : detections);
+        text = tr("Last parameter change, %1: %2").arg(frames, detections_text);
     } else if (m_scan.showsEdit()) {
-        text = tr("Last edit (%1 cells): %2 pixels changed class in %3 of %4 frames")
-                   .arg(locale.toString(qulonglong(m_scan.changedCells())),
+        text = tr("Last edit (%1 cells), %2: %3 pixels changed class in %4 frames; %5")
+                   .arg(locale.toString(qulonglong(m_scan.changedCells())), frames,
                         locale.toString(qulonglong(pixels)),
-                        locale.toString(qulonglong(frames_changed)),
-                        locale.toString(qulonglong(effects.size())));
-        const QString detections = deltaText(total);
-        text +=
-            detections.isEmpty() ? tr("; no detection changed") : QStringLiteral("; ") + detections;
+                        locale.toString(qulonglong(frames_changed)), detections_text);
+    } else if (scanning) {
+        text = tr("Scanning the stream with this LUT, %1").arg(frames);
     } else {
         text = tr("Stream scanned with this LUT");
     }
@@ -116,9 +123,7 @@ QString EffectStrip::summary() const
                                .arg(first)
                                .arg(reason);
     }
-    if (m_scan.framesDone() < effects.size())
-        text += tr(" (scanning: %1%)").arg(100 * m_scan.framesDone() / effects.size());
-    else if (m_scan.lastScanMs() >= 0)
+    if (!scanning && m_scan.lastScanMs() >= 0)
         text += tr(" (%1 s)").arg(m_scan.lastScanMs() / 1000.0, 0, 'f', 2);
     return text;
 }

@@ -7,6 +7,7 @@
 #include "visioncore/services/annotation_tracks.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace fieldsight::ui {
@@ -22,6 +23,17 @@ constexpr double kEdgeSnapScreenPx = 12;
 PointF pointOf(QPoint p)
 {
     return {double(p.x()), double(p.y())};
+}
+
+/// Where `event` is for a shape of `form`: a circle (a ball's centre and radius, which the
+/// detector gives to a fraction of a pixel) to a tenth of a pixel, the other forms whole pixels
+/// (the box fields are whole pixels anyway).
+PointF pointOf(const ToolEvent& event, ShapeForm form)
+{
+    if (form != ShapeForm::Circle)
+        return pointOf(event.point);
+    const auto tenth = [](double v) { return std::round(v * 10) / 10; };
+    return {tenth(event.position.x()), tenth(event.position.y())};
 }
 
 QString formName(ShapeForm form)
@@ -171,7 +183,7 @@ void AnnotateTool::press(const ToolEvent& event)
     if (m_frame.empty())
         return;
     AnnotationsDocument& doc = m_context.session.annotations();
-    const PointF p = pointOf(event.point);
+    const PointF p = pointOf(event, m_kind.form);
     m_zoom = std::max(event.zoom, 1e-3);
     const double near = std::max(1.5, kNearScreenPx / m_zoom);
     if (!m_draft.empty()) {
@@ -235,7 +247,7 @@ void AnnotateTool::press(const ToolEvent& event)
 
 void AnnotateTool::move(const ToolEvent& event)
 {
-    const PointF p = pointOf(event.point);
+    const PointF p = pointOf(event, m_kind.form);
     if (!m_draft.empty()) {
         m_draft.back() = p; // the point just clicked follows the drag
         emit previewChanged();

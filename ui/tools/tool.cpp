@@ -9,6 +9,7 @@ ToolEvent ToolEvent::of(ToolSurface surface, const QMouseEvent& mouse, QPoint po
     ToolEvent e;
     e.surface = surface;
     e.point = point;
+    e.position = QPointF(point);
     e.button = mouse.button();
     e.buttons = mouse.buttons();
     e.modifiers = mouse.modifiers();

@@ -13,6 +13,7 @@
 #include <QKeySequence>
 #include <QObject>
 #include <QPoint>
+#include <QPointF>
 #include <QString>
 
 #include <opencv2/core/mat.hpp>
@@ -40,6 +41,10 @@ struct ToolEvent
 {
     ToolSurface surface = ToolSurface::Image;
     QPoint point;
+    /// `point` to a fraction of a pixel, in the same coordinates (pixel centres at whole
+    /// numbers): where in the pixel the pointer is, for tools that place shapes finer than a
+    /// pixel (the frame view sets it; else `point`).
+    QPointF position;
     Qt::MouseButton button = Qt::NoButton; ///< the button pressed or released (none on a move)
     Qt::MouseButtons buttons = Qt::NoButton;
     Qt::KeyboardModifiers modifiers = Qt::NoModifier;

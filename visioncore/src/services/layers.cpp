@@ -62,9 +62,11 @@ std::vector<DebugDrawing> frameDrawings(const Pipeline& pipeline, const LayerSet
             if (wanted.count(d.layer))
                 out.push_back(std::move(d));
     };
+    // The truth goes over the detections: drawn dashed and thin, it shows where the two lie on
+    // top of each other (a detection drawn last would hide it).
+    keep(percepts.drawings(false));
     if (truth)
         keep(truth->drawings(true));
-    keep(percepts.drawings(false));
     return out;
 }
 

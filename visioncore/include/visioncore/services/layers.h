@@ -26,7 +26,8 @@ std::vector<LayerInfo> allLayers(const Pipeline& pipeline);
 Result<LayerSet> selectLayers(const std::string& list, const Pipeline& pipeline);
 
 /// The drawings of one frame whose id is in `wanted`, in drawing order: the stage layers the core
-/// published into `canvas`, then `truth` (if any), then `percepts`.
+/// published into `canvas`, then `percepts`, then `truth` (if any) over them: the painter draws
+/// truth dashed, so a detection on its true object does not hide it.
 std::vector<DebugDrawing> frameDrawings(const Pipeline& pipeline, const LayerSet& wanted,
                                         const DebugCanvas& canvas, const PerceptSet& percepts,
                                         const PerceptSet* truth);
