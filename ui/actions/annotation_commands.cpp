@@ -58,22 +58,10 @@ bool AnnotationCommands::save()
     if (d.path().isEmpty())
         return saveAs();
     bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
-    if (d.changedOnDisk()) {
-        switch (askAboutDiskChange(&m_window, tr("the annotations"), d.path())) {
-        case DiskChoice::Reload:
-            return reload();
-        case DiskChoice::SaveAs:
-            return saveAs();
-        case DiskChoice::Overwrite:
-            overwrite = true;
-            break;
-        case DiskChoice::Cancel:
-            m_window.showMessage(tr("The annotations were not saved: %1 changed on disk (the "
-                                    "edits are kept)")
-                                     .arg(d.path()));
-            return false;
-        }
-    }
+    if (const auto ended = settleDiskChange(
+            m_window, d.changedOnDisk(), tr("the annotations"), d.path(), overwrite,
+            [this] { return reload(); }, [this] { return saveAs(); }))
+        return *ended;
     if (Status s = overwrite ? d.saveAs(d.path()) : d.save(); !s) {
         m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
                                  .arg(qs(s.error().message)));

@@ -1,6 +1,7 @@
 #include "ui/actions/disk_conflict.h"
 
 #include "ui/dialogs/dialogs.h"
+#include "ui/main_window.h"
 
 #include <QCoreApplication>
 
@@ -29,6 +30,32 @@ DiskChoice askAboutDiskChange(QWidget* parent, const QString& what, const QStrin
     default:
         return DiskChoice::Cancel;
     }
+}
+
+std::optional<bool> settleDiskChange(MainWindow& window, bool changed, const QString& what,
+                                     const QString& path, bool& overwrite,
+                                     const std::function<bool()>& reload,
+                                     const std::function<bool()>& save_as)
+{
+    overwrite = false;
+    if (!changed)
+        return std::nullopt;
+    switch (askAboutDiskChange(&window, what, path)) {
+    case DiskChoice::Reload:
+        return reload();
+    case DiskChoice::SaveAs:
+        return save_as();
+    case DiskChoice::Overwrite:
+        overwrite = true;
+        return std::nullopt;
+    case DiskChoice::Cancel:
+        break;
+    }
+    window.showMessage(QCoreApplication::translate("DiskConflict",
+                                                   "Not saved: %1 changed on disk (your edits of "
+                                                   "%2 are kept)")
+                           .arg(path, what));
+    return false;
 }
 
 } // namespace fieldsight::ui

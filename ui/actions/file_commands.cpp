@@ -211,22 +211,10 @@ bool FileCommands::saveLut()
     if (lut.path().isEmpty() || !lut.path().endsWith(QLatin1String(".lut")))
         return saveLutAs();
     bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
-    if (lut.changedOnDisk()) {
-        switch (askAboutDiskChange(&m_window, tr("the LUT"), lut.path())) {
-        case DiskChoice::Reload:
-            return reloadLut();
-        case DiskChoice::SaveAs:
-            return saveLutAs();
-        case DiskChoice::Overwrite:
-            overwrite = true;
-            break;
-        case DiskChoice::Cancel:
-            m_window.showMessage(
-                tr("The LUT was not saved: %1 changed on disk (the edits are kept)")
-                    .arg(lut.path()));
-            return false;
-        }
-    }
+    if (const auto ended = settleDiskChange(
+            m_window, lut.changedOnDisk(), tr("the LUT"), lut.path(), overwrite,
+            [this] { return reloadLut(); }, [this] { return saveLutAs(); }))
+        return *ended;
     if (Status s = overwrite ? lut.saveAs(lut.path()) : lut.save(); !s) {
         m_window.showMessage(
             tr("The LUT was not saved (the edits are kept): %1").arg(qs(s.error().message)));

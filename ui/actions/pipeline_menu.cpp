@@ -44,27 +44,26 @@ void saveParamsToStream(MainWindow& w)
     }
     // Another window or a command wrote the stream's parameters since it opened: never dropped
     // silently.
-    if (named && stream.paramsFileChanged()) {
-        switch (askAboutDiskChange(&w, QObject::tr("the parameters"), fromLocalPath(file))) {
-        case DiskChoice::Reload:
-            if (auto read = ParamSet::load(file); !read)
-                w.showMessage(QString::fromStdString(read.error().message));
-            else if (Status s = w.session().settings().setParamChanges(
-                         read.value(), QObject::tr("Reload parameters from disk"));
-                     !s)
-                w.showMessage(QString::fromStdString(s.error().message));
-            else
-                stream.setParamsFile(file);
-            return;
-        case DiskChoice::SaveAs:
-            saveParams(w);
-            return;
-        case DiskChoice::Cancel:
-            return;
-        case DiskChoice::Overwrite:
-            break;
-        }
-    }
+    const auto reload = [&] {
+        auto read = ParamSet::load(file);
+        Status s = read ? w.session().settings().setParamChanges(
+                              read.value(), QObject::tr("Reload parameters from disk"))
+                        : Status(read.error());
+        if (!s)
+            w.showMessage(QString::fromStdString(s.error().message));
+        else
+            stream.setParamsFile(file);
+        return s.ok();
+    };
+    bool overwrite = false; // the stream's own file is written either way
+    if (settleDiskChange(w, named && stream.paramsFileChanged(), QObject::tr("the parameters"),
+                         fromLocalPath(file), overwrite, reload,
+                         [&w] {
+                             saveParams(w);
+                             return true;
+                         })
+            .has_value())
+        return; // reloaded, saved elsewhere or cancelled
     Status s = w.session().settings().paramChanges().save(file);
     if (s && !named)
         s = writeStreamParams(info.path, file);
