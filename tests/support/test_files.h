@@ -4,6 +4,7 @@
 #include "support/synthetic_frames.h"
 
 #include <QByteArray>
+#include <QDir>
 #include <QFile>
 #include <QString>
 
@@ -20,6 +21,19 @@ inline QByteArray fileBytes(const QString& path)
 {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+/// A stream in `to` of the sample stream's table and its first `frames` frames, without its
+/// annotations; `to` is returned.
+inline QString copySampleFrames(const QString& to, int frames)
+{
+    QDir().mkpath(to);
+    QFile::copy(sampleStream() + "/default.lut", to + "/default.lut");
+    for (int i = 0; i < frames; ++i) {
+        const QString frame = QStringLiteral("frame_%1.png").arg(i, 6, 10, QLatin1Char('0'));
+        QFile::copy(sampleStream() + "/" + frame, to + "/" + frame);
+    }
+    return to;
 }
 
 } // namespace fieldsight::test

@@ -94,14 +94,7 @@ class TestAnnotateActions : public QObject
     /// A copy of the first `frames` frames of the sample stream, without its annotations.
     QString copyStream(const QString& name, int frames = 6)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        QFile::copy(sampleStream() + "/default.lut", to + "/default.lut");
-        for (int i = 0; i < frames; ++i) {
-            const QString frame = QStringLiteral("frame_%1.png").arg(i, 6, 10, QLatin1Char('0'));
-            QFile::copy(sampleStream() + "/" + frame, to + "/" + frame);
-        }
-        return to;
+        return copySampleFrames(m_dir.filePath(name), frames);
     }
 
     /// The window shown and active (shortcuts need it) on `stream`.

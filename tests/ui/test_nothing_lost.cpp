@@ -31,12 +31,6 @@ using fieldsight::ui::MainWindow;
 
 namespace {
 
-QByteArray readAll(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
 bool writeAll(const QString& path, const QByteArray& bytes)
 {
     QFile f(path);
@@ -73,14 +67,7 @@ class TestNothingLost : public QObject
     /// A copy of the first frames of the sample stream with its table, without annotations.
     QString copyStream(const QString& name, int frames = 4)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        QFile::copy(sampleStream() + "/default.lut", to + "/default.lut");
-        for (int i = 0; i < frames; ++i) {
-            const QString frame = QStringLiteral("frame_%1.png").arg(i, 6, 10, QLatin1Char('0'));
-            QFile::copy(sampleStream() + "/" + frame, to + "/" + frame);
-        }
-        return to;
+        return copySampleFrames(m_dir.filePath(name), frames);
     }
 
     static bool showOn(MainWindow& w, const QString& stream)
@@ -145,7 +132,7 @@ private slots:
         QVERIFY(a.session().annotations().editFrame(frameName(a, 0), doneFrame(), "A"));
         QVERIFY(a.annotationFiles().save());
         QVERIFY(dialogs.asked.isEmpty()); // nothing changed under A
-        const QByteArray a_saved = readAll(file);
+        const QByteArray a_saved = fileBytes(file);
         QVERIFY(!a_saved.isEmpty());
 
         AnnotationsDocument& doc = b.session().annotations();
@@ -155,19 +142,19 @@ private slots:
         dialogs.choices.push_back(-1);
         QVERIFY(!b.annotationFiles().save());
         QCOMPARE(dialogs.asked.last(), QStringLiteral("Changed on disk"));
-        QCOMPARE(readAll(file), a_saved);
+        QCOMPARE(fileBytes(file), a_saved);
         QVERIFY(doc.modified());
         // The document refuses it too, whoever asks.
         QVERIFY(!doc.save().ok());
-        QCOMPARE(readAll(file), a_saved);
+        QCOMPARE(fileBytes(file), a_saved);
 
         // Save As: both kept.
         const QString other = stream + "/annotations_b.json";
         dialogs.choices.push_back(1);
         dialogs.paths.push_back(other);
         QVERIFY(b.annotationFiles().save());
-        QCOMPARE(readAll(file), a_saved);
-        QVERIFY(readAll(other).contains(QByteArray::fromStdString(frameName(b, 1))));
+        QCOMPARE(fileBytes(file), a_saved);
+        QVERIFY(fileBytes(other).contains(QByteArray::fromStdString(frameName(b, 1))));
         QVERIFY(!doc.modified());
         QVERIFY(dialogs.unanswered.isEmpty());
     }
@@ -188,12 +175,12 @@ private slots:
         for (std::size_t i = 1; i < 4; ++i)
             theirs.frames[frameName(w, i)] = doneFrame();
         QVERIFY(theirs.save(file.toStdString(), doc.kinds()).ok());
-        const QByteArray written = readAll(file);
+        const QByteArray written = fileBytes(file);
 
         dialogs.choices.push_back(0); // Reload
         QTest::keyClick(&w, Qt::Key_S, Qt::ControlModifier | Qt::AltModifier);
         QCOMPARE(dialogs.asked.value(0), QStringLiteral("Changed on disk"));
-        QCOMPARE(readAll(file), written);
+        QCOMPARE(fileBytes(file), written);
         QCOMPARE(doc.annotations().frames.size(), std::size_t(3));
         QVERIFY(!doc.frame(frameName(w, 0)));
         QVERIFY(!doc.modified());
@@ -259,12 +246,12 @@ private slots:
         ColourLut theirs = ColourLut::load(file.toStdString()).value();
         theirs.setCell(7, Colour(5));
         QVERIFY(theirs.save(file.toStdString()).ok());
-        const QByteArray written = readAll(file);
+        const QByteArray written = fileBytes(file);
 
         dialogs.choices.push_back(0); // Reload
         QTest::keyClick(w.get(), Qt::Key_S, Qt::ControlModifier);
         QCOMPARE(dialogs.asked.value(0), QStringLiteral("Changed on disk"));
-        QCOMPARE(readAll(file), written);
+        QCOMPARE(fileBytes(file), written);
         QCOMPARE(lutBytes(*w), written);
         QVERIFY(!lut.modified());
         lut.undoStack().undo();
@@ -275,11 +262,11 @@ private slots:
         // Written again by someone else; the window closes: Save, then Cancel at the question.
         theirs.setCell(9, Colour(6));
         QVERIFY(theirs.save(file.toStdString()).ok());
-        const QByteArray again = readAll(file);
+        const QByteArray again = fileBytes(file);
         dialogs.answers.push_back(QMessageBox::Save);
         dialogs.choices.push_back(-1);
         QVERIFY(!w->close());
-        QCOMPARE(readAll(file), again);
+        QCOMPARE(fileBytes(file), again);
         QVERIFY(lut.modified());
         QVERIFY(dialogs.unanswered.isEmpty());
     }
@@ -299,10 +286,10 @@ private slots:
         ui::Bookmarks theirs;
         theirs.set({2, frameName(w, 2), "theirs"});
         QVERIFY(theirs.save(marks_file.toStdString()).ok());
-        const QByteArray written = readAll(marks_file);
+        const QByteArray written = fileBytes(marks_file);
         QSignalSpy problem(&marks, &ui::BookmarksDocument::problem);
         marks.setBookmark(1, w.session().stream().frameName(1), "mine too");
-        QCOMPARE(readAll(marks_file), written);
+        QCOMPARE(fileBytes(marks_file), written);
         QCOMPARE(problem.size(), 1);
         QVERIFY(marks.marks().find(1)); // kept in memory
         QVERIFY(marks.reload().ok());
@@ -314,9 +301,9 @@ private slots:
         const QString samples_file = samples.path();
         QVERIFY(QFileInfo::exists(samples_file));
         QVERIFY(writeAll(samples_file, R"({"format": "fieldsight-lut-samples/1", "samples": []})"));
-        const QByteArray empty = readAll(samples_file);
+        const QByteArray empty = fileBytes(samples_file);
         samples.addRect(w.session().stream().frameName(1), Colour(3), QRect(1, 1, 4, 4));
-        QCOMPARE(readAll(samples_file), empty);
+        QCOMPARE(fileBytes(samples_file), empty);
         QCOMPARE(samples.samples().samples.size(), std::size_t(2));
         samples.overwrite();
         QCOMPARE(loadLutSamples(samples_file.toStdString()).value().samples.size(), std::size_t(2));
@@ -429,14 +416,14 @@ private slots:
         ScriptedDialogs dialogs;
         dialogs.choices = {-1, 0}; // Cancel, then Reload
         action(w, "pipeline.save_params_to_stream")->trigger();
-        QCOMPARE(readAll(file), theirs);
+        QCOMPARE(fileBytes(file), theirs);
         action(w, "pipeline.save_params_to_stream")->trigger();
         QCOMPARE(settings.paramValue("ball", "min_radius"), 6.0);
         QTest::keySequence(&w, QKeySequence::Undo);
         QCOMPARE(settings.paramValue("ball", "min_radius"), 5.0);
         action(w, "pipeline.save_params_to_stream")->trigger(); // unchanged since the reload
         QVERIFY(dialogs.unanswered.isEmpty());
-        QVERIFY2(readAll(file).contains("\"note\": \"venue B\""), readAll(file).constData());
+        QVERIFY2(fileBytes(file).contains("\"note\": \"venue B\""), fileBytes(file).constData());
         QCOMPARE(ParamSet::load(file.toStdString()).value().values, settings.paramChanges().values);
     }
 

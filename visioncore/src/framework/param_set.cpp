@@ -146,11 +146,9 @@ Status ParamSet::save(const std::string& path) const
     // What this version does not read is written back as it was.
     nlohmann::ordered_json root = nlohmann::ordered_json::parse(toJson());
     if (auto old = readWholeFile(path, std::size_t(1) << 20); old) {
-        const auto before = nlohmann::ordered_json::parse(old.value(), nullptr, false);
-        if (before.is_object() && before.value("format", nlohmann::ordered_json()) == kFormat)
-            for (const auto& [key, value] : before.items())
-                if (key != "format" && key != "stages")
-                    root[key] = value;
+        const auto before = nlohmann::json::parse(old.value(), nullptr, false);
+        if (!formatProblem(before, path, kFormat))
+            addUnknownKeys(unknownKeys(before, {"format", "stages"}), root);
     }
     return writeFileAtomically(path, jsonText(root, 2) + "\n");
 }
