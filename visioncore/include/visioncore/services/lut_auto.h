@@ -1,0 +1,60 @@
+// An automatic first colour table from a stream's frames alone (issue 33): the carpet as the
+// dominant chroma cluster low in the frames, white as bright low-chroma pixels in thin runs on the
+// carpet, then the saturated clusters told apart by hue and by what their pixels form (a round
+// blob on the carpet is the ball, bars standing on the field's edge a goal). Contested cells stay
+// unclassified. Shared by `fieldsight lut auto` and the window's Calibrate menu.
+#pragma once
+
+#include "visioncore/basics/colour.h"
+#include "visioncore/basics/colour_lut.h"
+#include "visioncore/basics/result.h"
+#include "visioncore/io/annotations.h"
+#include "visioncore/io/stream_reader.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+struct AutoLutOptions
+{
+    /// Frames sampled, spread evenly over the stream (0: every frame).
+    std::size_t frames = 40;
+    /// The stream's annotations, when it has them and they are to be used: their done frames'
+    /// regions vote as `lut build --annotations` votes, over the automatic clusters.
+    const Annotations* annotations = nullptr;
+};
+
+/// What one class took.
+struct AutoLutClass
+{
+    Colour colour = Colour::Unclassified;
+    std::size_t cells = 0;    ///< cells of the table
+    double pixel_share = 0;   ///< share of the sampled pixels the table gives this class
+};
+
+struct AutoLut
+{
+    ColourLut lut;
+    /// The classes given cells, in colour id order.
+    std::vector<AutoLutClass> classes;
+    /// The goal colour the stream shows (yellow or blue), when a goal was found.
+    std::optional<Colour> goal_colour;
+    std::size_t frames = 0;   ///< frames sampled
+    bool cancelled = false;   ///< the table is from the frames read before the cancel
+    /// What the run found or could not find, one line each ("no ball-coloured blob found").
+    std::vector<std::string> notes;
+};
+
+/// Called after every frame read (done of total); returning false cancels.
+using AutoLutProgress = std::function<bool(std::size_t done, std::size_t total)>;
+
+/// The automatic table of `reader`'s frames. Deterministic: the same frames and options give the
+/// same table. Errors name the stream and the problem (a frame that cannot be read).
+Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options = {},
+                             const AutoLutProgress& progress = {});
+
+} // namespace fieldsight
