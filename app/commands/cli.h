@@ -68,6 +68,7 @@ inline const OutputFileKind kCocoFile{{}, "categories", false, true};
 inline const OutputFileKind kTableFile{{}, {}, true, false};
 inline const OutputFileKind kAnnotationsFile{"fieldsight-annotations/1", {}, false, false};
 inline const OutputFileKind kSamplesFile{"fieldsight-lut-samples/1", {}, false, false};
+inline const OutputFileKind kParamsFile{"fieldsight-params/1", {}, false, false};
 
 /// Writes `text` to `path` atomically, or to `out` when `path` is "-".
 Status writeOutput(const std::string& path, const std::string& text, std::ostream& out);

@@ -5,17 +5,22 @@
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
+#include "visioncore/services/lut_auto.h"
 #include "visioncore/services/lut_building.h"
 #include "visioncore/services/lut_editing.h"
 
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <iostream>
+
+#include <unistd.h>
 
 namespace fieldsight::cli {
 namespace {
 
-constexpr const char* kLutUsage = "try 'lut convert IN OUT' or 'lut build STREAM --out FILE'";
+constexpr const char* kLutUsage =
+    "try 'lut convert IN OUT', 'lut build STREAM --out FILE' or 'lut auto STREAM --out FILE'";
 
 int convertCommand(const QStringList& args, const Context& ctx)
 {
@@ -187,6 +192,105 @@ int buildCommand(const QStringList& args, const Context& ctx)
     }
 }
 
+int autoCommand(const QStringList& args, const Context& ctx)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "Makes a first colour table from the stream's frames alone: the carpet as the dominant "
+        "colour low in the frames, white in thin runs bordered by carpet, a round blob on the "
+        "carpet as the ball (orange), bars standing at the field's edge as the goal (yellow or "
+        "blue); colours two classes contest stay unclassified. Prints per class the cells taken "
+        "and the share of the sampled pixels, and the goal colour the stream shows.");
+    parser.addPositionalArgument("STREAM", "Image folder or .strm file.");
+    parser.addOption({"out", "The .lut file to write (required).", "FILE"});
+    parser.addOption(
+        {"frames", "Frames sampled, spread over the stream (default 40; 0: every frame).", "N"});
+    parser.addOption({"params-out",
+                      "Also write the goal colour found as a fieldsight-params/1 file (for "
+                      "--params, or the stream's params.json).",
+                      "FILE"});
+    parser.addOption(orientationOption());
+    if (auto done = parseCommand(parser, "lut auto", args, 2, 2, ctx))
+        return *done;
+    try {
+        const auto started = std::chrono::steady_clock::now();
+        const std::string stream = toLocalPath(parser.positionalArguments()[1]);
+        if (!parser.isSet("out"))
+            return badInput(ctx, "lut auto: --out FILE is required");
+        const std::string out = toLocalPath(parser.value("out"));
+        const std::string params_out = toLocalPath(parser.value("params-out"));
+        if (Status s = checkOutputFile("lut auto --out", out, {stream}, kTableFile); !s)
+            return badInput(ctx, s.error().message);
+        if (Status s =
+                checkOutputFile("lut auto --params-out", params_out, {stream, out}, kParamsFile);
+            !s)
+            return badInput(ctx, s.error().message);
+        QString error;
+        const auto frames = intOption(parser, "frames", 40, 0, error);
+        if (!frames)
+            return badInput(ctx, "lut auto: " + error);
+        const auto stream_options = streamOptionsFrom(parser);
+        if (!stream_options)
+            return badInput(ctx, "lut auto: " + stream_options.error().message);
+        auto reader = openStream(stream, stream_options.value());
+        if (!reader)
+            return badInput(ctx, reader.error().message);
+        printWarnings(ctx.err, reader.value()->info());
+
+        AutoLutOptions options;
+        options.frames = std::size_t(*frames);
+        // Progress on a terminal only, on one line.
+        const bool terminal = &ctx.err == &std::cerr && isatty(STDERR_FILENO);
+        auto made = buildAutoLut(*reader.value(), options, [&](std::size_t done, std::size_t n) {
+            if (terminal)
+                ctx.err << "\rlut auto: frame " << done << " of " << n << std::flush;
+            return true;
+        });
+        if (terminal)
+            ctx.err << "\r\033[K" << std::flush;
+        if (!made)
+            return badInput(ctx, made.error().message);
+        const AutoLut& result = made.value();
+        if (Status s = result.lut.save(out); !s) {
+            printError(ctx.err, s.error().message);
+            return kExitFailure;
+        }
+        const std::optional<GoalColourParam> goal = goalColourParam(ctx.pipeline);
+        if (!params_out.empty() && goal && result.goal_colour) {
+            ParamSet params;
+            params.set(goal->stage, goal->name, double(int(*result.goal_colour)));
+            if (Status s = params.save(params_out); !s) {
+                printError(ctx.err, s.error().message);
+                return kExitFailure;
+            }
+        }
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        char line[160];
+        std::snprintf(line, sizeof line, "lut auto: %zu frames sampled -> %s (%.2f s)\n",
+                      result.frames, out.c_str(), seconds);
+        ctx.out << line;
+        for (const AutoLutClass& c : result.classes) {
+            std::snprintf(line, sizeof line, "  %-14s %8zu cells %6.1f %% of the sampled pixels\n",
+                          std::string(colourName(c.colour)).c_str(), c.cells, 100 * c.pixel_share);
+            ctx.out << line;
+        }
+        if (result.goal_colour) {
+            ctx.out << "  goal colour: " << colourName(*result.goal_colour);
+            if (goal)
+                ctx.out << " (--set " << goal->stage << "." << goal->name << "="
+                        << int(*result.goal_colour)
+                        << (params_out.empty() ? "" : ", written to " + params_out) << ")";
+            ctx.out << "\n";
+        }
+        for (const std::string& note : result.notes)
+            ctx.out << "  note: " << note << "\n";
+        return kExitOk;
+    } catch (const std::exception& e) {
+        return failure(ctx, "lut auto", e);
+    }
+}
+
 } // namespace
 
 int lutCommand(const QStringList& args, const Context& ctx)
@@ -196,11 +300,13 @@ int lutCommand(const QStringList& args, const Context& ctx)
         return convertCommand(args, ctx);
     if (command == "build")
         return buildCommand(args, ctx);
+    if (command == "auto")
+        return autoCommand(args, ctx);
     if (command == "--help" || command == "-h" || command == "help") {
         ctx.out << "usage:\n"
                 << synopsisLines("lut")
-                << "'fieldsight lut convert --help' and 'fieldsight lut build --help' describe "
-                   "them.\n";
+                << "'fieldsight lut convert --help', 'fieldsight lut build --help' and "
+                   "'fieldsight lut auto --help' describe them.\n";
         return kExitOk;
     }
     if (command.isEmpty()) {

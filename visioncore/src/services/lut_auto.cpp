@@ -1,8 +1,144 @@
-// The automatic first table (lut_auto.h). Placeholder while the method is written: it reads the
-// frames and leaves the table empty, so callers can be built against the interface.
+// The automatic first table (lut_auto.h): evidence from the frames (lut_auto_evidence.h), one
+// Gaussian per class in Y, Cb, Cr, and each cell given to the class its pixels voted for, or
+// when none did, to the one class whose Gaussian reaches it; contested cells stay unclassified.
 #include "visioncore/services/lut_auto.h"
 
+#include "lut_auto_evidence.h"
+
+#include "visioncore/services/lut_building.h"
+
+#include <Eigen/LU>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
 namespace fieldsight {
+namespace {
+
+using autolut::Evidence;
+using autolut::EvidenceSet;
+using autolut::Gaussian;
+using autolut::kEvidenceCount;
+
+/// Frames wider than this are looked at every n-th pixel (nearest, so colours are not blended):
+/// the method's sizes are for a 320-wide frame and scale with it.
+constexpr int kMaxWidth = 480;
+
+cv::Mat workingImage(const cv::Mat& ycbcr)
+{
+    const int step = (ycbcr.cols + kMaxWidth - 1) / kMaxWidth;
+    if (step <= 1)
+        return ycbcr.clone();
+    cv::Mat small;
+    cv::resize(ycbcr, small, cv::Size(ycbcr.cols / step, ycbcr.rows / step), 0, 0,
+               cv::INTER_NEAREST);
+    return small;
+}
+
+/// The first row of the carpet search: below the kinematic horizon, and at least the lower half.
+int carpetTop(const Frame& frame, int rows, double shrink)
+{
+    int top = rows / 2;
+    if (frame.horizon) {
+        const double lowest = std::max(frame.horizon->y_left, frame.horizon->y_right) / shrink;
+        if (std::isfinite(lowest))
+            top = std::clamp(int(lowest), top, rows - rows / 8);
+    }
+    return top;
+}
+
+struct ClassModel
+{
+    Evidence evidence = Evidence::Green;
+    Gaussian gaussian;
+    double limit = 3.0; ///< Mahalanobis distance the class reaches
+    int lo[3] = {0, 0, 0};
+    int hi[3] = {127, 127, 127}; ///< cells, the box around limit
+};
+
+ClassModel modelOf(const EvidenceSet& evidence, Evidence e, const Eigen::Vector3d& floor,
+                   double limit)
+{
+    ClassModel m;
+    m.evidence = e;
+    m.limit = limit;
+    m.gaussian = evidence.moments[std::size_t(e)].gaussian(floor);
+    for (int c = 0; c < 3; ++c) {
+        const double reach = limit * std::sqrt(m.gaussian.covariance(c, c));
+        m.lo[c] = std::clamp(int((m.gaussian.mean[c] - reach) / 2), 0, 127);
+        m.hi[c] = std::clamp(int((m.gaussian.mean[c] + reach) / 2), 0, 127);
+    }
+    return m;
+}
+
+/// Each cell: the class most of its pixels voted for, unless another class or the background
+/// has half as many; a cell without votes goes to the one class whose Gaussian reaches it
+/// clearly nearer than any other's.
+ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& models)
+{
+    ColourLut lut;
+    std::array<bool, kEvidenceCount> modelled{};
+    for (const ClassModel& m : models)
+        modelled[std::size_t(m.evidence)] = true;
+    for (int y = 0; y < 128; ++y) {
+        for (int cb = 0; cb < 128; ++cb) {
+            for (int cr = 0; cr < 128; ++cr) {
+                const std::uint32_t cell = std::uint32_t((y << 14) | (cb << 7) | cr);
+                const auto votes = evidence.cells.find(cell);
+                if (votes != evidence.cells.end()) {
+                    const auto& n = votes->second;
+                    std::size_t best = kEvidenceCount;
+                    std::uint32_t first = 0;
+                    std::uint32_t second = 0;
+                    for (std::size_t e = 0; e < kEvidenceCount; ++e) {
+                        if (e == std::size_t(Evidence::Background) || !modelled[e])
+                            continue;
+                        if (n[e] > first) {
+                            second = first;
+                            first = n[e];
+                            best = e;
+                        } else if (n[e] > second) {
+                            second = n[e];
+                        }
+                    }
+                    const std::uint32_t background = n[std::size_t(Evidence::Background)];
+                    if (first >= 2) {
+                        if (2 * second < first && 2 * background < first)
+                            lut.setCell(cell, autolut::evidenceColour(Evidence(best)));
+                        continue;
+                    }
+                    if (background >= 2)
+                        continue;
+                }
+                double nearest = 1e30;
+                double runner_up = 1e30;
+                const ClassModel* winner = nullptr;
+                for (const ClassModel& m : models) {
+                    if (y < m.lo[0] || y > m.hi[0] || cb < m.lo[1] || cb > m.hi[1] ||
+                        cr < m.lo[2] || cr > m.hi[2])
+                        continue;
+                    const double d2 = m.gaussian.distance2(2 * y + 1, 2 * cb + 1, 2 * cr + 1);
+                    if (d2 > m.limit * m.limit)
+                        continue;
+                    if (d2 < nearest) {
+                        runner_up = nearest;
+                        nearest = d2;
+                        winner = &m;
+                    } else if (d2 < runner_up) {
+                        runner_up = d2;
+                    }
+                }
+                // Contested: another class's Gaussian reaches the cell almost as near.
+                if (winner && runner_up > 1.5 * 1.5 * nearest)
+                    lut.setCell(cell, autolut::evidenceColour(winner->evidence));
+            }
+        }
+    }
+    return lut;
+}
+
+} // namespace
 
 Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options,
                              const AutoLutProgress& progress)
@@ -10,18 +146,107 @@ Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options
     AutoLut out;
     const std::size_t total = reader.info().frame_count;
     const std::size_t n = options.frames == 0 ? total : std::min(total, options.frames);
+    if (n == 0)
+        return Error{reader.info().path + ": no frames to make a table from"};
+
+    // Frames spread evenly over the stream, each index once.
+    std::vector<cv::Mat> frames;
+    std::vector<int> tops;
     for (std::size_t i = 0; i < n; ++i) {
-        auto frame = reader.read(i * total / std::max<std::size_t>(n, 1));
+        const std::size_t index = n == total ? i : (i * total + total / (2 * n)) / n;
+        auto frame = reader.read(std::min(index, total - 1));
         if (!frame)
             return frame.error();
+        cv::Mat image = workingImage(frame.value().ycbcr);
+        const double shrink = double(frame.value().ycbcr.cols) / image.cols;
+        tops.push_back(carpetTop(frame.value(), image.rows, shrink));
+        frames.push_back(std::move(image));
         ++out.frames;
         if (progress && !progress(i + 1, n)) {
             out.cancelled = true;
             break;
         }
     }
-    out.notes.push_back("the automatic table is not written yet");
+
+    const std::optional<Gaussian> carpet = autolut::findCarpet(frames, tops);
+    if (!carpet) {
+        out.notes.push_back(
+            "no carpet found: no chroma cluster fills the lower part of the frames");
+        return out;
+    }
+    EvidenceSet evidence;
+    for (const cv::Mat& image : frames)
+        autolut::collectEvidence(image, *carpet, evidence);
+
+    std::vector<ClassModel> models;
+    const auto enough = [&](Evidence e) { return evidence.moments[std::size_t(e)].n >= 30; };
+    models.push_back(modelOf(evidence, Evidence::Green, {9, 4, 4}, 3.0));
+    if (enough(Evidence::White))
+        models.push_back(modelOf(evidence, Evidence::White, {36, 9, 9}, 3.0));
+    else
+        out.notes.push_back("no field lines found: no white");
+    if (enough(Evidence::Orange) && evidence.ball_blobs > 0)
+        models.push_back(modelOf(evidence, Evidence::Orange, {25, 9, 9}, 3.0));
+    else
+        out.notes.push_back("no round ball-coloured blob on the carpet: no orange");
+    const std::size_t bars = std::max(evidence.yellow_bars, evidence.blue_bars);
+    for (const Evidence e : {Evidence::Yellow, Evidence::Blue}) {
+        const std::size_t mine = e == Evidence::Yellow ? evidence.yellow_bars : evidence.blue_bars;
+        // A goal colour seen far less than the other is noise (a team band, a poster).
+        if (enough(e) && mine > 0 && 5 * mine >= bars)
+            models.push_back(modelOf(evidence, e, {25, 9, 9}, 3.0));
+    }
+    if (bars == 0)
+        out.notes.push_back("no goal-coloured bar standing at the field's edge: no goal colour");
+    else
+        out.goal_colour = evidence.blue_bars > evidence.yellow_bars ? Colour::Blue : Colour::Yellow;
+
+    // Evidence of classes left out must not hold cells back from the others.
+    for (auto& [cell, counts] : evidence.cells) {
+        for (std::size_t e = 0; e < kEvidenceCount; ++e) {
+            if (e == std::size_t(Evidence::Background))
+                continue;
+            const bool kept = std::any_of(models.begin(), models.end(), [e](const ClassModel& m) {
+                return std::size_t(m.evidence) == e;
+            });
+            if (!kept)
+                counts[e] = 0;
+        }
+    }
+    out.lut = fillTable(evidence, models);
+
+    // What the table gives the sampled pixels.
+    std::array<std::size_t, kColourCount> pixels{};
+    std::size_t sampled = 0;
+    cv::Mat classes;
+    for (const cv::Mat& image : frames) {
+        out.lut.classifyImage(image, classes);
+        for (int y = 0; y < classes.rows; ++y) {
+            const std::uint8_t* row = classes.ptr<std::uint8_t>(y);
+            for (int x = 0; x < classes.cols; ++x)
+                ++pixels[row[x]];
+        }
+        sampled += std::size_t(classes.total());
+    }
+    std::array<std::size_t, kColourCount> cells{};
+    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
+        ++cells[out.lut.data()[i]];
+    for (int c = 1; c < kColourCount; ++c) {
+        if (cells[std::size_t(c)] == 0)
+            continue;
+        out.classes.push_back({Colour(c), cells[std::size_t(c)],
+                               sampled ? double(pixels[std::size_t(c)]) / double(sampled) : 0});
+    }
     return out;
+}
+
+std::optional<GoalColourParam> goalColourParam(const Pipeline& pipeline)
+{
+    for (const StageDescriptor& stage : pipeline.descriptors())
+        for (const ParamInfo& param : stage.params)
+            if (param.name == "goal_colour" && param.kind == ParamKind::Choice)
+                return GoalColourParam{stage.info.id, param.name, param.default_value};
+    return std::nullopt;
 }
 
 } // namespace fieldsight

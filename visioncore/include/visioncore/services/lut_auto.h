@@ -8,6 +8,7 @@
 #include "visioncore/basics/colour.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/basics/result.h"
+#include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/stream_reader.h"
 
@@ -32,8 +33,8 @@ struct AutoLutOptions
 struct AutoLutClass
 {
     Colour colour = Colour::Unclassified;
-    std::size_t cells = 0;    ///< cells of the table
-    double pixel_share = 0;   ///< share of the sampled pixels the table gives this class
+    std::size_t cells = 0;  ///< cells of the table
+    double pixel_share = 0; ///< share of the sampled pixels the table gives this class
 };
 
 struct AutoLut
@@ -43,8 +44,8 @@ struct AutoLut
     std::vector<AutoLutClass> classes;
     /// The goal colour the stream shows (yellow or blue), when a goal was found.
     std::optional<Colour> goal_colour;
-    std::size_t frames = 0;   ///< frames sampled
-    bool cancelled = false;   ///< the table is from the frames read before the cancel
+    std::size_t frames = 0; ///< frames sampled
+    bool cancelled = false; ///< the table is from the frames read before the cancel
     /// What the run found or could not find, one line each ("no ball-coloured blob found").
     std::vector<std::string> notes;
 };
@@ -56,5 +57,16 @@ using AutoLutProgress = std::function<bool(std::size_t done, std::size_t total)>
 /// same table. Errors name the stream and the problem (a frame that cannot be read).
 Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options = {},
                              const AutoLutProgress& progress = {});
+
+/// The pipeline's goal-colour parameter: a choice parameter named "goal_colour" of whichever stage
+/// declares one (the transition filter's today), found through the registry so neither the
+/// command nor the window names a stage. Nothing when no stage declares one.
+struct GoalColourParam
+{
+    std::string stage;
+    std::string name;
+    double default_value = 0;
+};
+std::optional<GoalColourParam> goalColourParam(const Pipeline& pipeline);
 
 } // namespace fieldsight

@@ -1,0 +1,396 @@
+// The automatic table's evidence (lut_auto_evidence.h).
+#include "lut_auto_evidence.h"
+
+#include "visioncore/basics/colour_lut.h"
+
+#include <Eigen/LU>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fieldsight::autolut {
+
+Gaussian Moments::gaussian(const Eigen::Vector3d& floor) const
+{
+    Gaussian g;
+    if (n < 3)
+        return g;
+    g.mean = sum / n;
+    g.covariance = outer / n - g.mean * g.mean.transpose();
+    g.covariance.diagonal() += floor;
+    g.inverse = g.covariance.inverse();
+    g.valid = g.inverse.allFinite();
+    return g;
+}
+
+Colour evidenceColour(Evidence e)
+{
+    switch (e) {
+    case Evidence::Green:
+        return Colour::Green;
+    case Evidence::White:
+        return Colour::White;
+    case Evidence::Orange:
+        return Colour::Orange;
+    case Evidence::Yellow:
+        return Colour::Yellow;
+    case Evidence::Blue:
+        return Colour::Blue;
+    default:
+        return Colour::Unclassified;
+    }
+}
+
+void EvidenceSet::add(Evidence e, const std::uint8_t* px)
+{
+    auto& counts = cells[std::uint32_t(ColourLut::index(px[0], px[1], px[2]))];
+    ++counts[std::size_t(e)];
+    moments[std::size_t(e)].add(px);
+}
+
+namespace {
+
+constexpr double kCarpetLimit = 3.0; ///< Mahalanobis distance of a carpet pixel
+
+bool usableLevel(const std::uint8_t* px)
+{
+    return px[0] >= 24 && px[0] <= 240;
+}
+
+} // namespace
+
+std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames, const std::vector<int>& tops)
+{
+    // The chroma histogram of the lower parts, at the table's resolution.
+    cv::Mat hist(128, 128, CV_32F, cv::Scalar(0));
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const cv::Mat& img = frames[f];
+        for (int y = std::max(0, tops[f]); y < img.rows; y += 2) {
+            const std::uint8_t* row = img.ptr<std::uint8_t>(y);
+            for (int x = 0; x < img.cols; x += 2) {
+                const std::uint8_t* px = row + 3 * x;
+                if (usableLevel(px))
+                    hist.at<float>(px[1] >> 1, px[2] >> 1) += 1;
+            }
+        }
+    }
+    cv::GaussianBlur(hist, hist, cv::Size(5, 5), 1.5);
+    cv::Point peak;
+    double most = 0;
+    cv::minMaxLoc(hist, nullptr, &most, nullptr, &peak);
+    if (most <= 0)
+        return std::nullopt;
+    const double peak_cb = peak.y * 2 + 1;
+    const double peak_cr = peak.x * 2 + 1;
+
+    // Grow a Gaussian from the pixels near the peak, then from those within the limit.
+    const Eigen::Vector3d floor(9, 4, 4);
+    Gaussian g;
+    for (int round = 0; round < 4; ++round) {
+        Moments m;
+        for (std::size_t f = 0; f < frames.size(); ++f) {
+            const cv::Mat& img = frames[f];
+            for (int y = std::max(0, tops[f]); y < img.rows; y += 2) {
+                const std::uint8_t* row = img.ptr<std::uint8_t>(y);
+                for (int x = 0; x < img.cols; x += 2) {
+                    const std::uint8_t* px = row + 3 * x;
+                    if (!usableLevel(px))
+                        continue;
+                    const bool near =
+                        round == 0
+                            ? std::abs(px[1] - peak_cb) <= 8 && std::abs(px[2] - peak_cr) <= 8
+                            : g.distance2(px[0], px[1], px[2]) <= kCarpetLimit * kCarpetLimit;
+                    if (near)
+                        m.add(px);
+                }
+            }
+        }
+        if (m.n < 50)
+            return std::nullopt;
+        g = m.gaussian(floor);
+        // A sample cut at the limit underestimates the spread (chi-square, 3 degrees: about 9%).
+        g.covariance *= 1.1;
+        g.inverse = g.covariance.inverse();
+    }
+    return g;
+}
+
+namespace {
+
+/// The field's far edge per column: the upper convex hull of each column's first row from which
+/// carpet fills at least half of a short window below; rows below it are the field.
+std::vector<double> fieldEdge(const cv::Mat& green, double scale)
+{
+    const int w = green.cols;
+    const int h = green.rows;
+    const int window = std::max(4, int(std::lround(8 * scale)));
+    std::vector<cv::Point2d> tops;
+    std::vector<int> count(std::size_t(h) + 1);
+    for (int x = 0; x < w; ++x) {
+        count[std::size_t(h)] = 0;
+        for (int y = h - 1; y >= 0; --y)
+            count[std::size_t(y)] = count[std::size_t(y) + 1] + (green.at<std::uint8_t>(y, x) != 0);
+        int top = -1;
+        for (int y = 0; y + window <= h; ++y) {
+            if (green.at<std::uint8_t>(y, x) &&
+                2 * (count[std::size_t(y)] - count[std::size_t(y + window)]) >= window) {
+                top = y;
+                break;
+            }
+        }
+        if (top >= 0)
+            tops.emplace_back(x, -double(top)); // y up, for the upper hull
+    }
+    std::vector<double> edge(static_cast<std::size_t>(w), static_cast<double>(h));
+    if (tops.size() < std::size_t(w / 5))
+        return edge; // no field in this frame
+    std::vector<cv::Point2d> hull;
+    for (const cv::Point2d& p : tops) {
+        while (hull.size() >= 2) {
+            const cv::Point2d& a = hull[hull.size() - 2];
+            const cv::Point2d& b = hull.back();
+            if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) >= 0)
+                hull.pop_back();
+            else
+                break;
+        }
+        hull.push_back(p);
+    }
+    for (int x = 0; x < w; ++x) {
+        if (x <= hull.front().x) {
+            edge[std::size_t(x)] = -hull.front().y;
+            continue;
+        }
+        if (x >= hull.back().x) {
+            edge[std::size_t(x)] = -hull.back().y;
+            continue;
+        }
+        const auto next = std::upper_bound(hull.begin(), hull.end(), double(x),
+                                           [](double v, const cv::Point2d& p) { return v < p.x; });
+        const cv::Point2d& b = *next;
+        const cv::Point2d& a = *(next - 1);
+        edge[std::size_t(x)] = -(a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x));
+    }
+    return edge;
+}
+
+bool anyGreen(const cv::Mat& green, int y, int x0, int x1)
+{
+    x0 = std::max(0, x0);
+    x1 = std::min(green.cols - 1, x1);
+    const std::uint8_t* row = green.ptr<std::uint8_t>(y);
+    for (int x = x0; x <= x1; ++x)
+        if (row[x])
+            return true;
+    return false;
+}
+
+bool anyGreenColumn(const cv::Mat& green, int x, int y0, int y1)
+{
+    y0 = std::max(0, y0);
+    y1 = std::min(green.rows - 1, y1);
+    for (int y = y0; y <= y1; ++y)
+        if (green.at<std::uint8_t>(y, x))
+            return true;
+    return false;
+}
+
+/// Marks in `white` the candidates that lie in thin runs with carpet at both ends, across rows
+/// and down columns. The widest run allowed grows towards the bottom of the frame, where lines
+/// are nearer.
+void thinRuns(const cv::Mat& candidate, const cv::Mat& green, const std::vector<double>& edge,
+              double scale, cv::Mat& white)
+{
+    const int w = candidate.cols;
+    const int h = candidate.rows;
+    const int reach = std::max(2, int(std::lround(3 * scale)));
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* row = candidate.ptr<std::uint8_t>(y);
+        const double longest = scale * (4 + 26.0 * y / h);
+        for (int x = 0; x < w;) {
+            if (!row[x] || y < edge[std::size_t(x)] - 1) {
+                ++x;
+                continue;
+            }
+            int end = x;
+            while (end + 1 < w && row[end + 1])
+                ++end;
+            if (end - x + 1 <= longest && anyGreen(green, y, x - reach, x - 1) &&
+                anyGreen(green, y, end + 1, end + reach))
+                for (int i = x; i <= end; ++i)
+                    white.at<std::uint8_t>(y, i) = 1;
+            x = end + 1;
+        }
+    }
+    for (int x = 0; x < w; ++x) {
+        for (int y = std::max(0, int(edge[std::size_t(x)]) - 1); y < h;) {
+            if (!candidate.at<std::uint8_t>(y, x)) {
+                ++y;
+                continue;
+            }
+            int end = y;
+            while (end + 1 < h && candidate.at<std::uint8_t>(end + 1, x))
+                ++end;
+            const double longest = scale * (3 + 20.0 * end / h);
+            if (end - y + 1 <= longest && anyGreenColumn(green, x, y - reach, y - 1) &&
+                anyGreenColumn(green, x, end + 1, end + reach))
+                for (int i = y; i <= end; ++i)
+                    white.at<std::uint8_t>(i, x) = 1;
+            y = end + 1;
+        }
+    }
+}
+
+enum class Hue { None, Warm, Yellow, Blue };
+
+/// The hue family of a saturated pixel: warm (orange, red, pink), yellow, or blue.
+Hue hueOf(const std::uint8_t* px)
+{
+    const double cb = px[1] - 128.0;
+    const double cr = px[2] - 128.0;
+    if (px[0] < 24 || cb * cb + cr * cr < 14.0 * 14.0)
+        return Hue::None;
+    double a = std::atan2(cr, cb) * 180 / M_PI; // 0: blue, 90: red, 180: yellow, -120: green
+    if (a < -150)
+        a += 360;
+    if (a >= 60 && a < 150)
+        return Hue::Warm;
+    if (a >= 150 && a <= 208)
+        return Hue::Yellow;
+    if (a >= -80 && a < 40)
+        return Hue::Blue;
+    return Hue::None;
+}
+
+struct Blob
+{
+    cv::Rect box;
+    int area = 0;
+};
+
+/// Adds a component's pixels as `e`: its inner pixels (all four neighbours in it) when it is
+/// large enough to have them, so the rims blended with what surrounds it do not count.
+void addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const Blob& blob,
+                  Evidence e, double scale, EvidenceSet& out)
+{
+    const bool inner_only = blob.area >= 40 * scale * scale;
+    const cv::Rect& r = blob.box;
+    for (int y = r.y; y < r.y + r.height; ++y) {
+        for (int x = r.x; x < r.x + r.width; ++x) {
+            if (labels.at<int>(y, x) != label)
+                continue;
+            if (inner_only &&
+                (x == 0 || y == 0 || x + 1 >= labels.cols || y + 1 >= labels.rows ||
+                 labels.at<int>(y - 1, x) != label || labels.at<int>(y + 1, x) != label ||
+                 labels.at<int>(y, x - 1) != label || labels.at<int>(y, x + 1) != label))
+                continue;
+            out.add(e, ycbcr.ptr<std::uint8_t>(y) + 3 * x);
+        }
+    }
+}
+
+/// Sorts the saturated shapes of one hue family: round blobs on the field (warm: the ball), bars
+/// standing at the field's edge (yellow, blue: a goal), the rest touching the field background.
+void sortShapes(const cv::Mat& ycbcr, const cv::Mat& mask, Hue hue, const std::vector<double>& edge,
+                double scale, EvidenceSet& out)
+{
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+    const int w = mask.cols;
+    const int h = mask.rows;
+    for (int i = 1; i < n; ++i) {
+        Blob b;
+        b.box = cv::Rect(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                         stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
+        b.area = stats.at<int>(i, cv::CC_STAT_AREA);
+        if (b.area < 6 * scale * scale)
+            continue;
+        const int bottom = b.box.y + b.box.height - 1;
+        const double edge_at = edge[std::size_t(b.box.x + b.box.width / 2)];
+        if (edge_at >= h)
+            continue; // no field in this column
+        const bool on_field = bottom >= edge_at + 1;
+        const bool at_border =
+            b.box.x == 0 || b.box.y == 0 || b.box.x + b.box.width == w || bottom == h - 1;
+        const double aspect = double(b.box.width) / b.box.height;
+        const double fill = double(b.area) / (double(b.box.width) * b.box.height);
+        if (hue == Hue::Warm) {
+            const bool round = (at_border || (aspect >= 0.5 && aspect <= 2.0)) && fill >= 0.5 &&
+                               b.box.width >= 3 * scale && b.box.height >= 3 * scale &&
+                               b.box.width <= 0.6 * w;
+            if (round && on_field) {
+                addComponent(ycbcr, labels, i, b, Evidence::Orange, scale, out);
+                out.ball_blobs += 1;
+            } else if (bottom >= edge_at - 2) {
+                addComponent(ycbcr, labels, i, b, Evidence::Background, scale, out);
+            }
+            continue;
+        }
+        const double thickness = double(b.area) / b.box.height;
+        const bool bar = b.box.height >= 10 * scale && b.box.height >= 2.5 * thickness;
+        const bool stands = bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
+        if (bar && stands) {
+            const Evidence e = hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue;
+            addComponent(ycbcr, labels, i, b, e, scale, out);
+            (hue == Hue::Yellow ? out.yellow_bars : out.blue_bars) += std::size_t(b.area);
+        } else if (on_field) {
+            addComponent(ycbcr, labels, i, b, Evidence::Background, scale, out);
+        }
+    }
+}
+
+} // namespace
+
+void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& out)
+{
+    const int w = ycbcr.cols;
+    const int h = ycbcr.rows;
+    const double scale = w / 320.0;
+    cv::Mat green(h, w, CV_8U, cv::Scalar(0));
+    cv::Mat candidate(h, w, CV_8U, cv::Scalar(0));
+    const double bright = carpet.mean[0] + std::max(30.0, 3 * std::sqrt(carpet.covariance(0, 0)));
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* row = ycbcr.ptr<std::uint8_t>(y);
+        for (int x = 0; x < w; ++x) {
+            const std::uint8_t* px = row + 3 * x;
+            if (carpet.distance2(px[0], px[1], px[2]) <= kCarpetLimit * kCarpetLimit)
+                green.at<std::uint8_t>(y, x) = 1;
+            else if (px[0] >= bright && std::abs(px[1] - 128) <= 28 && std::abs(px[2] - 128) <= 28)
+                candidate.at<std::uint8_t>(y, x) = 1;
+        }
+    }
+    const std::vector<double> edge = fieldEdge(green, scale);
+    if (edge.front() >= h && edge.back() >= h &&
+        std::all_of(edge.begin(), edge.end(), [h](double e) { return e >= h; }))
+        return; // no field seen
+
+    cv::Mat white(h, w, CV_8U, cv::Scalar(0));
+    thinRuns(candidate, green, edge, scale, white);
+
+    std::array<cv::Mat, 4> hue_masks;
+    for (cv::Mat& m : hue_masks)
+        m = cv::Mat(h, w, CV_8U, cv::Scalar(0));
+    for (int y = 0; y < h; ++y) {
+        const std::uint8_t* row = ycbcr.ptr<std::uint8_t>(y);
+        for (int x = 0; x < w; ++x) {
+            const std::uint8_t* px = row + 3 * x;
+            if (green.at<std::uint8_t>(y, x)) {
+                if (y >= edge[std::size_t(x)] && ((x ^ y) & 1) == 0)
+                    out.add(Evidence::Green, px);
+                continue;
+            }
+            if (white.at<std::uint8_t>(y, x)) {
+                out.add(Evidence::White, px);
+                continue;
+            }
+            const Hue hue = hueOf(px);
+            if (hue != Hue::None)
+                hue_masks[std::size_t(hue)].at<std::uint8_t>(y, x) = 1;
+        }
+    }
+    for (const Hue hue : {Hue::Warm, Hue::Yellow, Hue::Blue})
+        sortShapes(ycbcr, hue_masks[std::size_t(hue)], hue, edge, scale, out);
+}
+
+} // namespace fieldsight::autolut

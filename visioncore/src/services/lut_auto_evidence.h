@@ -1,0 +1,83 @@
+// The automatic table's evidence (lut_auto.h): which pixels of a frame show which class, found
+// from the frames alone. The carpet is modelled first over all frames; then each frame's pixels
+// are labelled by where they are and what they form.
+#pragma once
+
+#include "visioncore/basics/colour.h"
+
+#include <Eigen/Core>
+#include <opencv2/core/mat.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace fieldsight::autolut {
+
+/// A Gaussian in Y, Cb, Cr.
+struct Gaussian
+{
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d inverse = Eigen::Matrix3d::Identity();
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
+    bool valid = false;
+
+    double distance2(double y, double cb, double cr) const
+    {
+        const Eigen::Vector3d d(y - mean[0], cb - mean[1], cr - mean[2]);
+        return d.dot(inverse * d);
+    }
+};
+
+/// Sums for a mean and covariance.
+struct Moments
+{
+    double n = 0;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+
+    void add(const std::uint8_t* px)
+    {
+        const Eigen::Vector3d p(px[0], px[1], px[2]);
+        n += 1;
+        sum += p;
+        outer += p * p.transpose();
+    }
+    /// The Gaussian of the samples with `floor` (units², per channel Y, Cb, Cr) added to the
+    /// covariance's diagonal, so JPEG noise and a narrow sample do not make it a needle.
+    Gaussian gaussian(const Eigen::Vector3d& floor) const;
+};
+
+/// The classes the evidence names; background is what must stay unclassified.
+enum class Evidence : std::uint8_t { Green, White, Orange, Yellow, Blue, Background, Count };
+inline constexpr std::size_t kEvidenceCount = std::size_t(Evidence::Count);
+Colour evidenceColour(Evidence e);
+
+/// Pixels per class per table cell, and each class's moments.
+struct EvidenceSet
+{
+    std::unordered_map<std::uint32_t, std::array<std::uint32_t, kEvidenceCount>> cells;
+    std::array<Moments, kEvidenceCount> moments;
+    /// Pixels of goal-like bars per goal colour and of ball-like blobs, for the report.
+    std::size_t ball_blobs = 0;
+    std::size_t yellow_bars = 0;
+    std::size_t blue_bars = 0;
+
+    void add(Evidence e, const std::uint8_t* px);
+};
+
+/// The carpet: the dominant chroma cluster in the lower part of the frames (below the kinematic
+/// horizon where a frame has one). `frames` are CV_8UC3 Y, Cb, Cr; `tops` the first row of each
+/// frame to look at.
+std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames,
+                                   const std::vector<int>& tops);
+
+/// Labels one frame's pixels into `out`, given the carpet: green on the field, white in thin runs
+/// bordered by carpet, ball-coloured blobs that are round and on the field, goal-coloured bars
+/// that stand at the field's edge; other saturated shapes touching the field are background.
+void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& out);
+
+} // namespace fieldsight::autolut
