@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace fieldsight {
 namespace {
@@ -24,6 +26,8 @@ using autolut::kEvidenceCount;
 /// Frames wider than this are looked at every n-th pixel (nearest, so colours are not blended):
 /// the method's sizes are for a 320-wide frame and scale with it.
 constexpr int kMaxWidth = 480;
+/// Mahalanobis distance (in the stream's carpet) within which a frame's own carpet is taken.
+constexpr double kOwnCarpetReach = 8.0;
 
 cv::Mat workingImage(const cv::Mat& ycbcr)
 {
@@ -48,6 +52,22 @@ int carpetTop(const Frame& frame, int rows, double shrink)
     return top;
 }
 
+/// The share of a frame's lower part that `carpet` takes.
+double carpetShare(const cv::Mat& image, int top, const Gaussian& carpet)
+{
+    std::size_t all = 0;
+    std::size_t taken = 0;
+    for (int y = std::max(0, top); y < image.rows; y += 2) {
+        const std::uint8_t* row = image.ptr<std::uint8_t>(y);
+        for (int x = 0; x < image.cols; x += 2) {
+            const std::uint8_t* px = row + 3 * x;
+            ++all;
+            taken += carpet.distance2(px[0], px[1], px[2]) <= 9.0;
+        }
+    }
+    return all ? double(taken) / double(all) : 0;
+}
+
 struct ClassModel
 {
     Evidence evidence = Evidence::Green;
@@ -55,6 +75,8 @@ struct ClassModel
     double limit = 3.0; ///< Mahalanobis distance the class reaches
     int lo[3] = {0, 0, 0};
     int hi[3] = {127, 127, 127}; ///< cells, the box around limit
+    /// A saturated class reaches only cells at least half as saturated as its mean (squared).
+    double min_chroma2 = 0;
 };
 
 ClassModel modelOf(const EvidenceSet& evidence, Evidence e, const Eigen::Vector3d& floor,
@@ -64,6 +86,11 @@ ClassModel modelOf(const EvidenceSet& evidence, Evidence e, const Eigen::Vector3
     m.evidence = e;
     m.limit = limit;
     m.gaussian = evidence.moments[std::size_t(e)].gaussian(floor);
+    if (e != Evidence::Green && e != Evidence::White) {
+        const double cb = m.gaussian.mean[1] - 128;
+        const double cr = m.gaussian.mean[2] - 128;
+        m.min_chroma2 = 0.25 * (cb * cb + cr * cr);
+    }
     for (int c = 0; c < 3; ++c) {
         const double reach = limit * std::sqrt(m.gaussian.covariance(c, c));
         m.lo[c] = std::clamp(int((m.gaussian.mean[c] - reach) / 2), 0, 127);
@@ -111,6 +138,8 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
                     if (background >= 2)
                         continue;
                 }
+                const double chroma2 = (2 * cb + 1 - 128.0) * (2 * cb + 1 - 128.0) +
+                                       (2 * cr + 1 - 128.0) * (2 * cr + 1 - 128.0);
                 double nearest = 1e30;
                 double runner_up = 1e30;
                 const ClassModel* winner = nullptr;
@@ -118,6 +147,8 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
                     if (y < m.lo[0] || y > m.hi[0] || cb < m.lo[1] || cb > m.hi[1] ||
                         cr < m.lo[2] || cr > m.hi[2])
                         continue;
+                    if (m.min_chroma2 > 0 && chroma2 < m.min_chroma2)
+                        continue; // too grey for a saturated class
                     const double d2 = m.gaussian.distance2(2 * y + 1, 2 * cb + 1, 2 * cr + 1);
                     if (d2 > m.limit * m.limit)
                         continue;
@@ -175,9 +206,28 @@ Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options
         return out;
     }
     EvidenceSet evidence;
-    for (const cv::Mat& image : frames)
-        autolut::collectEvidence(image, *carpet, evidence);
+    if (std::getenv("FIELDSIGHT_AUTO_DEBUG"))
+        std::fprintf(stderr, "carpet mean %.1f %.1f %.1f sd %.1f %.1f %.1f\n", carpet->mean[0],
+                     carpet->mean[1], carpet->mean[2], std::sqrt(carpet->covariance(0, 0)),
+                     std::sqrt(carpet->covariance(1, 1)), std::sqrt(carpet->covariance(2, 2)));
+    // A frame the camera exposed differently shows its carpet elsewhere: its own dominant
+    // cluster, when near the stream's, finds its carpet.
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        std::optional<Gaussian> own;
+        if (carpetShare(frames[f], tops[f], *carpet) < 0.3)
+            own = autolut::findCarpet({frames[f]}, {tops[f]});
+        const bool near = own && carpet->distance2(own->mean[0], own->mean[1], own->mean[2]) <=
+                                     kOwnCarpetReach * kOwnCarpetReach;
+        autolut::collectEvidence(frames[f], near ? *own : *carpet, evidence);
+    }
 
+    if (std::getenv("FIELDSIGHT_AUTO_DEBUG"))
+        for (std::size_t e = 0; e < kEvidenceCount; ++e) {
+            const auto& m = evidence.moments[e];
+            if (m.n > 0)
+                std::fprintf(stderr, "evidence %zu: %.0f px mean %.1f %.1f %.1f\n", e, m.n,
+                             m.sum[0] / m.n, m.sum[1] / m.n, m.sum[2] / m.n);
+        }
     std::vector<ClassModel> models;
     const auto enough = [&](Evidence e) { return evidence.moments[std::size_t(e)].n >= 30; };
     models.push_back(modelOf(evidence, Evidence::Green, {9, 4, 4}, 3.0));

@@ -290,6 +290,30 @@ void addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const 
     }
 }
 
+/// The median length of the runs of `label` across the rows of `box`.
+double medianRun(const cv::Mat& labels, int label, const cv::Rect& box)
+{
+    std::vector<int> runs;
+    for (int y = box.y; y < box.y + box.height; ++y) {
+        const int* row = labels.ptr<int>(y);
+        for (int x = box.x; x < box.x + box.width;) {
+            if (row[x] != label) {
+                ++x;
+                continue;
+            }
+            int end = x;
+            while (end + 1 < box.x + box.width && row[end + 1] == label)
+                ++end;
+            runs.push_back(end - x + 1);
+            x = end + 1;
+        }
+    }
+    if (runs.empty())
+        return 0;
+    std::nth_element(runs.begin(), runs.begin() + std::ptrdiff_t(runs.size() / 2), runs.end());
+    return runs[runs.size() / 2];
+}
+
 /// Sorts the saturated shapes of one hue family: round blobs on the field (warm: the ball), bars
 /// standing at the field's edge (yellow, blue: a goal), the rest touching the field background.
 void sortShapes(const cv::Mat& ycbcr, const cv::Mat& mask, Hue hue, const std::vector<double>& edge,
@@ -327,7 +351,10 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& mask, Hue hue, const std::v
             }
             continue;
         }
-        const double thickness = double(b.area) / b.box.height;
+        // A post is much taller than it is thick; a goal's crossbar makes a few long rows, so
+        // the thickness is the median width of the shape's runs.
+        const double thickness =
+            std::min(double(b.area) / b.box.height, 2 * medianRun(labels, i, b.box));
         const bool bar = b.box.height >= 10 * scale && b.box.height >= 2.5 * thickness;
         const bool stands = bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
         if (bar && stands) {
@@ -335,6 +362,7 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& mask, Hue hue, const std::v
             addComponent(ycbcr, labels, i, b, e, scale, out);
             (hue == Hue::Yellow ? out.yellow_bars : out.blue_bars) += std::size_t(b.area);
         } else if (on_field) {
+            // A door, a cupboard, a jersey: the goal's colour must not reach it.
             addComponent(ycbcr, labels, i, b, Evidence::Background, scale, out);
         }
     }
@@ -350,13 +378,27 @@ void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& 
     cv::Mat green(h, w, CV_8U, cv::Scalar(0));
     cv::Mat candidate(h, w, CV_8U, cv::Scalar(0));
     const double bright = carpet.mean[0] + std::max(30.0, 3 * std::sqrt(carpet.covariance(0, 0)));
+    // White: unsaturated, or (a thin line whose chroma the camera blended with the carpet's)
+    // towards the carpet's hue and well short of its saturation.
+    const double carpet_cb = carpet.mean[1] - 128;
+    const double carpet_cr = carpet.mean[2] - 128;
+    const double carpet_chroma = std::hypot(carpet_cb, carpet_cr);
+    const auto whiteish = [&](const std::uint8_t* px) {
+        const double cb = px[1] - 128.0;
+        const double cr = px[2] - 128.0;
+        const double chroma = std::hypot(cb, cr);
+        if (chroma <= 18)
+            return true;
+        return chroma <= 0.6 * carpet_chroma &&
+               cb * carpet_cb + cr * carpet_cr >= 0.7 * chroma * carpet_chroma;
+    };
     for (int y = 0; y < h; ++y) {
         const std::uint8_t* row = ycbcr.ptr<std::uint8_t>(y);
         for (int x = 0; x < w; ++x) {
             const std::uint8_t* px = row + 3 * x;
             if (carpet.distance2(px[0], px[1], px[2]) <= kCarpetLimit * kCarpetLimit)
                 green.at<std::uint8_t>(y, x) = 1;
-            else if (px[0] >= bright && std::abs(px[1] - 128) <= 28 && std::abs(px[2] - 128) <= 28)
+            else if (px[0] >= bright && whiteish(px))
                 candidate.at<std::uint8_t>(y, x) = 1;
         }
     }
