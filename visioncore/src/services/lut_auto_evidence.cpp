@@ -290,6 +290,27 @@ void addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const 
     }
 }
 
+/// The share of carpet in a ring around `box` (inside the image): a ball lies on the carpet.
+double greenAround(const cv::Mat& green, const cv::Rect& box)
+{
+    const int grow = std::max(2, std::max(box.width, box.height) / 4);
+    const cv::Rect ring =
+        cv::Rect(box.x - grow, box.y - grow, box.width + 2 * grow, box.height + 2 * grow) &
+        cv::Rect(0, 0, green.cols, green.rows);
+    std::size_t all = 0;
+    std::size_t carpet = 0;
+    for (int y = ring.y; y < ring.y + ring.height; ++y) {
+        const std::uint8_t* row = green.ptr<std::uint8_t>(y);
+        for (int x = ring.x; x < ring.x + ring.width; ++x) {
+            if (box.contains({x, y}))
+                continue;
+            ++all;
+            carpet += row[x] != 0;
+        }
+    }
+    return all ? double(carpet) / double(all) : 0;
+}
+
 /// The median length of the runs of `label` across the rows of `box`.
 double medianRun(const cv::Mat& labels, int label, const cv::Rect& box)
 {
@@ -316,8 +337,8 @@ double medianRun(const cv::Mat& labels, int label, const cv::Rect& box)
 
 /// Sorts the saturated shapes of one hue family: round blobs on the field (warm: the ball), bars
 /// standing at the field's edge (yellow, blue: a goal), the rest touching the field background.
-void sortShapes(const cv::Mat& ycbcr, const cv::Mat& mask, Hue hue, const std::vector<double>& edge,
-                double scale, EvidenceSet& out)
+void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask, Hue hue,
+                const std::vector<double>& edge, double scale, EvidenceSet& out)
 {
     cv::Mat labels, stats, centroids;
     const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
@@ -340,9 +361,15 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& mask, Hue hue, const std::v
         const double aspect = double(b.box.width) / b.box.height;
         const double fill = double(b.area) / (double(b.box.width) * b.box.height);
         if (hue == Hue::Warm) {
-            const bool round = (at_border || (aspect >= 0.5 && aspect <= 2.0)) && fill >= 0.5 &&
-                               b.box.width >= 3 * scale && b.box.height >= 3 * scale &&
-                               b.box.width <= 0.6 * w;
+            // Round: a disc fills about 0.79 of its box; one cut by the image's side less. A
+            // wide shape along the bottom is the robot's own body.
+            const double fill_needed = at_border ? 0.5 : 0.6;
+            const bool shaped =
+                at_border ? aspect >= 0.4 && aspect <= 2.5 : aspect >= 0.5 && aspect <= 2.0;
+            const bool own_body = bottom == h - 1 && b.box.width >= 0.25 * w;
+            const bool round = shaped && fill >= fill_needed && !own_body &&
+                               b.area >= 12 * scale * scale && b.box.width <= 0.6 * w &&
+                               greenAround(green, b.box) >= 0.25;
             if (round && on_field) {
                 addComponent(ycbcr, labels, i, b, Evidence::Orange, scale, out);
                 out.ball_blobs += 1;
@@ -432,7 +459,7 @@ void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& 
         }
     }
     for (const Hue hue : {Hue::Warm, Hue::Yellow, Hue::Blue})
-        sortShapes(ycbcr, hue_masks[std::size_t(hue)], hue, edge, scale, out);
+        sortShapes(ycbcr, green, hue_masks[std::size_t(hue)], hue, edge, scale, out);
 }
 
 } // namespace fieldsight::autolut
