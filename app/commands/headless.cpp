@@ -36,7 +36,9 @@ const std::vector<Synopsis>& synopses()
          "STREAM --out FILE [--samples FILE] [--truth FILE] [--save-samples FILE] "
          "[--smoothing N] [--soft] [--goal-colour NAME] [--orientation DEG]",
          "a table from samples or the annotations"},
-        {"lut auto", "STREAM --out FILE [--frames N] [--params-out FILE] [--orientation DEG]",
+        {"lut auto",
+         "STREAM --out FILE [--frames N] [--annotations] [--truth FILE] [--params-out FILE] "
+         "[--orientation DEG]",
          "a first table from the frames alone"},
         {"annotations export", "STREAM --coco FILE [--annotations FILE] [--orientation DEG]",
          "the annotations as COCO JSON"},

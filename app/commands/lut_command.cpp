@@ -205,6 +205,12 @@ int autoCommand(const QStringList& args, const Context& ctx)
     parser.addOption({"out", "The .lut file to write (required).", "FILE"});
     parser.addOption(
         {"frames", "Frames sampled, spread over the stream (default 40; 0: every frame).", "N"});
+    parser.addOption({"annotations", "Also let the stream's annotations vote (their done "
+                                     "frames' regions, as lut build takes them)."});
+    parser.addOption({"truth",
+                      "With --annotations: the annotations file (default: "
+                      "annotations.json in the stream folder).",
+                      "FILE"});
     parser.addOption({"params-out",
                       "Also write the goal colour found as a fieldsight-params/1 file (for "
                       "--params, or the stream's params.json).",
@@ -219,7 +225,9 @@ int autoCommand(const QStringList& args, const Context& ctx)
             return badInput(ctx, "lut auto: --out FILE is required");
         const std::string out = toLocalPath(parser.value("out"));
         const std::string params_out = toLocalPath(parser.value("params-out"));
-        if (Status s = checkOutputFile("lut auto --out", out, {stream}, kTableFile); !s)
+        const std::string truth_path =
+            parser.isSet("truth") ? toLocalPath(parser.value("truth")) : defaultTruthPath(stream);
+        if (Status s = checkOutputFile("lut auto --out", out, {stream, truth_path}, kTableFile); !s)
             return badInput(ctx, s.error().message);
         if (Status s =
                 checkOutputFile("lut auto --params-out", params_out, {stream, out}, kParamsFile);
@@ -239,6 +247,17 @@ int autoCommand(const QStringList& args, const Context& ctx)
 
         AutoLutOptions options;
         options.frames = std::size_t(*frames);
+        std::optional<Annotations> truth;
+        if (parser.isSet("annotations")) {
+            auto loaded = Annotations::load(truth_path, ctx.pipeline.perceptKinds(),
+                                            reader.value()->info().frame_count);
+            if (!loaded)
+                return badInput(ctx, loaded.error().message);
+            truth = std::move(loaded).value();
+            options.annotations = &*truth;
+        } else if (parser.isSet("truth")) {
+            return badInput(ctx, "lut auto: --truth needs --annotations");
+        }
         // Progress on a terminal only, on one line.
         const bool terminal = &ctx.err == &std::cerr && isatty(STDERR_FILENO);
         auto made = buildAutoLut(*reader.value(), options, [&](std::size_t done, std::size_t n) {

@@ -169,6 +169,106 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
     return lut;
 }
 
+std::size_t bars(const EvidenceSet& evidence)
+{
+    return std::max(evidence.yellow_bars, evidence.blue_bars);
+}
+
+bool enough(const EvidenceSet& evidence, Evidence e)
+{
+    return evidence.moments[std::size_t(e)].n >= 30;
+}
+
+/// The classes with evidence enough, and a note for each expected one left out.
+std::vector<ClassModel> classModels(const EvidenceSet& evidence, std::vector<std::string>& notes)
+{
+    std::vector<ClassModel> models;
+    models.push_back(modelOf(evidence, Evidence::Green, {9, 4, 4}, 3.0));
+    if (enough(evidence, Evidence::White))
+        models.push_back(modelOf(evidence, Evidence::White, {36, 9, 9}, 3.0));
+    else
+        notes.push_back("no field lines found: no white");
+    if (enough(evidence, Evidence::Orange) && evidence.ball_blobs > 0)
+        models.push_back(modelOf(evidence, Evidence::Orange, {25, 9, 9}, 3.0));
+    else
+        notes.push_back("no round ball-coloured blob on the carpet: no orange");
+    for (const Evidence e : {Evidence::Yellow, Evidence::Blue}) {
+        const std::size_t mine = e == Evidence::Yellow ? evidence.yellow_bars : evidence.blue_bars;
+        // A goal colour seen far less than the other is noise (a team band, a poster).
+        if (enough(evidence, e) && mine > 0 && 5 * mine >= bars(evidence))
+            models.push_back(modelOf(evidence, e, {25, 9, 9}, 3.0));
+    }
+    if (bars(evidence) == 0)
+        notes.push_back("no goal-coloured bar standing at the field's edge: no goal colour");
+    return models;
+}
+
+/// Evidence of classes left out must not hold cells back from the others.
+void forgetUnmodelled(EvidenceSet& evidence, const std::vector<ClassModel>& models)
+{
+    std::array<bool, kEvidenceCount> kept{};
+    kept[std::size_t(Evidence::Background)] = true;
+    for (const ClassModel& m : models)
+        kept[std::size_t(m.evidence)] = true;
+    for (auto& [cell, counts] : evidence.cells)
+        for (std::size_t e = 0; e < kEvidenceCount; ++e)
+            if (!kept[e])
+                counts[e] = 0;
+}
+
+std::optional<Evidence> evidenceOf(Colour colour)
+{
+    switch (colour) {
+    case Colour::Green:
+        return Evidence::Green;
+    case Colour::White:
+        return Evidence::White;
+    case Colour::Orange:
+        return Evidence::Orange;
+    case Colour::Yellow:
+        return Evidence::Yellow;
+    case Colour::Blue:
+        return Evidence::Blue;
+    case Colour::Unclassified:
+        return Evidence::Background;
+    default:
+        return std::nullopt;
+    }
+}
+
+/// The annotated regions of the done frames vote as `lut build` takes them (the goal in
+/// `goal_colour`). Returns a note of what they added.
+Result<std::string> addAnnotations(StreamReader& reader, const Annotations& annotations,
+                                   Colour goal_colour, EvidenceSet& evidence)
+{
+    AnnotationSampleRules rules;
+    rules.goal_colour = goal_colour;
+    const StreamInfo& info = reader.info();
+    const std::vector<LutSample> samples =
+        samplesFromAnnotations(annotations, {info.width, info.height}, rules);
+    auto voted = collectLutVotes(reader, samples);
+    if (!voted)
+        return voted.error();
+    std::size_t added = 0;
+    for (const auto& [cell, counts] : voted.value().votes.cells()) {
+        for (int c = 0; c < kColourCount; ++c) {
+            const std::optional<Evidence> e = evidenceOf(Colour(c));
+            if (!e || counts[std::size_t(c)] == 0)
+                continue;
+            evidence.addCell(*e, cell, counts[std::size_t(c)]);
+            added += counts[std::size_t(c)];
+            if (*e == Evidence::Orange)
+                evidence.ball_blobs += 1;
+            else if (*e == Evidence::Yellow)
+                evidence.yellow_bars += counts[std::size_t(c)];
+            else if (*e == Evidence::Blue)
+                evidence.blue_bars += counts[std::size_t(c)];
+        }
+    }
+    return "the annotations of " + std::to_string(voted.value().frames) + " frames voted " +
+           std::to_string(added) + " pixels";
+}
+
 } // namespace
 
 Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options,
@@ -221,48 +321,17 @@ Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options
         autolut::collectEvidence(frames[f], near ? *own : *carpet, evidence);
     }
 
-    if (std::getenv("FIELDSIGHT_AUTO_DEBUG"))
-        for (std::size_t e = 0; e < kEvidenceCount; ++e) {
-            const auto& m = evidence.moments[e];
-            if (m.n > 0)
-                std::fprintf(stderr, "evidence %zu: %.0f px mean %.1f %.1f %.1f\n", e, m.n,
-                             m.sum[0] / m.n, m.sum[1] / m.n, m.sum[2] / m.n);
-        }
-    std::vector<ClassModel> models;
-    const auto enough = [&](Evidence e) { return evidence.moments[std::size_t(e)].n >= 30; };
-    models.push_back(modelOf(evidence, Evidence::Green, {9, 4, 4}, 3.0));
-    if (enough(Evidence::White))
-        models.push_back(modelOf(evidence, Evidence::White, {36, 9, 9}, 3.0));
-    else
-        out.notes.push_back("no field lines found: no white");
-    if (enough(Evidence::Orange) && evidence.ball_blobs > 0)
-        models.push_back(modelOf(evidence, Evidence::Orange, {25, 9, 9}, 3.0));
-    else
-        out.notes.push_back("no round ball-coloured blob on the carpet: no orange");
-    const std::size_t bars = std::max(evidence.yellow_bars, evidence.blue_bars);
-    for (const Evidence e : {Evidence::Yellow, Evidence::Blue}) {
-        const std::size_t mine = e == Evidence::Yellow ? evidence.yellow_bars : evidence.blue_bars;
-        // A goal colour seen far less than the other is noise (a team band, a poster).
-        if (enough(e) && mine > 0 && 5 * mine >= bars)
-            models.push_back(modelOf(evidence, e, {25, 9, 9}, 3.0));
-    }
-    if (bars == 0)
-        out.notes.push_back("no goal-coloured bar standing at the field's edge: no goal colour");
-    else
+    if (bars(evidence) > 0)
         out.goal_colour = evidence.blue_bars > evidence.yellow_bars ? Colour::Blue : Colour::Yellow;
-
-    // Evidence of classes left out must not hold cells back from the others.
-    for (auto& [cell, counts] : evidence.cells) {
-        for (std::size_t e = 0; e < kEvidenceCount; ++e) {
-            if (e == std::size_t(Evidence::Background))
-                continue;
-            const bool kept = std::any_of(models.begin(), models.end(), [e](const ClassModel& m) {
-                return std::size_t(m.evidence) == e;
-            });
-            if (!kept)
-                counts[e] = 0;
-        }
+    if (options.annotations && !out.cancelled) {
+        auto added = addAnnotations(reader, *options.annotations,
+                                    out.goal_colour.value_or(Colour::Yellow), evidence);
+        if (!added)
+            return added.error();
+        out.notes.push_back(added.value());
     }
+    const std::vector<ClassModel> models = classModels(evidence, out.notes);
+    forgetUnmodelled(evidence, models);
     out.lut = fillTable(evidence, models);
 
     // What the table gives the sampled pixels.

@@ -49,6 +49,14 @@ void EvidenceSet::add(Evidence e, const std::uint8_t* px)
     moments[std::size_t(e)].add(px);
 }
 
+void EvidenceSet::addCell(Evidence e, std::uint32_t cell, std::uint32_t count)
+{
+    cells[cell][std::size_t(e)] += count;
+    const Eigen::Vector3d centre(((cell >> 14) & 127) * 2 + 1, ((cell >> 7) & 127) * 2 + 1,
+                                 (cell & 127) * 2 + 1);
+    moments[std::size_t(e)].add(centre, count);
+}
+
 namespace {
 
 constexpr double kCarpetLimit = 3.0; ///< Mahalanobis distance of a carpet pixel

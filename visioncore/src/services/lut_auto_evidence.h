@@ -39,12 +39,12 @@ struct Moments
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
 
-    void add(const std::uint8_t* px)
+    void add(const std::uint8_t* px) { add(Eigen::Vector3d(px[0], px[1], px[2]), 1); }
+    void add(const Eigen::Vector3d& p, double weight)
     {
-        const Eigen::Vector3d p(px[0], px[1], px[2]);
-        n += 1;
-        sum += p;
-        outer += p * p.transpose();
+        n += weight;
+        sum += weight * p;
+        outer += weight * p * p.transpose();
     }
     /// The Gaussian of the samples with `floor` (units², per channel Y, Cb, Cr) added to the
     /// covariance's diagonal, so JPEG noise and a narrow sample do not make it a needle.
@@ -67,6 +67,8 @@ struct EvidenceSet
     std::size_t blue_bars = 0;
 
     void add(Evidence e, const std::uint8_t* px);
+    /// `count` pixels of `cell` (a table index), as at the cell's centre.
+    void addCell(Evidence e, std::uint32_t cell, std::uint32_t count);
 };
 
 /// The carpet: the dominant chroma cluster in the lower part of the frames (below the kinematic
