@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace fieldsight::autolut {
 
@@ -126,10 +128,34 @@ std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames, const std
 
 namespace {
 
-/// The field's far edge per column: the upper convex hull of each column's first row from which
-/// carpet fills at least half of a short window below; rows below it are the field.
-std::vector<double> fieldEdge(const cv::Mat& green, double scale)
+/// The field: the largest patch of carpet (lines closed over) reaching the lower half. A green
+/// poster or board on the wall is a patch of its own.
+cv::Mat fieldPatch(const cv::Mat& green, double scale)
 {
+    cv::Mat closed;
+    const int k = 2 * std::max(1, int(std::lround(2 * scale))) + 1;
+    cv::morphologyEx(green, closed, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, cv::Size(k, k)));
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(closed, labels, stats, centroids, 8, CV_32S);
+    int best = 0;
+    for (int i = 1; i < n; ++i) {
+        const int bottom = stats.at<int>(i, cv::CC_STAT_TOP) + stats.at<int>(i, cv::CC_STAT_HEIGHT);
+        if (bottom > green.rows / 2 && (best == 0 || stats.at<int>(i, cv::CC_STAT_AREA) >
+                                                         stats.at<int>(best, cv::CC_STAT_AREA)))
+            best = i;
+    }
+    cv::Mat patch = labels == best;
+    if (best == 0)
+        patch.setTo(0);
+    return patch;
+}
+
+/// The field's far edge per column: the upper convex hull of each column's first row of the
+/// field patch from which it fills at least half of a window below; rows below it are the field.
+std::vector<double> fieldEdge(const cv::Mat& green_all, double scale)
+{
+    const cv::Mat green = fieldPatch(green_all, scale);
     const int w = green.cols;
     const int h = green.rows;
     const int window = std::max(4, int(std::lround(8 * scale)));
@@ -280,13 +306,14 @@ struct Blob
 /// Adds a component's pixels as `e`: its inner pixels (all four neighbours in it) when it is
 /// large enough to have them, so the rims blended with what surrounds it do not count.
 void addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const Blob& blob,
-                  Evidence e, double scale, EvidenceSet& out)
+                  Evidence e, double scale, EvidenceSet& out, const std::vector<bool>& columns = {})
 {
     const bool inner_only = blob.area >= 40 * scale * scale;
     const cv::Rect& r = blob.box;
     for (int y = r.y; y < r.y + r.height; ++y) {
         for (int x = r.x; x < r.x + r.width; ++x) {
-            if (labels.at<int>(y, x) != label)
+            if (labels.at<int>(y, x) != label ||
+                (!columns.empty() && !columns[std::size_t(x - r.x)]))
                 continue;
             if (inner_only &&
                 (x == 0 || y == 0 || x + 1 >= labels.cols || y + 1 >= labels.rows ||
@@ -388,13 +415,25 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
         }
         // A post is much taller than it is thick; a goal's crossbar makes a few long rows, so
         // the thickness is the median width of the shape's runs.
-        const double thickness =
-            std::min(double(b.area) / b.box.height, 2 * medianRun(labels, i, b.box));
-        const bool bar = b.box.height >= 10 * scale && b.box.height >= 2.5 * thickness;
+        const double thickness = medianRun(labels, i, b.box);
+        const bool bar = b.box.height >= 10 * scale && b.box.height >= 3 * thickness;
         const bool stands = bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
+        if (std::getenv("FIELDSIGHT_AUTO_DEBUG"))
+            std::fprintf(stderr, "goal hue %d: %d,%d %dx%d area %d thick %.1f edge %.0f -> %d %d\n",
+                         int(hue), b.box.x, b.box.y, b.box.width, b.box.height, b.area, thickness,
+                         edge_at, bar, stands);
         if (bar && stands) {
             const Evidence e = hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue;
-            addComponent(ycbcr, labels, i, b, e, scale, out);
+            // Only the columns that reach down to the field's edge are the posts: a wall of
+            // the same colour joined to a post, or the crossbar, are not sampled.
+            std::vector<bool> columns(std::size_t(b.box.width), false);
+            for (int x = b.box.x; x < b.box.x + b.box.width; ++x)
+                for (int y = bottom; y >= b.box.y; --y)
+                    if (labels.at<int>(y, x) == i) {
+                        columns[std::size_t(x - b.box.x)] = y >= edge[std::size_t(x)] - 0.05 * h;
+                        break;
+                    }
+            addComponent(ycbcr, labels, i, b, e, scale, out, columns);
             (hue == Hue::Yellow ? out.yellow_bars : out.blue_bars) += std::size_t(b.area);
         } else if (on_field) {
             // A door, a cupboard, a jersey: the goal's colour must not reach it.
