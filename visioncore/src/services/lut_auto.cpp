@@ -12,8 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace fieldsight {
 namespace {
@@ -306,10 +304,6 @@ Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options
         return out;
     }
     EvidenceSet evidence;
-    if (std::getenv("FIELDSIGHT_AUTO_DEBUG"))
-        std::fprintf(stderr, "carpet mean %.1f %.1f %.1f sd %.1f %.1f %.1f\n", carpet->mean[0],
-                     carpet->mean[1], carpet->mean[2], std::sqrt(carpet->covariance(0, 0)),
-                     std::sqrt(carpet->covariance(1, 1)), std::sqrt(carpet->covariance(2, 2)));
     // A frame the camera exposed differently shows its carpet elsewhere: its own dominant
     // cluster, when near the stream's, finds its carpet.
     for (std::size_t f = 0; f < frames.size(); ++f) {

@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace fieldsight::autolut {
 
@@ -418,10 +416,6 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
         const double thickness = medianRun(labels, i, b.box);
         const bool bar = b.box.height >= 10 * scale && b.box.height >= 3 * thickness;
         const bool stands = bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
-        if (std::getenv("FIELDSIGHT_AUTO_DEBUG"))
-            std::fprintf(stderr, "goal hue %d: %d,%d %dx%d area %d thick %.1f edge %.0f -> %d %d\n",
-                         int(hue), b.box.x, b.box.y, b.box.width, b.box.height, b.area, thickness,
-                         edge_at, bar, stands);
         if (bar && stands) {
             const Evidence e = hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue;
             // Only the columns that reach down to the field's edge are the posts: a wall of
