@@ -148,6 +148,8 @@ class TestNoOverwrite : public QObject
             return {"lut", "convert", a + "/default.lut", fresh + ".lut"};
         if (key == "lut build")
             return {"lut", "build", a, "--out", fresh + ".lut"};
+        if (key == "lut auto")
+            return {"lut", "auto", a, "--frames", "2", "--out", fresh + ".lut"};
         if (key == "annotations export")
             return {"annotations", "export", a, "--coco", fresh + ".json"};
         if (key == "annotations import-dnt")
