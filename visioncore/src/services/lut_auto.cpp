@@ -167,9 +167,14 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
     return lut;
 }
 
-std::size_t bars(const EvidenceSet& evidence)
+/// The goal colour seen: the one whose posts weigh more, when any were seen.
+std::optional<Evidence> goalEvidence(const EvidenceSet& evidence)
 {
-    return std::max(evidence.yellow_bars, evidence.blue_bars);
+    const double yellow = evidence.goal(Evidence::Yellow).weight();
+    const double blue = evidence.goal(Evidence::Blue).weight();
+    if (yellow <= 0 && blue <= 0)
+        return std::nullopt;
+    return blue > yellow ? Evidence::Blue : Evidence::Yellow;
 }
 
 bool enough(const EvidenceSet& evidence, Evidence e)
@@ -190,13 +195,24 @@ std::vector<ClassModel> classModels(const EvidenceSet& evidence, std::vector<std
         models.push_back(modelOf(evidence, Evidence::Orange, {25, 9, 9}, 3.0));
     else
         notes.push_back("no round ball-coloured blob on the carpet: no orange");
+    const std::optional<Evidence> goal = goalEvidence(evidence);
     for (const Evidence e : {Evidence::Yellow, Evidence::Blue}) {
-        const std::size_t mine = e == Evidence::Yellow ? evidence.yellow_bars : evidence.blue_bars;
-        // A goal colour seen far less than the other is noise (a team band, a poster).
-        if (enough(evidence, e) && mine > 0 && 5 * mine >= bars(evidence))
+        // A goal colour that weighs far less than the other is noise (a team band, a poster,
+        // a wall's or the crowd's colour).
+        const auto& cue = evidence.goal(e);
+        if (goal && enough(evidence, e) && cue.posts > 0 &&
+            5 * cue.weight() >= evidence.goal(*goal).weight())
             models.push_back(modelOf(evidence, e, {25, 9, 9}, 3.0));
     }
-    if (bars(evidence) == 0)
+    for (const Evidence e : {Evidence::Yellow, Evidence::Blue}) {
+        const auto& cue = evidence.goal(e);
+        if (cue.shapes > 0)
+            notes.push_back(std::string(colourName(autolut::evidenceColour(e))) + ": " +
+                            std::to_string(std::lround(cue.posts)) + " px in posts of " +
+                            std::to_string(std::lround(cue.shapes)) +
+                            " px in shapes near the field");
+    }
+    if (!goal)
         notes.push_back("no goal-coloured bar standing at the field's edge: no goal colour");
     return models;
 }
@@ -257,10 +273,10 @@ Result<std::string> addAnnotations(StreamReader& reader, const Annotations& anno
             added += counts[std::size_t(c)];
             if (*e == Evidence::Orange)
                 evidence.ball_blobs += 1;
-            else if (*e == Evidence::Yellow)
-                evidence.yellow_bars += counts[std::size_t(c)];
-            else if (*e == Evidence::Blue)
-                evidence.blue_bars += counts[std::size_t(c)];
+            else if (*e == Evidence::Yellow || *e == Evidence::Blue) {
+                evidence.goal(*e).posts += counts[std::size_t(c)];
+                evidence.goal(*e).shapes += counts[std::size_t(c)];
+            }
         }
     }
     return "the annotations of " + std::to_string(voted.value().frames) + " frames voted " +
@@ -315,8 +331,8 @@ Result<AutoLut> buildAutoLut(StreamReader& reader, const AutoLutOptions& options
         autolut::collectEvidence(frames[f], near ? *own : *carpet, evidence);
     }
 
-    if (bars(evidence) > 0)
-        out.goal_colour = evidence.blue_bars > evidence.yellow_bars ? Colour::Blue : Colour::Yellow;
+    if (const auto goal = goalEvidence(evidence))
+        out.goal_colour = autolut::evidenceColour(*goal);
     if (options.annotations && !out.cancelled) {
         auto added = addAnnotations(reader, *options.annotations,
                                     out.goal_colour.value_or(Colour::Yellow), evidence);

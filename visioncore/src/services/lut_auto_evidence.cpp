@@ -303,9 +303,11 @@ struct Blob
 
 /// Adds a component's pixels as `e`: its inner pixels (all four neighbours in it) when it is
 /// large enough to have them, so the rims blended with what surrounds it do not count.
-void addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const Blob& blob,
-                  Evidence e, double scale, EvidenceSet& out, const std::vector<bool>& columns = {})
+std::size_t addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const Blob& blob,
+                         Evidence e, double scale, EvidenceSet& out,
+                         const std::vector<bool>& columns = {})
 {
+    std::size_t added = 0;
     const bool inner_only = blob.area >= 40 * scale * scale;
     const cv::Rect& r = blob.box;
     for (int y = r.y; y < r.y + r.height; ++y) {
@@ -319,8 +321,10 @@ void addComponent(const cv::Mat& ycbcr, const cv::Mat& labels, int label, const 
                  labels.at<int>(y, x - 1) != label || labels.at<int>(y, x + 1) != label))
                 continue;
             out.add(e, ycbcr.ptr<std::uint8_t>(y) + 3 * x);
+            ++added;
         }
     }
+    return added;
 }
 
 /// The share of carpet in a ring around `box` (inside the image): a ball lies on the carpet.
@@ -368,6 +372,50 @@ double medianRun(const cv::Mat& labels, int label, const cv::Rect& box)
     return runs[runs.size() / 2];
 }
 
+/// The columns of a bar-shaped component that are posts: they reach down to the field's edge (a
+/// wall of the same colour joined to a post, and the crossbar, do not), and each run of such
+/// columns is at least three times as tall as it is wide (a wall or curtain standing along the
+/// field's edge is not).
+std::vector<bool> postColumns(const cv::Mat& labels, int label, const cv::Rect& box,
+                              const std::vector<double>& edge, int h)
+{
+    std::vector<bool> columns(std::size_t(box.width), false);
+    std::vector<int> lowest(std::size_t(box.width), -1);
+    std::vector<int> highest(std::size_t(box.width), -1);
+    for (int x = box.x; x < box.x + box.width; ++x) {
+        for (int y = box.y; y < box.y + box.height; ++y) {
+            if (labels.at<int>(y, x) != label)
+                continue;
+            if (highest[std::size_t(x - box.x)] < 0)
+                highest[std::size_t(x - box.x)] = y;
+            lowest[std::size_t(x - box.x)] = y;
+        }
+        const int foot = lowest[std::size_t(x - box.x)];
+        columns[std::size_t(x - box.x)] = foot >= 0 && foot >= edge[std::size_t(x)] - 0.05 * h;
+    }
+    for (int start = 0; start < box.width;) {
+        if (!columns[std::size_t(start)]) {
+            ++start;
+            continue;
+        }
+        int end = start;
+        while (end + 1 < box.width && columns[std::size_t(end + 1)])
+            ++end;
+        int top = h;
+        int foot = 0;
+        for (int c = start; c <= end; ++c) {
+            top = std::min(top, highest[std::size_t(c)]);
+            foot = std::max(foot, lowest[std::size_t(c)]);
+        }
+        // A post cut by the top of the image shows less of its height.
+        if (foot - top + 1 < (top == 0 ? 2 : 3) * (end - start + 1))
+            for (int c = start; c <= end; ++c)
+                columns[std::size_t(c)] = false;
+        start = end + 1;
+    }
+    return columns;
+}
+
 /// Sorts the saturated shapes of one hue family: round blobs on the field (warm: the ball), bars
 /// standing at the field's edge (yellow, blue: a goal), the rest touching the field background.
 void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask, Hue hue,
@@ -413,22 +461,24 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
         }
         // A post is much taller than it is thick; a goal's crossbar makes a few long rows, so
         // the thickness is the median width of the shape's runs.
+        if (bottom >= edge_at - 0.1 * h)
+            out.goal(hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue).shapes += b.area;
         const double thickness = medianRun(labels, i, b.box);
-        const bool bar = b.box.height >= 10 * scale && b.box.height >= 3 * thickness;
-        const bool stands = bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
+        // A post is about eight times as tall as it is thick; one cut by the top of the image
+        // may show less of its height.
+        const bool bar =
+            b.box.height >= 10 * scale && b.box.height >= (b.box.y == 0 ? 3 : 4) * thickness;
+        // Its foot is at the field's far edge (on the goal line, a little in front of it), not
+        // on the field near the camera (a person's legs) nor up on the wall.
+        const bool stands =
+            bottom >= edge_at - 0.05 * h && bottom <= edge_at + 0.15 * h && b.box.y <= edge_at;
         if (bar && stands) {
             const Evidence e = hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue;
             // Only the columns that reach down to the field's edge are the posts: a wall of
             // the same colour joined to a post, or the crossbar, are not sampled.
-            std::vector<bool> columns(std::size_t(b.box.width), false);
-            for (int x = b.box.x; x < b.box.x + b.box.width; ++x)
-                for (int y = bottom; y >= b.box.y; --y)
-                    if (labels.at<int>(y, x) == i) {
-                        columns[std::size_t(x - b.box.x)] = y >= edge[std::size_t(x)] - 0.05 * h;
-                        break;
-                    }
-            addComponent(ycbcr, labels, i, b, e, scale, out, columns);
-            (hue == Hue::Yellow ? out.yellow_bars : out.blue_bars) += std::size_t(b.area);
+            const std::vector<bool> columns = postColumns(labels, i, b.box, edge, h);
+            const std::size_t sampled = addComponent(ycbcr, labels, i, b, e, scale, out, columns);
+            out.goal(e).posts += double(sampled);
         } else if (on_field) {
             // A door, a cupboard, a jersey: the goal's colour must not reach it.
             addComponent(ycbcr, labels, i, b, Evidence::Background, scale, out);

@@ -61,10 +61,20 @@ struct EvidenceSet
 {
     std::unordered_map<std::uint32_t, std::array<std::uint32_t, kEvidenceCount>> cells;
     std::array<Moments, kEvidenceCount> moments;
-    /// Pixels of goal-like bars per goal colour and of ball-like blobs, for the report.
+    /// Ball-like blobs seen.
     std::size_t ball_blobs = 0;
-    std::size_t yellow_bars = 0;
-    std::size_t blue_bars = 0;
+    /// Per goal colour (yellow, blue): pixels of posts, and of all its shapes near the field. A
+    /// goal's colour is mostly posts; a wall's or a crowd's is mostly not.
+    struct GoalCue
+    {
+        double posts = 0;
+        double shapes = 0;
+        /// Post pixels weighed by their share of the colour's shapes.
+        double weight() const { return shapes > 0 ? posts * posts / shapes : 0; }
+    };
+    std::array<GoalCue, 2> goals{};
+    GoalCue& goal(Evidence e) { return goals[e == Evidence::Blue ? 1 : 0]; }
+    const GoalCue& goal(Evidence e) const { return goals[e == Evidence::Blue ? 1 : 0]; }
 
     void add(Evidence e, const std::uint8_t* px);
     /// `count` pixels of `cell` (a table index), as at the cell's centre.
