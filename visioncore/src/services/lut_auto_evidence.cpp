@@ -471,7 +471,7 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
         // Its foot is at the field's far edge (on the goal line, a little in front of it), not
         // on the field near the camera (a person's legs) nor up on the wall.
         const bool stands =
-            bottom >= edge_at - 0.05 * h && bottom <= edge_at + 0.15 * h && b.box.y <= edge_at;
+            bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
         if (bar && stands) {
             const Evidence e = hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue;
             // Only the columns that reach down to the field's edge are the posts: a wall of
