@@ -212,8 +212,8 @@ int autoCommand(const QStringList& args, const Context& ctx)
                       "annotations.json in the stream folder).",
                       "FILE"});
     parser.addOption({"params-out",
-                      "Also write the goal colour found as a fieldsight-params/1 file (for "
-                      "--params, or the stream's params.json).",
+                      "Also write the goal colour found as a fieldsight-params/1 file, for "
+                      "--params.",
                       "FILE"});
     parser.addOption(orientationOption());
     if (auto done = parseCommand(parser, "lut auto", args, 2, 2, ctx))

@@ -55,14 +55,10 @@ double carpetShare(const cv::Mat& image, int top, const Gaussian& carpet)
 {
     std::size_t all = 0;
     std::size_t taken = 0;
-    for (int y = std::max(0, top); y < image.rows; y += 2) {
-        const std::uint8_t* row = image.ptr<std::uint8_t>(y);
-        for (int x = 0; x < image.cols; x += 2) {
-            const std::uint8_t* px = row + 3 * x;
-            ++all;
-            taken += carpet.distance2(px[0], px[1], px[2]) <= 9.0;
-        }
-    }
+    autolut::forLowerPixels({image}, {top}, [&](const std::uint8_t* px) {
+        ++all;
+        taken += carpet.distance2(px[0], px[1], px[2]) <= 9.0;
+    });
     return all ? double(taken) / double(all) : 0;
 }
 

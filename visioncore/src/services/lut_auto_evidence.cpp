@@ -61,28 +61,14 @@ namespace {
 
 constexpr double kCarpetLimit = 3.0; ///< Mahalanobis distance of a carpet pixel
 
-bool usableLevel(const std::uint8_t* px)
-{
-    return px[0] >= 24 && px[0] <= 240;
-}
-
 } // namespace
 
 std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames, const std::vector<int>& tops)
 {
     // The chroma histogram of the lower parts, at the table's resolution.
     cv::Mat hist(128, 128, CV_32F, cv::Scalar(0));
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        const cv::Mat& img = frames[f];
-        for (int y = std::max(0, tops[f]); y < img.rows; y += 2) {
-            const std::uint8_t* row = img.ptr<std::uint8_t>(y);
-            for (int x = 0; x < img.cols; x += 2) {
-                const std::uint8_t* px = row + 3 * x;
-                if (usableLevel(px))
-                    hist.at<float>(px[1] >> 1, px[2] >> 1) += 1;
-            }
-        }
-    }
+    forLowerPixels(frames, tops,
+                   [&](const std::uint8_t* px) { hist.at<float>(px[1] >> 1, px[2] >> 1) += 1; });
     cv::GaussianBlur(hist, hist, cv::Size(5, 5), 1.5);
     cv::Point peak;
     double most = 0;
@@ -97,23 +83,13 @@ std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames, const std
     Gaussian g;
     for (int round = 0; round < 4; ++round) {
         Moments m;
-        for (std::size_t f = 0; f < frames.size(); ++f) {
-            const cv::Mat& img = frames[f];
-            for (int y = std::max(0, tops[f]); y < img.rows; y += 2) {
-                const std::uint8_t* row = img.ptr<std::uint8_t>(y);
-                for (int x = 0; x < img.cols; x += 2) {
-                    const std::uint8_t* px = row + 3 * x;
-                    if (!usableLevel(px))
-                        continue;
-                    const bool near =
-                        round == 0
-                            ? std::abs(px[1] - peak_cb) <= 8 && std::abs(px[2] - peak_cr) <= 8
-                            : g.distance2(px[0], px[1], px[2]) <= kCarpetLimit * kCarpetLimit;
-                    if (near)
-                        m.add(px);
-                }
-            }
-        }
+        forLowerPixels(frames, tops, [&](const std::uint8_t* px) {
+            const bool near = round == 0
+                                  ? std::abs(px[1] - peak_cb) <= 8 && std::abs(px[2] - peak_cr) <= 8
+                                  : g.distance2(px[0], px[1], px[2]) <= kCarpetLimit * kCarpetLimit;
+            if (near)
+                m.add(px);
+        });
         if (m.n < 50)
             return std::nullopt;
         g = m.gaussian(floor);
@@ -470,8 +446,7 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
             b.box.height >= 10 * scale && b.box.height >= (b.box.y == 0 ? 3 : 4) * thickness;
         // Its foot is at the field's far edge (on the goal line, a little in front of it), not
         // on the field near the camera (a person's legs) nor up on the wall.
-        const bool stands =
-            bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
+        const bool stands = bottom >= edge_at - 0.05 * h && b.box.y <= edge_at;
         if (bar && stands) {
             const Evidence e = hue == Hue::Yellow ? Evidence::Yellow : Evidence::Blue;
             // Only the columns that reach down to the field's edge are the posts: a wall of

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <opencv2/core/mat.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -80,6 +81,24 @@ struct EvidenceSet
     /// `count` pixels of `cell` (a table index), as at the cell's centre.
     void addCell(Evidence e, std::uint32_t cell, std::uint32_t count);
 };
+
+/// Calls `f(px)` for every second pixel of every second row of each frame's lower part (from row
+/// `tops[i]` of `frames[i]`) whose luma is neither too dark nor clipped for its colour to count.
+template <class F>
+void forLowerPixels(const std::vector<cv::Mat>& frames, const std::vector<int>& tops, F&& f)
+{
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const cv::Mat& img = frames[i];
+        for (int y = std::max(0, tops[i]); y < img.rows; y += 2) {
+            const std::uint8_t* row = img.ptr<std::uint8_t>(y);
+            for (int x = 0; x < img.cols; x += 2) {
+                const std::uint8_t* px = row + 3 * x;
+                if (px[0] >= 24 && px[0] <= 240)
+                    f(px);
+            }
+        }
+    }
+}
 
 /// The carpet: the dominant chroma cluster in the lower part of the frames (below the kinematic
 /// horizon where a frame has one). `frames` are CV_8UC3 Y, Cb, Cr; `tops` the first row of each
