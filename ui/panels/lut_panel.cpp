@@ -93,6 +93,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
 
     // The palette: a button per class in id order, each showing its key (0-9, then '-').
     auto* palette = new QGridLayout;
+    m_palette = palette;
     m_colours = new QActionGroup(this);
     m_colours->setExclusive(true);
     for (int c = 0; c < kColourCount; ++c) {
@@ -194,10 +195,6 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     connect(m_preview_on, &QCheckBox::toggled, &settings, &LutToolSettings::setPreviewOn);
     form->addRow(m_preview_on);
     column->addLayout(form);
-
-    // Whole-table actions another part of the window offers (Calibrate > Automatic table).
-    m_table_actions = new QHBoxLayout;
-    column->addLayout(m_table_actions);
 
     // Samples: regions to build the table from, kept beside the stream.
     m_samples_info = new QLabel(this);
@@ -312,12 +309,15 @@ void LutPanel::showSettings()
 
 void LutPanel::addTableAction(QAction* action)
 {
+    // In the palette's cells after the last class: the dock has no height to spare for a row of
+    // its own at 1280x800, and a table made whole belongs beside the classes it fills.
     auto* button = new QToolButton(this);
     button->setObjectName(action->objectName());
     button->setDefaultAction(action);
     button->setToolButtonStyle(Qt::ToolButtonTextOnly);
     button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    m_table_actions->addWidget(button);
+    const int at = kColourCount + m_table_actions++;
+    m_palette->addWidget(button, at / 2, at % 2);
 }
 
 QList<QAction*> LutPanel::colourActions() const

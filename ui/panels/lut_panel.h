@@ -15,7 +15,7 @@
 
 class QActionGroup;
 class QCheckBox;
-class QHBoxLayout;
+class QGridLayout;
 class QLabel;
 class QSlider;
 class QSpinBox;
@@ -29,7 +29,7 @@ public:
     LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& samples, ToolManager& tools,
              QWidget* parent = nullptr);
 
-    /// A button for `action` (a menu's, with its shortcut) among the editor's table actions.
+    /// A button for `action` (a menu's, with its shortcut) after the palette's classes.
     void addTableAction(QAction* action);
     /// The palette's actions (one per class, keys 0-9 and -), for the window's menu.
     QList<QAction*> colourActions() const;
@@ -72,7 +72,8 @@ private:
     QCheckBox* m_keep_others = nullptr;
     QCheckBox* m_soft = nullptr;
     QCheckBox* m_preview_on = nullptr;
-    QHBoxLayout* m_table_actions = nullptr;
+    QGridLayout* m_palette = nullptr;
+    int m_table_actions = 0; ///< buttons added by addTableAction
     QLabel* m_stats = nullptr;
     QLabel* m_preview_label = nullptr;
     QLabel* m_samples_info = nullptr;
