@@ -151,7 +151,7 @@ QString CalibrateCommands::summary(const AutoLut& made, std::size_t cells_change
     for (const std::string& n : made.notes)
         notes << QString::fromStdString(n);
     if (!notes.isEmpty())
-        text += QStringLiteral(". ") + notes.join(QStringLiteral("; "));
+        text += tr(". Notes: %1").arg(notes.join(QStringLiteral("; ")));
     return text;
 }
 
