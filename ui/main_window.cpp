@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "ui/actions/annotation_commands.h"
+#include "ui/actions/calibrate_commands.h"
 #include "ui/actions/disk_watch.h"
 #include "ui/actions/file_commands.h"
 #include "ui/actions/menus.h"
@@ -52,6 +53,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     buildCentre();
     m_files = new FileCommands(*this);
     m_annotation_files = new AnnotationCommands(*this);
+    m_calibrate = new CalibrateCommands(*this);
     m_disk_watch = new DiskWatch(*this);
     buildStatusBar();
     buildDocks();
@@ -61,6 +63,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     addNavigateMenu(*this);
     addObjectMenu(*this);
     addPipelineMenu(*this);
+    addCalibrateMenu(*this);
     addAnnotateMenu(*this);
     addHelpMenu(*this);
 

@@ -22,6 +22,7 @@ namespace fieldsight::ui {
 class AnnotationCommands;
 class AnnotationStrip;
 class BookmarksPanel;
+class CalibrateCommands;
 class DetectionsPanel;
 class DiskWatch;
 class EffectStrip;
@@ -52,6 +53,7 @@ public:
     ToolManager& tools() { return *m_tools; }
     FileCommands& files() { return *m_files; }
     AnnotationCommands& annotationFiles() { return *m_annotation_files; }
+    CalibrateCommands& calibrate() { return *m_calibrate; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -116,6 +118,7 @@ private:
     ToolManager* m_tools = nullptr;
     FileCommands* m_files = nullptr;
     AnnotationCommands* m_annotation_files = nullptr;
+    CalibrateCommands* m_calibrate = nullptr;
     FrameRecorder* m_recorder = nullptr;
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;

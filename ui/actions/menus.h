@@ -17,6 +17,8 @@ void addNavigateMenu(MainWindow& window);
 /// What is set on the annotated object selected (concealed, keyframe, propagation).
 void addObjectMenu(MainWindow& window);
 void addPipelineMenu(MainWindow& window);
+/// The automatic table (CalibrateCommands), with its button in the LUT editor.
+void addCalibrateMenu(MainWindow& window);
 void addAnnotateMenu(MainWindow& window);
 void addHelpMenu(MainWindow& window);
 /// Help > Keyboard shortcuts' text: every key a user can press for a menu item (not Qt's

@@ -185,6 +185,15 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
     return opened;
 }
 
+std::function<Result<std::unique_ptr<StreamReader>>()> StreamDocument::reopener() const
+{
+    if (!m_stream || !m_stream->source || !m_stream->source->reader)
+        return {};
+    // The source is kept alive by the task; reopen() reads only what the reader fixed when it
+    // opened, so it runs beside the worker's reads.
+    return [source = m_stream->source] { return source->reader->reopen(); };
+}
+
 void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
 {
     if (m_stream)

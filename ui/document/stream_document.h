@@ -13,6 +13,7 @@
 #include <QThread>
 #include <QUndoStack>
 
+#include <functional>
 #include <map>
 #include <memory>
 
@@ -87,6 +88,10 @@ public:
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }
     QString frameName(std::size_t index) const;
     QStringList warnings() const { return m_stream ? m_stream->warnings : QStringList(); }
+    /// What opens another reader of the stream shown, serving the same frames turned as shown,
+    /// for a task of its own: call it on that task's thread (StreamReader::reopen, which shares
+    /// the reader's index). Empty for a camera or when no stream is open.
+    std::function<Result<std::unique_ptr<StreamReader>>()> reopener() const;
     /// The stream opened with an empty table because its own was missing or damaged.
     bool lutProblem() const { return m_stream && m_stream->lut_problem; }
 

@@ -2,6 +2,7 @@
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/dialogs/dialogs.h"
+#include "ui/widgets/progress_poll.h"
 #include "ui/widgets/wheel_guard.h"
 
 #include "visioncore/services/lut_compare.h"
@@ -15,12 +16,10 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
-#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -94,6 +93,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
 
     // The palette: a button per class in id order, each showing its key (0-9, then '-').
     auto* palette = new QGridLayout;
+    m_palette = palette;
     m_colours = new QActionGroup(this);
     m_colours->setExclusive(true);
     for (int c = 0; c < kColourCount; ++c) {
@@ -307,6 +307,19 @@ void LutPanel::showSettings()
     }
 }
 
+void LutPanel::addTableAction(QAction* action)
+{
+    // In the palette's cells after the last class: the dock has no height to spare for a row of
+    // its own at 1280x800, and a table made whole belongs beside the classes it fills.
+    auto* button = new QToolButton(this);
+    button->setObjectName(action->objectName());
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    const int at = kColourCount + m_table_actions++;
+    m_palette->addWidget(button, at / 2, at % 2);
+}
+
 QList<QAction*> LutPanel::colourActions() const
 {
     return m_colours->actions();
@@ -317,21 +330,9 @@ void LutPanel::buildFromSamples()
     if (m_samples.building())
         return;
     m_samples.build(m_samples_annotations->isChecked());
-    auto* progress =
-        new QProgressDialog(tr("Building the LUT from samples…"), tr("Cancel"), 0, 0, this);
-    progress->setObjectName(QStringLiteral("samples.progress"));
-    progress->setAttribute(Qt::WA_DeleteOnClose);
-    progress->setMinimumDuration(300);
-    connect(progress, &QProgressDialog::canceled, &m_samples, &SamplesDocument::cancel);
-    auto* poll = new QTimer(progress);
-    connect(poll, &QTimer::timeout, progress, [this, progress] {
-        const auto [done, total] = m_samples.progress();
-        progress->setMaximum(int(total));
-        progress->setValue(int(done));
-        if (!m_samples.building())
-            progress->close();
-    });
-    poll->start(100);
+    showProgress(this, tr("Building the LUT from samples…"), QStringLiteral("samples.progress"),
+                 {[this] { return m_samples.progress(); }, [this] { return m_samples.building(); },
+                  [this] { m_samples.cancel(); }});
 }
 
 void LutPanel::askApplyBuild()

@@ -1,8 +1,9 @@
 // The LUT editor's dock: the class palette (keys 0-9 and -), a button per tool (from the tool
 // list), the shared tool settings (tolerance per channel and for all, brush size, keep other
-// classes, soft classes, preview), what the tool would change under the cursor, the samples and the
-// build from them, retargeting to a venue's light, and the cells per class. It edits nothing
-// itself: the tools and the documents' commands do.
+// classes, soft classes, preview), what the tool would change under the cursor, buttons for the
+// whole-table actions of the menus (the automatic table), the samples and the build from them,
+// retargeting to a venue's light, and the cells per class. It edits nothing itself: the tools and
+// the documents' commands do.
 #pragma once
 
 #include "ui/document/lut_document.h"
@@ -14,6 +15,7 @@
 
 class QActionGroup;
 class QCheckBox;
+class QGridLayout;
 class QLabel;
 class QSlider;
 class QSpinBox;
@@ -27,6 +29,8 @@ public:
     LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& samples, ToolManager& tools,
              QWidget* parent = nullptr);
 
+    /// A button for `action` (a menu's, with its shortcut) after the palette's classes.
+    void addTableAction(QAction* action);
     /// The palette's actions (one per class, keys 0-9 and -), for the window's menu.
     QList<QAction*> colourActions() const;
     /// Retargeting to a venue: the shift that moves the table's green onto the current frame's
@@ -68,6 +72,8 @@ private:
     QCheckBox* m_keep_others = nullptr;
     QCheckBox* m_soft = nullptr;
     QCheckBox* m_preview_on = nullptr;
+    QGridLayout* m_palette = nullptr;
+    int m_table_actions = 0; ///< buttons added by addTableAction
     QLabel* m_stats = nullptr;
     QLabel* m_preview_label = nullptr;
     QLabel* m_samples_info = nullptr;

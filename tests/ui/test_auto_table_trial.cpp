@@ -1,0 +1,280 @@
+// The venue trial of issue 33 in the real window, offscreen: from an empty table, one click on
+// the LUT editor's "Automatic table" (Calibrate > Automatic table), then the scores the
+// Evaluation dock gives, on the NUbots, Dutch Nao Team and B-Human frames of ../shared (linked
+// into stream folders with their truth; skipped when reference_data is absent). It counts the
+// clicks and the time from the click to the table and to the scores, and prints each class's
+// precision and recall, so the trial's goal (at most 3 clicks and 1 minute to a table that finds
+// the ball, the posts and the lines) can be read off. It checks the plumbing, not the method's
+// quality: the table the window got is byte for byte buildAutoLut's of the same upright frames,
+// one undo step, and the goal colour found is the pipeline's. FIELDSIGHT_TRIAL_STREAM=DIR adds a
+// stream of your own (with its annotations.json), opened without its table.
+#include "support/reference_streams.h"
+#include "support/synthetic_frames.h"
+#include "support/window_waits.h"
+#include "ui/actions/calibrate_commands.h"
+#include "ui/adapters/local_path.h"
+#include "ui/panels/lut_panel.h"
+#include "visioncore/io/dnt_labels.h"
+#include "visioncore/services/lut_auto.h"
+
+#include <QDockWidget>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QToolButton>
+#include <QtTest>
+
+using namespace fieldsight;
+using namespace fieldsight::test;
+using fieldsight::ui::CalibrateCommands;
+using fieldsight::ui::MainWindow;
+
+namespace {
+
+QString fixturePath(const QString& relative)
+{
+    return QString(FIELDSIGHT_TEST_DATA_DIR) + "/real/" + relative;
+}
+
+QJsonObject loadJsonObject(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(file.readAll()).object();
+}
+
+bool writeJson(const QString& path, const QJsonObject& json)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(QJsonDocument(json).toJson()) > 0;
+}
+
+/// The NUbots lab pictures (stored upside down) with their hand-made truth; no table.
+QString makeNubots(const QString& folder)
+{
+    QJsonArray frames;
+    const QJsonObject truth = loadJsonObject(fixturePath("nubots2014/annotations.json"));
+    for (const QString& name : truth.value("frames").toObject().keys())
+        frames.append(QJsonObject{{"file", name}});
+    const QString made = makeLinkedStream(
+        folder, referencePath("nubots_nusight_frames"), frames,
+        {{"format", "fieldsight-stream/1"}, {"pixel_format", "rgb"}, {"orientation", 180}});
+    if (!made.isEmpty() ||
+        !QFile::copy(fixturePath("nubots2014/annotations.json"), folder + "/annotations.json"))
+        return {};
+    return folder;
+}
+
+/// The B-Human 2009 log's annotated frames with their kinematic horizons and the log's own
+/// parameters, but neither its table nor its goal colour (the automatic table is to find blue).
+QString makeBhuman(const QString& folder)
+{
+    const QJsonObject horizons =
+        loadJsonObject(fixturePath("bhuman2009/horizons.json")).value("frames").toObject();
+    QJsonArray frames;
+    for (const QString& name : horizons.keys()) {
+        const QJsonObject h = horizons.value(name).toObject();
+        QJsonObject frame{{"file", name}, {"timestamp_ms", h.value("timestamp_ms")}};
+        if (h.value("valid").toBool())
+            frame.insert("horizon", h.value("horizon"));
+        frames.append(frame);
+    }
+    const QString made = makeLinkedStream(
+        folder, referencePath("bhuman2009_log_coltable/frames_ycbcr"), frames,
+        {{"format", "fieldsight-stream/1"}, {"pixel_format", "ycbcr"}, {"params", "params.json"}});
+    QJsonObject params = loadJsonObject(fixturePath("bhuman2009/params.json"));
+    QJsonObject stages = params.value("stages").toObject();
+    QJsonObject transitions = stages.value("transitions").toObject();
+    transitions.remove("goal_colour");
+    if (transitions.isEmpty())
+        stages.remove("transitions");
+    else
+        stages.insert("transitions", transitions);
+    params.insert("stages", stages);
+    if (!made.isEmpty() || !writeJson(folder + "/params.json", params) ||
+        !QFile::copy(fixturePath("bhuman2009/annotations.json"), folder + "/annotations.json"))
+        return {};
+    return folder;
+}
+
+/// The Dutch Nao Team's straight-walk pictures, their goal-post labels as truth (reviewed for
+/// goalposts only).
+QString makeDnt(const QString& folder)
+{
+    const QString source = referencePath("dnt_uva_2013_fieldpictures/straightwalk");
+    QDir().mkpath(folder);
+    for (const QString& f : QDir(source).entryList({"*.png"}))
+        if (!QFile::link(source + "/" + f, folder + "/" + f))
+            return {};
+    const std::string labels = (source + "/annotations_original.txt").toStdString();
+    auto pictures = loadDntLabels(labels);
+    auto reader = openStream(folder.toStdString());
+    if (!pictures || !reader)
+        return {};
+    auto imported = importDntGoalposts(pictures.value(), *reader.value(), labels);
+    if (!imported || !imported.value()
+                          .annotations
+                          .save((folder + "/annotations.json").toStdString(),
+                                Pipeline::standard().perceptKinds())
+                          .ok())
+        return {};
+    return folder;
+}
+
+/// Waits until the evaluation has finished a run with nothing pending.
+bool waitForEvaluation(MainWindow& w, int ms = 120000)
+{
+    ui::EvaluationScan& scan = w.session().evaluation();
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < ms) {
+        if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
+            return true;
+        QTest::qWait(5);
+    }
+    return false;
+}
+
+QString scoreLine(const char* name, const ClassScore& c)
+{
+    return QString("  %1 TP %2 FP %3 FN %4  precision %5  recall %6")
+        .arg(name, -10)
+        .arg(c.tp, 3)
+        .arg(c.fp, 3)
+        .arg(c.fn, 3)
+        .arg(c.precision(), 0, 'f', 3)
+        .arg(c.recall(), 0, 'f', 3);
+}
+
+QByteArray bytesOf(const ColourLut& lut)
+{
+    return QByteArray(reinterpret_cast<const char*>(lut.data()), qsizetype(ColourLut::kCells));
+}
+
+} // namespace
+
+class TestAutoTableTrial : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("FieldsightTest");
+        QCoreApplication::setApplicationName("test_auto_table_trial");
+        QVERIFY(m_dir.isValid());
+    }
+
+    void init()
+    {
+        QSettings().clear();
+        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
+    }
+
+    void fromAnEmptyTable_data()
+    {
+        QTest::addColumn<QString>("stream");
+        const QString own = qEnvironmentVariable("FIELDSIGHT_TRIAL_STREAM");
+        if (!own.isEmpty())
+            QTest::newRow("FIELDSIGHT_TRIAL_STREAM") << own;
+        for (const char* name : {"nubots", "dnt", "bhuman"})
+            QTest::newRow(name) << QString::fromLatin1(name);
+    }
+
+    void fromAnEmptyTable()
+    {
+        QFETCH(QString, stream);
+        const bool reference = QString(QTest::currentDataTag()) != "FIELDSIGHT_TRIAL_STREAM";
+        if (reference && referenceDataDir().empty())
+            QSKIP("reference_data is absent (FIELDSIGHT_SHARED_DIR)");
+        if (stream == "nubots")
+            stream = makeNubots(m_dir.filePath("nubots"));
+        else if (stream == "dnt")
+            stream = makeDnt(m_dir.filePath("dnt"));
+        else if (stream == "bhuman")
+            stream = makeBhuman(m_dir.filePath("bhuman"));
+        QVERIFY2(!stream.isEmpty(), "the trial's stream could not be made");
+
+        MainWindow w;
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        // An empty table: a new one, whatever the stream brings.
+        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        w.files().openStream(stream);
+        QVERIFY(opened.wait(30000) && opened.front().front().toBool());
+        QVERIFY(w.files().newLut());
+        QVERIFY(waitForFrame(w, w.session().stream().currentIndex()));
+        QVERIFY(waitForEvaluation(w));
+        QVERIFY2(w.session().evaluation().report(),
+                 qPrintable("no annotated frames to score: " + w.session().evaluation().problem()));
+        const QByteArray empty = bytesOf(ColourLut());
+        QCOMPARE(bytesOf(w.session().lut().table()), empty);
+
+        // The user: one click on the editor's button (the menu's item is the same action).
+        auto* dock = w.findChild<QDockWidget*>("lut_dock");
+        QVERIFY(dock);
+        dock->raise();
+        auto* button = w.lutPanel().findChild<QToolButton*>(QStringLiteral("calibrate.auto_lut"));
+        QVERIFY(button);
+        QTRY_VERIFY(button->isVisible());
+        int clicks = 0;
+        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QElapsedTimer clock;
+        clock.start();
+        QTest::mouseClick(button, Qt::LeftButton);
+        ++clicks;
+        QVERIFY(done.wait(300000));
+        const double table_s = double(clock.elapsed()) / 1000;
+        QVERIFY2(done.front().front().toBool(), qPrintable(w.lastMessage()));
+        QVERIFY(waitForEvaluation(w, 300000));
+        const double scores_s = double(clock.elapsed()) / 1000;
+
+        // The plumbing: the method's own table of the same upright frames, one undo step.
+        auto reader =
+            openStream(ui::toLocalPath(stream), StreamOptions{w.session().stream().orientation()});
+        QVERIFY(reader.ok());
+        auto made = buildAutoLut(*reader.value());
+        QVERIFY2(made.ok(), made.ok() ? "" : made.error().message.c_str());
+        const AutoLut& a = made.value();
+        QCOMPARE(bytesOf(w.session().lut().table()), bytesOf(a.lut));
+        QCOMPARE(w.session().lut().undoStack().count(), bytesOf(a.lut) == empty ? 0 : 1);
+        if (a.goal_colour)
+            for (const StageDescriptor& s : w.session().pipeline().descriptors())
+                for (const ParamInfo& p : s.params)
+                    if (p.name == "goal_colour" && p.kind == ParamKind::Choice)
+                        QCOMPARE(w.session().settings().paramValue(s.info.id, p.name),
+                                 double(int(*a.goal_colour)));
+
+        const EvaluationScores& s = w.session().evaluation().report()->scores;
+        QStringList lines;
+        lines << QString(
+                     "%1: %2 click(s), table in %3 s, scores in %4 s (goal: 3 clicks, 60 s: %5)")
+                     .arg(QTest::currentDataTag())
+                     .arg(clicks)
+                     .arg(table_s, 0, 'f', 1)
+                     .arg(scores_s, 0, 'f', 1)
+                     .arg(clicks <= 3 && scores_s <= 60 ? "met" : "NOT met");
+        lines << "  " + w.lastMessage();
+        lines << QString("  %1 done frames, %2 reviewed").arg(s.frames).arg(s.frames_reviewed);
+        lines << scoreLine("ball", s.balls) << scoreLine("goalpost", s.goalposts)
+              << scoreLine("obstacle", s.obstacles) << scoreLine("field line", s.field_lines);
+        if (s.boundary_frames > 0)
+            lines << QString("  field boundary: mean error %1 px over %2 frames")
+                         .arg(s.boundaryMeanError(), 0, 'f', 2)
+                         .arg(s.boundary_frames);
+        for (const QString& line : lines)
+            qInfo().noquote() << line;
+        QVERIFY(clicks <= 3);
+    }
+};
+
+QTEST_MAIN(TestAutoTableTrial)
+#include "test_auto_table_trial.moc"
