@@ -122,6 +122,9 @@ Status generateStream(const SynthOptions& options, bool* refused)
     if (options.frames < 1 || options.frames > kMaxFrames)
         return Error{options.out_dir + ": frame count " + std::to_string(options.frames) +
                      " is out of range (1.." + std::to_string(kMaxFrames) + ")"};
+    if (!(options.table_light >= 0 && options.table_light <= 1))
+        return Error{options.out_dir + ": table light " + std::to_string(options.table_light) +
+                     " is out of range (0..1)"};
     if (!(options.drift >= 0 && options.drift <= 0.5))
         return Error{options.out_dir + ": light drift " + std::to_string(options.drift) +
                      " is out of range (0..0.5)"};
@@ -160,8 +163,10 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
     std::error_code ec;
 
     ScenarioScript script(options.scenario, options.seed, options.width, options.height);
-    // The table is voted from frames in the first frame's light, whatever the drift.
-    const ScenarioScript first_light = script;
+    // The table is voted from frames all in one light: the first frame's, or the one asked for.
+    ScenarioScript first_light = script;
+    if (options.table_light != 0)
+        first_light.setLightDrift(options.drift, options.frames, options.table_light);
     script.setLightDrift(options.drift, options.frames);
     IdealLutBuilder lut;
     Annotations annotations;

@@ -21,11 +21,20 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain)
     const double ig = 1.0 / g_gain;
     const double ib = 1.0 / b_gain;
     LutInputMap m;
-    // A grey pixel keeps Cb = Cr = 128 only when the gains are equal; its level scales by the
-    // luma-weighted inverse gain.
+    // Y' = level * Y + a * (Cb - 128) + b * (Cr - 128), exactly, for R, G, B divided by the gains;
+    // the chroma terms become offsets of the observed Y, in whole levels.
     const double level = 0.299 * ir + 0.587 * ig + 0.114 * ib;
-    for (int y = 0; y < 256; ++y)
-        m.m_y[std::size_t(y)] = std::uint32_t(toByte(y * level) >> 1) << 14;
+    const double a = -0.587 * 0.344136 * ig + 0.114 * 1.772 * ib;
+    const double b = 0.299 * 1.402 * ir - 0.587 * 0.714136 * ig;
+    const auto offset = [&](double coefficient, int c) {
+        const long dy = std::lround(coefficient * (c - 128.0) / level);
+        return std::uint32_t(std::clamp(dy, long(-kOffsetBias), long(kOffsetBias - 1)) +
+                             kOffsetBias);
+    };
+    for (std::size_t i = 0; i < m.m_y.size(); ++i) {
+        const double y = double(i) - 2 * kOffsetBias;
+        m.m_y[i] = std::uint32_t(toByte(y * level) >> 1) << 14;
+    }
     for (int band = 0; band < kBands; ++band) {
         const double yc = band * (1 << kBandShift) + ((1 << kBandShift) - 1) / 2.0;
         for (int c = 0; c < 256; ++c) {
@@ -33,15 +42,17 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain)
             // Observed (yc, c, 128) back to R, G, B, divided by the gains, and Cb' of that.
             double r = yc * ir;
             double g = (yc - 0.344136 * d) * ig;
-            double b = (yc + 1.772 * d) * ib;
-            const double cb = 128.0 - 0.168736 * r - 0.331264 * g + 0.5 * b;
+            double bl = (yc + 1.772 * d) * ib;
+            const double cb = 128.0 - 0.168736 * r - 0.331264 * g + 0.5 * bl;
             // Observed (yc, 128, c), and Cr' of that.
             r = (yc + 1.402 * d) * ir;
             g = (yc - 0.714136 * d) * ig;
-            b = yc * ib;
-            const double cr = 128.0 + 0.5 * r - 0.418688 * g - 0.081312 * b;
-            m.m_cb[std::size_t(band)][std::size_t(c)] = std::uint16_t((toByte(cb) >> 1) << 7);
-            m.m_cr[std::size_t(band)][std::size_t(c)] = std::uint16_t(toByte(cr) >> 1);
+            bl = yc * ib;
+            const double cr = 128.0 + 0.5 * r - 0.418688 * g - 0.081312 * bl;
+            m.m_cb[std::size_t(band)][std::size_t(c)] =
+                (offset(a, c) << 16) | std::uint32_t((toByte(cb) >> 1) << 7);
+            m.m_cr[std::size_t(band)][std::size_t(c)] =
+                (offset(b, c) << 16) | std::uint32_t(toByte(cr) >> 1);
         }
     }
     return m;

@@ -8,11 +8,12 @@
 
 namespace fieldsight {
 
-/// Maps an observed Y, Cb, Cr to the LUT cell it reads. Y maps to the Y part of the cell index
-/// alone; Cb and Cr each map to their part within one of kBands bands of Y, so a chroma shift can
-/// grow with brightness as a white-balance change does. The cross terms of a full colour
-/// transform (Cr on Cb', chroma on Y') are left out: small for the gains a light drifts by.
-/// Immutable once made; shared between tables through std::shared_ptr<const LutInputMap>.
+/// Maps an observed Y, Cb, Cr to the LUT cell it reads. Y' is exact for a change of R, G, B gains
+/// (Y plus an offset from Cb and one from Cr, scaled); Cb' and Cr' each come from their own
+/// channel within one of kBands bands of Y, so a chroma shift can grow with brightness as a
+/// white-balance change does. The chroma cross terms (Cr on Cb', Cb on Cr') are left out: under
+/// a level for the gains a light drifts by. Immutable once made; shared between tables through
+/// std::shared_ptr<const LutInputMap>.
 class LutInputMap
 {
 public:
@@ -27,13 +28,20 @@ public:
     std::size_t index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const
     {
         const std::size_t band = std::size_t(y >> kBandShift);
-        return m_y[y] | m_cb[band][cb] | m_cr[band][cr];
+        const std::uint32_t c = m_cb[band][cb];
+        const std::uint32_t r = m_cr[band][cr];
+        return m_y[std::size_t(y) + (c >> 16) + (r >> 16)] | (c & 0xFFFF) | (r & 0xFFFF);
     }
 
 private:
-    std::array<std::uint32_t, 256> m_y{};                      ///< (Y' >> 1) << 14
-    std::array<std::array<std::uint16_t, 256>, kBands> m_cb{}; ///< (Cb' >> 1) << 7
-    std::array<std::array<std::uint16_t, 256>, kBands> m_cr{}; ///< Cr' >> 1
+    static constexpr int kOffsetBias = 64; ///< a chroma's Y offset is stored plus this
+
+    /// (Y' >> 1) << 14 of the observed Y + the two offsets (each biased by kOffsetBias).
+    std::array<std::uint32_t, 256 + 4 * kOffsetBias> m_y{};
+    /// Low 16 bits (Cb' >> 1) << 7, high bits Cb's Y offset plus kOffsetBias.
+    std::array<std::array<std::uint32_t, 256>, kBands> m_cb{};
+    /// Low 16 bits Cr' >> 1, high bits Cr's Y offset plus kOffsetBias.
+    std::array<std::array<std::uint32_t, 256>, kBands> m_cr{};
 };
 
 } // namespace fieldsight
