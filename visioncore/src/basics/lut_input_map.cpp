@@ -8,9 +8,10 @@ namespace fieldsight {
 
 namespace {
 
-std::uint8_t toByte(double v)
+/// Rounds to the nearest whole 8-bit level, clamped (no library call: a map is made often).
+std::uint32_t toByte(double v)
 {
-    return std::uint8_t(std::clamp(std::lround(v), 0L, 255L));
+    return v <= 0 ? 0u : v >= 255 ? 255u : std::uint32_t(v + 0.5);
 }
 
 } // namespace
@@ -26,33 +27,35 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain)
     const double level = 0.299 * ir + 0.587 * ig + 0.114 * ib;
     const double a = -0.587 * 0.344136 * ig + 0.114 * 1.772 * ib;
     const double b = 0.299 * 1.402 * ir - 0.587 * 0.714136 * ig;
-    const auto offset = [&](double coefficient, int c) {
-        const long dy = std::lround(coefficient * (c - 128.0) / level);
-        return std::uint32_t(std::clamp(dy, long(-kOffsetBias), long(kOffsetBias - 1)) +
-                             kOffsetBias);
-    };
-    for (std::size_t i = 0; i < m.m_y.size(); ++i) {
-        const double y = double(i) - 2 * kOffsetBias;
-        m.m_y[i] = std::uint32_t(toByte(y * level) >> 1) << 14;
+    for (std::size_t i = 0; i < m.m_y.size(); ++i)
+        m.m_y[i] = (toByte((double(i) - 2 * kOffsetBias) * level) >> 1) << 14;
+    std::array<std::uint32_t, 256> cb_offset{};
+    std::array<std::uint32_t, 256> cr_offset{};
+    for (int c = 0; c < 256; ++c) {
+        const auto offset = [&](double coefficient) {
+            const double dy = std::clamp(coefficient * (c - 128.0) / level, -double(kOffsetBias),
+                                         double(kOffsetBias - 1));
+            return std::uint32_t(int(std::floor(dy + 0.5)) + kOffsetBias) << 16;
+        };
+        cb_offset[std::size_t(c)] = offset(a);
+        cr_offset[std::size_t(c)] = offset(b);
     }
+    // Cb' and Cr' are linear in the observed Cb (Cr) within a band: observed (yc, Cb, 128) back to
+    // R, G, B, divided by the gains, and Cb' of that; (yc, 128, Cr) likewise for Cr'.
+    const double cb_slope = 0.331264 * 0.344136 * ig + 0.5 * 1.772 * ib;
+    const double cr_slope = 0.5 * 1.402 * ir + 0.418688 * 0.714136 * ig;
+    const double cb_per_y = -0.168736 * ir - 0.331264 * ig + 0.5 * ib;
+    const double cr_per_y = 0.5 * ir - 0.418688 * ig - 0.081312 * ib;
     for (int band = 0; band < kBands; ++band) {
         const double yc = band * (1 << kBandShift) + ((1 << kBandShift) - 1) / 2.0;
+        const double cb0 = 128.0 + cb_per_y * yc - 128.0 * cb_slope;
+        const double cr0 = 128.0 + cr_per_y * yc - 128.0 * cr_slope;
+        auto& cbs = m.m_cb[std::size_t(band)];
+        auto& crs = m.m_cr[std::size_t(band)];
         for (int c = 0; c < 256; ++c) {
-            const double d = c - 128.0;
-            // Observed (yc, c, 128) back to R, G, B, divided by the gains, and Cb' of that.
-            double r = yc * ir;
-            double g = (yc - 0.344136 * d) * ig;
-            double bl = (yc + 1.772 * d) * ib;
-            const double cb = 128.0 - 0.168736 * r - 0.331264 * g + 0.5 * bl;
-            // Observed (yc, 128, c), and Cr' of that.
-            r = (yc + 1.402 * d) * ir;
-            g = (yc - 0.714136 * d) * ig;
-            bl = yc * ib;
-            const double cr = 128.0 + 0.5 * r - 0.418688 * g - 0.081312 * bl;
-            m.m_cb[std::size_t(band)][std::size_t(c)] =
-                (offset(a, c) << 16) | std::uint32_t((toByte(cb) >> 1) << 7);
-            m.m_cr[std::size_t(band)][std::size_t(c)] =
-                (offset(b, c) << 16) | std::uint32_t(toByte(cr) >> 1);
+            cbs[std::size_t(c)] =
+                cb_offset[std::size_t(c)] | ((toByte(cb0 + cb_slope * c) >> 1) << 7);
+            crs[std::size_t(c)] = cr_offset[std::size_t(c)] | (toByte(cr0 + cr_slope * c) >> 1);
         }
     }
     return m;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fieldsight {
@@ -14,9 +15,15 @@ namespace {
 /// robots, the two every field shows.
 constexpr std::array<Colour, 2> kReferenceClasses{Colour::Green, Colour::White};
 
-/// Maps are made for gains rounded to this step of ln gain: about half an 8-bit level at mid
-/// grey, finer than the table's 2-level cells.
-constexpr double kMapStep = 0.004;
+/// Maps are made for gains rounded to this step of ln gain: under an 8-bit level at mid grey,
+/// finer than the table's 2-level cells, and coarse enough that a slow change makes few maps.
+constexpr double kMapStep = 0.005;
+/// A light within this (ln gain, about 2%) of the table's reads the table as it is: its cells are
+/// 2 levels wide and a table has margins, and a lookup through a map costs twice one without.
+constexpr double kNoMapBelow = 0.02;
+
+/// Samples a class needs in a frame to say anything of the light.
+constexpr std::size_t kMinClassSamples = 10;
 
 std::array<long, 3> mapKey(const std::array<double, 3>& gain)
 {
@@ -28,7 +35,8 @@ std::array<long, 3> mapKey(const std::array<double, 3>& gain)
 
 std::shared_ptr<const LutInputMap> mapOfKey(const std::array<long, 3>& key)
 {
-    if (key == std::array<long, 3>{0, 0, 0})
+    const long largest = std::max({std::abs(key[0]), std::abs(key[1]), std::abs(key[2])});
+    if (double(largest) * kMapStep < kNoMapBelow)
         return nullptr;
     return std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(
         std::exp(double(key[0]) * kMapStep), std::exp(double(key[1]) * kMapStep),
@@ -70,6 +78,8 @@ const char* verdictName(LightState::Verdict verdict)
         return "too few carpet and white samples";
     case LightState::Verdict::Outlier:
         return "outlier";
+    case LightState::Verdict::Inconsistent:
+        return "the carpet and the white disagree";
     case LightState::Verdict::Unread:
         return "unreadable";
     }
@@ -90,15 +100,19 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
 {
     const int step = m_options.sample_step;
     const int width = ycbcr.cols;
-    // Below the kinematic horizon where the carpet is; the whole frame when none is known.
-    const double top = std::min(horizon.y_left, horizon.y_right);
-    const int first_row = std::clamp(int(std::ceil(std::max(0.0, top))), 0, ycbcr.rows);
+    const int rows = ycbcr.rows;
+    // A fixed grid, below the kinematic horizon where the carpet is (the whole frame when none is
+    // known): each sampled column's first row, worked out once.
+    std::vector<int> first_row;
+    for (int x = step / 2; x < width; x += step)
+        first_row.push_back(int(std::clamp(std::ceil(horizon.yAt(x, width)), 0.0, double(rows))));
     const std::uint8_t* cells = m_lut->data();
-    for (int y = first_row + step / 2; y < ycbcr.rows; y += step) {
-        const std::uint8_t* row = ycbcr.ptr<std::uint8_t>(y);
-        for (int x = step / 2; x < width; x += step) {
-            const std::uint8_t* p = row + 3 * x;
-            if (horizon.yAt(x, width) > y)
+    std::array<std::array<long long, 3>, 2> sum{};
+    std::array<std::size_t, 2> count{};
+    for (int y = step / 2; y < rows; y += step) {
+        const std::uint8_t* p = ycbcr.ptr<std::uint8_t>(y) + 3 * (step / 2);
+        for (std::size_t column = 0; column < first_row.size(); ++column, p += 3 * step) {
+            if (y < first_row[column])
                 continue;
             const std::size_t cell =
                 m_map ? m_map->index(p[0], p[1], p[2]) : ColourLut::index(p[0], p[1], p[2]);
@@ -106,19 +120,25 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
             const std::size_t k = c == kReferenceClasses[0] ? 0 : c == kReferenceClasses[1] ? 1 : 2;
             if (k == 2)
                 continue;
-            // Back to R, G, B (BT.601 full range); a clipped channel says nothing of the gain.
-            const double cb = p[1] - 128.0;
-            const double cr = p[2] - 128.0;
-            const double r = p[0] + 1.402 * cr;
-            const double g = p[0] - 0.344136 * cb - 0.714136 * cr;
-            const double b = p[0] + 1.772 * cb;
-            if (std::max({r, g, b}) >= 250.0 || std::min({r, g, b}) <= 2.0)
+            // Back to R, G, B (BT.601 full range, in 1/256 steps); a clipped channel says
+            // nothing of the gain.
+            const int cb = p[1] - 128;
+            const int cr = p[2] - 128;
+            const int r = p[0] + ((359 * cr) >> 8);
+            const int g = p[0] - ((88 * cb + 183 * cr) >> 8);
+            const int b = p[0] + ((454 * cb) >> 8);
+            if (std::max({r, g, b}) >= 250 || std::min({r, g, b}) <= 2)
                 continue;
-            sums[k].rgb[0] += r;
-            sums[k].rgb[1] += g;
-            sums[k].rgb[2] += b;
-            ++sums[k].count;
+            sum[k][0] += r;
+            sum[k][1] += g;
+            sum[k][2] += b;
+            ++count[k];
         }
+    }
+    for (std::size_t k = 0; k < 2; ++k) {
+        for (std::size_t c = 0; c < 3; ++c)
+            sums[k].rgb[c] = double(sum[k][c]);
+        sums[k].count = count[k];
     }
 }
 
@@ -152,26 +172,68 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         m_state.verdict = LightState::Verdict::Sparse;
         return;
     }
-    // Least squares for observed = gain * reference over the classes' means, each class weighed
-    // by its samples, one channel at a time.
-    std::array<double, 3> estimate{};
-    for (std::size_t c = 0; c < 3; ++c) {
-        double num = 0;
-        double den = 0;
-        for (std::size_t k = 0; k < sums.size(); ++k) {
-            if (sums[k].count == 0 || m_reference[k].count == 0)
-                continue;
+    // Per class, its means over its reference means, in ln. A change of the light moves every
+    // class alike; a change of what is in view (the carpet near or far, a robot's white) moves
+    // one class's level but not its colour. So the colour (each channel over green) is the
+    // classes' weighted mean, and a frame where they disagree on it is ignored; the level moves
+    // only as far as every class agrees.
+    struct ClassRatio
+    {
+        std::array<double, 3> log;
+        double weight;
+    };
+    std::vector<ClassRatio> ratios;
+    for (std::size_t k = 0; k < sums.size(); ++k) {
+        if (sums[k].count < kMinClassSamples || m_reference[k].count == 0)
+            continue;
+        ClassRatio r{{}, double(sums[k].count)};
+        bool positive = true;
+        for (std::size_t c = 0; c < 3; ++c) {
             const double seen = sums[k].rgb[c] / double(sums[k].count);
             const double ref = m_reference[k].rgb[c] / double(m_reference[k].count);
-            num += double(sums[k].count) * seen * ref;
-            den += double(sums[k].count) * ref * ref;
+            positive = positive && seen > 0 && ref > 0;
+            r.log[c] = positive ? std::log(seen / ref) : 0.0;
         }
-        if (num <= 0 || den <= 0) {
-            m_state.verdict = LightState::Verdict::Sparse;
-            return;
-        }
-        estimate[c] = num / den;
+        if (positive)
+            ratios.push_back(r);
     }
+    if (ratios.empty()) {
+        m_state.verdict = LightState::Verdict::Sparse;
+        return;
+    }
+    std::array<double, 3> colour{0, 0, 0};
+    double weights = 0;
+    for (const ClassRatio& r : ratios) {
+        for (std::size_t c = 0; c < 3; ++c)
+            colour[c] += r.weight * (r.log[c] - r.log[1]);
+        weights += r.weight;
+    }
+    for (double& c : colour)
+        c /= weights;
+    // The level: a class sees its pixels through the current map, so one whose cells are narrow
+    // in Y loses the pixels the light moved furthest and under-reads the change. The level is the
+    // smallest move every class agrees on (the same way), relative to the state's; none when
+    // they move apart (a view with more near carpet and a robot's white, not a change of light).
+    const double level_now = std::log(m_state.gain[1]);
+    double level = ratios.front().log[1]; // one class alone: its level
+    if (ratios.size() > 1) {
+        double up = std::numeric_limits<double>::infinity();
+        double down = std::numeric_limits<double>::infinity();
+        for (const ClassRatio& r : ratios) {
+            up = std::min(up, r.log[1] - level_now);
+            down = std::min(down, level_now - r.log[1]);
+        }
+        level = level_now + (up > 0 ? up : down > 0 ? -down : 0.0);
+    }
+    for (const ClassRatio& r : ratios)
+        for (std::size_t c = 0; c < 3; ++c)
+            if (std::abs(r.log[c] - r.log[1] - colour[c]) > m_options.max_disagreement) {
+                m_state.verdict = LightState::Verdict::Inconsistent;
+                return;
+            }
+    std::array<double, 3> estimate{};
+    for (std::size_t c = 0; c < 3; ++c)
+        estimate[c] = std::exp(level + colour[c]);
     m_state.estimate = estimate;
 
     std::array<double, 3> log_estimate{};

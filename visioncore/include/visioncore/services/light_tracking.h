@@ -24,13 +24,14 @@ namespace fieldsight {
 
 struct LightTrackingOptions
 {
-    int sample_step = 8;          ///< px between samples along a row, and rows between rows
-    int reference_frames = 5;     ///< first frames with enough samples that set the reference
-    std::size_t min_samples = 40; ///< carpet and white samples a frame needs to count
-    double max_step = 0.12;       ///< largest |ln gain| a frame may move from the state
-    int outlier_patience = 20;    ///< outlying frames in a row after which the light has changed
-    int median_window = 5;        ///< frames whose estimates the median is taken over
-    double smoothing = 0.4;       ///< share of the median that moves the state each frame
+    int sample_step = 8;            ///< px between samples along a row, and rows between rows
+    int reference_frames = 5;       ///< first frames with enough samples that set the reference
+    std::size_t min_samples = 40;   ///< carpet and white samples a frame needs to count
+    double max_step = 0.12;         ///< largest |ln gain| a frame may move from the state
+    double max_disagreement = 0.08; ///< ln; classes further apart than this do not agree
+    int outlier_patience = 20;      ///< outlying frames in a row after which the light has changed
+    int median_window = 5;          ///< frames whose estimates the median is taken over
+    double smoothing = 0.4;         ///< share of the median that moves the state each frame
 };
 
 /// The light of one frame, relative to the light the table was made for.
@@ -38,11 +39,12 @@ struct LightState
 {
     /// What the frame did to the state.
     enum class Verdict {
-        Reference, ///< one of the first frames: it set the reference, the state stayed
-        Followed,  ///< its estimate moved the state
-        Sparse,    ///< too few carpet and white samples (a jersey filling the view): ignored
-        Outlier,   ///< its estimate was far from the state (a flash): ignored
-        Unread,    ///< the frame could not be read: ignored
+        Reference,    ///< one of the first frames: it set the reference, the state stayed
+        Followed,     ///< its estimate moved the state
+        Sparse,       ///< too few carpet and white samples (a jersey filling the view): ignored
+        Outlier,      ///< its estimate was far from the state (a flash): ignored
+        Inconsistent, ///< the carpet's and the white's colour moved apart (not the light's doing)
+        Unread,       ///< the frame could not be read: ignored
     };
     std::array<double, 3> gain{1, 1, 1};     ///< R, G, B of the frame's light over the table's
     std::array<double, 3> estimate{1, 1, 1}; ///< this frame's own estimate (Followed, Outlier)
@@ -51,8 +53,9 @@ struct LightState
 
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
-    /// The map that reads this light's pixels in the table's cells; nullptr for the table's own
-    /// light (within half an 8-bit level at mid grey).
+    /// The map that reads this light's pixels in the table's cells, for the gains rounded to
+    /// 0.005 in ln gain; nullptr within 2% of the table's light (its cells are two levels wide
+    /// and a table has margins, and a lookup through a map costs about twice one without).
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
 
