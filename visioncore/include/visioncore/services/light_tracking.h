@@ -28,10 +28,10 @@ struct LightTrackingOptions
     int reference_frames = 5;       ///< first frames with enough samples that set the reference
     std::size_t min_samples = 40;   ///< carpet and white samples a frame needs to count
     double max_step = 0.12;         ///< largest |ln gain| a frame may move from the state
-    double max_disagreement = 0.08; ///< ln; classes further apart than this do not agree
+    double max_disagreement = 0.04; ///< ln; classes further apart than this do not agree
     int outlier_patience = 20;      ///< outlying frames in a row after which the light has changed
-    int median_window = 5;          ///< frames whose estimates the median is taken over
-    double smoothing = 0.4;         ///< share of the median that moves the state each frame
+    int median_window = 7;          ///< accepted estimates the course is fitted through
+    double smoothing = 0.5;         ///< share of the way to the course that the state moves
 };
 
 /// The light of one frame, relative to the light the table was made for.
@@ -53,9 +53,9 @@ struct LightState
 
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
-    /// The map that reads this light's pixels in the table's cells, for the gains rounded to
-    /// 0.005 in ln gain; nullptr within 2% of the table's light (its cells are two levels wide
-    /// and a table has margins, and a lookup through a map costs about twice one without).
+    /// The map that reads this light's pixels in the table's cells: the colour in full, the level
+    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.005 in ln gain; nullptr
+    /// within 2% of the table's light (a lookup through a map costs about twice one without).
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
 
