@@ -15,9 +15,10 @@ namespace {
 /// robots, the two every field shows.
 constexpr std::array<Colour, 2> kReferenceClasses{Colour::Green, Colour::White};
 
-/// Maps are made for gains rounded to this step of ln gain: under an 8-bit level at mid grey,
-/// finer than the table's 2-level cells, and coarse enough that a slow change makes few maps.
-constexpr double kMapStep = 0.005;
+/// Maps are made for gains rounded to this step of ln gain: at most half a percent off, a level
+/// at white, and coarse enough that even a fast change makes a new map only every other frame
+/// (making one costs about a tenth of a 320x240 frame's run).
+constexpr double kMapStep = 0.01;
 /// A light within this (ln gain, about 2%) of the table's reads the table as it is: its cells are
 /// 2 levels wide and a table has margins, and a lookup through a map costs twice one without.
 constexpr double kNoMapBelow = 0.02;

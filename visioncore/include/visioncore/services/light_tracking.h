@@ -54,7 +54,7 @@ struct LightState
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
     /// The map that reads this light's pixels in the table's cells: the colour in full, the level
-    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.005 in ln gain; nullptr
+    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.01 in ln gain; nullptr
     /// within 2% of the table's light (a lookup through a map costs about twice one without).
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
