@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
+#include <utility>
 #include <stdexcept>
 
 namespace fieldsight {
@@ -54,9 +56,21 @@ std::shared_ptr<const LutInputMap> mapOfKey(const std::array<long, 3>& key)
     const long largest = std::max({std::abs(key[0]), std::abs(key[1]), std::abs(key[2])});
     if (double(largest) * kMapStep < kNoMapBelow)
         return nullptr;
-    return std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(
+    // The maps made lately, shared: the tracker classifying its samples and the worker running
+    // the same frame ask for the same map, and making one costs more than using it for a frame.
+    static std::mutex mutex;
+    static std::array<std::pair<std::array<long, 3>, std::weak_ptr<const LutInputMap>>, 8> recent;
+    static std::size_t next = 0;
+    std::lock_guard lock(mutex);
+    for (const auto& [made_for, map] : recent)
+        if (made_for == key)
+            if (auto shared = map.lock())
+                return shared;
+    auto map = std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(
         std::exp(double(key[0]) * kMapStep), std::exp(double(key[1]) * kMapStep),
         std::exp(double(key[2]) * kMapStep)));
+    recent[next++ % recent.size()] = {key, map};
+    return map;
 }
 
 double medianOf(std::vector<double> v)
