@@ -17,6 +17,7 @@
 #include "ui/panels/pipeline_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/settings/window_settings.h"
+#include "ui/stream_navigator/light_strip.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/frame_marks_strip.h"
@@ -173,6 +174,10 @@ void MainWindow::buildCentre()
     m_navigator->addTimelineStrip(m_disagreement_strip);
     connect(m_navigator->slider(), &QSlider::valueChanged, m_disagreement_strip,
             qOverload<>(&QWidget::update));
+    m_light_strip = new LightStrip(m_session->lightScan(), *m_navigator->slider(), m_navigator);
+    m_light_strip->setToolTip(tr("How far the light has moved from the table's, per frame"));
+    m_navigator->addTimelineStrip(m_light_strip);
+    connect(m_light_strip, &LightStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
 }
 
 void MainWindow::buildStatusBar()
@@ -423,6 +428,7 @@ void MainWindow::saveSettings() const
     w.mode = int(m_view->mode());
     if (const auto* labels = findChild<QAction*>(QStringLiteral("view.labels")))
         w.labels = labels->isChecked();
+    w.follow_light = m_session->lightScan().enabled();
     w.fps = m_navigator->speed();
     w.loop = m_navigator->loopAction()->isChecked();
     w.recent = m_files->recent();
@@ -466,6 +472,10 @@ void MainWindow::restoreSettings()
     if (auto* labels = findChild<QAction*>(QStringLiteral("view.labels")))
         labels->setChecked(w.labels);
     m_view->setLabelsShown(w.labels);
+    if (auto* follow = findChild<QAction*>(QStringLiteral("view.follow_light"))) {
+        follow->setChecked(w.follow_light);
+        m_session->lightScan().setEnabled(w.follow_light);
+    }
     m_navigator->setSpeed(w.fps);
     m_navigator->loopAction()->setChecked(w.loop);
     m_files->setRecent(w.recent);

@@ -28,6 +28,7 @@ class DiskWatch;
 class EffectStrip;
 class EvaluationPanel;
 class FrameMarksStrip;
+class LightStrip;
 class FileCommands;
 class FrameRecorder;
 class HistoryPanel;
@@ -67,6 +68,7 @@ public:
     EvaluationPanel& evaluationPanel() { return *m_evaluation; }
     /// The timeline's marks of the frames where detections and truth disagree.
     FrameMarksStrip& disagreementStrip() { return *m_disagreement_strip; }
+    LightStrip& lightStrip() { return *m_light_strip; }
     FrameRecorder& recorder() { return *m_recorder; }
     MessageBar& messageBar() { return *m_message_bar; }
     OfferBar& recoveryBar() { return *m_recovery_bar; }
@@ -124,6 +126,7 @@ private:
     StreamNavigator* m_navigator = nullptr;
     EffectStrip* m_effect_strip = nullptr;
     FrameMarksStrip* m_disagreement_strip = nullptr;
+    LightStrip* m_light_strip = nullptr;
     MessageBar* m_message_bar = nullptr;
     OfferBar* m_recovery_bar = nullptr;
     OfferBar* m_annotations_recovery_bar = nullptr;

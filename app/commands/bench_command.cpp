@@ -264,6 +264,7 @@ int benchCommand(const QStringList& args, const Context& ctx)
     parser.addOption(setOption());
     parser.addOption(paramsOption());
     parser.addOption(orientationOption());
+    parser.addOption(adaptOption());
     parser.addOption({"repeat", "Passes over each stream (default 1).", "N"});
     parser.addOption(threadsOption("1"));
     parser.addOption({"json", "Also write the numbers as fieldsight-bench/1 JSON.", "FILE"});

@@ -147,6 +147,13 @@ QCommandLineOption threadsOption(const QString& fallback)
             "N"};
 }
 
+QCommandLineOption adaptOption()
+{
+    return {"adapt",
+            "Follow the light: from the stream's table, the table follows slow changes of the "
+            "light's colour and level over the frames (frame 0 on), and not one frame's outlier."};
+}
+
 QCommandLineOption orientationOption()
 {
     return {"orientation",
@@ -210,6 +217,8 @@ Result<StreamInput> openInput(const QCommandLineParser& parser, const std::strin
     printWarnings(ctx.err, input.value().info());
     // The stream's own parameters, then --params and --set over them.
     input.value().params.merge(params.value());
+    if (parser.optionNames().contains("adapt"))
+        input.value().adapt = LightTrackingOptions{};
     return input;
 }
 

@@ -95,6 +95,8 @@ QCommandLineOption setOption();
 QCommandLineOption paramsOption();
 QCommandLineOption threadsOption(const QString& fallback);
 QCommandLineOption orientationOption();
+/// --adapt: the table follows the light (StreamInput::adapt); openInput reads it.
+QCommandLineOption adaptOption();
 
 /// --orientation DEG as stream options (none set: the stream's own orientation). A value other
 /// than 0, 90, 180 or 270 is an Error naming the option and the value.
@@ -105,7 +107,8 @@ Result<StreamOptions> streamOptionsFrom(const QCommandLineParser& parser);
 Result<ParamSet> paramsFrom(const QCommandLineParser& parser, const Pipeline& pipeline);
 
 /// Opens the stream (turned by --orientation) and LUT and applies --params and --set, all
-/// checked against the pipeline.
+/// checked against the pipeline; with --adapt (where the command has it) the table follows the
+/// light.
 Result<StreamInput> openInput(const QCommandLineParser& parser, const std::string& stream,
                               const Context& ctx);
 

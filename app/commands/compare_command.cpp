@@ -200,6 +200,7 @@ int compareCommand(const QStringList& args, const Context& ctx)
     parser.addOption({"params-b", "Side B's parameters (default: side A's).", "FILE"});
     parser.addOption(setOption());
     parser.addOption(orientationOption());
+    parser.addOption(adaptOption());
     parser.addOption(
         {"truth", "Annotations (default: annotations.json in the stream folder).", "FILE"});
     parser.addOption({"json",

@@ -130,6 +130,7 @@ int evalCommand(const QStringList& args, const Context& ctx)
     parser.addOption(setOption());
     parser.addOption(paramsOption());
     parser.addOption(orientationOption());
+    parser.addOption(adaptOption());
     parser.addOption(
         {"truth", "Annotations (default: annotations.json in the stream folder).", "FILE"});
     parser.addOption({"json", "Also write the scores as fieldsight-eval/1 JSON.", "FILE"});

@@ -13,23 +13,23 @@ const std::vector<Synopsis>& synopses()
         {"run",
          "STREAM [--lut FILE] [--out FILE|-] [--skip STAGE,...] [--threads N] [--limit N] "
          "[--render DIR [--layers LIST] [--scale N]] [--overlays DIR] [--set STAGE.PARAM=VALUE] "
-         "[--params FILE] [--orientation DEG]",
+         "[--params FILE] [--orientation DEG] [--adapt]",
          ""},
         {"bench",
          "STREAM... [--lut FILE] [--repeat N] [--threads N] [--json FILE] [--limit N] "
-         "[--set STAGE.PARAM=VALUE] [--params FILE] [--orientation DEG]",
+         "[--set STAGE.PARAM=VALUE] [--params FILE] [--orientation DEG] [--adapt]",
          "several streams: a table as the paper's Table 1"},
         {"eval",
          "STREAM [--lut FILE] [--truth FILE] [--json FILE] [--threads N] "
-         "[--set STAGE.PARAM=VALUE] [--params FILE] [--orientation DEG]",
+         "[--set STAGE.PARAM=VALUE] [--params FILE] [--orientation DEG] [--adapt]",
          ""},
         {"compare",
          "STREAM [--lut A] --lut-b B [--params A] [--params-b B] [--truth FILE] [--json FILE|-] "
-         "[--threads N] [--set STAGE.PARAM=VALUE] [--orientation DEG]",
+         "[--threads N] [--set STAGE.PARAM=VALUE] [--orientation DEG] [--adapt]",
          "frames fixed and broken by table or parameters B"},
         {"synth",
          "--out DIR [--scenario NAME] [--frames N|paper] [--seed S] [--width PX] [--height PX] "
-         "[--strm] [--no-png]",
+         "[--strm] [--no-png] [--drift F [--table-light P]]",
          "a generated stream with exact ground truth"},
         {"lut convert", "IN OUT", "another team's table as a .lut"},
         {"lut build",

@@ -24,6 +24,7 @@ int runCommand(const QStringList& args, const Context& ctx)
     parser.addOption(setOption());
     parser.addOption(paramsOption());
     parser.addOption(orientationOption());
+    parser.addOption(adaptOption());
     parser.addOption({"out",
                       "Output file, or - for standard output (default "
                       "fieldsight-results.json, with --render DIR/fieldsight-results.json).",

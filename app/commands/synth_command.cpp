@@ -24,6 +24,15 @@ int synthCommand(const QStringList& args, const Context& ctx)
     parser.addOption({"height", "Image height in px (default 240).", "PX"});
     parser.addOption({"strm", "Also write image.strm."});
     parser.addOption({"no-png", "Do not write PNG frames (needs --strm)."});
+    parser.addOption({"drift",
+                      "Light drift over the stream, 0 to 0.5 (default 0): the colour temperature "
+                      "and level move by this share from the first frame to the last; "
+                      "default.lut stays the first frame's table.",
+                      "F"});
+    parser.addOption({"table-light",
+                      "With --drift: default.lut is the table of the light this far along the "
+                      "drift instead, 0 (the first frame's, default) to 1 (the last frame's).",
+                      "P"});
     if (auto done = parseCommand(parser, "synth", args, 0, 0, ctx))
         return *done;
 
@@ -57,6 +66,20 @@ int synthCommand(const QStringList& args, const Context& ctx)
         if (!ok)
             return badInput(ctx, "synth: --seed: expected a whole number >= 0, got '" +
                                      parser.value("seed") + "'");
+    }
+    if (parser.isSet("drift")) {
+        bool ok = false;
+        options.drift = parser.value("drift").toDouble(&ok);
+        if (!ok || !(options.drift >= 0 && options.drift <= 0.5))
+            return badInput(ctx, "synth: --drift: expected a number from 0 to 0.5, got '" +
+                                     parser.value("drift") + "'");
+    }
+    if (parser.isSet("table-light")) {
+        bool ok = false;
+        options.table_light = parser.value("table-light").toDouble(&ok);
+        if (!ok || !(options.table_light >= 0 && options.table_light <= 1))
+            return badInput(ctx, "synth: --table-light: expected a number from 0 to 1, got '" +
+                                     parser.value("table-light") + "'");
     }
     options.write_strm = parser.isSet("strm");
     options.write_png = !parser.isSet("no-png");

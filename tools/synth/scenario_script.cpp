@@ -593,7 +593,32 @@ CameraEffects ScenarioScript::effectsAt(int index) const
     const double boost = std::sqrt(std::max(1.0, m_style.level / level));
     e.noise_y *= boost;
     e.noise_c *= boost;
+    if (m_drift != 0)
+        e.gain = e.gain.cwiseProduct(driftGain(m_drift, driftPhase(index)));
     return e;
+}
+
+void ScenarioScript::setLightDrift(double drift, int frames, std::optional<double> held)
+{
+    m_drift = drift;
+    m_drift_frames = std::max(1, frames);
+    m_drift_held = held;
+}
+
+double ScenarioScript::driftPhase(int index) const
+{
+    if (m_drift_held)
+        return std::clamp(*m_drift_held, 0.0, 1.0);
+    if (m_drift_frames < 2)
+        return 0;
+    return std::clamp(double(index) / double(m_drift_frames - 1), 0.0, 1.0);
+}
+
+Eigen::Vector3d driftGain(double drift, double phase)
+{
+    const double d = drift * phase;
+    const double level = 1.0 - 0.5 * d;
+    return level * Eigen::Vector3d(1.0 + d, 1.0, 1.0 - d);
 }
 
 std::uint64_t ScenarioScript::noiseSeed(int index) const

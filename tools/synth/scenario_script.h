@@ -9,6 +9,7 @@
 #include "synth/synth_random.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace fieldsight::synth {
@@ -35,6 +36,12 @@ public:
     /// The world and camera pose at frame `index` (time index / 30 s).
     Scene sceneAt(int index) const;
     CameraEffects effectsAt(int index) const;
+    /// The light's colour temperature and level drift by `drift` (0..0.5, driftGain) from frame
+    /// 0 to frame `frames` - 1 and stay there after it; `held` (0..1) keeps every frame at that
+    /// point of the drift instead (a stream lit as one moment of the drifting one).
+    void setLightDrift(double drift, int frames, std::optional<double> held = std::nullopt);
+    /// How far frame `index` is along the drift, 0..1.
+    double driftPhase(int index) const;
     /// Seed for the sensor noise of frame `index`.
     std::uint64_t noiseSeed(int index) const;
 
@@ -100,6 +107,14 @@ private:
     std::vector<double> m_light_levels; ///< level after each change
     std::vector<RobotPlan> m_robots;
     std::vector<PersonPlan> m_people; ///< moving people, on the field or behind it
+    double m_drift = 0;
+    int m_drift_frames = 1;
+    std::optional<double> m_drift_held;
 };
+
+/// The R, G, B gains of a light drifted by `drift` at `phase` (0..1) of the drift: warmer (red
+/// up, blue down by drift * phase) and dimmer (by drift * phase / 2), as late afternoon sun
+/// through a hall's windows.
+Eigen::Vector3d driftGain(double drift, double phase);
 
 } // namespace fieldsight::synth

@@ -122,6 +122,12 @@ Status generateStream(const SynthOptions& options, bool* refused)
     if (options.frames < 1 || options.frames > kMaxFrames)
         return Error{options.out_dir + ": frame count " + std::to_string(options.frames) +
                      " is out of range (1.." + std::to_string(kMaxFrames) + ")"};
+    if (!(options.table_light >= 0 && options.table_light <= 1))
+        return Error{options.out_dir + ": table light " + std::to_string(options.table_light) +
+                     " is out of range (0..1)"};
+    if (!(options.drift >= 0 && options.drift <= 0.5))
+        return Error{options.out_dir + ": light drift " + std::to_string(options.drift) +
+                     " is out of range (0..0.5)"};
     if (options.width < 16 || options.height < 16 || options.width > 4096 || options.height > 4096)
         return Error{options.out_dir + ": image size " + std::to_string(options.width) + "x" +
                      std::to_string(options.height) + " is out of range (16x16..4096x4096)"};
@@ -156,7 +162,12 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
     namespace fs = std::filesystem;
     std::error_code ec;
 
-    const ScenarioScript script(options.scenario, options.seed, options.width, options.height);
+    ScenarioScript script(options.scenario, options.seed, options.width, options.height);
+    // The table is voted from frames all in one light: the first frame's, or the one asked for.
+    ScenarioScript first_light = script;
+    if (options.table_light != 0)
+        first_light.setLightDrift(options.drift, options.frames, options.table_light);
+    script.setLightDrift(options.drift, options.frames);
     IdealLutBuilder lut;
     Annotations annotations;
     nlohmann::json frames = nlohmann::json::array();
@@ -170,10 +181,18 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
 
     const int rendered = std::max(options.frames, kMinTrainingFrames);
     for (int i = 0; i < rendered; ++i) {
+        if (i >= options.frames) { // a training frame only
+            const StreamFrame frame = renderStreamFrame(first_light, i);
+            lut.addFrame(frame.image.ycbcr, frame.image.labels);
+            continue;
+        }
         StreamFrame frame = renderStreamFrame(script, i);
-        lut.addFrame(frame.image.ycbcr, frame.image.labels);
-        if (i >= options.frames)
-            continue; // a training frame only
+        if (options.drift == 0) {
+            lut.addFrame(frame.image.ycbcr, frame.image.labels);
+        } else {
+            const StreamFrame lit = renderStreamFrame(first_light, i);
+            lut.addFrame(lit.image.ycbcr, lit.image.labels);
+        }
         if (options.write_png) {
             std::vector<unsigned char> png;
             try {
@@ -214,15 +233,17 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
         return s;
     if (!options.write_png)
         return {}; // a manifest would name frames that do not exist
-    const nlohmann::json manifest = {{"format", "fieldsight-stream/1"},
-                                     {"pixel_format", "rgb"},
-                                     {"lut", "default.lut"},
-                                     {"camera", {{"fov_deg", {62.8, 48.8}}, {"height_m", 0.45}}},
-                                     {"generator",
-                                      {{"scenario", scenarioName(options.scenario)},
-                                       {"seed", options.seed},
-                                       {"ball_diameter_m", FieldGeometry::kBallDiameter}}},
-                                     {"frames", frames}};
+    nlohmann::json manifest = {{"format", "fieldsight-stream/1"},
+                               {"pixel_format", "rgb"},
+                               {"lut", "default.lut"},
+                               {"camera", {{"fov_deg", {62.8, 48.8}}, {"height_m", 0.45}}},
+                               {"generator",
+                                {{"scenario", scenarioName(options.scenario)},
+                                 {"seed", options.seed},
+                                 {"ball_diameter_m", FieldGeometry::kBallDiameter}}},
+                               {"frames", frames}};
+    if (options.drift != 0)
+        manifest["generator"]["light_drift"] = options.drift;
     return writeFileAtomically((dir / "stream.json").string(), manifest.dump(1) + "\n");
 }
 

@@ -25,6 +25,13 @@ struct SynthOptions
     bool write_strm = false; ///< also write <out_dir>/image.strm with the same frames (YCbCr)
     bool write_png = true;   ///< write the PNG frames and stream.json (annotations are keyed
                              ///< by the PNG names either way)
+    /// The light's colour temperature and level drift by this much (0..0.5) from the first frame
+    /// to the last (ScenarioScript::setLightDrift); the truth is the same, and default.lut stays
+    /// the ideal table of the first frame's light.
+    double drift = 0;
+    /// With a drift, default.lut is the ideal table of the light at this point of it instead
+    /// (0: the first frame's, 1: the last frame's): the table made for a later frame's light.
+    double table_light = 0;
 };
 
 std::vector<std::string> scenarioNames(); ///< "lab1", "lab2", "difficult", "rc2012", "rc2013"

@@ -99,6 +99,16 @@ void addViewMenu(MainWindow& w)
     labels->setCheckable(true);
     labels->setChecked(true);
     addOrientationMenu(w, *view->addMenu(QObject::tr("&Orientation")));
+    // The table follows slow changes of the light over the stream (fieldsight --adapt); the
+    // strip under the timeline shows how far it has moved.
+    LightScan& light = w.session().lightScan();
+    QAction* follow = view->addAction(QObject::tr("Follow the light"), &w,
+                                      [&light](bool on) { light.setEnabled(on); });
+    follow->setObjectName(QStringLiteral("view.follow_light"));
+    follow->setCheckable(true);
+    follow->setChecked(light.enabled());
+    follow->setToolTip(QObject::tr("From the stream's table, follow slow changes of the light's "
+                                   "colour and level over the frames, as --adapt does"));
     view->addSeparator();
     view->addMenu(&w.docksMenu());
 }

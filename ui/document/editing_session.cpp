@@ -36,6 +36,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_samples = new SamplesDocument(*m_lut, this);
     m_effect = new EditEffectScan(pipeline, this);
     m_evaluation = new EvaluationScan(pipeline, this);
+    m_light = new LightScan(this);
 
     addUndoDocument(tr("Colour table"), m_lut->undoStack());
     addUndoDocument(tr("LUT samples"), m_samples->undoStack());
@@ -62,10 +63,17 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     connect(m_annotations, &AnnotationsDocument::changed, m_evaluation,
             [this] { m_evaluation->setTruth(truthVersion(), m_annotations->path()); });
 
+    // The light is followed with the table in use; the frames are read in the light followed.
+    connect(m_lut, &LutDocument::changed, m_light, [this] { m_light->setLut(m_lut->version()); });
+    connect(m_light, &LightScan::trackChanged, m_stream,
+            [this] { m_stream->setLight(m_light->track()); });
+
     // Whatever reads the stream's frames reads them turned as the window shows them.
     connect(m_stream, &StreamDocument::orientationChanged, this, [this] {
         const StreamOptions options{m_stream->orientation()};
         m_samples->setStreamOptions(options);
+        if (!m_light->stream().isEmpty())
+            m_light->setStream(m_stream->streamSpec(), m_lut->version(), options);
         if (!m_evaluation->stream().isEmpty() &&
             m_evaluation->streamOptions().orientation != options.orientation)
             m_evaluation->setStream(m_stream->streamSpec(), m_lut->version(), options);
@@ -259,6 +267,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
 {
     m_effect->setStream({}, nullptr); // scanned again once its table is in
     m_evaluation->setStream({}, nullptr);
+    m_light->setStream({}, nullptr);
     m_warnings = opened->warnings;
     const QString spec = opened->spec;
     const QString lut_path = opened->lut_path;
@@ -300,6 +309,8 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     m_evaluation->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
     m_evaluation->setTruth(truthVersion(), m_annotations->path());
     m_evaluation->setStream(spec, m_lut->version(), options);
+    if (!m_stream->live())
+        m_light->setStream(spec, m_lut->version(), options);
     // Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
 }

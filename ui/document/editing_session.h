@@ -11,6 +11,7 @@
 #include "ui/document/bookmarks_document.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/document/evaluation_scan.h"
+#include "ui/document/light_scan.h"
 #include "ui/document/lut_document.h"
 #include "ui/document/samples_document.h"
 #include "ui/document/pipeline_settings.h"
@@ -60,6 +61,8 @@ public:
     AnnotationsDocument& annotations() { return *m_annotations; }
     EditEffectScan& effectScan() { return *m_effect; }
     EvaluationScan& evaluation() { return *m_evaluation; }
+    /// "Follow the light": the whole stream's light, followed in the background.
+    LightScan& lightScan() { return *m_light; }
 
     /// Edit > Undo and Redo act on the active stack; the document edited last becomes active.
     QUndoGroup& undoGroup() { return m_undo_group; }
@@ -131,6 +134,7 @@ private:
     AnnotationsDocument* m_annotations = nullptr;
     EditEffectScan* m_effect = nullptr;
     EvaluationScan* m_evaluation = nullptr;
+    LightScan* m_light = nullptr;
     QUndoGroup m_undo_group;
     std::vector<UndoDocument> m_undo_documents;
     std::map<const QUndoStack*, quint64> m_touched; ///< when each stack last changed

@@ -200,7 +200,7 @@ bool FrameWorker::aheadAnswers(const FrameRequest& request, bool any_frame) cons
     const FrameRequest& k = m_ahead_for;
     return m_ahead && k.source == request.source && (any_frame || k.index == request.index) &&
            k.lut == request.lut && k.params == request.params && k.skip == request.skip &&
-           k.truth == request.truth;
+           k.truth == request.truth && k.light == request.light;
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
@@ -338,14 +338,15 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     }
     for (const std::string& id : m_skippable)
         (void)control.setStageEnabled(id, request.skip.count(id) == 0);
-    m_data.setLut(request.lut);
+    const std::shared_ptr<const ColourLut> lut = lutFor(request, request.index);
+    m_data.setLut(lut);
     m_last_lut = request.lut;
 
     Result<FrameReport> report = control.runFrame();
     out.frame.name = frame.name;
     out.frame.timestamp_ms = frame.timestamp_ms;
     out.frame.horizon = frame.horizon;
-    makeDisplay(frame, request.lut, m_display);
+    makeDisplay(frame, lut, m_display);
     out.frame.ycbcr = m_display.ycbcr;
     out.raw = m_display.raw;
     out.classified = m_display.classified;
@@ -379,6 +380,24 @@ void FrameWorker::makeDisplay(const Frame& frame, const std::shared_ptr<const Co
         display.classes = cv::Mat();
         display.classified = classifyFrame(display.ycbcr, *lut, display.classes);
     }
+}
+
+std::shared_ptr<const ColourLut> FrameWorker::lutFor(const FrameRequest& request, std::size_t index)
+{
+    if (!request.light || !request.lut || index >= request.light->frames.size())
+        return request.lut;
+    std::shared_ptr<const LutInputMap> map = m_light_maps.mapFor(request.light->frames[index]);
+    if (!map)
+        return request.lut;
+    // A new table object for every table and map: the display is cached by table object, and an
+    // output still shown may hold the one before.
+    if (m_light_base != request.lut || !m_light_lut || m_light_lut->inputMap() != map) {
+        auto lut = std::make_shared<ColourLut>(*request.lut);
+        lut->setInputMap(std::move(map));
+        m_light_base = request.lut;
+        m_light_lut = std::move(lut);
+    }
+    return m_light_lut;
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)

@@ -45,6 +45,9 @@ struct FrameRequest
     std::shared_ptr<const ColourLut> lut;
     std::shared_ptr<const ParamSet> params;          ///< values that differ from the defaults
     std::shared_ptr<const AnnotationsVersion> truth; ///< drawn on the truth layers (may be null)
+    /// "Follow the light": every frame's light from `lut`'s; a frame it covers is read through
+    /// its light's input map (null: the table as it is).
+    std::shared_ptr<const LightTrack> light;
     std::set<std::string, std::less<>> skip;
     std::chrono::steady_clock::time_point submitted = std::chrono::steady_clock::now();
     /// Answered already (from takeAhead): make `index` current and prepare the frame after it.
@@ -134,6 +137,8 @@ private:
     };
     static void makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
                             Display& display);
+    /// The request's table, or a copy of it reading frame `index` through its light's map.
+    std::shared_ptr<const ColourLut> lutFor(const FrameRequest& request, std::size_t index);
 
     const Pipeline& m_pipeline;
     std::set<std::string, std::less<>> m_layers;
@@ -154,6 +159,9 @@ private:
     Frame m_prefetch;
     Display m_prefetch_display;
     std::shared_ptr<const ColourLut> m_last_lut;
+    LightMapCache m_light_maps;
+    std::shared_ptr<const ColourLut> m_light_base; ///< the table m_light_lut copies
+    std::shared_ptr<const ColourLut> m_light_lut;  ///< with the last frame's light's map
     std::shared_ptr<FrameSource> m_prefetch_source;
     std::size_t m_prefetch_index = 0;
 

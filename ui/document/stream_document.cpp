@@ -203,6 +203,7 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
     m_undo.clear();        // the orientations of the stream before
     m_index = 0;
     m_current.reset();
+    m_light.reset(); // the stream before's
     m_answered = m_serial;
     m_first_serial = m_serial + 1; // what the worker still does for the stream before is dropped
     resetMeans();
@@ -280,6 +281,7 @@ Status StreamDocument::applyOrientation(Orientation o, std::unique_ptr<StreamRea
     m_worker->release(std::move(m_stream->source));
     m_stream = std::move(stream);
     m_first_serial = m_serial + 1; // answers for the old source are dropped
+    m_light.reset();               // followed in the old turn: the scan follows it again
     emit orientationChanged();
     submit();
     return {};
@@ -322,6 +324,14 @@ void StreamDocument::rerun()
     submit();
 }
 
+void StreamDocument::setLight(std::shared_ptr<const LightTrack> light)
+{
+    if (light == m_light)
+        return;
+    m_light = std::move(light);
+    submit();
+}
+
 FrameRequest StreamDocument::request() const
 {
     FrameRequest request;
@@ -331,6 +341,7 @@ FrameRequest StreamDocument::request() const
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
     request.truth = m_annotations.version();
+    request.light = m_light;
     return request;
 }
 

@@ -120,6 +120,9 @@ public:
     void setCurrentIndex(std::size_t index);
     /// Runs the current frame again (after a change of settings).
     void rerun();
+    /// "Follow the light": every frame's light (null: none), used from the next run on.
+    void setLight(std::shared_ptr<const LightTrack> light);
+    const std::shared_ptr<const LightTrack>& light() const { return m_light; }
 
     /// The newest frame result (null before the first).
     const std::shared_ptr<const FrameOutput>& current() const { return m_current; }
@@ -178,6 +181,7 @@ private:
     std::uint64_t m_first_serial = 0; ///< the first request of the open stream
     StageMean m_total_mean;
     std::shared_ptr<const FrameOutput> m_current;
+    std::shared_ptr<const LightTrack> m_light;
     std::map<std::string, StageMean, std::less<>> m_means;
 };
 

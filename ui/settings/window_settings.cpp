@@ -77,6 +77,7 @@ WindowSettings WindowSettings::load()
     }
     w.mode = std::clamp(s.value(QStringLiteral("view/mode"), 0).toInt(), 0, 3);
     w.labels = s.value(QStringLiteral("view/labels"), true).toBool();
+    w.follow_light = s.value(QStringLiteral("view/follow_light"), false).toBool();
     w.fps = s.value(QStringLiteral("play/fps"), 30).toInt();
     w.loop = s.value(QStringLiteral("play/loop"), false).toBool();
     for (const QVariant& path : s.value(QStringLiteral("recent/streams")).toList())
@@ -113,6 +114,7 @@ void WindowSettings::save() const
     }
     s.setValue(QStringLiteral("view/mode"), mode);
     s.setValue(QStringLiteral("view/labels"), labels);
+    s.setValue(QStringLiteral("view/follow_light"), follow_light);
     s.setValue(QStringLiteral("play/fps"), fps);
     s.setValue(QStringLiteral("play/loop"), loop);
     QVariantList paths;

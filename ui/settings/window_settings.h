@@ -21,6 +21,7 @@ struct WindowSettings
     std::optional<LayerSet> layers; ///< none: the pipeline's defaults
     int mode = 0;                   ///< a ViewMode
     bool labels = true;
+    bool follow_light = false; ///< View > Follow the light
     int fps = 30;
     bool loop = false;
     QStringList recent;       ///< newest first

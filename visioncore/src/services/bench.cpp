@@ -90,7 +90,8 @@ public:
     BenchWorker(StreamInput& input, StreamReader& source, const Block& block, Samples& out,
                 Problems& problems)
         : m_input(input), m_source(source), m_block(block), m_out(out), m_problems(problems),
-          m_data(input.lut), m_control(m_data, *input.pipeline)
+          m_lut(input.adapt ? std::make_shared<ColourLut>(*input.lut) : nullptr),
+          m_data(m_lut ? m_lut : input.lut), m_control(m_data, *input.pipeline)
     {
     }
 
@@ -110,6 +111,8 @@ public:
         m_out.baseline.reserve(runs);
         warmUp();
         for (int pass = 0; pass < m_block.repeat; ++pass) {
+            if (m_input.adapt) // every pass follows the light from the block's first frame
+                m_tracker.emplace(m_input.lut, *m_input.adapt);
             for (std::size_t i = m_block.begin; i < m_block.end; ++i) {
                 if (m_problems.any())
                     return;
@@ -170,10 +173,10 @@ private:
         if (m_control.runFrame()) {
             std::size_t pixels = 0;
             const Blackboard& bb = m_control.blackboard();
-            m_sink = m_sink + floorLookups(first->ycbcr, *m_input.lut, bb.horizontal_scan_ys,
+            m_sink = m_sink + floorLookups(first->ycbcr, m_data.lut(), bb.horizontal_scan_ys,
                                            bb.vertical_scan_starts, m_floor_classes, pixels);
         }
-        m_sink = m_sink + fullFrameBaseline(first->ycbcr, *m_input.lut, m_buffers);
+        m_sink = m_sink + fullFrameBaseline(first->ycbcr, m_data.lut(), m_buffers);
     }
 
     /// Times the pipeline, the floor and the baseline on `frame`; false (reported) when the
@@ -186,6 +189,9 @@ private:
         m_input.lut->classifyImage(frame.ycbcr, m_warm);
 
         const auto start = Clock::now();
+        if (m_tracker) // following the light is part of the pipeline's time
+            m_lut->setInputMap(
+                m_maps.mapFor(m_tracker->observe(frame.ycbcr, frame.horizon.value_or(Horizon{}))));
         auto frame_report = m_control.runFrame();
         const double pipeline_ms = msSince(start);
         if (!frame_report) {
@@ -203,13 +209,13 @@ private:
         const Blackboard& bb = m_control.blackboard();
         std::size_t pixels = 0;
         const auto floor_start = Clock::now();
-        m_sink = m_sink + floorLookups(frame.ycbcr, *m_input.lut, bb.horizontal_scan_ys,
+        m_sink = m_sink + floorLookups(frame.ycbcr, m_data.lut(), bb.horizontal_scan_ys,
                                        bb.vertical_scan_starts, m_floor_classes, pixels);
         m_out.floor.push_back(msSince(floor_start));
         m_out.floor_pixels += double(pixels);
 
         const auto baseline_start = Clock::now();
-        m_sink = m_sink + fullFrameBaseline(frame.ycbcr, *m_input.lut, m_buffers);
+        m_sink = m_sink + fullFrameBaseline(frame.ycbcr, m_data.lut(), m_buffers);
         m_out.baseline.push_back(msSince(baseline_start));
         return true;
     }
@@ -219,6 +225,9 @@ private:
     const Block m_block;
     Samples& m_out;
     Problems& m_problems;
+    std::shared_ptr<ColourLut> m_lut; ///< with --adapt, the worker's copy its light's map is set on
+    std::optional<LightTracker> m_tracker;
+    LightMapCache m_maps;
     MemoryDataWrapper m_data;
     ControlWrapper m_control;
     std::vector<Frame> m_cached; ///< the block's frames, when in memory

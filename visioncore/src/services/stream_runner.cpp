@@ -194,6 +194,23 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
     FirstProblem problem;
     const auto cancelled = [&] { return hooks.cancel && hooks.cancel->load(); };
 
+    // Following the light: one worker running every frame from 0 in order tracks as it goes;
+    // otherwise a first pass tracks frames 0 .. the last one asked for, and each worker reads
+    // its frames' states. Either way a frame's light is the same.
+    std::vector<LightState> light;
+    const bool track_in_pass =
+        input.adapt && threads == 1 && indices == firstFrames(indices.size());
+    if (input.adapt && !track_in_pass && !indices.empty()) {
+        const std::size_t last = *std::max_element(indices.begin(), indices.end());
+        LightTrack track =
+            trackLight(*input.reader, input.lut, last + 1, *input.adapt, {}, hooks.cancel);
+        if (track.cancelled)
+            return StreamRun{{}, {}, true};
+        light = std::move(track.frames);
+    } else if (track_in_pass) {
+        light.resize(indices.size());
+    }
+
     const auto markDone = [&](std::size_t pos) {
         done[pos] = 1;
         if (hooks.progress) {
@@ -223,6 +240,16 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                 reader = std::move(opened).value();
             }
             StreamDataWrapper data(std::move(reader), input.lut);
+            // With --adapt the worker's own copy of the table, its input map set frame by frame.
+            std::shared_ptr<ColourLut> adapted;
+            std::optional<LightTracker> tracker;
+            LightMapCache maps;
+            if (input.adapt) {
+                adapted = std::make_shared<ColourLut>(*input.lut);
+                data.setLut(adapted);
+                if (track_in_pass)
+                    tracker.emplace(input.lut, *input.adapt);
+            }
             CanvasSink sink(hooks.layers);
             if (!hooks.layers.empty())
                 data.setDebugSink(&sink);
@@ -240,6 +267,8 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                 for (std::size_t pos = begin; pos < end && !problem.stopped() && !cancelled();
                      ++pos) {
                     if (Status s = data.seek(indices[pos]); !s) {
+                        if (tracker)
+                            light[pos] = tracker->skip();
                         if (!hooks.on_unreadable) {
                             problem.report(pos, s.error().message, false);
                             return;
@@ -248,6 +277,10 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                         leaveOut(pos, data.reader().frameName(indices[pos]));
                         continue;
                     }
+                    if (tracker)
+                        light[pos] = tracker->observe(data.frame().ycbcr, data.kinematicHorizon());
+                    if (adapted)
+                        adapted->setInputMap(maps.mapFor(light[indices[pos]]));
                     if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame())) {
                         leaveOut(pos, data.frame().name);
                         continue;
@@ -292,6 +325,9 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
     run.cancelled = prefix < done.size();
     results.resize(prefix);
     run.frames = std::move(results);
+    if (track_in_pass)
+        light.resize(prefix);
+    run.light = std::move(light);
     return run;
 }
 

@@ -10,11 +10,13 @@
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/percepts/percept_set.h"
 #include "visioncore/basics/result.h"
+#include "visioncore/services/light_tracking.h"
 
 #include <atomic>
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -31,6 +33,9 @@ struct StreamInput
     const Pipeline* pipeline = &Pipeline::standard();
     ParamSet params;               ///< set on every core
     std::vector<std::string> skip; ///< stage ids switched off on every core
+    /// Follow the light (--adapt): each frame is classified through the input map of its light
+    /// as trackLight follows it from frame 0, whatever frames are run and on how many workers.
+    std::optional<LightTrackingOptions> adapt;
 
     const StreamInfo& info() const { return reader->info(); }
     /// The skip list and parameters are known to the pipeline and valid.
@@ -90,6 +95,8 @@ struct RunHooks
 struct StreamRun
 {
     std::vector<FrameResult> frames; ///< in the order of the indices asked for
+    /// With StreamInput::adapt, the light of every frame from 0 to the last one run (else empty).
+    std::vector<LightState> light;
     bool cancelled = false; ///< then `frames` holds the frames done before the first one not done
 };
 

@@ -1,0 +1,254 @@
+// The table that follows the light: the input map in front of the LUT, and the tracker that
+// estimates the light frame by frame and is not pulled away by one odd frame.
+#include "visioncore/basics/colour_lut.h"
+#include "visioncore/basics/lut_input_map.h"
+#include "visioncore/basics/splitmix.h"
+#include "visioncore/basics/ycbcr.h"
+#include "visioncore/services/light_tracking.h"
+
+#include <QtTest>
+
+#include <opencv2/core.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+using namespace fieldsight;
+
+namespace {
+
+using Rgbd = std::array<double, 3>;
+
+constexpr Rgbd kCarpet{50, 120, 45};
+constexpr Rgbd kWhite{200, 205, 195};
+constexpr Rgbd kOrange{230, 110, 30};
+
+/// Y, Cb, Cr of an R, G, B colour, as the core converts.
+cv::Vec3b ycbcrOf(const Rgbd& rgb)
+{
+    cv::Mat bgr(1, 1, CV_8UC3,
+                cv::Scalar(std::clamp(rgb[2], 0.0, 255.0), std::clamp(rgb[1], 0.0, 255.0),
+                           std::clamp(rgb[0], 0.0, 255.0)));
+    return bgrToYcbcr(bgr).at<cv::Vec3b>(0, 0);
+}
+
+Rgbd times(const Rgbd& rgb, const Rgbd& gain)
+{
+    return {rgb[0] * gain[0], rgb[1] * gain[1], rgb[2] * gain[2]};
+}
+
+/// A table that knows the carpet and the white (and orange) of the reference light, each a box
+/// of +-10 levels around its colour.
+std::shared_ptr<const ColourLut> referenceTable()
+{
+    auto lut = std::make_shared<ColourLut>();
+    const std::pair<Rgbd, Colour> classes[] = {
+        {kCarpet, Colour::Green}, {kWhite, Colour::White}, {kOrange, Colour::Orange}};
+    for (const auto& [rgb, colour] : classes) {
+        const cv::Vec3b c = ycbcrOf(rgb);
+        for (int y = c[0] - 10; y <= c[0] + 10; y += 2)
+            for (int cb = c[1] - 10; cb <= c[1] + 10; cb += 2)
+                for (int cr = c[2] - 10; cr <= c[2] + 10; cr += 2)
+                    lut->setCell(
+                        ColourLut::index(std::uint8_t(y), std::uint8_t(cb), std::uint8_t(cr)),
+                        colour);
+    }
+    return lut;
+}
+
+/// An 80 x 60 field under `gain`: carpet with a white line every 20 columns, sensor noise.
+cv::Mat fieldFrame(const Rgbd& gain, std::uint64_t seed, const Rgbd& flood = {0, 0, 0})
+{
+    SplitMix64 rng(seed);
+    cv::Mat bgr(60, 80, CV_8UC3);
+    for (int y = 0; y < bgr.rows; ++y)
+        for (int x = 0; x < bgr.cols; ++x) {
+            const bool flooded = flood[0] + flood[1] + flood[2] > 0 && x >= 6;
+            const Rgbd base = flooded ? flood : x % 20 < 5 ? kWhite : kCarpet;
+            const Rgbd c = times(base, gain);
+            const double n = double(rng() % 5) - 2.0;
+            bgr.at<cv::Vec3b>(y, x) = cv::Vec3b(cv::saturate_cast<std::uint8_t>(c[2] + n),
+                                                cv::saturate_cast<std::uint8_t>(c[1] + n),
+                                                cv::saturate_cast<std::uint8_t>(c[0] + n));
+        }
+    return bgrToYcbcr(bgr);
+}
+
+LightTrackingOptions denseSampling()
+{
+    LightTrackingOptions options;
+    options.sample_step = 4;
+    return options;
+}
+
+double logDistance(const std::array<double, 3>& a, const Rgbd& b)
+{
+    double d = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+        d = std::max(d, std::abs(std::log(a[c] / b[c])));
+    return d;
+}
+
+} // namespace
+
+class TestLightTracking : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void theMapOfTheTablesOwnLightReadsEveryPixelsOwnCell()
+    {
+        const LutInputMap map = LutInputMap::forRgbGain(1, 1, 1);
+        std::size_t checked = 0;
+        for (int y = 0; y < 256; y += 3)
+            for (int cb = 0; cb < 256; cb += 5)
+                for (int cr = 0; cr < 256; cr += 7, ++checked)
+                    QCOMPARE(map.index(std::uint8_t(y), std::uint8_t(cb), std::uint8_t(cr)),
+                             ColourLut::index(std::uint8_t(y), std::uint8_t(cb), std::uint8_t(cr)));
+        QVERIFY(checked > 100000);
+    }
+
+    void aPixelUnderAnotherLightReadsTheCellOfItsColourUnderTheTablesLight()
+    {
+        const Rgbd gain{1.2, 0.95, 0.75};
+        const LutInputMap map = LutInputMap::forRgbGain(gain[0], gain[1], gain[2]);
+        // Colours that stay unclipped under the gains (a clipped channel no map can restore).
+        for (const Rgbd& colour : {kCarpet, kWhite, Rgbd{195, 100, 30}, Rgbd{120, 120, 120},
+                                   Rgbd{40, 60, 160}, Rgbd{190, 180, 40}}) {
+            const cv::Vec3b seen = ycbcrOf(times(colour, gain));
+            const cv::Vec3b meant = ycbcrOf(colour);
+            const std::size_t got = map.index(seen[0], seen[1], seen[2]);
+            const std::size_t want = ColourLut::index(meant[0], meant[1], meant[2]);
+            // Within one 2-level cell per channel; unmapped, the light moves it much further.
+            for (int shift : {14, 7, 0}) {
+                const long a = long((got >> shift) & 127);
+                const long b = long((want >> shift) & 127);
+                QVERIFY2(std::abs(a - b) <= 1,
+                         qPrintable(QString("shift %1: %2 vs %3").arg(shift).arg(a).arg(b)));
+            }
+            const std::size_t unmapped = ColourLut::index(seen[0], seen[1], seen[2]);
+            QVERIFY(unmapped != want);
+        }
+    }
+
+    void classifyRunThroughAMapAgreesWithClassify()
+    {
+        ColourLut lut;
+        SplitMix64 rng(7);
+        for (std::size_t i = 0; i < ColourLut::kCells; i += 1 + rng() % 5)
+            lut.setCell(i, Colour(rng() % kColourCount));
+        std::vector<std::uint8_t> pixels(3 * 4000);
+        for (auto& p : pixels)
+            p = std::uint8_t(rng());
+        std::vector<std::uint8_t> plain(4000), mapped(4000);
+        lut.classifyRun(pixels.data(), 3, 4000, plain.data());
+        lut.setInputMap(std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(1.3, 1, 0.7)));
+        lut.classifyRun(pixels.data(), 3, 4000, mapped.data());
+        int differ = 0;
+        for (std::size_t i = 0; i < 4000; ++i) {
+            const std::uint8_t* p = &pixels[3 * i];
+            QCOMPARE(Colour(mapped[i]), lut.classify(p[0], p[1], p[2]));
+            QCOMPARE(Colour(plain[i]), lut.cell(ColourLut::index(p[0], p[1], p[2])));
+            differ += mapped[i] != plain[i];
+        }
+        QVERIFY(differ > 1000); // the map is in front of the lookups
+        lut.setInputMap(nullptr);
+        lut.classifyRun(pixels.data(), 3, 4000, mapped.data());
+        QVERIFY(mapped == plain);
+    }
+
+    void theTrackerFollowsASlowDriftOfColourAndLevel()
+    {
+        LightTracker tracker(referenceTable(), denseSampling());
+        const Rgbd end{1.3 * 0.85, 0.85, 0.7 * 0.85};
+        const int frames = 80;
+        int followed = 0;
+        for (int i = 0; i < frames; ++i) {
+            const double t = std::min(1.0, i / 60.0);
+            const Rgbd gain{1 + (end[0] - 1) * t, 1 + (end[1] - 1) * t, 1 + (end[2] - 1) * t};
+            const LightState& s = tracker.observe(fieldFrame(gain, std::uint64_t(i)), Horizon{});
+            if (i < 5)
+                QCOMPARE(s.verdict, LightState::Verdict::Reference);
+            else
+                followed += s.verdict == LightState::Verdict::Followed;
+        }
+        QVERIFY2(followed >= frames - 5 - 8, qPrintable(QString::number(followed)));
+        QVERIFY2(logDistance(tracker.state().gain, end) < 0.05,
+                 qPrintable(QString("%1 %2 %3")
+                                .arg(tracker.state().gain[0])
+                                .arg(tracker.state().gain[1])
+                                .arg(tracker.state().gain[2])));
+        QVERIFY(tracker.state().distance() > 0.3);
+        QVERIFY(tracker.state().makeMap() != nullptr);
+    }
+
+    void aFrameFloodedWithOneColourOrAFlashDoesNotMoveTheState()
+    {
+        LightTracker tracker(referenceTable(), denseSampling());
+        const Rgbd gain{1.1, 1.0, 0.9};
+        for (int i = 0; i < 40; ++i)
+            tracker.observe(fieldFrame(i < 5 ? Rgbd{1, 1, 1} : gain, std::uint64_t(i)), Horizon{});
+        const auto settled = tracker.state().gain;
+        QVERIFY(logDistance(settled, gain) < 0.02);
+
+        // A jersey filling the view: too few carpet and white samples to judge the light by.
+        const LightState& jersey = tracker.observe(fieldFrame(gain, 100, kOrange), Horizon{});
+        QCOMPARE(jersey.verdict, LightState::Verdict::Sparse);
+        QCOMPARE(jersey.gain, settled);
+        // A flash: everything half as bright again for one frame.
+        const LightState& flash =
+            tracker.observe(fieldFrame(times(gain, {1.5, 1.5, 1.5}), 101), Horizon{});
+        QVERIFY(flash.verdict == LightState::Verdict::Outlier ||
+                flash.verdict == LightState::Verdict::Sparse);
+        QVERIFY(logDistance(flash.gain, gain) < 0.02);
+        // Then the light as before: the state is where it was.
+        for (int i = 0; i < 5; ++i)
+            tracker.observe(fieldFrame(gain, std::uint64_t(200 + i)), Horizon{});
+        QVERIFY(logDistance(tracker.state().gain, gain) < 0.02);
+    }
+
+    void aChangeOfViewIsNotAChangeOfLight()
+    {
+        // Looking down at the near carpet: the carpet darker, the white (a robot) brighter, their
+        // colours as they were. A light would move both alike; the level stays.
+        LightTracker tracker(referenceTable(), denseSampling());
+        for (int i = 0; i < 5; ++i)
+            tracker.observe(fieldFrame({1, 1, 1}, std::uint64_t(i)), Horizon{});
+        for (int i = 5; i < 30; ++i) {
+            cv::Mat bgr = ycbcrToBgr(fieldFrame({1, 1, 1}, std::uint64_t(i)));
+            for (int y = 0; y < bgr.rows; ++y)
+                for (int x = 0; x < bgr.cols; ++x) {
+                    const double f = x % 20 < 5 ? 1.04 : 0.92;
+                    cv::Vec3b& p = bgr.at<cv::Vec3b>(y, x);
+                    for (int c = 0; c < 3; ++c)
+                        p[c] = cv::saturate_cast<std::uint8_t>(p[c] * f);
+                }
+            const LightState& s = tracker.observe(bgrToYcbcr(bgr), Horizon{});
+            QVERIFY(s.verdict == LightState::Verdict::Followed);
+        }
+        QVERIFY2(tracker.state().distance() < 0.02, qPrintable(QString("%1 %2 %3")
+                                                                   .arg(tracker.state().gain[0])
+                                                                   .arg(tracker.state().gain[1])
+                                                                   .arg(tracker.state().gain[2])));
+    }
+
+    void onlyPixelsBelowTheHorizonAreSampled()
+    {
+        LightTracker tracker(referenceTable(), denseSampling());
+        Horizon below_all;
+        below_all.y_left = below_all.y_right = 100; // under the 60 rows
+        const LightState& s = tracker.observe(fieldFrame({1, 1, 1}, 1), below_all);
+        QCOMPARE(s.samples, std::size_t(0));
+        Horizon half;
+        half.y_left = half.y_right = 30;
+        const std::size_t lower = tracker.observe(fieldFrame({1, 1, 1}, 2), half).samples;
+        const std::size_t all = tracker.observe(fieldFrame({1, 1, 1}, 3), Horizon{}).samples;
+        QVERIFY2(lower > 0 && lower * 2 <= all + 20 && lower * 2 + 20 >= all,
+                 qPrintable(QString("%1 of %2").arg(lower).arg(all)));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestLightTracking)
+#include "test_light_tracking.moc"

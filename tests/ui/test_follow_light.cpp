@@ -1,0 +1,120 @@
+// View > Follow the light in the real main window, offscreen: on a stream whose light drifts
+// away from its table's, switching it on makes the worker classify the last frame through that
+// frame's light (the carpet green again), the strip under the timeline plots how far the light
+// moved, switching it off gives the table as it is again, and the window remembers the switch.
+#include "support/light_ramp.h"
+#include "support/test_files.h"
+#include "support/window_waits.h"
+#include "ui/document/light_scan.h"
+#include "ui/main_window.h"
+#include "ui/settings/window_settings.h"
+#include "ui/stream_navigator/light_strip.h"
+#include "ui/stream_navigator/stream_navigator.h"
+
+#include <QAction>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <opencv2/core.hpp>
+
+using namespace fieldsight;
+using namespace fieldsight::test;
+using fieldsight::ui::MainWindow;
+
+namespace {
+
+/// Pixels of the current frame's classes in `colour`, below row `from`.
+int pixelsOf(MainWindow& w, Colour colour, int from)
+{
+    const auto& out = w.session().stream().current();
+    if (!out || out->classes.empty())
+        return -1;
+    const cv::Mat below = out->classes.rowRange(from, out->classes.rows);
+    return cv::countNonZero(below == int(colour));
+}
+
+} // namespace
+
+class TestFollowLight : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    QString m_stream;
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("FieldsightTest");
+        QCoreApplication::setApplicationName("test_follow_light");
+        QVERIFY(m_dir.isValid());
+        // The bundled lab2 stream, its light going 30% warmer and 15% dimmer over its frames.
+        m_stream = m_dir.filePath("drift");
+        const QString made = writeLightRamp(QString::fromStdString(sampleStreamsDir() + "/lab2"),
+                                            m_stream, {1.3 * 0.85, 0.85, 0.7 * 0.85});
+        QVERIFY2(made.isEmpty(), qPrintable(made));
+    }
+
+    void init() { QSettings().clear(); } // no switch left on by a run before
+
+    void followingTheLightReadsTheLastFrameInItsOwnLightAndPlotsIt()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(openAndWait(w, m_stream));
+        const std::size_t last = w.session().stream().frameCount() - 1;
+        QVERIFY(last > 10);
+        w.navigator().goToFrame(last);
+        QVERIFY(waitForFrame(w, last));
+        const int rows = w.session().stream().current()->classes.rows;
+        const int static_green = pixelsOf(w, Colour::Green, rows / 2);
+        const cv::Mat static_classes = w.session().stream().current()->classes.clone();
+        QVERIFY(!w.lightStrip().isVisible());
+
+        auto* follow = w.findChild<QAction*>(QStringLiteral("view.follow_light"));
+        QVERIFY(follow && follow->isCheckable() && !follow->isChecked());
+        follow->trigger();
+        ui::LightScan& scan = w.session().lightScan();
+        QVERIFY(scan.enabled());
+        QTRY_VERIFY_WITH_TIMEOUT(scan.track() != nullptr, 30000);
+        QVERIFY(w.session().stream().light() == scan.track());
+        QVERIFY(waitForFrame(w, last));
+        const int followed_green = pixelsOf(w, Colour::Green, rows / 2);
+        // The carpet of the last frame, lost to the static table, is green again.
+        QVERIFY2(followed_green > static_green + rows * 20,
+                 qPrintable(QString("green %1 -> %2").arg(static_green).arg(followed_green)));
+
+        // The strip plots every frame's distance from the table's light: none at the start,
+        // growing to the end.
+        QVERIFY(w.lightStrip().isVisible());
+        const std::vector<double> d = w.lightStrip().distances();
+        QCOMPARE(d.size(), last + 1);
+        QCOMPARE(d.front(), 0.0);
+        QVERIFY2(d.back() > 0.2 && d.back() > d[last / 2], qPrintable(QString::number(d.back())));
+        QVERIFY(w.lightStrip().frameText(last).contains(QStringLiteral("R ×")));
+
+        // Off: the table as it is again, the same classes as before.
+        follow->trigger();
+        QVERIFY(!scan.enabled() && !scan.track());
+        QVERIFY(!w.session().stream().light());
+        QVERIFY(waitForFrame(w, last));
+        const cv::Mat again = w.session().stream().current()->classes;
+        QCOMPARE(cv::countNonZero(again != static_classes), 0);
+        QVERIFY(!w.lightStrip().isVisible());
+
+        // Remembered: on at the close, on in the next window.
+        follow->trigger();
+        w.close();
+        QVERIFY(ui::WindowSettings::load().follow_light);
+        MainWindow next;
+        auto* next_follow = next.findChild<QAction*>(QStringLiteral("view.follow_light"));
+        QVERIFY(next_follow && next_follow->isChecked() && next.session().lightScan().enabled());
+    }
+};
+
+QTEST_MAIN(TestFollowLight)
+#include "test_follow_light.moc"

@@ -1,0 +1,121 @@
+// A table that follows the light: per frame, in stream order, the light's R, G, B gains relative
+// to the light the table was made for, estimated from the carpet and the white it classifies,
+// robust to one frame's outlier and smoothed over the frames. The commands (--adapt) and the
+// window's "Follow the light" both use it, so a frame's light never depends on who asks.
+#pragma once
+
+#include "visioncore/basics/colour_lut.h"
+#include "visioncore/basics/geometry.h"
+#include "visioncore/basics/lut_input_map.h"
+#include "visioncore/basics/result.h"
+#include "visioncore/io/stream_reader.h"
+
+#include <opencv2/core/mat.hpp>
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace fieldsight {
+
+struct LightTrackingOptions
+{
+    int sample_step = 8;            ///< px between samples along a row, and rows between rows
+    int reference_frames = 5;       ///< first frames with enough samples that set the reference
+    std::size_t min_samples = 40;   ///< carpet and white samples a frame needs to count
+    double max_step = 0.12;         ///< largest |ln gain| a frame may move from the state
+    double max_disagreement = 0.04; ///< ln; classes further apart than this do not agree
+    int outlier_patience = 20;      ///< outlying frames in a row after which the light has changed
+    int median_window = 7;          ///< accepted estimates the course is fitted through
+    double smoothing = 0.5;         ///< share of the way to the course that the state moves
+};
+
+/// The light of one frame, relative to the light the table was made for.
+struct LightState
+{
+    /// What the frame did to the state.
+    enum class Verdict {
+        Reference,    ///< one of the first frames: it set the reference, the state stayed
+        Followed,     ///< its estimate moved the state
+        Sparse,       ///< too few carpet and white samples (a jersey filling the view): ignored
+        Outlier,      ///< its estimate was far from the state (a flash): ignored
+        Inconsistent, ///< the carpet's and the white's colour moved apart (not the light's doing)
+        Unread,       ///< the frame could not be read: ignored
+    };
+    std::array<double, 3> gain{1, 1, 1};     ///< R, G, B of the frame's light over the table's
+    std::array<double, 3> estimate{1, 1, 1}; ///< this frame's own estimate (Followed, Outlier)
+    std::size_t samples = 0;                 ///< carpet and white samples the frame gave
+    Verdict verdict = Verdict::Reference;
+
+    /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
+    double distance() const;
+    /// The map that reads this light's pixels in the table's cells: the colour in full, the level
+    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.01 in ln gain; nullptr
+    /// within 2% of the table's light (a lookup through a map costs about twice one without).
+    std::shared_ptr<const LutInputMap> makeMap() const;
+};
+
+const char* verdictName(LightState::Verdict verdict);
+
+/// A state's map (LightState::makeMap), made again only when the state's map would differ, so a
+/// worker running frames in order builds few maps.
+class LightMapCache
+{
+public:
+    std::shared_ptr<const LutInputMap> mapFor(const LightState& state);
+
+private:
+    std::array<long, 3> m_key{0, 0, 0};
+    std::shared_ptr<const LutInputMap> m_map;
+};
+
+/// Follows the light frame by frame. Feed it the frames in stream order; deterministic.
+class LightTracker
+{
+public:
+    LightTracker(std::shared_ptr<const ColourLut> lut, LightTrackingOptions options = {});
+
+    /// The next frame (CV_8UC3 Y, Cb, Cr) with its kinematic horizon (samples below it only).
+    const LightState& observe(const cv::Mat& ycbcr, const Horizon& horizon);
+    /// The next frame could not be read: the state stays.
+    const LightState& skip();
+    const LightState& state() const { return m_state; }
+
+private:
+    struct ClassSums
+    {
+        std::array<double, 3> rgb{0, 0, 0};
+        std::size_t count = 0;
+    };
+    void sample(const cv::Mat& ycbcr, const Horizon& horizon, std::array<ClassSums, 2>& sums) const;
+    void follow(const std::array<ClassSums, 2>& sums, std::size_t samples);
+
+    std::shared_ptr<const ColourLut> m_lut;
+    LightTrackingOptions m_options;
+    LightState m_state;
+    LightMapCache m_maps;
+    std::shared_ptr<const LutInputMap> m_map; ///< of m_state, used to classify the samples
+    std::array<ClassSums, 2> m_reference;     ///< carpet and white under the table's light
+    int m_reference_frames = 0;
+    int m_outliers_in_a_row = 0;
+    std::deque<std::array<double, 3>> m_recent; ///< ln of the latest accepted estimates
+};
+
+struct LightTrack
+{
+    std::vector<LightState> frames; ///< in stream order, from frame 0
+    bool cancelled = false;         ///< then `frames` holds the frames tracked before the stop
+};
+
+/// Tracks frames 0 .. count-1 of `reader` with `lut`. A frame that cannot be read keeps the
+/// state (Verdict::Unread). `progress` (done, total) after every frame; `cancel` stops early.
+LightTrack trackLight(StreamReader& reader, std::shared_ptr<const ColourLut> lut, std::size_t count,
+                      const LightTrackingOptions& options = {},
+                      const std::function<void(std::size_t, std::size_t)>& progress = {},
+                      const std::atomic<bool>* cancel = nullptr);
+
+} // namespace fieldsight

@@ -1,0 +1,354 @@
+// Following the light: sparse samples of the carpet and the white, a least-squares von Kries gain
+// per frame, and a median and exponential filter that one odd frame cannot pull away.
+#include "visioncore/services/light_tracking.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <utility>
+#include <stdexcept>
+
+namespace fieldsight {
+
+namespace {
+
+/// The classes whose colour the light is judged by: the carpet and the white lines, goals and
+/// robots, the two every field shows.
+constexpr std::array<Colour, 2> kReferenceClasses{Colour::Green, Colour::White};
+
+/// Maps are made for gains rounded to this step of ln gain: at most half a percent off, a level
+/// at white, and coarse enough that even a fast change makes a new map only every other frame
+/// (making one costs about a tenth of a 320x240 frame's run).
+constexpr double kMapStep = 0.01;
+/// A light within this (ln gain, about 2%) of the table's reads the table as it is: its cells are
+/// 2 levels wide and a table has margins, and a lookup through a map costs twice one without.
+constexpr double kNoMapBelow = 0.02;
+
+/// The steepest course of the light the tracker believes, in ln gain per frame (30% in 12
+/// frames): a line through a few noisy estimates may claim more.
+constexpr double kMaxSlope = 0.025;
+
+/// A table's cells are narrow in colour but broad in Y (it is made over shadows and exposures),
+/// and on real frames the level is what a change of view moves most: the map corrects the level
+/// only beyond this (ln gain, about 8%), the colour in full. On B-Human's log, following every
+/// level change lost a quarter of the balls; this keeps them (docs/formats.md).
+constexpr double kLevelMargin = 0.08;
+
+/// Samples a class needs in a frame to say anything of the light.
+constexpr std::size_t kMinClassSamples = 10;
+
+std::array<long, 3> mapKey(const std::array<double, 3>& gain)
+{
+    // The level (the green gain) beyond the table's margin in Y; the colour in full.
+    const double level = std::log(gain[1]);
+    const double beyond = level > kLevelMargin    ? level - kLevelMargin
+                          : level < -kLevelMargin ? level + kLevelMargin
+                                                  : 0.0;
+    std::array<long, 3> key{};
+    for (std::size_t k = 0; k < 3; ++k)
+        key[k] = std::lround((std::log(gain[k]) - level + beyond) / kMapStep);
+    return key;
+}
+
+std::shared_ptr<const LutInputMap> mapOfKey(const std::array<long, 3>& key)
+{
+    const long largest = std::max({std::abs(key[0]), std::abs(key[1]), std::abs(key[2])});
+    if (double(largest) * kMapStep < kNoMapBelow)
+        return nullptr;
+    // The maps made lately, shared: the tracker classifying its samples and the worker running
+    // the same frame ask for the same map, and making one costs more than using it for a frame.
+    static std::mutex mutex;
+    static std::array<std::pair<std::array<long, 3>, std::weak_ptr<const LutInputMap>>, 8> recent;
+    static std::size_t next = 0;
+    std::lock_guard lock(mutex);
+    for (const auto& [made_for, map] : recent)
+        if (made_for == key)
+            if (auto shared = map.lock())
+                return shared;
+    auto map = std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(
+        std::exp(double(key[0]) * kMapStep), std::exp(double(key[1]) * kMapStep),
+        std::exp(double(key[2]) * kMapStep)));
+    recent[next++ % recent.size()] = {key, map};
+    return map;
+}
+
+double medianOf(std::vector<double> v)
+{
+    const auto mid = v.begin() + std::ptrdiff_t(v.size() / 2);
+    std::nth_element(v.begin(), mid, v.end());
+    if (v.size() % 2 == 1)
+        return *mid;
+    return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+} // namespace
+
+double LightState::distance() const
+{
+    double d = 0;
+    for (double g : gain)
+        d = std::max(d, std::abs(std::log(g)));
+    return d;
+}
+
+std::shared_ptr<const LutInputMap> LightState::makeMap() const
+{
+    return mapOfKey(mapKey(gain));
+}
+
+const char* verdictName(LightState::Verdict verdict)
+{
+    switch (verdict) {
+    case LightState::Verdict::Reference:
+        return "reference";
+    case LightState::Verdict::Followed:
+        return "followed";
+    case LightState::Verdict::Sparse:
+        return "too few carpet and white samples";
+    case LightState::Verdict::Outlier:
+        return "outlier";
+    case LightState::Verdict::Inconsistent:
+        return "the carpet and the white disagree";
+    case LightState::Verdict::Unread:
+        return "unreadable";
+    }
+    return "?";
+}
+
+LightTracker::LightTracker(std::shared_ptr<const ColourLut> lut, LightTrackingOptions options)
+    : m_lut(std::move(lut)), m_options(options)
+{
+    if (!m_lut)
+        throw std::invalid_argument("LightTracker: no table");
+    m_options.sample_step = std::max(1, m_options.sample_step);
+    m_options.median_window = std::max(1, m_options.median_window);
+}
+
+void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
+                          std::array<ClassSums, 2>& sums) const
+{
+    const int step = m_options.sample_step;
+    const int width = ycbcr.cols;
+    const int rows = ycbcr.rows;
+    // A fixed grid, below the kinematic horizon where the carpet is (the whole frame when none is
+    // known): each sampled column's first row, worked out once.
+    std::vector<int> first_row;
+    for (int x = step / 2; x < width; x += step)
+        first_row.push_back(int(std::clamp(std::ceil(horizon.yAt(x, width)), 0.0, double(rows))));
+    const std::uint8_t* cells = m_lut->data();
+    std::array<std::array<long long, 3>, 2> sum{};
+    std::array<std::size_t, 2> count{};
+    for (int y = step / 2; y < rows; y += step) {
+        const std::uint8_t* p = ycbcr.ptr<std::uint8_t>(y) + 3 * (step / 2);
+        for (std::size_t column = 0; column < first_row.size(); ++column, p += 3 * step) {
+            if (y < first_row[column])
+                continue;
+            const std::size_t cell =
+                m_map ? m_map->index(p[0], p[1], p[2]) : ColourLut::index(p[0], p[1], p[2]);
+            const Colour c = Colour(cells[cell]);
+            const std::size_t k = c == kReferenceClasses[0] ? 0 : c == kReferenceClasses[1] ? 1 : 2;
+            if (k == 2)
+                continue;
+            // Back to R, G, B (BT.601 full range, in 1/256 steps); a clipped channel says
+            // nothing of the gain.
+            const int cb = p[1] - 128;
+            const int cr = p[2] - 128;
+            const int r = p[0] + ((359 * cr) >> 8);
+            const int g = p[0] - ((88 * cb + 183 * cr) >> 8);
+            const int b = p[0] + ((454 * cb) >> 8);
+            if (std::max({r, g, b}) >= 250 || std::min({r, g, b}) <= 2)
+                continue;
+            sum[k][0] += r;
+            sum[k][1] += g;
+            sum[k][2] += b;
+            ++count[k];
+        }
+    }
+    for (std::size_t k = 0; k < 2; ++k) {
+        for (std::size_t c = 0; c < 3; ++c)
+            sums[k].rgb[c] = double(sum[k][c]);
+        sums[k].count = count[k];
+    }
+}
+
+const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& horizon)
+{
+    CV_Assert(ycbcr.type() == CV_8UC3);
+    std::array<ClassSums, 2> sums{};
+    sample(ycbcr, horizon, sums);
+    const std::size_t samples = sums[0].count + sums[1].count;
+    m_state.samples = samples;
+    m_state.estimate = m_state.gain;
+    if (m_reference_frames < m_options.reference_frames) {
+        m_state.verdict = LightState::Verdict::Reference;
+        if (samples >= m_options.min_samples) {
+            for (std::size_t k = 0; k < sums.size(); ++k) {
+                for (std::size_t c = 0; c < 3; ++c)
+                    m_reference[k].rgb[c] += sums[k].rgb[c];
+                m_reference[k].count += sums[k].count;
+            }
+            ++m_reference_frames;
+        }
+        return m_state;
+    }
+    follow(sums, samples);
+    return m_state;
+}
+
+void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samples)
+{
+    if (samples < m_options.min_samples) {
+        m_state.verdict = LightState::Verdict::Sparse;
+        return;
+    }
+    // Per class, its means over its reference means, in ln. A change of the light moves every
+    // class alike; a change of what is in view (the carpet near or far, a robot's white) moves
+    // one class's level but not its colour. So the colour (each channel over green) is the
+    // classes' weighted mean, and a frame where they disagree on it is ignored; the level moves
+    // only as far as every class agrees.
+    struct ClassRatio
+    {
+        std::array<double, 3> log;
+        double weight;
+    };
+    std::vector<ClassRatio> ratios;
+    for (std::size_t k = 0; k < sums.size(); ++k) {
+        if (sums[k].count < kMinClassSamples || m_reference[k].count == 0)
+            continue;
+        ClassRatio r{{}, double(sums[k].count)};
+        bool positive = true;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const double seen = sums[k].rgb[c] / double(sums[k].count);
+            const double ref = m_reference[k].rgb[c] / double(m_reference[k].count);
+            positive = positive && seen > 0 && ref > 0;
+            r.log[c] = positive ? std::log(seen / ref) : 0.0;
+        }
+        if (positive)
+            ratios.push_back(r);
+    }
+    if (ratios.empty()) {
+        m_state.verdict = LightState::Verdict::Sparse;
+        return;
+    }
+    std::array<double, 3> colour{0, 0, 0};
+    double weights = 0;
+    for (const ClassRatio& r : ratios) {
+        for (std::size_t c = 0; c < 3; ++c)
+            colour[c] += r.weight * (r.log[c] - r.log[1]);
+        weights += r.weight;
+    }
+    for (double& c : colour)
+        c /= weights;
+    // The level: a class sees its pixels through the current map, so one whose cells are narrow
+    // in Y loses the pixels the light moved furthest and under-reads the change. The level is the
+    // smallest move every class agrees on (the same way), relative to the state's; none when
+    // they move apart (a view with more near carpet and a robot's white, not a change of light).
+    const double level_now = std::log(m_state.gain[1]);
+    double level = ratios.front().log[1]; // one class alone: its level
+    if (ratios.size() > 1) {
+        double up = std::numeric_limits<double>::infinity();
+        double down = std::numeric_limits<double>::infinity();
+        for (const ClassRatio& r : ratios) {
+            up = std::min(up, r.log[1] - level_now);
+            down = std::min(down, level_now - r.log[1]);
+        }
+        level = level_now + (up > 0 ? up : down > 0 ? -down : 0.0);
+    }
+    for (const ClassRatio& r : ratios)
+        for (std::size_t c = 0; c < 3; ++c)
+            if (std::abs(r.log[c] - r.log[1] - colour[c]) > m_options.max_disagreement) {
+                m_state.verdict = LightState::Verdict::Inconsistent;
+                return;
+            }
+    std::array<double, 3> estimate{};
+    for (std::size_t c = 0; c < 3; ++c)
+        estimate[c] = std::exp(level + colour[c]);
+    m_state.estimate = estimate;
+
+    // The light's course: a robust line (Theil-Sen) through the recent accepted estimates, so a
+    // steady change is followed without lag and one odd frame moves nothing. A frame is judged
+    // an outlier against where that line says the light is now.
+    const auto fitAt = [this](std::size_t c, double x) {
+        const std::size_t n = m_recent.size();
+        std::vector<double> slopes;
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a + 1; b < n; ++b)
+                slopes.push_back((m_recent[b][c] - m_recent[a][c]) / double(b - a));
+        const double slope =
+            slopes.empty() ? 0.0 : std::clamp(medianOf(std::move(slopes)), -kMaxSlope, kMaxSlope);
+        std::vector<double> intercepts;
+        for (std::size_t a = 0; a < n; ++a)
+            intercepts.push_back(m_recent[a][c] - slope * double(a));
+        return medianOf(std::move(intercepts)) + slope * x;
+    };
+    std::array<double, 3> log_estimate{};
+    double step = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+        log_estimate[c] = std::log(estimate[c]);
+        const double expected =
+            m_recent.size() < 3 ? std::log(m_state.gain[c]) : fitAt(c, double(m_recent.size()));
+        step = std::max(step, std::abs(log_estimate[c] - expected));
+    }
+    if (step > m_options.max_step && ++m_outliers_in_a_row < m_options.outlier_patience) {
+        m_state.verdict = LightState::Verdict::Outlier;
+        return;
+    }
+    if (step > m_options.max_step)
+        m_recent.clear(); // the light has changed for good: start over from the new one
+    m_outliers_in_a_row = 0;
+    m_recent.push_back(log_estimate);
+    while (m_recent.size() > std::size_t(m_options.median_window))
+        m_recent.pop_front();
+    for (std::size_t c = 0; c < 3; ++c) {
+        const double target = fitAt(c, double(m_recent.size() - 1));
+        const double now = std::log(m_state.gain[c]);
+        m_state.gain[c] = std::exp(now + m_options.smoothing * (target - now));
+    }
+    m_state.verdict = LightState::Verdict::Followed;
+    m_map = m_maps.mapFor(m_state);
+}
+
+const LightState& LightTracker::skip()
+{
+    m_state.samples = 0;
+    m_state.estimate = m_state.gain;
+    m_state.verdict = LightState::Verdict::Unread;
+    return m_state;
+}
+
+std::shared_ptr<const LutInputMap> LightMapCache::mapFor(const LightState& state)
+{
+    const std::array<long, 3> key = mapKey(state.gain);
+    if (key != m_key) {
+        m_key = key;
+        m_map = mapOfKey(key);
+    }
+    return m_map;
+}
+
+LightTrack trackLight(StreamReader& reader, std::shared_ptr<const ColourLut> lut, std::size_t count,
+                      const LightTrackingOptions& options,
+                      const std::function<void(std::size_t, std::size_t)>& progress,
+                      const std::atomic<bool>* cancel)
+{
+    LightTracker tracker(std::move(lut), options);
+    LightTrack track;
+    track.frames.reserve(count);
+    Frame frame;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (cancel && cancel->load()) {
+            track.cancelled = true;
+            break;
+        }
+        if (reader.readInto(i, frame))
+            track.frames.push_back(tracker.observe(frame.ycbcr, frame.horizon.value_or(Horizon{})));
+        else
+            track.frames.push_back(tracker.skip());
+        if (progress)
+            progress(i + 1, count);
+    }
+    return track;
+}
+
+} // namespace fieldsight
