@@ -236,7 +236,15 @@ private slots:
 
         // Ctrl+Z: the bytes before; Ctrl+Y: the automatic table again.
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
-        QCOMPARE(lutBytes(w), before);
+        QVERIFY2(lutBytes(w) == before,
+                 qPrintable(QString("lut steps %1 index %2, focus %3, active %4")
+                                .arg(w.session().lut().undoStack().count())
+                                .arg(w.session().lut().undoStack().index())
+                                .arg(QApplication::focusWidget()
+                                         ? QApplication::focusWidget()->metaObject()->className()
+                                         : "none")
+                                .arg(w.session().undoGroup().activeStack() ==
+                                     &w.session().lut().undoStack())));
         QVERIFY(!w.session().lut().modified());
         QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
         QCOMPARE(lutBytes(w), made);

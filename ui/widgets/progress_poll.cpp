@@ -18,9 +18,13 @@ QProgressDialog* showProgress(QWidget* parent, const QString& label, const QStri
     if (poll.cancel)
         QObject::connect(dialog, &QProgressDialog::canceled, dialog, poll.cancel);
     auto* timer = new QTimer(dialog);
-    QObject::connect(timer, &QTimer::timeout, dialog, [dialog, poll] {
+    QObject::connect(timer, &QTimer::timeout, dialog, [dialog, poll, parent] {
         if (!poll.running || !poll.running()) {
+            // The keys go back to the window the run was started from.
+            const bool active = dialog->isActiveWindow();
             dialog->close();
+            if (active && parent)
+                parent->window()->activateWindow();
             return;
         }
         if (dialog->wasCanceled())
