@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ui/document/gui_data_wrapper.h"
+#include "ui/document/read_ahead.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "ui/document/annotations_document.h"
 #include "visioncore/io/annotations.h"
@@ -122,18 +123,7 @@ private:
     /// last LUT, so the next step finds it ready.
     void prefetch();
 
-    /// A frame's pixels as the GUI shows them: made once per frame (and per LUT for the
-    /// classified view), shared read-only with every output of that frame, never written again.
-    struct Display
-    {
-        cv::Mat ycbcr; ///< its own copy
-        QImage raw;
-        std::shared_ptr<const ColourLut> lut; ///< what `classified` and `classes` were made with
-        QImage classified;
-        cv::Mat classes;
-    };
-    static void makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
-                            Display& display);
+    using Display = FrameDisplay;
 
     const Pipeline& m_pipeline;
     std::set<std::string, std::less<>> m_layers;
@@ -156,6 +146,10 @@ private:
     std::shared_ptr<const ColourLut> m_last_lut;
     std::shared_ptr<FrameSource> m_prefetch_source;
     std::size_t m_prefetch_index = 0;
+    /// The frames after the prefetched one, read on a thread of their own (3 frames of 1280x720
+    /// with their displays are about 40 MB).
+    static constexpr std::size_t kReadAheadDepth = 3;
+    ReadAhead m_read_ahead{kReadAheadDepth};
 
     std::mutex m_mutex;
     std::optional<FrameRequest> m_pending;
@@ -168,8 +162,5 @@ private:
 
 /// The percept items of one frame's detections.
 std::vector<PerceptItem> perceptItems(const PerceptSet& percepts);
-
-/// The frame in colour-class colours (Format_RGB32, SPEC §1), and the class ids in `classes`.
-QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes);
 
 } // namespace fieldsight::ui
