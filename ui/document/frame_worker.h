@@ -146,10 +146,11 @@ private:
     std::shared_ptr<const ColourLut> m_last_lut;
     std::shared_ptr<FrameSource> m_prefetch_source;
     std::size_t m_prefetch_index = 0;
-    /// The frames after the prefetched one, read on a thread of their own (3 frames of 1280x720
-    /// with their displays are about 40 MB).
-    static constexpr std::size_t kReadAheadDepth = 3;
-    ReadAhead m_read_ahead{kReadAheadDepth};
+    /// The frames after the current one, read on two threads of their own: two 1280x720 PNGs
+    /// decode in about the time the user takes for a step (4 frames with their displays are about
+    /// 55 MB at that size).
+    static constexpr std::size_t kReadAheadDepth = 4;
+    ReadAhead m_read_ahead{kReadAheadDepth, 2};
 
     std::mutex m_mutex;
     std::optional<FrameRequest> m_pending;

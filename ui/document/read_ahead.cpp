@@ -45,7 +45,11 @@ void makeFrameDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>
     }
 }
 
-ReadAhead::ReadAhead(std::size_t depth) : m_depth(depth), m_thread([this] { loop(); }) {}
+ReadAhead::ReadAhead(std::size_t depth, std::size_t threads) : m_depth(depth)
+{
+    for (std::size_t i = 0; i < std::max<std::size_t>(1, threads); ++i)
+        m_threads.emplace_back([this, i] { loop(i); });
+}
 
 ReadAhead::~ReadAhead()
 {
@@ -54,7 +58,8 @@ ReadAhead::~ReadAhead()
         m_stop = true;
     }
     m_wake.notify_all();
-    m_thread.join();
+    for (std::thread& thread : m_threads)
+        thread.join();
 }
 
 void ReadAhead::want(const std::shared_ptr<FrameSource>& source, std::size_t first,
@@ -65,18 +70,22 @@ void ReadAhead::want(const std::shared_ptr<FrameSource>& source, std::size_t fir
     if (!same) {
         m_ready.clear();
         m_failed.clear();
-        m_reader.reset();
+        m_readers.clear();
         m_for = nullptr;
         m_for_alive.reset();
         if (!source || !source->reader)
             return;    // a live camera has no frames ahead
         lock.unlock(); // reopening may read a folder's listing
-        auto reader = source->reader->reopen();
+        std::vector<std::shared_ptr<StreamReader>> readers;
+        for (std::size_t i = 0; i < m_threads.size(); ++i) {
+            auto reader = source->reader->reopen();
+            if (!reader)
+                return; // the worker reads every frame itself
+            readers.push_back(std::move(reader).value());
+        }
         lock.lock();
-        if (!reader)
-            return; // the worker reads every frame itself
-        m_reader = std::shared_ptr<StreamReader>(std::move(reader).value());
-        m_frame_count = m_reader->info().frame_count;
+        m_readers = std::move(readers);
+        m_frame_count = m_readers.front()->info().frame_count;
         m_for = source.get();
         m_for_alive = source;
     }
@@ -97,7 +106,7 @@ void ReadAhead::drop(const std::shared_ptr<FrameSource>& source)
         return;
     m_ready.clear();
     m_failed.clear();
-    m_reader.reset(); // the thread lets go of its copy after the frame it is reading
+    m_readers.clear(); // a thread lets go of its copy after the frame it is reading
     m_for = nullptr;
     m_for_alive.reset();
 }
@@ -107,7 +116,7 @@ ReadAhead::State ReadAhead::take(const std::shared_ptr<FrameSource>& source, std
 {
     std::unique_lock lock(m_mutex);
     const auto state = [&] {
-        if (!source || source.get() != m_for || !m_reader || m_failed.count(index))
+        if (!source || source.get() != m_for || m_readers.empty() || m_failed.count(index))
             return State::Absent;
         if (m_ready.count(index))
             return State::Taken;
@@ -127,15 +136,15 @@ ReadAhead::State ReadAhead::take(const std::shared_ptr<FrameSource>& source, std
     return now;
 }
 
-void ReadAhead::loop()
+void ReadAhead::loop(std::size_t thread)
 {
     std::unique_lock lock(m_mutex);
     for (;;) {
         // The first wanted frame not read yet, of the source wanted now.
         std::optional<std::size_t> next;
-        if (m_reader)
+        if (!m_readers.empty())
             for (std::size_t i = m_first; i < m_first + m_depth && i < m_frame_count; ++i)
-                if (!m_ready.count(i) && !m_failed.count(i)) {
+                if (!m_ready.count(i) && !m_failed.count(i) && !m_reading.count(i)) {
                     next = i;
                     break;
                 }
@@ -145,7 +154,8 @@ void ReadAhead::loop()
             m_wake.wait(lock);
             continue;
         }
-        const std::shared_ptr<StreamReader> reader = m_reader;
+        const std::shared_ptr<StreamReader> reader = m_readers[thread];
+        m_reading.insert(*next);
         const std::shared_ptr<const ColourLut> lut = m_lut;
         const FrameSource* source = m_for;
         lock.unlock();
@@ -159,7 +169,9 @@ void ReadAhead::loop()
             ok = false; // the worker's own read of that frame reports it
         }
         lock.lock();
-        if (m_reader != reader || m_for != source || *next < m_first || *next >= m_first + m_depth)
+        m_reading.erase(*next);
+        if (m_readers.empty() || m_readers[thread] != reader || m_for != source ||
+            *next < m_first || *next >= m_first + m_depth)
             continue; // wanted no more
         // A frame that cannot be read is left to the worker, whose own read says why.
         if (!ok)

@@ -19,6 +19,7 @@
 #include <optional>
 #include <set>
 #include <thread>
+#include <vector>
 
 namespace fieldsight::ui {
 
@@ -43,8 +44,8 @@ void makeFrameDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>
 /// The frame in colour-class colours (Format_RGB32, SPEC §1), and the class ids in `classes`.
 QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes);
 
-/// Reads frames of a file stream ahead, with a reader of its own (StreamReader::reopen), on its
-/// own thread; keeps at most `depth` of them.
+/// Reads frames of a file stream ahead on `threads` threads of its own, each with a reader of its
+/// own (StreamReader::reopen); keeps at most `depth` of them.
 class ReadAhead
 {
 public:
@@ -54,7 +55,7 @@ public:
         FrameDisplay display;
     };
 
-    explicit ReadAhead(std::size_t depth);
+    ReadAhead(std::size_t depth, std::size_t threads);
     ~ReadAhead(); ///< stops the thread (after the frame it is reading)
     ReadAhead(const ReadAhead&) = delete;
     ReadAhead& operator=(const ReadAhead&) = delete;
@@ -77,7 +78,7 @@ public:
                std::chrono::milliseconds wait = std::chrono::milliseconds(0));
 
 private:
-    void loop();
+    void loop(std::size_t thread);
 
     const std::size_t m_depth;
     std::mutex m_mutex;
@@ -86,13 +87,15 @@ private:
     bool m_stop = false;
     const FrameSource* m_for = nullptr;     ///< under m_mutex: whose frames (identity only)
     std::weak_ptr<FrameSource> m_for_alive; ///< under m_mutex: m_for is not a reused address
-    std::shared_ptr<StreamReader> m_reader; ///< under m_mutex: m_for's, reopened
+    /// Under m_mutex: m_for's, reopened, one per thread (empty: nothing to read).
+    std::vector<std::shared_ptr<StreamReader>> m_readers;
+    std::set<std::size_t> m_reading; ///< frames a thread is reading now
     std::size_t m_frame_count = 0;
     std::size_t m_first = 0;
     std::shared_ptr<const ColourLut> m_lut;
     std::map<std::size_t, Decoded> m_ready;
-    std::set<std::size_t> m_failed; ///< frames that could not be read (the worker says why)
-    std::thread m_thread;           ///< last: starts once the rest is made
+    std::set<std::size_t> m_failed;     ///< frames that could not be read (the worker says why)
+    std::vector<std::thread> m_threads; ///< last: they start once the rest is made
 };
 
 } // namespace fieldsight::ui
