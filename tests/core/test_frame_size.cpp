@@ -28,6 +28,7 @@ public:
     Param<int> m_run{this, 3, {"run", "px", 0, 100, 1, ""}};
     Param<double> m_error{this, 1.5, {"error", "px", 0, 100, 0.5, ""}};
     Param<int> m_count{this, 6, {"count", "", 0, 100, 1, ""}};
+    Param<int> m_spacing{this, 4, {"spacing", "px", 1, 64, 1, ""}};
 };
 
 struct Scored
@@ -95,7 +96,7 @@ private slots:
 
         // The registry keeps the value as set, at the reference width, and says which scale.
         const std::vector<ParamInfo> params = stage.params();
-        QCOMPARE(params.size(), std::size_t(3));
+        QCOMPARE(params.size(), std::size_t(4));
         QCOMPARE(params[0].value, 3.0);
         QVERIFY(params[0].scales_with_width);
         QCOMPARE(params[1].value, 1.5);
@@ -104,6 +105,15 @@ private slots:
         QVERIFY(stage.setParam("run", 5).ok());
         QCOMPARE(int(stage.m_run), int(std::lround(5 * 1.5)));
         QCOMPARE(stage.params()[0].value, 5.0);
+
+        // A tiny frame: a length never goes below its range (a scan line spacing of 0 would
+        // never end), and one whose range allows 0 may shrink to it.
+        stage.setFrameWidth(32);
+        QCOMPARE(int(stage.m_spacing), 1);
+        QCOMPARE(int(stage.m_run), 1); // 5 x 0.1 = 0.5 rounds up
+        QCOMPARE(double(stage.m_error), 0.15);
+        stage.setFrameWidth(16);
+        QCOMPARE(int(stage.m_run), 0);
     }
 
     void everyLengthOfTheStandardPipelineScales()

@@ -4,6 +4,7 @@
 #include "visioncore/basics/colour.h"
 #include "visioncore/basics/result.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -94,6 +95,7 @@ protected:
     virtual void store(double value) = 0;
     /// What a length parameter is multiplied by for the frame being run (1 for other parameters).
     double scale() const { return m_scale ? *m_scale : 1.0; }
+    double lowest() const { return m_info.min; } ///< a scaled length never goes below it
 
 private:
     ParamInfo m_info;                ///< value unused; load() is the truth
@@ -128,7 +130,8 @@ template <class T> constexpr double toDouble(T value)
 ///     Param<int> m_iterations{this, 100, {"iterations", "", 1, 10000, 1, "RANSAC samples."}};
 ///
 /// A length (unit "px") reads as its value scaled to the frame being run (see
-/// kParamReferenceWidth; a whole number is rounded), so a stage's code never scales by hand.
+/// kParamReferenceWidth; a whole number is rounded; never below the parameter's range), so a
+/// stage's code never scales by hand.
 template <class T> class Param final : public ParamBase
 {
     static_assert(std::is_same_v<T, double> || std::is_same_v<T, int> ||
@@ -148,10 +151,14 @@ public:
     /// As the stage uses it: a length scaled to the frame being run.
     T value() const
     {
+        // Exactly m_value at the reference width; on a tiny frame never below the parameter's
+        // range (a scan line spacing of 0 would never end).
         if constexpr (std::is_same_v<T, double>)
-            return m_value * scale(); // exactly m_value at the reference width
+            return m_value < lowest() ? m_value : std::max(m_value * scale(), lowest());
         else if constexpr (std::is_same_v<T, int>)
-            return int(std::lround(m_value * scale()));
+            return m_value < lowest()
+                       ? m_value
+                       : std::max(int(std::lround(m_value * scale())), int(lowest()));
         else
             return m_value;
     }
