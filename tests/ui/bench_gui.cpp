@@ -2,8 +2,8 @@
 // on, and printed; nothing is asserted (timings depend on the machine). Label `bench`:
 //   ctest --test-dir build -L bench -R bench_gui --verbose  or  build/tests/bench_gui [DIR
 //   [--steps-only]]
-// - step: key press (Right) to the painted frame, median and 95th percentile, at 320x240 and
-//   640x480 (generated with synth), from PNG folders and from .strm files;
+// - step: key press (Right) to the painted frame, median and 95th percentile, at 320x240,
+//   640x480 and 1280x720 (generated with synth; `--sizes`), from PNG folders and .strm files;
 // - play: frames painted per second at 60 fps with every layer on;
 // - a parameter edit to the repainted frame;
 // - a LUT edit (a click's tolerance box) to the repainted frame, and to the whole-stream effect
@@ -323,7 +323,8 @@ int main(int argc, char** argv)
     QCommandLineParser parser;
     parser.setApplicationDescription(
         "Times the main window, offscreen, with every layer on, at 1280x800: a step to the painted "
-        "frame (320x240 and 640x480, PNG folders and .strm), play, a parameter edit, a LUT edit to "
+        "frame (320x240, 640x480 and 1280x720 or --sizes, PNG folders and .strm), play, a "
+        "parameter edit, a LUT edit to "
         "the repainted frame and to the whole-stream strip, opening 9,000-frame streams and memory "
         "while playing. The streams are generated in DIR (kept between runs) or in a temporary "
         "folder. Prints the times; asserts nothing.");
@@ -332,8 +333,12 @@ int main(int argc, char** argv)
                                  "[DIR]");
     const QCommandLineOption steps_option("steps-only", "only the steps");
     const QCommandLineOption edits_option("edits-only", "only the LUT edits");
+    const QCommandLineOption sizes_option(
+        "sizes", "the frame sizes stepped through (default 320x240,640x480,1280x720)", "WxH,...",
+        "320x240,640x480,1280x720");
     parser.addOption(steps_option);
     parser.addOption(edits_option);
+    parser.addOption(sizes_option);
     parser.process(app);
     if (parser.positionalArguments().size() > 1) {
         std::cerr << "usage: bench_gui [DIR] [--steps-only | --edits-only] (bench_gui --help says "
@@ -350,9 +355,25 @@ int main(int argc, char** argv)
     const bool edits_only = parser.isSet(edits_option);
     std::printf("bench_gui: offscreen, every layer on, window 1280x800\n");
 
-    for (const auto& [w, h] : {std::pair{320, 240}, std::pair{640, 480}}) {
+    std::vector<std::pair<int, int>> sizes;
+    for (const QString& size : parser.value(sizes_option).split(',', Qt::SkipEmptyParts)) {
+        const QStringList wh = size.split('x');
+        const int w = wh.value(0).toInt(), h = wh.value(1).toInt();
+        if (wh.size() != 2 || w < 16 || h < 16) {
+            std::cerr << "bench_gui: --sizes takes WxH,... (e.g. 320x240,1280x720)\n";
+            return 2;
+        }
+        sizes.emplace_back(w, h);
+    }
+    // The edit benchmarks below use the 320x240 and 640x480 streams whatever --sizes says.
+    for (const auto& [w, h] : {std::pair{320, 240}, std::pair{640, 480}})
+        if (std::find(sizes.begin(), sizes.end(), std::pair{w, h}) == sizes.end() && !steps_only)
+            sizes.emplace_back(w, h);
+    for (const auto& [w, h] : sizes) {
         const QString stream = QStringLiteral("%1/s%2x%3").arg(dir).arg(w).arg(h);
-        if (!QFileInfo::exists(stream + "/image.strm") && !synth(stream, w, h, 200, true))
+        // HD frames take the generator about 1 s each: 60 of them, 200 of smaller ones.
+        const int frames = w * h > 640 * 480 ? 60 : 200;
+        if (!QFileInfo::exists(stream + "/image.strm") && !synth(stream, w, h, frames, true))
             return 1;
         if (edits_only)
             continue;

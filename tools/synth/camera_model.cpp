@@ -15,8 +15,16 @@ CameraModel::CameraModel(int width, int height, double fov_x_deg, double fov_y_d
     : m_width(width), m_height(height), m_cx(width / 2.0), m_cy(height / 2.0)
 {
     m_fx = m_cx / std::tan(fov_x_deg * kPi / 360.0);
-    m_fy = m_cy / std::tan(fov_y_deg * kPi / 360.0);
+    // fov_y is a 4:3 frame's: another shape (16:9 HD) keeps fov_x and the 4:3 frame's pixel shape,
+    // so it sees less above and below rather than stretching the scene. 0.375 * width is exactly
+    // height / 2 for 4:3 frames, which come out as they always did.
+    m_fy = 0.375 * width / std::tan(fov_y_deg * kPi / 360.0);
     setPose(CameraPose{});
+}
+
+double CameraModel::fovYDeg() const
+{
+    return 360.0 / kPi * std::atan(m_cy / m_fy);
 }
 
 void CameraModel::setPose(const CameraPose& pose)

@@ -21,7 +21,9 @@ struct CameraPose
 };
 
 /// Pinhole model matching the original Transformer (design §2.9): the optical axis meets the image
-/// at (width/2, height/2), f_x = (width/2) / tan(fov_x/2), f_y = (height/2) / tan(fov_y/2).
+/// at (width/2, height/2), f_x = (width/2) / tan(fov_x/2), f_y = (height/2) / tan(fov_y/2), with
+/// fov_y that of a 4:3 frame: a frame of another shape has f_y = (3/8 width) / tan(fov_y/2), the
+/// 4:3 frame's pixel shape (a 1280x720 frame sees 62.8 x 37.58 degrees).
 /// Image coordinates are continuous px with pixel (x, y)'s centre at (x, y).
 class CameraModel
 {
@@ -32,6 +34,7 @@ public:
     const CameraPose& pose() const { return m_pose; }
 
     int width() const { return m_width; }
+    double fovYDeg() const; ///< the vertical field of view this frame size sees
     int height() const { return m_height; }
     double fx() const { return m_fx; } ///< px
     double fy() const { return m_fy; } ///< px

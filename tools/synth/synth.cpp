@@ -1,6 +1,7 @@
 // Writes a generated stream: PNG frames, stream.json, annotations.json, default.lut, image.strm.
 #include "synth/synth.h"
 
+#include "synth/camera_model.h"
 #include "synth/ideal_lut.h"
 #include "synth/output_folder.h"
 #include "synth/scenario_script.h"
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <set>
@@ -233,10 +235,15 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
         return s;
     if (!options.write_png)
         return {}; // a manifest would name frames that do not exist
+    const bool four_by_three = std::int64_t(options.width) * 3 == std::int64_t(options.height) * 4;
+    const double fov_y =
+        four_by_three
+            ? 48.8
+            : std::round(CameraModel(options.width, options.height).fovYDeg() * 100) / 100;
     nlohmann::json manifest = {{"format", "fieldsight-stream/1"},
                                {"pixel_format", "rgb"},
                                {"lut", "default.lut"},
-                               {"camera", {{"fov_deg", {62.8, 48.8}}, {"height_m", 0.45}}},
+                               {"camera", {{"fov_deg", {62.8, fov_y}}, {"height_m", 0.45}}},
                                {"generator",
                                 {{"scenario", scenarioName(options.scenario)},
                                  {"seed", options.seed},

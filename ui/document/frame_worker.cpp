@@ -17,6 +17,10 @@ namespace {
 /// After a run of the same frame again, the look-ahead waits for this long without a request.
 constexpr int kIdleLookAheadMs = 60;
 
+/// How long a request waits for a frame the read-ahead's thread is reading (at most one frame's
+/// decoding; reading it again here would take as long).
+constexpr std::chrono::milliseconds kWaitForReadAhead{2000};
+
 LayerSet stageLayerIds(const Pipeline& pipeline)
 {
     LayerSet ids;
@@ -89,28 +93,6 @@ std::vector<PerceptItem> perceptItems(const PerceptSet& percepts)
         }
     }
     return items;
-}
-
-QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes)
-{
-    if (ycbcr.empty() || ycbcr.type() != CV_8UC3)
-        return {};
-    std::array<QRgb, 256> palette{};
-    for (int c = 0; c < kColourCount; ++c) {
-        const Rgb rgb = colourDisplayRgb(Colour(c));
-        palette[std::size_t(c)] = qRgb(rgb.r, rgb.g, rgb.b);
-    }
-    lut.classifyImage(ycbcr, classes);
-    QImage classified(ycbcr.cols, ycbcr.rows, QImage::Format_RGB32);
-    if (classified.isNull())
-        return classified;
-    for (int y = 0; y < ycbcr.rows; ++y) {
-        const std::uint8_t* ids = classes.ptr<std::uint8_t>(y);
-        auto* out = reinterpret_cast<QRgb*>(classified.scanLine(y));
-        for (int x = 0; x < ycbcr.cols; ++x)
-            out[x] = palette[ids[x]];
-    }
-    return classified;
 }
 
 FrameWorker::FrameWorker(const Pipeline& pipeline)
@@ -267,6 +249,7 @@ void FrameWorker::release(std::shared_ptr<FrameSource> source)
                 m_live_control.reset();
                 m_live_source.reset();
             }
+            m_read_ahead.drop(source);
             {
                 std::lock_guard lock(m_mutex);
                 if (m_ahead_for.source == source) { // a step on the new stream never finds it
@@ -288,6 +271,12 @@ Status FrameWorker::load(const std::shared_ptr<FrameSource>& source, std::size_t
         std::swap(m_data.frame(), m_prefetch);
         std::swap(m_display, m_prefetch_display);
         m_prefetch_source.reset();
+    } else if (ReadAhead::Decoded ahead;
+               m_read_ahead.take(source, index, ahead, kWaitForReadAhead) ==
+               ReadAhead::State::Taken) {
+        // (Waits while the read-ahead's thread is reading it: reading it here too takes as long.)
+        m_data.frame() = std::move(ahead.frame);
+        m_display = std::move(ahead.display);
     } else if (Status s = source->reader->readInto(index, m_data.frame()); !s) {
         return s;
     } else {
@@ -310,16 +299,33 @@ void FrameWorker::prefetch()
         return;
     const StreamInfo& info = m_frame_source->reader->info();
     const std::size_t next = m_frame_index + 1;
+    // The next frames are read on the read-ahead's thread, while this one runs the core.
+    m_read_ahead.want(m_frame_source, next, m_last_lut);
     if (next >= info.frame_count ||
         (m_prefetch_source == m_frame_source && m_prefetch_index == next))
         return;
     m_prefetch_source.reset();
-    if (m_frame_source->reader->readInto(next, m_prefetch)) {
-        m_prefetch_display = {};
-        makeDisplay(m_prefetch, m_last_lut, m_prefetch_display);
-        m_prefetch_source = m_frame_source;
-        m_prefetch_index = next;
+    ReadAhead::Decoded ahead;
+    ReadAhead::State state = ReadAhead::State::Reading;
+    // Waits for the next frame in short spells: a request that comes meanwhile goes first.
+    while ((state = m_read_ahead.take(m_frame_source, next, ahead, std::chrono::milliseconds(4))) ==
+           ReadAhead::State::Reading) {
+        std::lock_guard lock(m_mutex);
+        if (m_pending)
+            return;
     }
+    if (state == ReadAhead::State::Taken) {
+        m_prefetch = std::move(ahead.frame);
+        m_prefetch_display = std::move(ahead.display);
+        makeFrameDisplay(m_prefetch, m_last_lut, m_prefetch_display); // a newer table
+    } else if (m_frame_source->reader->readInto(next, m_prefetch)) {
+        m_prefetch_display = {};
+        makeFrameDisplay(m_prefetch, m_last_lut, m_prefetch_display);
+    } else {
+        return;
+    }
+    m_prefetch_source = m_frame_source;
+    m_prefetch_index = next;
 }
 
 void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
@@ -346,7 +352,7 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     out.frame.name = frame.name;
     out.frame.timestamp_ms = frame.timestamp_ms;
     out.frame.horizon = frame.horizon;
-    makeDisplay(frame, lut, m_display);
+    makeFrameDisplay(frame, lut, m_display); // through the frame's light map, when following
     out.frame.ycbcr = m_display.ycbcr;
     out.raw = m_display.raw;
     out.classified = m_display.classified;
@@ -365,21 +371,6 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     }
     out.drawings = frameDrawings(m_pipeline, m_layers, m_data.canvas(), out.result.percepts, truth);
     out.items = perceptItems(out.result.percepts);
-}
-
-void FrameWorker::makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
-                              Display& display)
-{
-    // Fresh buffers every time: the old ones may still be shown by the GUI.
-    if (display.ycbcr.empty()) {
-        display.ycbcr = frame.ycbcr.clone();
-        display.raw = ycbcrToZoomedQImage(display.ycbcr, 1);
-    }
-    if (lut && display.lut != lut) {
-        display.lut = lut;
-        display.classes = cv::Mat();
-        display.classified = classifyFrame(display.ycbcr, *lut, display.classes);
-    }
 }
 
 std::shared_ptr<const ColourLut> FrameWorker::lutFor(const FrameRequest& request, std::size_t index)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "ui/document/gui_data_wrapper.h"
+#include "ui/document/read_ahead.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "ui/document/annotations_document.h"
 #include "visioncore/io/annotations.h"
@@ -125,18 +126,7 @@ private:
     /// last LUT, so the next step finds it ready.
     void prefetch();
 
-    /// A frame's pixels as the GUI shows them: made once per frame (and per LUT for the
-    /// classified view), shared read-only with every output of that frame, never written again.
-    struct Display
-    {
-        cv::Mat ycbcr; ///< its own copy
-        QImage raw;
-        std::shared_ptr<const ColourLut> lut; ///< what `classified` and `classes` were made with
-        QImage classified;
-        cv::Mat classes;
-    };
-    static void makeDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
-                            Display& display);
+    using Display = FrameDisplay;
     /// The request's table, or a copy of it reading frame `index` through its light's map.
     std::shared_ptr<const ColourLut> lutFor(const FrameRequest& request, std::size_t index);
 
@@ -164,6 +154,11 @@ private:
     std::shared_ptr<const ColourLut> m_light_lut;  ///< with the last frame's light's map
     std::shared_ptr<FrameSource> m_prefetch_source;
     std::size_t m_prefetch_index = 0;
+    /// The frames after the current one, read on two threads of their own: two 1280x720 PNGs
+    /// decode in about the time the user takes for a step (4 frames with their displays are about
+    /// 55 MB at that size).
+    static constexpr std::size_t kReadAheadDepth = 4;
+    ReadAhead m_read_ahead{kReadAheadDepth, 2};
 
     std::mutex m_mutex;
     std::optional<FrameRequest> m_pending;
@@ -176,8 +171,5 @@ private:
 
 /// The percept items of one frame's detections.
 std::vector<PerceptItem> perceptItems(const PerceptSet& percepts);
-
-/// The frame in colour-class colours (Format_RGB32, SPEC §1), and the class ids in `classes`.
-QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes);
 
 } // namespace fieldsight::ui

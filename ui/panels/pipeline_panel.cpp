@@ -55,6 +55,20 @@ PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& setting
     });
     top->addWidget(reset_all);
     outer->addLayout(top);
+    // Lengths follow the frame's size (param.h, kParamReferenceWidth): said once, above them all.
+    bool any_length = false;
+    for (const StageDescriptor& stage : m_settings.pipeline().descriptors())
+        for (const ParamInfo& param : stage.params)
+            any_length = any_length || param.scales_with_width;
+    if (any_length) {
+        auto* note = new QLabel(tr("Lengths in px are for a frame %1 px wide; a wider or "
+                                   "narrower frame scales them by its width / %1 (x4 at 1280).")
+                                    .arg(kParamReferenceWidth),
+                                this);
+        note->setObjectName(QStringLiteral("length_note"));
+        note->setWordWrap(true);
+        outer->addWidget(note);
+    }
 
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
@@ -162,6 +176,9 @@ PipelinePanel::PipelinePanel(StreamDocument& document, PipelineSettings& setting
                            .arg(param.max)
                            .arg(unit)
                            .arg(param.default_value);
+            if (param.scales_with_width)
+                tip += tr("\nIn px at %1 wide: scaled by the frame's width / %1.")
+                           .arg(kParamReferenceWidth);
             w.editor->setToolTip(tip);
             auto* reset = new QToolButton(box);
             reset->setText(QStringLiteral("↺"));

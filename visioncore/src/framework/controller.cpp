@@ -195,6 +195,8 @@ FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std
     FrameReport report;
     report.stages.reserve(m_stages.size());
     const auto frame_start = Clock::now();
+    for (const auto& stage : m_stages)
+        stage->setFrameWidth(bb.width());
     for (const auto& stage : m_stages) {
         const StageInfo& info = stage->info();
         StageTiming timing{info.id, 0.0, false};

@@ -37,6 +37,9 @@ ParamBase::ParamBase(Stage* owner, ParamKind kind, double default_value, const P
     m_info.name = spec.name;
     m_info.kind = kind;
     m_info.unit = spec.unit;
+    m_info.scales_with_width = m_info.unit == "px" && kind != ParamKind::Choice;
+    if (m_info.scales_with_width)
+        m_scale = &owner->m_pixel_scale;
     m_info.description = spec.description;
     m_info.default_value = default_value;
     m_info.min = spec.min;

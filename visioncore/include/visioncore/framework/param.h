@@ -4,6 +4,8 @@
 #include "visioncore/basics/colour.h"
 #include "visioncore/basics/result.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -24,6 +26,12 @@ enum class ParamKind {
 
 std::string_view paramKindName(ParamKind kind); ///< "real", "integer", "boolean", "choice"
 
+/// The frame width a length parameter is given for. A parameter whose unit is "px" is a length in
+/// a frame this wide: a stage running on a frame `width` pixels wide reads it multiplied by
+/// width / kParamReferenceWidth (x4 at 1280x720), so the defaults suit every frame size and a value
+/// set once suits a stream at any size. At 320 wide the factor is exactly 1.
+inline constexpr int kParamReferenceWidth = 320;
+
 /// One allowed value of a Choice parameter.
 struct ParamChoice
 {
@@ -36,7 +44,9 @@ struct ParamInfo
 {
     std::string name; ///< snake_case, unique within the stage
     ParamKind kind = ParamKind::Real;
-    std::string unit;        ///< "px", "rad", "" for counts and ratios
+    std::string unit; ///< "px", "rad", "" for counts and ratios
+    /// Unit "px": the value is for a frame kParamReferenceWidth wide and follows the frame's width.
+    bool scales_with_width = false;
     std::string description; ///< one or two sentences for a user (a tooltip)
     double value = 0;        ///< current value
     double default_value = 0;
@@ -72,7 +82,7 @@ public:
     /// The info with the current value.
     ParamInfo info() const;
     const std::string& name() const { return m_info.name; }
-    double get() const { return load(); }
+    double get() const { return load(); } ///< as set, unscaled
     /// Checks `value` against the kind and range; the message names `stage_id`.`name`.
     Status set(std::string_view stage_id, double value);
     void reset() { store(m_info.default_value); }
@@ -83,9 +93,13 @@ protected:
     ~ParamBase() = default;
     virtual double load() const = 0;
     virtual void store(double value) = 0;
+    /// What a length parameter is multiplied by for the frame being run (1 for other parameters).
+    double scale() const { return m_scale ? *m_scale : 1.0; }
+    double lowest() const { return m_info.min; } ///< a scaled length never goes below it
 
 private:
-    ParamInfo m_info; ///< value unused; load() is the truth
+    ParamInfo m_info;                ///< value unused; load() is the truth
+    const double* m_scale = nullptr; ///< the owner's pixel scale, for "px" parameters
 };
 
 namespace detail {
@@ -114,6 +128,10 @@ template <class T> constexpr double toDouble(T value)
 /// member with its default and spec, and read in the stage's code as a plain T:
 ///
 ///     Param<int> m_iterations{this, 100, {"iterations", "", 1, 10000, 1, "RANSAC samples."}};
+///
+/// A length (unit "px") reads as its value scaled to the frame being run (see
+/// kParamReferenceWidth; a whole number is rounded; never below the parameter's range), so a
+/// stage's code never scales by hand.
 template <class T> class Param final : public ParamBase
 {
     static_assert(std::is_same_v<T, double> || std::is_same_v<T, int> ||
@@ -129,8 +147,21 @@ public:
           m_value(default_value)
     {
     }
-    operator T() const { return m_value; }
-    T value() const { return m_value; }
+    operator T() const { return value(); }
+    /// As the stage uses it: a length scaled to the frame being run.
+    T value() const
+    {
+        // Exactly m_value at the reference width; on a tiny frame never below the parameter's
+        // range (a scan line spacing of 0 would never end).
+        if constexpr (std::is_same_v<T, double>)
+            return m_value < lowest() ? m_value : std::max(m_value * scale(), lowest());
+        else if constexpr (std::is_same_v<T, int>)
+            return m_value < lowest()
+                       ? m_value
+                       : std::max(int(std::lround(m_value * scale())), int(lowest()));
+        else
+            return m_value;
+    }
 
 private:
     double load() const override { return detail::toDouble(m_value); }

@@ -90,9 +90,19 @@ public:
     Status setParam(std::string_view name, double value);
     void resetParams();
 
+    /// The width of the frames about to be run: length parameters (unit "px") then read scaled
+    /// by width / kParamReferenceWidth. The Controller sets it before every frame.
+    void setFrameWidth(int width)
+    {
+        m_pixel_scale = width > 0 ? double(width) / kParamReferenceWidth : 1.0;
+    }
+    /// width / kParamReferenceWidth of the frame being run: for a length a stage fixes in code.
+    double pixelScale() const { return m_pixel_scale; }
+
 private:
     friend class ParamBase;
     std::vector<ParamBase*> m_params;
+    double m_pixel_scale = 1.0;
 };
 
 /// What a host may know of a stage without holding it: its info and its parameters (values as

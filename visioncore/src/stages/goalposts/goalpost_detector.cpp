@@ -211,7 +211,7 @@ void GoalpostDetector::run(Blackboard& bb)
     // A sliver of a post at the image border is too thin for two edge lines: runs touching the
     // border on consecutive scan rows (and short, unlike a crossbar) make a post.
     const auto slivers = [&](bool left_border) {
-        const double max_len = 16;
+        const double max_len = 16 * pixelScale();
         std::vector<const ColourSegment*> rows;
         for (const ColourSegment& t : transitions)
             if ((left_border ? t.x0 == 0 : t.x1 == w) && t.length() <= max_len)

@@ -18,7 +18,7 @@ namespace {
 /// of the next hull segment and no other scan point supports its own segment; it is dropped, and
 /// GreenHorizon::set extrapolates the field edge to the border instead.
 void dropEndDips(std::vector<PointF>& hull, const std::vector<PixelPoint>& points, double margin,
-                 double max_span)
+                 double max_span, double pixel_scale)
 {
     const auto supporters = [&](const PointF& a, const PointF& b) {
         int n = 0;
@@ -26,7 +26,7 @@ void dropEndDips(std::vector<PointF>& hull, const std::vector<PixelPoint>& point
             if (p.x < std::min(a.x, b.x) || p.x > std::max(a.x, b.x))
                 continue;
             const double y = a.y + (b.y - a.y) * (p.x - a.x) / (b.x - a.x);
-            n += std::abs(p.y - y) <= 1.5;
+            n += std::abs(p.y - y) <= 1.5 * pixel_scale;
         }
         return n;
     };
@@ -204,7 +204,7 @@ void GreenHorizonDetector::run(Blackboard& bb)
         }
         hull.push_back(q);
     }
-    dropEndDips(hull, points, int(m_min_green_pixels), 2.0 * spacing);
+    dropEndDips(hull, points, int(m_min_green_pixels), 2.0 * spacing, pixelScale());
     bb.green_horizon.set(hull, w, h);
     bb.percepts.output<FieldBoundary>().push_back({bb.green_horizon.hull()});
 

@@ -46,13 +46,14 @@ bool inMask(unsigned mask, Colour c)
 }
 
 /// Field-coloured bits this short inside a run of obstacle colour (a white marking on a robot)
-/// belong to the run.
+/// belong to the run (px at kParamReferenceWidth wide; ObstacleDetector::maxBridged scales it).
 constexpr int kMaxBridged = 3;
 
-/// Whether segment `k` of `scan` is such a bit: short, with obstacle colour right after it.
-bool bridged(const Scan& scan, std::size_t k, unsigned field_mask)
+/// Whether segment `k` of `scan` is such a bit: at most `max_bridged` px, with obstacle colour
+/// right after it.
+bool bridged(const Scan& scan, std::size_t k, unsigned field_mask, int max_bridged)
 {
-    return scan[k].length() <= kMaxBridged && k + 1 < scan.size() &&
+    return scan[k].length() <= max_bridged && k + 1 < scan.size() &&
            !inMask(field_mask, scan[k + 1].colour);
 }
 
@@ -94,6 +95,11 @@ const StageInfo& ObstacleDetector::info() const
     return info;
 }
 
+int ObstacleDetector::maxBridged() const
+{
+    return int(std::lround(kMaxBridged * pixelScale()));
+}
+
 void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask, bool band,
                                    int spacing, const std::vector<char>& post)
 {
@@ -106,7 +112,7 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
         const Scan& scan = region[i];
         std::size_t k = 0;
         while (k < scan.size() &&
-               (!inMask(mask, scan[k].colour) || (band && bridged(scan, k, mask))))
+               (!inMask(mask, scan[k].colour) || (band && bridged(scan, k, mask, maxBridged()))))
             ++k;
         if (k > 0)
             depth[i] = scan[k - 1].y1 - scan[0].y0;
@@ -204,7 +210,7 @@ void ObstacleDetector::run(Blackboard& bb)
             }
             // A run ends at field colour; short field-coloured bits inside a robot (a white
             // marking) are part of it when the run continues right after.
-            if (top >= 0 && k < scan.size() && bridged(scan, k, mask))
+            if (top >= 0 && k < scan.size() && bridged(scan, k, mask, maxBridged()))
                 continue;
             // Something standing on the field as tall as the camera reaches the horizon, so its run
             // is tall for how far below the green horizon its foot is (a robot breaking the
@@ -246,7 +252,7 @@ void ObstacleDetector::run(Blackboard& bb)
         const int dip = edge_depth[i] - usual_depth[i];
         // A run from the green horizon that ends about where the field usually starts along this
         // stretch is the edge's own band, not something standing on the field.
-        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= kMaxBridged &&
+        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= maxBridged() &&
             dip < min_edge_dip) {
             have = false;
             if (rejected)
@@ -359,7 +365,7 @@ void ObstacleDetector::run(Blackboard& bb)
         if (camera.known()) {
             const double depth = bottom - camera.yAt(0.5 * (a.first_x + b.last_x), bb.width());
             const auto atEdge = [&](const Group& g) {
-                return g.top <= topOfField(g.first_x, g.last_x) + kMaxBridged;
+                return g.top <= topOfField(g.first_x, g.last_x) + maxBridged();
             };
             one_robot =
                 depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
@@ -476,7 +482,7 @@ void ObstacleDetector::run(Blackboard& bb)
         // markers); one colour over nearly all of as much again above the box (with the goal's
         // colour, its frame standing right behind a strip inside the goal) is the wall or the
         // goal's net behind the band.
-        if (m_plain_above > 0 && o.top <= topOfField(o.left, o.right) + kMaxBridged) {
+        if (m_plain_above > 0 && o.top <= topOfField(o.left, o.right) + maxBridged()) {
             const auto [colour, share] = plainestColour(
                 bb, o.left, o.right, o.top - (o.bottom - o.top + 1), o.top - 1, goal);
             if (share > m_plain_above) {

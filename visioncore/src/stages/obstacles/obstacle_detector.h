@@ -35,6 +35,8 @@ private:
     /// Fills m_edge_depth (how far each vertical scan's first run of obstacle colour reaches) and
     /// m_usual_depth (where the field usually starts there; see edge_band).
     /// `at_post`: per scan, whether a goalpost stands there.
+    /// kMaxBridged at the frame's size.
+    int maxBridged() const;
     void measureEdge(const SegmentedRegion& region, unsigned mask, bool band, int spacing,
                      const std::vector<char>& at_post);
 
