@@ -30,6 +30,7 @@ namespace {
 
 /// The LUT is voted over at least this many frames, so even a one-frame stream gets a usable one.
 constexpr int kMinTrainingFrames = 24;
+constexpr int kTrainingWidth = 320; ///< px, the widest frame rendered only for the table
 constexpr int kMaxFrames = 1000000;
 
 double round2(double v)
@@ -181,10 +182,22 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
         strm.emplace(std::move(writer).value());
     }
 
+    // Frames rendered only to vote the table are at most 320 px wide: the colours are the same,
+    // and a 1280x720 stream of a few frames no longer renders 24 full-size frames for its table.
+    const bool small_training = options.width > kTrainingWidth;
+    ScenarioScript training_light =
+        small_training
+            ? ScenarioScript(options.scenario, options.seed, kTrainingWidth,
+                             std::max(1, int(std::lround(double(options.height) * kTrainingWidth /
+                                                         options.width))))
+            : first_light;
+    if (small_training && options.table_light != 0)
+        training_light.setLightDrift(options.drift, options.frames, options.table_light);
+
     const int rendered = std::max(options.frames, kMinTrainingFrames);
     for (int i = 0; i < rendered; ++i) {
         if (i >= options.frames) { // a training frame only
-            const StreamFrame frame = renderStreamFrame(first_light, i);
+            const StreamFrame frame = renderStreamFrame(training_light, i);
             lut.addFrame(frame.image.ycbcr, frame.image.labels);
             continue;
         }
