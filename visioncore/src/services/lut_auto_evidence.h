@@ -82,6 +82,16 @@ struct EvidenceSet
     void addCell(Evidence e, std::uint32_t cell, std::uint32_t count);
 };
 
+/// The field's far edge per column (px; rows below it are the field), from a frame's carpet mask
+/// (CV_8U, non-zero carpet): the upper convex hull of the largest carpet patch reaching the lower
+/// half. A column without field gets the frame's height.
+std::vector<double> fieldEdge(const cv::Mat& green, double scale);
+
+/// Marks in `white` the `candidate` pixels that lie in thin runs with carpet at both ends, across
+/// rows and down columns, on the field below `edge`.
+void thinRuns(const cv::Mat& candidate, const cv::Mat& green, const std::vector<double>& edge,
+              double scale, cv::Mat& white);
+
 /// Calls `f(px)` for every second pixel of every second row of each frame's lower part (from row
 /// `tops[i]` of `frames[i]`) whose luma is neither too dark nor clipped for its colour to count.
 template <class F>
