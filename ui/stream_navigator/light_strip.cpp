@@ -91,8 +91,10 @@ void LightStrip::paintEvent(QPaintEvent*)
     const std::size_t frames = frameTotal(m_scan);
     if (frames == 0)
         return;
-    const auto [left, length] = sliderSpan(m_slider, *this);
-    const double step = length / double(std::max<std::size_t>(1, frames - 1));
+    // Not a structured binding: clang 14 cannot capture one in the lambda below.
+    const std::pair<double, double> span = sliderSpan(m_slider, *this);
+    const double left = span.first;
+    const double step = span.second / double(std::max<std::size_t>(1, frames - 1));
     const auto xOf = [&](std::size_t i) { return left + step * double(i); };
     const double w = std::max(1.0, step);
     const auto& track = m_scan.track();
