@@ -99,9 +99,9 @@ void LightStrip::paintEvent(QPaintEvent*)
     const double w = std::max(1.0, step);
     const auto& track = m_scan.track();
     if (!track) { // scanning: how far it has got
-        p.fillRect(
-            QRectF(left, height() - 2, length * double(m_scan.framesDone()) / double(frames), 2),
-            QColor(110, 110, 110));
+        p.fillRect(QRectF(left, height() - 2,
+                          span.second * double(m_scan.framesDone()) / double(frames), 2),
+                   QColor(110, 110, 110));
         return;
     }
     for (std::size_t i = 0; i < track->frames.size(); ++i) {
