@@ -234,7 +234,11 @@ private slots:
         QCOMPARE(w.session().effectScan().changedCells(),
                  diffLuts(before_table, w.session().lut().table()).cells.size());
 
-        // Ctrl+Z: the bytes before; Ctrl+Y: the automatic table again.
+        // Ctrl+Z: the bytes before; Ctrl+Y: the automatic table again. The progress window
+        // gives the keys back when it closes; wait for that (a slow run shows it longer).
+        QTRY_VERIFY(!w.findChild<QWidget*>(QStringLiteral("calibrate.progress")));
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
         QVERIFY2(lutBytes(w) == before,
                  qPrintable(QString("lut steps %1 index %2, focus %3, active %4")
