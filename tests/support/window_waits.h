@@ -42,4 +42,19 @@ inline bool openAndWait(MainWindow& w, const QString& stream)
     return waitForFrame(w, w.session().stream().currentIndex());
 }
 
+/// Waits until the window's evaluation has finished a run with nothing pending (a report, or a
+/// problem said).
+inline bool waitForEvaluation(MainWindow& w, int ms = 60000)
+{
+    auto& scan = w.session().evaluation();
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < ms) {
+        if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
+            return true;
+        QTest::qWait(5);
+    }
+    return false;
+}
+
 } // namespace fieldsight::test

@@ -111,20 +111,6 @@ QString makeDnt(const QString& folder)
     return folder;
 }
 
-/// Waits until the evaluation has finished a run with nothing pending.
-bool waitForEvaluation(MainWindow& w, int ms = 120000)
-{
-    ui::EvaluationScan& scan = w.session().evaluation();
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < ms) {
-        if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 QString scoreLine(const char* name, const ClassScore& c)
 {
     return QString("  %1 TP %2 FP %3 FN %4  precision %5  recall %6")

@@ -61,20 +61,6 @@ std::optional<bool> waitForRun(QSignalSpy& spy, int ms = 60000)
     return spy.front().front().toBool();
 }
 
-/// Waits until the evaluation has finished a run with nothing pending.
-bool waitForEvaluation(MainWindow& w, int ms = 60000)
-{
-    ui::EvaluationScan& scan = w.session().evaluation();
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < ms) {
-        if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 /// Waits until the whole-stream scan has covered every frame.
 bool waitForScan(ui::EditEffectScan& scan)
 {

@@ -38,20 +38,6 @@ namespace {
 /// The eval JSON's class names, in the dock's row order (scoredKinds()).
 const QStringList kClasses{"ball", "goalpost", "obstacle", "field_line"};
 
-/// Waits until the evaluation has finished a run with nothing pending.
-bool waitForEvaluation(MainWindow& w, int ms = 60000)
-{
-    ui::EvaluationScan& scan = w.session().evaluation();
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < ms) {
-        if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 /// Copies the bundled stream into `dir` with its annotations changed by `edit`.
 void copyStream(const QString& dir, const std::function<void(QJsonObject& frames)>& edit)
 {

@@ -62,20 +62,6 @@ std::string frameName(MainWindow& w, std::size_t index)
     return w.session().stream().frameName(index).toStdString();
 }
 
-/// Waits until the evaluation has finished a run with nothing pending.
-bool waitForEvaluation(MainWindow& w)
-{
-    ui::EvaluationScan& scan = w.session().evaluation();
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 60000) {
-        if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 QJsonObject readJson(const QString& path)
 {
     QFile f(path);
