@@ -163,21 +163,8 @@ const FixtureRules kNubotsRules{3, false, false, {"obstacles"}};
 /// colour table; empty (and a warning) on failure.
 QString makeBhumanStream(const QString& folder, const QJsonObject& horizons)
 {
-    const QString source = test::referencePath("bhuman2009_log_coltable");
-    const QJsonObject manifest = horizons.value("frames").toObject();
-    QJsonArray frames;
-    for (const QString& name : manifest.keys()) {
-        const QJsonObject h = manifest.value(name).toObject();
-        QJsonObject frame{{"file", name}, {"timestamp_ms", h.value("timestamp_ms")}};
-        if (h.value("valid").toBool())
-            frame.insert("horizon", h.value("horizon"));
-        frames.append(frame);
-    }
-    QString problem = test::makeLinkedStream(
-        folder, source + "/frames_ycbcr", frames,
-        {{"format", "fieldsight-stream/1"}, {"pixel_format", "ycbcr"}, {"lut", "default.lut"}});
-    if (problem.isEmpty())
-        problem = test::convertLut(source + "/coltable.c64", folder + "/default.lut");
+    const QString problem = test::makeBhumanStream(folder, horizons.value("frames").toObject(),
+                                                   test::BhumanTable::Team);
     if (!problem.isEmpty()) {
         qWarning("%s", qPrintable(problem));
         return {};

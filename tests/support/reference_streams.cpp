@@ -87,4 +87,24 @@ QString convertLut(const QString& in, const QString& out)
     return {};
 }
 
+QString makeBhumanStream(const QString& folder, const QJsonObject& horizons, BhumanTable table)
+{
+    const QString source = referencePath("bhuman2009_log_coltable");
+    QJsonArray frames;
+    for (const QString& name : horizons.keys()) {
+        const QJsonObject h = horizons.value(name).toObject();
+        QJsonObject frame{{"file", name}, {"timestamp_ms", h.value("timestamp_ms")}};
+        if (h.value("valid").toBool())
+            frame.insert("horizon", h.value("horizon"));
+        frames.append(frame);
+    }
+    QJsonObject manifest{{"format", "fieldsight-stream/1"}, {"pixel_format", "ycbcr"}};
+    if (table == BhumanTable::Team)
+        manifest.insert("lut", "default.lut");
+    QString problem = makeLinkedStream(folder, source + "/frames_ycbcr", frames, manifest);
+    if (problem.isEmpty() && table == BhumanTable::Team)
+        problem = convertLut(source + "/coltable.c64", folder + "/default.lut");
+    return problem;
+}
+
 } // namespace fieldsight::test

@@ -38,6 +38,16 @@ std::optional<std::vector<BhumanFrameRow>> readBhumanFramesCsv(const QString& pa
 QString makeLinkedStream(const QString& folder, const QString& frames_dir, const QJsonArray& frames,
                          QJsonObject manifest);
 
+/// Which table a B-Human stream made by makeBhumanStream reads.
+enum class BhumanTable { Team, None };
+
+/// Makes the new folder `folder` a stream over the B-Human log's frames that the `frames` object
+/// of a fieldsight-horizons/1 manifest names (tests/data/real/bhuman2009/horizons.json), each with
+/// its timestamp and, where the log marks the camera matrix valid, its kinematic horizon (as
+/// `fieldsight import` takes them), and with the team's table as default.lut or no table. An
+/// empty string on success, else what failed.
+QString makeBhumanStream(const QString& folder, const QJsonObject& horizons, BhumanTable table);
+
 /// Converts another team's colour table (any format `lut convert` reads) to `out` (.lut). An empty
 /// string on success, else the message.
 QString convertLut(const QString& in, const QString& out);

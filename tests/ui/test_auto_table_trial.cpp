@@ -68,19 +68,9 @@ QString makeNubots(const QString& folder)
 /// goal.
 QString makeBhuman(const QString& folder)
 {
-    const QJsonObject horizons =
-        loadJsonObject(fixturePath("bhuman2009/horizons.json")).value("frames").toObject();
-    QJsonArray frames;
-    for (const QString& name : horizons.keys()) {
-        const QJsonObject h = horizons.value(name).toObject();
-        QJsonObject frame{{"file", name}, {"timestamp_ms", h.value("timestamp_ms")}};
-        if (h.value("valid").toBool())
-            frame.insert("horizon", h.value("horizon"));
-        frames.append(frame);
-    }
-    const QString made =
-        makeLinkedStream(folder, referencePath("bhuman2009_log_coltable/frames_ycbcr"), frames,
-                         {{"format", "fieldsight-stream/1"}, {"pixel_format", "ycbcr"}});
+    const QString made = makeBhumanStream(
+        folder, loadJsonObject(fixturePath("bhuman2009/horizons.json")).value("frames").toObject(),
+        BhumanTable::None);
     if (!made.isEmpty() ||
         !QFile::copy(fixturePath("bhuman2009/annotations.json"), folder + "/annotations.json"))
         return {};
