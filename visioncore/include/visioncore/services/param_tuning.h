@@ -1,0 +1,112 @@
+// Fitting the stages' parameters to a stream's annotations (`fieldsight tune`, the window's
+// Pipeline > Fit to annotations): a seeded search over the registered ranges that maximises a
+// weighted score on some annotated frames and reports it on the others, so overfitting shows.
+#pragma once
+
+#include "visioncore/basics/result.h"
+#include "visioncore/framework/param_set.h"
+#include "visioncore/io/annotations.h"
+#include "visioncore/services/evaluation.h"
+#include "visioncore/services/stream_runner.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fieldsight {
+
+/// The name the boundary's term goes by in TuneOptions::weights and TuneScore::terms.
+inline constexpr const char* kBoundaryTerm = "boundary";
+
+/// What a set of parameters scores on some frames (docs/formats.md, "How tune scores"):
+/// total = sum over terms of weight x term / sum of the weights of the terms counted, where a
+/// scored kind's term is its F1 (counted only when the frames have a true object or a detection
+/// of it) and the boundary's is 2 / (2 + median per-frame boundary error in px) (counted when
+/// some frame has both boundaries).
+struct TuneScore
+{
+    double total = 0;                              ///< in [0, 1]
+    std::map<std::string, ClassScore> classes;     ///< by scoredClassName
+    std::map<std::string, double> terms;           ///< the terms counted, by class name / "boundary"
+    double boundary_median = -1;                   ///< px; negative when not scored
+    double boundary_mean = -1;                     ///< px; negative when not scored
+    std::size_t frames = 0;
+};
+
+/// F1 of a class score (1 when there was nothing to find and nothing found).
+double f1Score(const ClassScore& score);
+
+/// One parameter the search moved away from where it started.
+struct TuneChange
+{
+    std::string stage;
+    std::string name;
+    double before = 0; ///< its value at the start (the stream's or the default)
+    double after = 0;
+    /// What it buys: the fit score of the result minus that of the result with this one
+    /// parameter put back (its share; the shares need not add up to the whole gain).
+    double gain = 0;
+    /// The same, per term (class name or "boundary"): positive where this change helps.
+    std::map<std::string, double> term_gain;
+};
+
+struct TuneProgress
+{
+    int evaluations = 0; ///< done so far
+    int budget = 0;
+    double best_fit = 0; ///< the best fit score so far
+};
+
+struct TuneOptions
+{
+    /// Stage ids whose parameters are searched; empty: every stage with parameters.
+    std::vector<std::string> stages;
+    int budget = 1500;      ///< evaluations of a parameter set on the fit frames, at most
+    std::uint64_t seed = 1; ///< the same seed, stream and options give the same result
+    /// The share of the scored frames held out (scored, never fitted), in [0, 0.9]. The frames
+    /// are cut into contiguous blocks (neighbouring frames look alike, so they go together) and
+    /// the seed picks the blocks held out. 0: every frame is fitted and nothing is held out.
+    double holdout = 1.0 / 3.0;
+    /// Weight of each term (a class name such as "ball", or "boundary"); unnamed terms weigh 1,
+    /// a weight of 0 leaves a term out.
+    std::map<std::string, double, std::less<>> weights;
+    int threads = 0; ///< 0: one per core
+    std::function<void(const TuneProgress&)> progress; ///< called on the calling thread
+    const std::atomic<bool>* cancel = nullptr; ///< stops the search; the best so far is kept
+};
+
+struct TuneResult
+{
+    ParamSet start; ///< the parameters it started from (the stream's own, or the input's)
+    /// What to save: the start's values that differ from the defaults, and every change.
+    ParamSet params;
+    std::vector<TuneChange> changes;                 ///< pipeline order
+    TuneScore start_fit, start_holdout;              ///< the start on fit and held-out frames
+    TuneScore tuned_fit, tuned_holdout;              ///< the result on the same frames
+    std::vector<std::string> fit_frames, holdout_frames; ///< by name, in stream order
+    int evaluations = 0;
+    /// The best fit score after each evaluation that improved it: (evaluations, score).
+    std::vector<std::pair<int, double>> history;
+    int parameters = 0;    ///< parameters searched
+    double seconds = 0;    ///< wall-clock time of the search
+    bool cancelled = false;
+};
+
+/// Checks `weights` names only scored classes and "boundary", with weights >= 0.
+Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights);
+
+/// Reads the scored frames of `truth` from `input` once (into memory), then searches the
+/// parameters of `options.stages` from input.params (the stream's own) to maximise the score
+/// on the fit frames, scoring the held-out frames only for the report. Bad input (an unknown
+/// stage, a bad weight, a frame the stream lacks, no scored frame) is an Error naming it.
+Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
+                              const std::string& truth_path, const TuneOptions& options);
+
+/// The parameters whose value differs from the default in `params`, every other dropped.
+ParamSet differingFromDefaults(const ParamSet& params, const Pipeline& pipeline);
+
+} // namespace fieldsight
