@@ -50,16 +50,25 @@ std::string tuneTable(const std::string& stream, const TuneResult& r, const Tune
 {
     std::string text;
     char line[320];
-    std::snprintf(line, sizeof line,
-                  "fieldsight tune: %s, %zu scored frames: %zu fitted, %zu held out (seed %llu)\n",
-                  stream.c_str(), r.fit_frames.size() + r.holdout_frames.size(),
-                  r.fit_frames.size(), r.holdout_frames.size(), (unsigned long long)o.seed);
+    if (r.folds > 0)
+        std::snprintf(line, sizeof line,
+                      "fieldsight tune: %s, %zu scored frames, %d-fold cross-validation: each "
+                      "fold held out from a search on the others (seed %llu)\n",
+                      stream.c_str(), r.fit_frames.size(), r.folds, (unsigned long long)o.seed);
+    else
+        std::snprintf(line, sizeof line,
+                      "fieldsight tune: %s, %zu scored frames: %zu fitted, %zu held out (seed "
+                      "%llu)\n",
+                      stream.c_str(), r.fit_frames.size() + r.holdout_frames.size(),
+                      r.fit_frames.size(), r.holdout_frames.size(), (unsigned long long)o.seed);
+
     text += line;
     std::snprintf(line, sizeof line, "%d parameters searched, %d evaluations in %.1f s%s\n",
                   r.parameters, r.evaluations, r.seconds,
                   r.cancelled ? " (interrupted: the best so far)" : "");
     text += line;
-    std::snprintf(line, sizeof line, "%-11s %-23s %-23s\n", "", "fit frames", "held-out frames");
+    std::snprintf(line, sizeof line, "%-11s %-23s %-23s\n", "", "fit frames",
+                  r.folds > 0 ? "held out, by fold" : "held-out frames");
     text += line;
     std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s\n", "class", "start", "tuned",
                   "start", "tuned");
@@ -131,6 +140,7 @@ std::string tuneJson(const std::string& stream, const std::string& out, const Tu
     j["evaluations"] = r.evaluations;
     j["seconds"] = rounded(r.seconds, 3);
     j["cancelled"] = r.cancelled;
+    j["folds"] = r.folds;
     j["fit_frames"] = r.fit_frames;
     j["holdout_frames"] = r.holdout_frames;
     j["start"] = {{"fit", score(r.start_fit)}, {"holdout", score(r.start_holdout)}};
@@ -173,6 +183,11 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                       "Share of the annotated frames held out, in contiguous blocks (default "
                       "0.33; 0 fits them all).",
                       "SHARE"});
+    parser.addOption({"folds",
+                      "K-fold cross-validation instead of --holdout: K contiguous blocks, each "
+                      "scored with what a search on the others found; the result is fitted on "
+                      "every frame (K + 1 searches).",
+                      "K"});
     parser.addOption({"weight",
                       "Weight of a score term, e.g. obstacle=2 or boundary=0 (repeatable; "
                       "terms: ball, goalpost, obstacle, field_line, boundary; default 1).",
@@ -210,11 +225,15 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         const auto seed =
             intOption(parser, "seed", 1, 0, error, std::numeric_limits<long long>::max());
         const auto threads = intOption(parser, "threads", 0, 0, error);
-        if (!budget || !seed || !threads)
+        const auto folds = intOption(parser, "folds", 0, 0, error, 20);
+        if (!budget || !seed || !threads || !folds)
             return badInput(ctx, "tune: " + error);
         options.budget = int(*budget);
         options.seed = std::uint64_t(*seed);
         options.threads = int(*threads);
+        options.folds = int(*folds);
+        if (options.folds == 1)
+            return badInput(ctx, "tune: --folds must be 2 or more (or 0: --holdout)");
         if (parser.isSet("holdout")) {
             bool ok = false;
             options.holdout = parser.value("holdout").toDouble(&ok);

@@ -10,6 +10,8 @@
 
 #include <QtTest>
 
+#include <set>
+
 using namespace fieldsight;
 
 namespace {
@@ -103,6 +105,29 @@ private slots:
             QVERIFY(r.history[i].second > r.history[i - 1].second);
     }
 
+    void crossValidationHoldsOutEveryFrameOnce()
+    {
+        Fixture f = open("lab2", wrongGoal());
+        TuneOptions options;
+        options.stages = {"transitions"};
+        options.budget = 30;
+        options.folds = 3;
+        const TuneResult r = tune(f, options);
+        QCOMPARE(r.folds, 3);
+        QCOMPARE(r.fit_frames.size(), std::size_t(30));
+        QCOMPARE(r.holdout_frames.size(), std::size_t(30));
+        QCOMPARE(r.tuned_holdout.frames, std::size_t(30));
+        QCOMPARE(std::set<std::string>(r.holdout_frames.begin(), r.holdout_frames.end()).size(),
+                 std::size_t(30));
+        // Every fold's search found the goal colour without seeing the fold.
+        QVERIFY(r.start_holdout.classes.at("goalpost").recall() < 0.1);
+        QVERIFY(r.tuned_holdout.classes.at("goalpost").recall() >= 0.85);
+        QVERIFY(r.evaluations > 30 && r.evaluations <= 4 * 30);
+        QCOMPARE(valueIn(r.params, "transitions", "goal_colour", -1), double(int(Colour::Yellow)));
+        options.folds = 1;
+        QVERIFY(!tuneParams(f.input, f.truth, f.truth_path, options).ok());
+    }
+
     void theSameSeedGivesTheSameResultOnAnyNumberOfCores()
     {
         Fixture f = open("lab1");
@@ -120,6 +145,21 @@ private slots:
         options.seed = 8;
         const TuneResult other = tune(f, options);
         QVERIFY(other.holdout_frames != one.holdout_frames || other.history != one.history);
+    }
+
+    void reusingTheFirstStagesChangesNothing()
+    {
+        // Every stage's parameters move, so the search resumes frames at every split.
+        Fixture f = open("lab1");
+        TuneOptions options;
+        options.budget = 300;
+        const TuneResult reused = tune(f, options);
+        options.reuse_stages = false;
+        const TuneResult fresh = tune(f, options);
+        QCOMPARE(reused.history, fresh.history);
+        QCOMPARE(reused.params.toJson(), fresh.params.toJson());
+        QCOMPARE(reused.tuned_holdout.total, fresh.tuned_holdout.total);
+        QVERIFY(reused.history.size() > 2); // the search moved
     }
 
     void aSeedIsNeverFitted()

@@ -11,6 +11,11 @@ ControlWrapper::ControlWrapper(DataWrapper& data, const Pipeline& pipeline)
 
 Result<FrameReport> ControlWrapper::runFrame()
 {
+    return runFrameUntil(m_controller.size());
+}
+
+Result<FrameReport> ControlWrapper::runFrameUntil(std::size_t split)
+{
     const cv::Mat& image = m_data.image();
     if (image.empty())
         return Error{"no frame to process"};
@@ -22,8 +27,19 @@ Result<FrameReport> ControlWrapper::runFrame()
         m_blackboard.debug.setRequested(sink->requestedLayers());
     else if (!m_blackboard.debug.requested().empty())
         m_blackboard.debug.setRequested({});
-    FrameReport report = m_controller.runFrame(m_blackboard, m_skip);
-    if (sink)
+    FrameReport report = m_controller.runStages(m_blackboard, m_skip, 0, split);
+    if (sink && split >= m_controller.size())
+        sink->publish(m_blackboard.debug);
+    return report;
+}
+
+Result<FrameReport> ControlWrapper::resumeFrame(const Blackboard& earlier, std::size_t split)
+{
+    if (m_data.image().empty())
+        return Error{"no frame to process"};
+    m_blackboard = earlier;
+    FrameReport report = m_controller.runStages(m_blackboard, m_skip, split, m_controller.size());
+    if (DebugSink* sink = m_data.debugSink())
         sink->publish(m_blackboard.debug);
     return report;
 }

@@ -191,16 +191,24 @@ void Controller::prepare(Blackboard& bb) const
 
 FrameReport Controller::runFrame(Blackboard& bb, const std::set<std::string, std::less<>>& skip)
 {
+    return runStages(bb, skip, 0, m_stages.size());
+}
+
+FrameReport Controller::runStages(Blackboard& bb, const std::set<std::string, std::less<>>& skip,
+                                  std::size_t first, std::size_t end)
+{
     using Clock = std::chrono::steady_clock;
     FrameReport report;
     report.stages.reserve(m_stages.size());
     const auto frame_start = Clock::now();
     for (const auto& stage : m_stages)
         stage->setFrameWidth(bb.width());
-    for (const auto& stage : m_stages) {
+    for (std::size_t position = 0; position < m_stages.size(); ++position) {
+        const auto& stage = m_stages[position];
         const StageInfo& info = stage->info();
         StageTiming timing{info.id, 0.0, false};
-        if (!(info.skippable && skip.count(info.id))) {
+        const bool in_part = position >= first && position < end;
+        if (in_part && !(info.skippable && skip.count(info.id))) {
             const auto start = Clock::now();
             for (const PerceptKind* kind : info.percepts)
                 bb.percepts.markPresent(bb.percepts.entry(*kind));

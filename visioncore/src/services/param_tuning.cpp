@@ -27,6 +27,7 @@ struct Searched
     std::string stage;
     ParamInfo info;
     double start = 0;
+    std::size_t position = 0; ///< the stage's place in the pipeline
 };
 
 double valueOf(const ParamSet& params, const Searched& p)
@@ -115,17 +116,23 @@ class Search
 {
 public:
     Search(const StreamInput& input, const std::vector<HeldFrame>& frames,
-           std::vector<std::size_t> fit, const TuneOptions& options)
-        : m_frames(frames), m_fit(std::move(fit)), m_options(options)
+           std::vector<std::size_t> fit, const TuneOptions& options, int progress_offset = 0,
+           int progress_total = 0)
+        : m_frames(frames), m_fit(std::move(fit)), m_options(options),
+          m_progress_offset(progress_offset),
+          m_progress_total(progress_total > 0 ? progress_total : options.budget)
     {
         const int workers = workerCount(options.threads, 64);
         for (int w = 0; w < workers; ++w)
-            m_scorers.push_back(std::make_unique<Scorer>(input));
+            m_scorers.push_back(std::make_unique<Scorer>(input, options.reuse_stages));
     }
 
     /// Scores every set in `sets` on `positions`; counts them against the budget when `count`.
+    /// `splits[i]` (when given): set i moves no parameter of the stages before that position
+    /// from the best set's (Scorer::tally reuses what they made).
     std::vector<TuneScore> scoreAll(const std::vector<ParamSet>& sets,
-                                    const std::vector<std::size_t>& positions, bool count)
+                                    const std::vector<std::size_t>& positions, bool count,
+                                    const std::vector<std::size_t>& splits = {})
     {
         std::vector<TuneScore> scores(sets.size());
         const int workers = int(std::min(m_scorers.size(), std::max<std::size_t>(sets.size(), 1)));
@@ -133,8 +140,10 @@ public:
         runOnWorkers(workers, [&](int w) {
             try {
                 for (std::size_t i = std::size_t(w); i < sets.size(); i += std::size_t(workers))
-                    scores[i] = m_scorers[std::size_t(w)]->score(sets[i], m_frames, positions,
-                                                                 m_options.weights);
+                    scores[i] = tuning::scoreOf(
+                        m_scorers[std::size_t(w)]->tally(sets[i], m_frames, positions,
+                                                         splits.empty() ? 0 : splits[i]),
+                        m_options.weights);
             } catch (const std::exception& e) {
                 problems[std::size_t(w)] = e.what();
             }
@@ -147,6 +156,12 @@ public:
         return scores;
     }
 
+    /// The counts of `params` on `positions` (not counted against the budget).
+    tuning::Tally tallyOf(const ParamSet& params, const std::vector<std::size_t>& positions)
+    {
+        return m_scorers.front()->tally(params, m_frames, positions);
+    }
+
     int evaluations() const { return m_evaluations; }
     bool exhausted() const
     {
@@ -155,15 +170,17 @@ public:
     const std::vector<std::size_t>& fit() const { return m_fit; }
 
     /// Tries `sets` (moves from `best`); keeps the best if it beats `best_score`. True if so.
-    bool tryBatch(std::vector<ParamSet> sets, ParamSet& best, TuneScore& best_score,
-                  TuneResult& result)
+    bool tryBatch(std::vector<ParamSet> sets, std::vector<std::size_t> splits, ParamSet& best,
+                  TuneScore& best_score, TuneResult& result)
     {
         const int room = m_options.budget - m_evaluations;
         if (room <= 0 || sets.empty())
             return false;
-        if (int(sets.size()) > room)
+        if (int(sets.size()) > room) {
             sets.resize(std::size_t(room));
-        const std::vector<TuneScore> scores = scoreAll(sets, m_fit, true);
+            splits.resize(std::size_t(room));
+        }
+        const std::vector<TuneScore> scores = scoreAll(sets, m_fit, true, splits);
         std::size_t winner = sets.size();
         double top = best_score.total + 1e-9;
         for (std::size_t i = 0; i < scores.size(); ++i)
@@ -186,6 +203,8 @@ private:
     std::vector<std::size_t> m_fit;
     const TuneOptions& m_options;
     std::vector<std::unique_ptr<Scorer>> m_scorers;
+    int m_progress_offset = 0;
+    int m_progress_total = 0;
     int m_evaluations = 0;
 };
 
@@ -196,7 +215,9 @@ Result<std::vector<Searched>> searchedParams(const StreamInput& input, const Tun
         if (!input.pipeline->find(id))
             return Error{"unknown stage '" + id + "' (stages: " + input.pipeline->idList() + ")"};
     std::vector<Searched> searched;
+    std::size_t position = 0;
     for (const StageDescriptor& stage : input.pipeline->descriptors()) {
+        ++position;
         const std::string& id = stage.info.id;
         const bool chosen =
             options.stages.empty() ||
@@ -208,7 +229,7 @@ Result<std::vector<Searched>> searchedParams(const StreamInput& input, const Tun
         for (const ParamInfo& info : stage.params) {
             if (!info.fitted)
                 continue;
-            Searched s{id, info, 0};
+            Searched s{id, info, 0, position - 1};
             s.start = valueOf(input.params, s);
             searched.push_back(std::move(s));
         }
@@ -245,23 +266,30 @@ void searchFrom(Search& search, const std::vector<Searched>& params, ParamSet& b
             std::vector<ParamSet> sets;
             for (double v : candidates(p.info, valueOf(best, p), round, random))
                 sets.push_back(with(best, p, v));
-            improved = search.tryBatch(std::move(sets), best, best_score, result) || improved;
+            std::vector<std::size_t> splits(sets.size(), p.position);
+            improved =
+                search.tryBatch(std::move(sets), std::move(splits), best, best_score, result) ||
+                improved;
         }
         if (!improved && round >= 2)
             break;
     }
     while (!search.exhausted() && !params.empty()) {
         std::vector<ParamSet> sets;
+        std::vector<std::size_t> splits;
         for (int c = 0; c < 8; ++c) {
             ParamSet set = best;
+            std::size_t split = std::size_t(-1);
             const int moves = 2 + int(random() % 2);
             for (int m = 0; m < moves; ++m) {
                 const Searched& p = params[random() % params.size()];
                 set = with(std::move(set), p, randomMove(p.info, valueOf(set, p), random));
+                split = std::min(split, p.position);
             }
             sets.push_back(std::move(set));
+            splits.push_back(split);
         }
-        search.tryBatch(std::move(sets), best, best_score, result);
+        search.tryBatch(std::move(sets), std::move(splits), best, best_score, result);
     }
 }
 
@@ -295,6 +323,38 @@ void pruneAndPrice(Search& search, const std::vector<Searched>& params, ParamSet
     }
 }
 
+/// One whole search on the frames at `fit`: the best set, priced, with its history.
+struct Fitted
+{
+    ParamSet best;
+    TuneScore score;
+    std::vector<TuneChange> changes;
+    std::vector<std::pair<int, double>> history;
+    int evaluations = 0;
+    bool cancelled = false;
+};
+
+Fitted fitOn(const StreamInput& input, const std::vector<HeldFrame>& frames,
+             const std::vector<std::size_t>& fit, const std::vector<Searched>& params,
+             const TuneOptions& options, std::uint64_t seed, int progress_offset,
+             int progress_total)
+{
+    Search search(input, frames, fit, options, progress_offset, progress_total);
+    TuneResult priced; // searchFrom and pruneAndPrice fill its history and changes
+    Fitted fitted;
+    fitted.best = input.params;
+    fitted.score = search.scoreAll({fitted.best}, fit, true).front();
+    priced.history.emplace_back(search.evaluations(), fitted.score.total);
+    SplitMix64 random(seed);
+    searchFrom(search, params, fitted.best, fitted.score, priced, random);
+    fitted.cancelled = options.cancel && options.cancel->load();
+    pruneAndPrice(search, params, fitted.best, fitted.score, priced);
+    fitted.changes = std::move(priced.changes);
+    fitted.history = std::move(priced.history);
+    fitted.evaluations = search.evaluations();
+    return fitted;
+}
+
 } // namespace
 
 Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
@@ -307,6 +367,8 @@ Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
         return Error{"the held-out share must be between 0 and 0.9"};
     if (options.budget < 1)
         return Error{"the budget must be at least one evaluation"};
+    if (options.folds == 1 || options.folds < 0 || options.folds > 20)
+        return Error{"the folds must be 0 (one held-out share) or 2 to 20"};
     if (input.adapt)
         return Error{"the parameters are fitted with the stream's table as it is (no --adapt)"};
     if (Status s = input.checkSettings(); !s)
@@ -314,39 +376,65 @@ Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
     auto params = searchedParams(input, options);
     if (!params)
         return params.error();
-    auto frames = tuning::readScoredFrames(input, truth, truth_path, options.threads);
-    if (!frames)
-        return frames.error();
+    auto read = tuning::readScoredFrames(input, truth, truth_path, options.threads);
+    if (!read)
+        return read.error();
+    const std::vector<HeldFrame>& frames = read.value();
+    const std::size_t n = frames.size();
+    const bool cross = options.folds >= 2 && n >= 2;
+    const std::size_t folds = cross ? std::min<std::size_t>(std::size_t(options.folds), n) : 0;
 
     TuneResult result;
     result.parameters = int(params.value().size());
+    result.start = input.params;
+    result.folds = int(folds);
     const std::vector<bool> held =
-        holdoutFrames(frames.value().size(), options.holdout, options.seed);
+        cross ? std::vector<bool>(n, false) : holdoutFrames(n, options.holdout, options.seed);
     std::vector<std::size_t> fit;
     std::vector<std::size_t> holdout;
-    for (std::size_t i = 0; i < held.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         (held[i] ? holdout : fit).push_back(i);
-        (held[i] ? result.holdout_frames : result.fit_frames).push_back(frames.value()[i].name);
+        (held[i] ? result.holdout_frames : result.fit_frames).push_back(frames[i].name);
     }
-
-    result.start = input.params;
-    ParamSet best = input.params;
+    const int total = options.budget * int(1 + folds);
+    ParamSet best;
     try {
-        Search search(input, frames.value(), fit, options);
-        TuneScore best_score = search.scoreAll({best}, fit, true).front();
-        result.history.emplace_back(search.evaluations(), best_score.total);
-        SplitMix64 random(options.seed);
-        searchFrom(search, params.value(), best, best_score, result, random);
-        result.cancelled = options.cancel && options.cancel->load();
-        pruneAndPrice(search, params.value(), best, best_score, result);
-        result.evaluations = search.evaluations();
-        result.start_fit = search.scoreAll({input.params}, fit, false).front();
-        result.tuned_fit = best_score;
+        Fitted fitted = fitOn(input, frames, fit, params.value(), options, options.seed, 0, total);
+        best = fitted.best;
+        result.changes = std::move(fitted.changes);
+        result.history = std::move(fitted.history);
+        result.evaluations = fitted.evaluations;
+        result.cancelled = fitted.cancelled;
+        result.tuned_fit = fitted.score;
+        Search scorer(input, frames, fit, options);
+        result.start_fit = scorer.scoreAll({input.params}, fit, false).front();
+        tuning::Tally start_held;
+        tuning::Tally tuned_held;
         if (!holdout.empty()) {
-            const auto scores = search.scoreAll({input.params, best}, holdout, false);
-            result.start_holdout = scores[0];
-            result.tuned_holdout = scores[1];
+            start_held = scorer.tallyOf(input.params, holdout);
+            tuned_held = scorer.tallyOf(best, holdout);
         }
+        // Cross-validation: each fold (a contiguous block) scored with the parameters fitted on
+        // the others, so every frame is held out once.
+        for (std::size_t k = 0; k < folds && !result.cancelled; ++k) {
+            std::vector<std::size_t> others;
+            std::vector<std::size_t> fold;
+            for (std::size_t i = 0; i < n; ++i)
+                (i * folds / n == k ? fold : others).push_back(i);
+            const Fitted f = fitOn(input, frames, others, params.value(), options,
+                                   options.seed + 1 + k, options.budget * int(1 + k), total);
+            result.evaluations += f.evaluations;
+            if (f.cancelled) {
+                result.cancelled = true;
+                break;
+            }
+            start_held += scorer.tallyOf(input.params, fold);
+            tuned_held += scorer.tallyOf(f.best, fold);
+            for (std::size_t i : fold)
+                result.holdout_frames.push_back(frames[i].name);
+        }
+        result.start_holdout = tuning::scoreOf(start_held, options.weights);
+        result.tuned_holdout = tuning::scoreOf(tuned_held, options.weights);
     } catch (const std::invalid_argument& e) {
         return Error{input.stream + ": " + e.what()};
     }

@@ -5,6 +5,7 @@
 #include "visioncore/basics/splitmix.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <mutex>
 #include <numeric>
@@ -119,36 +120,87 @@ Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annota
     return frames;
 }
 
-Scorer::Scorer(const StreamInput& input)
-    : m_data(input.lut), m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline))
+Scorer::Scorer(const StreamInput& input, bool reuse)
+    : m_data(input.lut), m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline)),
+      m_reuse(reuse)
 {
     for (const std::string& id : input.skip)
         if (Status s = m_control->setStageEnabled(id, false); !s)
             throw std::invalid_argument(s.error().message);
 }
 
-TuneScore Scorer::score(const ParamSet& params, const std::vector<HeldFrame>& frames,
-                        const std::vector<std::size_t>& positions,
-                        const std::map<std::string, double, std::less<>>& weights)
+std::string Scorer::prefixKey(std::size_t split) const
+{
+    std::string key;
+    const std::vector<StageDescriptor> stages = m_control->stages();
+    for (std::size_t i = 0; i < split && i < stages.size(); ++i)
+        for (const ParamInfo& p : stages[i].params) {
+            char value[40];
+            std::snprintf(value, sizeof value, "%.17g;", p.value);
+            key += value;
+        }
+    return key;
+}
+
+Tally Scorer::tally(const ParamSet& params, const std::vector<HeldFrame>& frames,
+                    const std::vector<std::size_t>& positions, std::size_t split)
 {
     m_control->resetParams();
     if (Status s = m_control->applyParams(params); !s)
         throw std::invalid_argument(s.error().message);
-    TuneScore result;
-    std::vector<double> boundary;
+    if (!m_reuse)
+        split = 0;
+    if (split > 0) {
+        std::string key = prefixKey(split);
+        if (split != m_split || key != m_key) {
+            m_kept.clear();
+            m_split = split;
+            m_key = std::move(key);
+        }
+    }
+    Tally tally;
     for (std::size_t position : positions) {
         const HeldFrame& held = frames[position];
         m_data.setFrame(held.frame);
-        if (auto report = m_control->runFrame(); !report)
+        Result<FrameReport> report = Error{""};
+        if (split > 0) {
+            auto kept = m_kept.find(position);
+            if (kept == m_kept.end()) {
+                if (auto first = m_control->runFrameUntil(split); !first)
+                    throw std::invalid_argument(held.name + ": " + first.error().message);
+                kept = m_kept.emplace(position, m_control->blackboard()).first;
+            }
+            report = m_control->resumeFrame(kept->second, split);
+        } else {
+            report = m_control->runFrame();
+        }
+        if (!report)
             throw std::invalid_argument(held.name + ": " + report.error().message);
         const FrameMatch match = matchFrame(m_control->blackboard().percepts, *held.truth,
                                             held.frame.ycbcr.cols, held.frame.ycbcr.rows);
         for (const KindMatch& kind : match.kinds)
-            result.classes[scoredClassName(*kind.kind)] += kind.score;
+            tally.classes[scoredClassName(*kind.kind)] += kind.score;
         if (match.boundary_error >= 0)
-            boundary.push_back(match.boundary_error);
-        ++result.frames;
+            tally.boundary.push_back(match.boundary_error);
+        ++tally.frames;
     }
+    return tally;
+}
+
+Tally& Tally::operator+=(const Tally& other)
+{
+    for (const auto& [name, score] : other.classes)
+        classes[name] += score;
+    boundary.insert(boundary.end(), other.boundary.begin(), other.boundary.end());
+    frames += other.frames;
+    return *this;
+}
+
+TuneScore scoreOf(const Tally& tally, const std::map<std::string, double, std::less<>>& weights)
+{
+    TuneScore result;
+    result.classes = tally.classes;
+    result.frames = tally.frames;
     const auto weightOf = [&](const std::string& term) {
         const auto w = weights.find(term);
         return w == weights.end() ? 1.0 : w->second;
@@ -162,7 +214,8 @@ TuneScore Scorer::score(const ParamSet& params, const std::vector<HeldFrame>& fr
         sum += weightOf(name) * result.terms[name];
         weight_sum += weightOf(name);
     }
-    if (!boundary.empty()) {
+    if (!tally.boundary.empty()) {
+        std::vector<double> boundary = tally.boundary;
         std::sort(boundary.begin(), boundary.end());
         const std::size_t n = boundary.size();
         result.boundary_median =

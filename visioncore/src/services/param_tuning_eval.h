@@ -25,20 +25,42 @@ struct HeldFrame
 Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annotations& truth,
                                                 const std::string& truth_path, int threads);
 
+/// The raw counts behind a TuneScore, which add up over frames.
+struct Tally
+{
+    std::map<std::string, ClassScore> classes; ///< by scoredClassName
+    std::vector<double> boundary;              ///< px, each frame's boundary error where scored
+    std::size_t frames = 0;
+    Tally& operator+=(const Tally& other);
+};
+
+/// The score of `tally` with `weights` (TuneScore's rule).
+TuneScore scoreOf(const Tally& tally, const std::map<std::string, double, std::less<>>& weights);
+
 /// One core that scores parameter sets: a pipeline and its DataWrapper, owned by one thread.
 class Scorer
 {
 public:
-    Scorer(const StreamInput& input);
+    /// `reuse`: keep what the first stages made of each frame while their parameters stay.
+    Scorer(const StreamInput& input, bool reuse);
     /// The score of `params` (every value the core needs beside the defaults) on the frames of
     /// `frames` at `positions`. Throws std::invalid_argument on a value the core refuses.
-    TuneScore score(const ParamSet& params, const std::vector<HeldFrame>& frames,
-                    const std::vector<std::size_t>& positions,
-                    const std::map<std::string, double, std::less<>>& weights);
+    /// `split` > 0: `params` moves no parameter of the stages before position `split` from the
+    /// last call's with the same split, so what those stages made of each frame is reused
+    /// (kept from the first call that ran them, when `reuse`).
+    Tally tally(const ParamSet& params, const std::vector<HeldFrame>& frames,
+                const std::vector<std::size_t>& positions, std::size_t split = 0);
 
 private:
+    /// The values of every parameter of the stages before `split`, as text.
+    std::string prefixKey(std::size_t split) const;
+
     MemoryDataWrapper m_data;
     std::unique_ptr<ControlWrapper> m_control;
+    bool m_reuse = true;
+    std::size_t m_split = 0;                  ///< of the kept blackboards
+    std::string m_key;                        ///< prefixKey(m_split) they were made with
+    std::map<std::size_t, Blackboard> m_kept; ///< by frame position, after stages [0, m_split)
 };
 
 } // namespace fieldsight::tuning

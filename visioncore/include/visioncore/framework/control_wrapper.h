@@ -23,6 +23,14 @@ public:
     /// Processes the DataWrapper's current frame. Fails (with an Error) only when there is no frame
     /// or it is not CV_8UC3; problems inside stages become diagnostics on the blackboard.
     Result<FrameReport> runFrame();
+    /// A frame in two parts, for a host that runs one frame with many parameter sets (the
+    /// parameter search): runFrameUntil(split) processes the current frame with the stages
+    /// before position `split` only; resumeFrame(earlier, split) then runs the stages from
+    /// `split` on, starting from a copy of `earlier` (this core's blackboard after
+    /// runFrameUntil(split) on the same frame, with the same parameters for the stages before
+    /// `split`), and gives the same blackboard as runFrame() would.
+    Result<FrameReport> runFrameUntil(std::size_t split);
+    Result<FrameReport> resumeFrame(const Blackboard& earlier, std::size_t split);
 
     /// Switch a stage off for the following frames ("suppress detections"). Unknown or
     /// non-skippable ids are an error.

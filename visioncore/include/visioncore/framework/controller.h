@@ -85,6 +85,11 @@ public:
     /// a stage runs its percept lists are made present; a stage that adds a list it did not
     /// declare gets a diagnostic.
     FrameReport runFrame(Blackboard& bb, const std::set<std::string, std::less<>>& skip);
+    /// Runs only the stages at positions [first, end) (the others are reported as not run): a
+    /// frame in parts, for ControlWrapper::runFrameUntil and resumeFrame.
+    FrameReport runStages(Blackboard& bb, const std::set<std::string, std::less<>>& skip,
+                          std::size_t first, std::size_t end);
+    std::size_t size() const { return m_stages.size(); }
 
     /// Makes `bb` hold every percept list of the pipeline (absent), so they are listed in
     /// pipeline order.

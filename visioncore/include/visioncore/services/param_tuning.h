@@ -71,10 +71,18 @@ struct TuneOptions
     /// are cut into contiguous blocks (neighbouring frames look alike, so they go together) and
     /// the seed picks the blocks held out. 0: every frame is fitted and nothing is held out.
     double holdout = 1.0 / 3.0;
+    /// 2 or more: k-fold cross-validation instead of `holdout`. The frames are cut into this many
+    /// contiguous blocks; each is scored with the parameters a search fitted on the others, so
+    /// every frame is held out once, and the result is a search on every frame (k + 1 searches,
+    /// each with the whole budget). 0: one held-out share.
+    int folds = 0;
     /// Weight of each term (a class name such as "ball", or "boundary"); unnamed terms weigh 1,
     /// a weight of 0 leaves a term out.
     std::map<std::string, double, std::less<>> weights;
-    int threads = 0;                                   ///< 0: one per core
+    int threads = 0; ///< 0: one per core
+    /// Keep what the first stages made of each frame while only later stages' parameters move
+    /// (the same result either way, sooner; false for a test that checks that).
+    bool reuse_stages = true;
     std::function<void(const TuneProgress&)> progress; ///< called on the calling thread
     const std::atomic<bool>* cancel = nullptr; ///< stops the search; the best so far is kept
 };
@@ -85,11 +93,17 @@ struct TuneResult
     /// What to save: the values that differ from the defaults, and every change (a value put
     /// back to its default is written too, so the file wins over the stream's own).
     ParamSet params;
-    std::vector<TuneChange> changes;                     ///< pipeline order
-    TuneScore start_fit, start_holdout;                  ///< the start on fit and held-out frames
-    TuneScore tuned_fit, tuned_holdout;                  ///< the result on the same frames
-    std::vector<std::string> fit_frames, holdout_frames; ///< by name, in stream order
-    int evaluations = 0;
+    std::vector<TuneChange> changes; ///< pipeline order
+    TuneScore start_fit;             ///< the start on the fit frames (every frame with folds)
+    TuneScore tuned_fit;             ///< the result on the same frames
+    TuneScore start_holdout;         ///< the start on the held-out frames
+    /// The result on the held-out frames; with folds, each fold's frames scored with the
+    /// parameters fitted without them (what the search's result is expected to reach).
+    TuneScore tuned_holdout;
+    int folds = 0; ///< the folds of the cross-validation (0: one held-out share)
+    std::vector<std::string> fit_frames;     ///< by name, in stream order
+    std::vector<std::string> holdout_frames; ///< by name, in stream order (fold by fold)
+    int evaluations = 0;                     ///< of every search (the folds' too)
     /// The best fit score after each evaluation that improved it: (evaluations, score).
     std::vector<std::pair<int, double>> history;
     int parameters = 0; ///< parameters searched
