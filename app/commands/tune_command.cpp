@@ -141,6 +141,7 @@ std::string tuneJson(const std::string& stream, const std::string& out, const Tu
     j["seconds"] = rounded(r.seconds, 3);
     j["cancelled"] = r.cancelled;
     j["folds"] = r.folds;
+    j["agree"] = o.agree;
     j["fit_frames"] = r.fit_frames;
     j["holdout_frames"] = r.holdout_frames;
     j["start"] = {{"fit", score(r.start_fit)}, {"holdout", score(r.start_holdout)}};
@@ -188,6 +189,10 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                       "scored with what a search on the others found; the result is fitted on "
                       "every frame (K + 1 searches).",
                       "K"});
+    parser.addOption({"agree",
+                      "A move is kept only when none of this many contiguous blocks of the fit "
+                      "frames scores lower (default 3; 1: the total alone).",
+                      "N"});
     parser.addOption({"weight",
                       "Weight of a score term, e.g. obstacle=2 or boundary=0 (repeatable; "
                       "terms: ball, goalpost, obstacle, field_line, boundary; default 1).",
@@ -226,12 +231,14 @@ int tuneCommand(const QStringList& args, const Context& ctx)
             intOption(parser, "seed", 1, 0, error, std::numeric_limits<long long>::max());
         const auto threads = intOption(parser, "threads", 0, 0, error);
         const auto folds = intOption(parser, "folds", 0, 0, error, 20);
-        if (!budget || !seed || !threads || !folds)
+        const auto agree = intOption(parser, "agree", options.agree, 1, error, 20);
+        if (!budget || !seed || !threads || !folds || !agree)
             return badInput(ctx, "tune: " + error);
         options.budget = int(*budget);
         options.seed = std::uint64_t(*seed);
         options.threads = int(*threads);
         options.folds = int(*folds);
+        options.agree = int(*agree);
         if (options.folds == 1)
             return badInput(ctx, "tune: --folds must be 2 or more (or 0: --holdout)");
         if (parser.isSet("holdout")) {

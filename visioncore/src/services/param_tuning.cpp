@@ -125,25 +125,47 @@ public:
         const int workers = workerCount(options.threads, 64);
         for (int w = 0; w < workers; ++w)
             m_scorers.push_back(std::make_unique<Scorer>(input, options.reuse_stages));
+        const std::size_t groups = std::clamp<std::size_t>(std::size_t(std::max(options.agree, 1)),
+                                                           1, std::max<std::size_t>(m_fit.size(), 1));
+        m_group_count = groups;
+        for (std::size_t j = 0; j < m_fit.size(); ++j)
+            m_group_of.push_back(j * groups / m_fit.size());
     }
+
+    /// The best set's score on each of the fit frames' blocks, which a move must keep.
+    void setBestGroups(std::vector<double> groups) { m_best_groups = std::move(groups); }
 
     /// Scores every set in `sets` on `positions`; counts them against the budget when `count`.
     /// `splits[i]` (when given): set i moves no parameter of the stages before that position
     /// from the best set's (Scorer::tally reuses what they made).
+    /// `groups` (when given, and `positions` are the fit frames): each set's score on each block.
     std::vector<TuneScore> scoreAll(const std::vector<ParamSet>& sets,
                                     const std::vector<std::size_t>& positions, bool count,
-                                    const std::vector<std::size_t>& splits = {})
+                                    const std::vector<std::size_t>& splits = {},
+                                    std::vector<std::vector<double>>* groups = nullptr)
     {
         std::vector<TuneScore> scores(sets.size());
+        if (groups)
+            groups->assign(sets.size(), std::vector<double>(m_group_count, 0.0));
         const int workers = int(std::min(m_scorers.size(), std::max<std::size_t>(sets.size(), 1)));
         std::vector<std::string> problems(static_cast<std::size_t>(workers));
         runOnWorkers(workers, [&](int w) {
             try {
-                for (std::size_t i = std::size_t(w); i < sets.size(); i += std::size_t(workers))
-                    scores[i] = tuning::scoreOf(
-                        m_scorers[std::size_t(w)]->tally(sets[i], m_frames, positions,
-                                                         splits.empty() ? 0 : splits[i]),
-                        m_options.weights);
+                for (std::size_t i = std::size_t(w); i < sets.size(); i += std::size_t(workers)) {
+                    const std::vector<tuning::Tally> each = m_scorers[std::size_t(w)]->tallies(
+                        sets[i], m_frames, positions, splits.empty() ? 0 : splits[i]);
+                    tuning::Tally sum;
+                    std::vector<tuning::Tally> by_group(m_group_count);
+                    for (std::size_t j = 0; j < each.size(); ++j) {
+                        sum += each[j];
+                        if (groups)
+                            by_group[m_group_of[j]] += each[j];
+                    }
+                    scores[i] = tuning::scoreOf(sum, m_options.weights);
+                    if (groups)
+                        for (std::size_t g = 0; g < m_group_count; ++g)
+                            (*groups)[i][g] = tuning::scoreOf(by_group[g], m_options.weights).total;
+                }
             } catch (const std::exception& e) {
                 problems[std::size_t(w)] = e.what();
             }
@@ -180,20 +202,28 @@ public:
             sets.resize(std::size_t(room));
             splits.resize(std::size_t(room));
         }
-        const std::vector<TuneScore> scores = scoreAll(sets, m_fit, true, splits);
+        std::vector<std::vector<double>> groups;
+        const std::vector<TuneScore> scores = scoreAll(sets, m_fit, true, splits, &groups);
         std::size_t winner = sets.size();
         double top = best_score.total + 1e-9;
-        for (std::size_t i = 0; i < scores.size(); ++i)
-            if (scores[i].total > top) {
+        for (std::size_t i = 0; i < scores.size(); ++i) {
+            // A move that costs one block of the fit frames what it buys on another fits
+            // those frames, not the scene: every block must keep its score.
+            bool agreed = m_best_groups.size() == groups[i].size();
+            for (std::size_t g = 0; agreed && g < groups[i].size(); ++g)
+                agreed = groups[i][g] >= m_best_groups[g] - 1e-9;
+            if (agreed && scores[i].total > top) {
                 top = scores[i].total;
                 winner = i;
             }
+        }
         if (m_options.progress)
             m_options.progress({m_evaluations, m_options.budget, std::max(top, best_score.total)});
         if (winner == sets.size())
             return false;
         best = sets[winner];
         best_score = scores[winner];
+        m_best_groups = groups[winner];
         result.history.emplace_back(m_evaluations, best_score.total);
         return true;
     }
@@ -203,6 +233,9 @@ private:
     std::vector<std::size_t> m_fit;
     const TuneOptions& m_options;
     std::vector<std::unique_ptr<Scorer>> m_scorers;
+    std::size_t m_group_count = 1;
+    std::vector<std::size_t> m_group_of;  ///< each fit frame's block
+    std::vector<double> m_best_groups;    ///< the best set's score on each block
     int m_progress_offset = 0;
     int m_progress_total = 0;
     int m_evaluations = 0;
@@ -343,7 +376,9 @@ Fitted fitOn(const StreamInput& input, const std::vector<HeldFrame>& frames,
     TuneResult priced; // searchFrom and pruneAndPrice fill its history and changes
     Fitted fitted;
     fitted.best = input.params;
-    fitted.score = search.scoreAll({fitted.best}, fit, true).front();
+    std::vector<std::vector<double>> groups;
+    fitted.score = search.scoreAll({fitted.best}, fit, true, {}, &groups).front();
+    search.setBestGroups(groups.front());
     priced.history.emplace_back(search.evaluations(), fitted.score.total);
     SplitMix64 random(seed);
     searchFrom(search, params, fitted.best, fitted.score, priced, random);

@@ -145,6 +145,15 @@ std::string Scorer::prefixKey(std::size_t split) const
 Tally Scorer::tally(const ParamSet& params, const std::vector<HeldFrame>& frames,
                     const std::vector<std::size_t>& positions, std::size_t split)
 {
+    Tally sum;
+    for (const Tally& t : tallies(params, frames, positions, split))
+        sum += t;
+    return sum;
+}
+
+std::vector<Tally> Scorer::tallies(const ParamSet& params, const std::vector<HeldFrame>& frames,
+                                   const std::vector<std::size_t>& positions, std::size_t split)
+{
     m_control->resetParams();
     if (Status s = m_control->applyParams(params); !s)
         throw std::invalid_argument(s.error().message);
@@ -158,8 +167,10 @@ Tally Scorer::tally(const ParamSet& params, const std::vector<HeldFrame>& frames
             m_key = std::move(key);
         }
     }
-    Tally tally;
+    std::vector<Tally> out;
+    out.reserve(positions.size());
     for (std::size_t position : positions) {
+        Tally& tally = out.emplace_back();
         const HeldFrame& held = frames[position];
         m_data.setFrame(held.frame);
         Result<FrameReport> report = Error{""};
@@ -184,7 +195,7 @@ Tally Scorer::tally(const ParamSet& params, const std::vector<HeldFrame>& frames
             tally.boundary.push_back(match.boundary_error);
         ++tally.frames;
     }
-    return tally;
+    return out;
 }
 
 Tally& Tally::operator+=(const Tally& other)

@@ -50,6 +50,9 @@ public:
     /// (kept from the first call that ran them, when `reuse`).
     Tally tally(const ParamSet& params, const std::vector<HeldFrame>& frames,
                 const std::vector<std::size_t>& positions, std::size_t split = 0);
+    /// The same, one Tally per position.
+    std::vector<Tally> tallies(const ParamSet& params, const std::vector<HeldFrame>& frames,
+                               const std::vector<std::size_t>& positions, std::size_t split = 0);
 
 private:
     /// The values of every parameter of the stages before `split`, as text.

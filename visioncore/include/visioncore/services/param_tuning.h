@@ -76,6 +76,10 @@ struct TuneOptions
     /// every frame is held out once, and the result is a search on every frame (k + 1 searches,
     /// each with the whole budget). 0: one held-out share.
     int folds = 0;
+    /// The fit frames are cut into this many contiguous blocks, and a move is kept only when no
+    /// block's score drops: a change that buys on some frames what it costs on others fits
+    /// those frames, not the venue. 1: the total alone decides.
+    int agree = 3;
     /// Weight of each term (a class name such as "ball", or "boundary"); unnamed terms weigh 1,
     /// a weight of 0 leaves a term out.
     std::map<std::string, double, std::less<>> weights;
