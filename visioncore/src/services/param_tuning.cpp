@@ -313,9 +313,16 @@ void searchFrom(Search& search, const std::vector<Searched>& params, ParamSet& b
         for (int c = 0; c < 8; ++c) {
             ParamSet set = best;
             std::size_t split = std::size_t(-1);
+            // Parameters of one stage work together (a rule and its threshold): move a few of
+            // the same stage's.
+            const std::size_t stage_of = random() % params.size();
+            std::vector<std::size_t> same;
+            for (std::size_t k = 0; k < params.size(); ++k)
+                if (params[k].position == params[stage_of].position)
+                    same.push_back(k);
             const int moves = 2 + int(random() % 2);
             for (int m = 0; m < moves; ++m) {
-                const Searched& p = params[random() % params.size()];
+                const Searched& p = params[same[random() % same.size()]];
                 set = with(std::move(set), p, randomMove(p.info, valueOf(set, p), random));
                 split = std::min(split, p.position);
             }
