@@ -30,6 +30,19 @@ extern "C" void onInterrupt(int)
     std::signal(SIGINT, SIG_DFL);
 }
 
+/// Ctrl+C stops the search while the command runs (from before the frames are read).
+class InterruptGuard
+{
+public:
+    InterruptGuard() : m_previous(std::signal(SIGINT, onInterrupt)) { g_interrupted.store(false); }
+    ~InterruptGuard() { std::signal(SIGINT, m_previous == SIG_ERR ? SIG_DFL : m_previous); }
+    InterruptGuard(const InterruptGuard&) = delete;
+    InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+private:
+    void (*m_previous)(int);
+};
+
 std::string scoreCell(const TuneScore& s, const std::string& term)
 {
     char cell[64];
@@ -206,6 +219,7 @@ int tuneCommand(const QStringList& args, const Context& ctx)
     if (auto done = parseCommand(parser, "tune", args, 1, 1, ctx))
         return *done;
 
+    const InterruptGuard interrupt;
     try {
         const std::string stream = toLocalPath(parser.positionalArguments().first());
         if (!parser.isSet("out"))
@@ -275,11 +289,8 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                 ctx.err << "\rtune: " << p.evaluations << " of " << p.budget
                         << " evaluations, best fit score " << rounded(p.best_fit, 4) << std::flush;
         };
-        g_interrupted.store(false);
         options.cancel = &g_interrupted;
-        auto* previous = std::signal(SIGINT, onInterrupt);
         auto result = tuneParams(input.value(), truth.value(), truth_path, options);
-        std::signal(SIGINT, previous == SIG_ERR ? SIG_DFL : previous);
         if (terminal)
             ctx.err << "\r\033[K" << std::flush;
         if (!result)
