@@ -64,6 +64,27 @@ private:
         {"side_blend", "px", 0, 50, 1,
          "Other colours this long between a line and the green beside it are the blur between "
          "them."}};
+    Param<int> m_faint_width{
+        this,
+        6,
+        {"faint_width", "px", 0, 50, 1,
+         "A run of unclassified (and white) pixels no longer than this between field green, "
+         "brighter than the green beside it, is a line point too: a far, thin or blurred line "
+         "the colour table does not call white, which the transition filter paints green. 0: "
+         "white runs only."}};
+    Param<int> m_faint_contrast{
+        this,
+        10,
+        {"faint_contrast", "", 0, 255, 1,
+         "How much brighter (luma) than the green on both sides a faint run's brightest pixel "
+         "must be."}};
+    Param<double> m_max_bow{
+        this,
+        0.7,
+        {"max_bow", "px", 0, 50, 0.1,
+         "A line whose middle third of points lies further than this from its outer thirds "
+         "(across the line) bends: a chord of the centre circle, not a field line. 0 keeps "
+         "bent lines."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
