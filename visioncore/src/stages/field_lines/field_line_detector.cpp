@@ -37,11 +37,13 @@ double averageDistance(const Fitted& a, const Fitted& b)
 
 /// Splits inliers where consecutive points along the line are further apart than max_gap, so one
 /// model through two distant collinear pieces (or a chord through scattered points) does not
-/// become one long line; keeps the pieces with enough points.
-/// `sorted` is scratch.
-void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::vector<Fitted>& out,
-                 std::vector<std::pair<double, PointF>>& sorted)
+/// become one long line; keeps the pieces with enough points and returns how many, the points of
+/// the others added to `short_pieces`. `sorted` is scratch.
+std::size_t splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points,
+                        std::vector<Fitted>& out, std::vector<std::pair<double, PointF>>& sorted,
+                        std::vector<PointF>& short_pieces)
 {
+    const std::size_t before = out.size();
     // Sorted by position along the line, computed once per point rather than per comparison.
     sorted.clear();
     for (const PointF& p : f.points)
@@ -59,9 +61,13 @@ void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::v
                 piece.points.push_back(sorted[k].second);
             piece.line = fitLineTls(piece.points);
             out.push_back(std::move(piece));
+        } else {
+            for (std::size_t k = begin; k < i; ++k)
+                short_pieces.push_back(sorted[k].second);
         }
         begin = i;
     }
+    return out.size() - before;
 }
 
 /// Whether field green borders scan[k] on both sides: the nearest segment each way, past pieces
@@ -279,9 +285,17 @@ void FieldLineDetector::run(Blackboard& bb)
     params.iterations = m_iterations;
     params.locality = std::size_t(m_locality.value());
     std::vector<Fitted> lines;
-    for (auto& r : ransacFindModels<ImageLine>(std::move(points), params, m_max_lines, rng)) {
+    RansacResult<ImageLine> r;
+    for (int found = 0; found < m_max_lines && ransacFindModel(points, params, rng, r, m_cols);
+         ++found) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
-        splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines, m_sorted);
+        m_short.clear();
+        // A model that gave a line gives the points of its short pieces back: a far line's end
+        // that another line's band took in is found again with the rest of its line.
+        if (splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines, m_sorted, m_short) >
+                0 &&
+            m_return_short)
+            points.insert(points.end(), m_short.begin(), m_short.end());
     }
 
     // Merge colinear lines (the original computed this and then discarded the result).

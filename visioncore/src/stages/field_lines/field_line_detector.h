@@ -2,6 +2,7 @@
 // green horizon, then colinear lines merged.
 #pragma once
 
+#include "stages/common/ransac.h"
 #include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
 #include "visioncore/basics/geometry.h"
@@ -20,7 +21,9 @@ public:
 
 private:
     std::vector<std::pair<double, PointF>> m_sorted; ///< scratch of the gap split, kept
-    std::vector<int> m_scan_at; ///< scratch: the scan index of each row or column, or -1
+    std::vector<int> m_scan_at;  ///< scratch: the scan index of each row or column, or -1
+    std::vector<PointF> m_short; ///< scratch: the points of pieces too short to be lines
+    PointColumns m_cols;         ///< scratch of RANSAC
 
     Param<int> m_min_points{
         this, 12, {"min_points", "", 2, 1000, 1, "Line points needed for a field line."}};
@@ -32,7 +35,7 @@ private:
         this,
         2.5,
         {"max_error", "px", 0.5, 50, 0.5, "How far a line point may lie from its line."}};
-    Param<int> m_max_lines{this, 10, {"max_lines", "", 1, 50, 1, "Most lines found per frame."}};
+    Param<int> m_max_lines{this, 6, {"max_lines", "", 1, 50, 1, "Most lines found per frame."}};
     Param<double> m_merge_angle{
         this,
         0.1,
@@ -64,6 +67,12 @@ private:
         {"side_blend", "px", 0, 50, 1,
          "Other colours this long between a line and the green beside it are the blur between "
          "them."}};
+    Param<bool> m_return_short{
+        this,
+        true,
+        {"return_short", "", 0, 1, 1,
+         "The points of a RANSAC line's pieces too short to be lines (split at gaps) go back to "
+         "be found again, when the line gave at least one piece."}};
     Param<int> m_faint_width{
         this,
         6,
