@@ -14,6 +14,8 @@
 
 #include <QtTest>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -288,6 +290,55 @@ private slots:
         QCOMPARE(rejected.notes.size(), rejected.shapes.size());
         for (const DebugShape& shape : rejected.shapes)
             QVERIFY(shape.points[0].x >= 192 && shape.points[0].x <= 247);
+    }
+
+    /// A far or blurred line is pale green-grey that the table leaves unclassified, and the
+    /// transition filter paints a thin unclassified run between green back to green: with
+    /// faint_width the run, brighter than the green beside it, is a line point all the same.
+    void faintLineBetweenGreenIsFound()
+    {
+        cv::Mat f = fieldFrame(60);
+        cv::line(f, {0, 200}, {319, 140}, cv::Scalar(150, 100, 100), 2); // unclassified, bright
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("field_lines", "faint_width", 0).ok());
+        QCOMPARE(runOrDie(core).percepts.list<FieldLine>().size(), std::size_t(0));
+        QVERIFY(core.setParam("field_lines", "faint_width", 6).ok());
+        const Blackboard& bb = runOrDie(core);
+        QCOMPARE(bb.percepts.list<FieldLine>().size(), std::size_t(1));
+        const FieldLine& l = bb.percepts.list<FieldLine>()[0];
+        QVERIFY(std::min(l.x1, l.x2) < 10 && std::max(l.x1, l.x2) > 309);
+        const double y_at_160 = l.y1 + (l.y2 - l.y1) / (l.x2 - l.x1) * (160 - l.x1);
+        QVERIFY(std::abs(y_at_160 - (200 - 60.0 * 160 / 319)) < 1.5);
+        // A dark run of the same width (a shadow, a robot's foot) is no line.
+        cv::Mat dark = fieldFrame(60);
+        cv::line(dark, {0, 200}, {319, 140}, cv::Scalar(60, 100, 100), 2);
+        MemoryDataWrapper dark_data(dark, test::testLut());
+        ControlWrapper dark_core(dark_data);
+        QCOMPARE(runOrDie(dark_core).percepts.list<FieldLine>().size(), std::size_t(0));
+    }
+
+    /// The centre circle, seen in perspective, is an ellipse: RANSAC fits chords to its flat
+    /// parts, which bend (max_bow) and are no field lines. A straight line across it stays.
+    void centreCircleGivesNoChords()
+    {
+        cv::Mat f = fieldFrame(60);
+        const test::ClassPixel white = test::pixelFor(Colour::White);
+        cv::ellipse(f, {160, 150}, {110, 40}, 0, 0, 360, cv::Scalar(white.y, white.cb, white.cr),
+                    3);
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("field_lines", "max_bow", 0).ok());
+        QVERIFY(runOrDie(core).percepts.list<FieldLine>().size() >= 2); // chords
+        QVERIFY(core.setParam("field_lines", "max_bow", 0.7).ok());
+        QCOMPARE(runOrDie(core).percepts.list<FieldLine>().size(), std::size_t(0));
+        drawLine(f, 0, 170, 319, 130, 3, Colour::White); // the halfway line through it
+        MemoryDataWrapper line_data(f, test::testLut());
+        ControlWrapper line_core(line_data);
+        const Blackboard& bb = runOrDie(line_core);
+        QCOMPARE(bb.percepts.list<FieldLine>().size(), std::size_t(1));
+        const FieldLine& l = bb.percepts.list<FieldLine>()[0];
+        QVERIFY(std::min(l.x1, l.x2) < 10 && std::max(l.x1, l.x2) > 309);
     }
 
     void compiledReplacementRulesMatchThePlainRules()

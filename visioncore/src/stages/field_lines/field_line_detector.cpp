@@ -9,8 +9,11 @@
 #include "visioncore/framework/blackboard.h"
 #include "visioncore/percepts/field_line.h"
 
+#include <opencv2/core/mat.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace fieldsight {
@@ -34,11 +37,13 @@ double averageDistance(const Fitted& a, const Fitted& b)
 
 /// Splits inliers where consecutive points along the line are further apart than max_gap, so one
 /// model through two distant collinear pieces (or a chord through scattered points) does not
-/// become one long line; keeps the pieces with enough points.
-/// `sorted` is scratch.
-void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::vector<Fitted>& out,
-                 std::vector<std::pair<double, PointF>>& sorted)
+/// become one long line; keeps the pieces with enough points and returns how many, the points of
+/// the others added to `short_pieces`. `sorted` is scratch.
+std::size_t splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points,
+                        std::vector<Fitted>& out, std::vector<std::pair<double, PointF>>& sorted,
+                        std::vector<PointF>& short_pieces)
 {
+    const std::size_t before = out.size();
     // Sorted by position along the line, computed once per point rather than per comparison.
     sorted.clear();
     for (const PointF& p : f.points)
@@ -56,9 +61,13 @@ void splitAtGaps(const Fitted& f, double max_gap, std::size_t min_points, std::v
                 piece.points.push_back(sorted[k].second);
             piece.line = fitLineTls(piece.points);
             out.push_back(std::move(piece));
+        } else {
+            for (std::size_t k = begin; k < i; ++k)
+                short_pieces.push_back(sorted[k].second);
         }
         begin = i;
     }
+    return out.size() - before;
 }
 
 /// Whether field green borders scan[k] on both sides: the nearest segment each way, past pieces
@@ -124,6 +133,88 @@ void indexScans(const SegmentedRegion& region, int extent, std::vector<int>& sca
         }
 }
 
+/// Centres of the faint line runs of `raw` (the unfiltered scans): runs of unclassified and white
+/// pixels, at most `max_width` px, between field green on both sides, whose brightest pixel is
+/// `contrast` brighter (luma) than the green 2 px beyond either end. A run holding a white segment
+/// of 2 px or more is left to the white transitions.
+void addFaintPoints(const SegmentedRegion& raw, const cv::Mat& image, int max_width, int contrast,
+                    std::vector<PointF>& points)
+{
+    const bool horizontal = raw.direction == ScanDirection::Horizontal;
+    const auto luma = [&](int x, int y) { return int(image.ptr<std::uint8_t>(y)[3 * x]); };
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        const Scan& scan = raw[i];
+        std::size_t k = 1;
+        while (k + 1 < scan.size()) {
+            if (scan[k - 1].colour != Colour::Green || scan[k].colour == Colour::Green) {
+                ++k;
+                continue;
+            }
+            // scan[k] starts a run after green: extend it over unclassified and white segments.
+            std::size_t end = k;
+            int length = 0;
+            bool white = false;
+            while (
+                end < scan.size() &&
+                (scan[end].colour == Colour::Unclassified || scan[end].colour == Colour::White) &&
+                length <= max_width) {
+                length += scan[end].length();
+                white |= scan[end].colour == Colour::White && scan[end].length() >= 2;
+                ++end;
+            }
+            if (end >= scan.size() || scan[end].colour != Colour::Green || length > max_width ||
+                white) {
+                k = end + 1;
+                continue;
+            }
+            const ColourSegment& before = scan[k - 1];
+            const ColourSegment& after = scan[end];
+            const PixelPoint first = scan[k].first();
+            const PixelPoint last = scan[end - 1].last();
+            int brightest = 0;
+            for (int j = 0; j < length; ++j)
+                brightest = std::max(brightest, horizontal ? luma(first.x + j, first.y)
+                                                           : luma(first.x, first.y + j));
+            const PixelPoint g1 = horizontal
+                                      ? PixelPoint{std::max<int>(before.x0, first.x - 2), first.y}
+                                      : PixelPoint{first.x, std::max<int>(before.y0, first.y - 2)};
+            const PixelPoint after_last = after.last();
+            const PixelPoint g2 = horizontal
+                                      ? PixelPoint{std::min<int>(after_last.x, last.x + 2), last.y}
+                                      : PixelPoint{last.x, std::min<int>(after_last.y, last.y + 2)};
+            if (brightest - luma(g1.x, g1.y) >= contrast &&
+                brightest - luma(g2.x, g2.y) >= contrast)
+                points.push_back({(first.x + last.x) * 0.5, (first.y + last.y) * 0.5});
+            k = end + 1;
+        }
+    }
+}
+
+/// px: how far the mean of the middle third of `f`'s points (by position along the line) lies
+/// across the line from the mean of the outer two thirds; 0 with fewer than 2 points in a third.
+/// A straight line's points scatter about it evenly; an arc's middle bulges to one side.
+double bow(const Fitted& f)
+{
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    for (const PointF& p : f.points) {
+        lo = std::min(lo, f.line.along(p));
+        hi = std::max(hi, f.line.along(p));
+    }
+    const double third = (hi - lo) / 3;
+    double sum[3] = {0, 0, 0};
+    int count[3] = {0, 0, 0};
+    for (const PointF& p : f.points) {
+        const int part = std::clamp(int((f.line.along(p) - lo) / third), 0, 2);
+        sum[part] += (p.x - f.line.point.x) * f.line.direction.y -
+                     (p.y - f.line.point.y) * f.line.direction.x;
+        ++count[part];
+    }
+    if (third <= 0 || count[0] < 2 || count[1] < 2 || count[2] < 2)
+        return 0;
+    return std::abs(sum[1] / count[1] - 0.5 * (sum[0] / count[0] + sum[2] / count[2]));
+}
+
 } // namespace
 
 const StageInfo& FieldLineDetector::info() const
@@ -170,6 +261,20 @@ void FieldLineDetector::run(Blackboard& bb)
             points.push_back(c);
         }
     }
+    if (m_faint_width > 0) {
+        const std::size_t white_points = points.size();
+        for (const SegmentedRegion* raw : {&bb.horizontal_segments, &bb.vertical_segments})
+            addFaintPoints(*raw, bb.image(), m_faint_width, m_faint_contrast, points);
+        const auto below = [&](const PointF& c) {
+            if (bb.green_horizon.isBelow(int(c.x), int(c.y)))
+                return true;
+            reject(c, "above the field's edge");
+            return false;
+        };
+        points.erase(std::stable_partition(points.begin() + std::ptrdiff_t(white_points),
+                                           points.end(), below),
+                     points.end());
+    }
     if (auto* d = bb.debug.layer("field_lines.points"))
         d->add(pointsShape(points, debug_colour::kWhite, 2));
 
@@ -180,9 +285,17 @@ void FieldLineDetector::run(Blackboard& bb)
     params.iterations = m_iterations;
     params.locality = std::size_t(m_locality.value());
     std::vector<Fitted> lines;
-    for (auto& r : ransacFindModels<ImageLine>(std::move(points), params, m_max_lines, rng)) {
+    RansacResult<ImageLine> r;
+    for (int found = 0; found < m_max_lines && ransacFindModel(points, params, rng, r, m_cols);
+         ++found) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
-        splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines, m_sorted);
+        m_short.clear();
+        // A model that gave a line gives the points of its short pieces back: a far line's end
+        // that another line's band took in is found again with the rest of its line.
+        if (splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines, m_sorted, m_short) >
+                0 &&
+            m_return_short)
+            points.insert(points.end(), m_short.begin(), m_short.end());
     }
 
     // Merge colinear lines (the original computed this and then discarded the result).
@@ -204,6 +317,11 @@ void FieldLineDetector::run(Blackboard& bb)
 
     std::vector<FieldLine>& out = bb.percepts.output<FieldLine>();
     for (const Fitted& f : lines) {
+        if (m_max_bow > 0 && bow(f) > m_max_bow) {
+            if (rejected)
+                addRejected(*rejected, pointsShape(f.points, {}, 3), "bent: a circle's chord");
+            continue;
+        }
         PointF a, b;
         lineExtent(f.line, f.points, a, b);
         out.push_back({a.x, a.y, b.x, b.y});

@@ -2,6 +2,7 @@
 // green horizon, then colinear lines merged.
 #pragma once
 
+#include "stages/common/ransac.h"
 #include "stages/common/stage_util.h"
 #include "visioncore/framework/stage.h"
 #include "visioncore/basics/geometry.h"
@@ -20,7 +21,9 @@ public:
 
 private:
     std::vector<std::pair<double, PointF>> m_sorted; ///< scratch of the gap split, kept
-    std::vector<int> m_scan_at; ///< scratch: the scan index of each row or column, or -1
+    std::vector<int> m_scan_at;  ///< scratch: the scan index of each row or column, or -1
+    std::vector<PointF> m_short; ///< scratch: the points of pieces too short to be lines
+    PointColumns m_cols;         ///< scratch of RANSAC
 
     Param<int> m_min_points{
         this, 12, {"min_points", "", 2, 1000, 1, "Line points needed for a field line."}};
@@ -32,7 +35,7 @@ private:
         this,
         2.5,
         {"max_error", "px", 0.5, 50, 0.5, "How far a line point may lie from its line."}};
-    Param<int> m_max_lines{this, 10, {"max_lines", "", 1, 50, 1, "Most lines found per frame."}};
+    Param<int> m_max_lines{this, 6, {"max_lines", "", 1, 50, 1, "Most lines found per frame."}};
     Param<double> m_merge_angle{
         this,
         0.1,
@@ -64,6 +67,33 @@ private:
         {"side_blend", "px", 0, 50, 1,
          "Other colours this long between a line and the green beside it are the blur between "
          "them."}};
+    Param<bool> m_return_short{
+        this,
+        true,
+        {"return_short", "", 0, 1, 1,
+         "The points of a RANSAC line's pieces too short to be lines (split at gaps) go back to "
+         "be found again, when the line gave at least one piece."}};
+    Param<int> m_faint_width{
+        this,
+        6,
+        {"faint_width", "px", 0, 50, 1,
+         "A run of unclassified (and white) pixels no longer than this between field green, "
+         "brighter than the green beside it, is a line point too: a far, thin or blurred line "
+         "the colour table does not call white, which the transition filter paints green. 0: "
+         "white runs only."}};
+    Param<int> m_faint_contrast{
+        this,
+        10,
+        {"faint_contrast", "", 0, 255, 1,
+         "How much brighter (luma) than the green on both sides a faint run's brightest pixel "
+         "must be."}};
+    Param<double> m_max_bow{
+        this,
+        0.7,
+        {"max_bow", "px", 0, 50, 0.1,
+         "A line whose middle third of points lies further than this from its outer thirds "
+         "(across the line) bends: a chord of the centre circle, not a field line. 0 keeps "
+         "bent lines."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
