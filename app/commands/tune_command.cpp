@@ -103,7 +103,14 @@ std::string tuneTable(const std::string& stream, const TuneResult& r, const Tune
                   held ? std::to_string(r.start_holdout.total).substr(0, 5).c_str() : "-",
                   held ? std::to_string(r.tuned_holdout.total).substr(0, 5).c_str() : "-");
     text += line;
-    text += "(precision/recall per class; boundary: median error; score: docs/formats.md)\n";
+    if (r.start_fit.ms_per_frame >= 0 && r.tuned_fit.ms_per_frame >= 0) {
+        std::snprintf(line, sizeof line, "%-11s %-11s %-11s\n", "core time",
+                      (std::to_string(r.start_fit.ms_per_frame).substr(0, 5) + " ms").c_str(),
+                      (std::to_string(r.tuned_fit.ms_per_frame).substr(0, 5) + " ms").c_str());
+        text += line;
+    }
+    text += "(precision/recall per class; boundary: median error; core time: a frame, wall "
+            "clock; score: docs/formats.md)\n";
     if (r.changes.empty()) {
         text += "no change beats the start on the fit frames\n";
         return text;
@@ -142,6 +149,7 @@ std::string tuneJson(const std::string& stream, const std::string& out, const Tu
         j["boundary_median_px"] =
             s.boundary_median < 0 ? Json() : Json(rounded(s.boundary_median, 4));
         j["boundary_mean_px"] = s.boundary_mean < 0 ? Json() : Json(rounded(s.boundary_mean, 4));
+        j["ms_per_frame"] = s.ms_per_frame < 0 ? Json() : Json(rounded(s.ms_per_frame, 4));
         return j;
     };
     Json j;
@@ -202,6 +210,9 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                       "scored with what a search on the others found; the result is fitted on "
                       "every frame (K + 1 searches).",
                       "K"});
+    parser.addOption({"allow-costly",
+                      "Let the parameters that set a frame's cost (RANSAC samples, scan-line "
+                      "spacing) go beyond twice their default's cost."});
     parser.addOption({"agree",
                       "A move is kept only when none of this many contiguous blocks of the fit "
                       "frames scores lower (default 3; 1: the total alone).",
@@ -253,6 +264,7 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         options.threads = int(*threads);
         options.folds = int(*folds);
         options.agree = int(*agree);
+        options.allow_costly = parser.isSet("allow-costly");
         if (options.folds == 1)
             return badInput(ctx, "tune: --folds must be 2 or more (or 0: --holdout)");
         if (parser.isSet("holdout")) {

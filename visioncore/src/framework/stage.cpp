@@ -42,6 +42,7 @@ ParamBase::ParamBase(Stage* owner, ParamKind kind, double default_value, const P
         m_scale = &owner->m_pixel_scale;
     m_info.description = spec.description;
     m_info.fitted = spec.fitted;
+    m_info.work = spec.work;
     m_info.default_value = default_value;
     m_info.min = spec.min;
     m_info.max = spec.max;

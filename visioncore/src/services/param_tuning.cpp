@@ -125,8 +125,8 @@ public:
         const int workers = workerCount(options.threads, 64);
         for (int w = 0; w < workers; ++w)
             m_scorers.push_back(std::make_unique<Scorer>(input, options.reuse_stages));
-        const std::size_t groups = std::clamp<std::size_t>(std::size_t(std::max(options.agree, 1)),
-                                                           1, std::max<std::size_t>(m_fit.size(), 1));
+        const std::size_t groups = std::clamp<std::size_t>(
+            std::size_t(std::max(options.agree, 1)), 1, std::max<std::size_t>(m_fit.size(), 1));
         m_group_count = groups;
         for (std::size_t j = 0; j < m_fit.size(); ++j)
             m_group_of.push_back(j * groups / m_fit.size());
@@ -234,8 +234,8 @@ private:
     const TuneOptions& m_options;
     std::vector<std::unique_ptr<Scorer>> m_scorers;
     std::size_t m_group_count = 1;
-    std::vector<std::size_t> m_group_of;  ///< each fit frame's block
-    std::vector<double> m_best_groups;    ///< the best set's score on each block
+    std::vector<std::size_t> m_group_of; ///< each fit frame's block
+    std::vector<double> m_best_groups;   ///< the best set's score on each block
     int m_progress_offset = 0;
     int m_progress_total = 0;
     int m_evaluations = 0;
@@ -263,6 +263,13 @@ Result<std::vector<Searched>> searchedParams(const StreamInput& input, const Tun
             if (!info.fitted)
                 continue;
             Searched s{id, info, 0, position - 1};
+            // Within twice the default's cost, unless allowed (the start's value always is).
+            if (!options.allow_costly && info.work > 0)
+                s.info.max =
+                    std::max(std::min(info.max, 2 * info.default_value), valueOf(input.params, s));
+            if (!options.allow_costly && info.work < 0)
+                s.info.min = std::min(std::max(info.min, std::ceil(info.default_value / 2)),
+                                      valueOf(input.params, s));
             s.start = valueOf(input.params, s);
             searched.push_back(std::move(s));
         }
@@ -447,9 +454,11 @@ Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
         result.history = std::move(fitted.history);
         result.evaluations = fitted.evaluations;
         result.cancelled = fitted.cancelled;
-        result.tuned_fit = fitted.score;
         Search scorer(input, frames, fit, options);
-        result.start_fit = scorer.scoreAll({input.params}, fit, false).front();
+        // Both run whole (the search may have resumed frames), so their core time compares.
+        const std::vector<TuneScore> on_fit = scorer.scoreAll({input.params, best}, fit, false);
+        result.start_fit = on_fit[0];
+        result.tuned_fit = on_fit[1];
         tuning::Tally start_held;
         tuning::Tally tuned_held;
         if (!holdout.empty()) {

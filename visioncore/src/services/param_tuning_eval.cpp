@@ -194,6 +194,10 @@ std::vector<Tally> Scorer::tallies(const ParamSet& params, const std::vector<Hel
         if (match.boundary_error >= 0)
             tally.boundary.push_back(match.boundary_error);
         ++tally.frames;
+        if (split == 0) {
+            tally.core_ms += report.value().total_ms;
+            ++tally.timed_frames;
+        }
     }
     return out;
 }
@@ -204,6 +208,8 @@ Tally& Tally::operator+=(const Tally& other)
         classes[name] += score;
     boundary.insert(boundary.end(), other.boundary.begin(), other.boundary.end());
     frames += other.frames;
+    core_ms += other.core_ms;
+    timed_frames += other.timed_frames;
     return *this;
 }
 
@@ -212,6 +218,8 @@ TuneScore scoreOf(const Tally& tally, const std::map<std::string, double, std::l
     TuneScore result;
     result.classes = tally.classes;
     result.frames = tally.frames;
+    if (tally.timed_frames > 0)
+        result.ms_per_frame = tally.core_ms / double(tally.timed_frames);
     const auto weightOf = [&](const std::string& term) {
         const auto w = weights.find(term);
         return w == weights.end() ? 1.0 : w->second;
@@ -233,7 +241,8 @@ TuneScore scoreOf(const Tally& tally, const std::map<std::string, double, std::l
             n % 2 ? boundary[n / 2] : 0.5 * (boundary[n / 2 - 1] + boundary[n / 2]);
         result.boundary_mean = std::accumulate(boundary.begin(), boundary.end(), 0.0) / double(n);
         if (weightOf(kBoundaryTerm) > 0) {
-            result.terms[kBoundaryTerm] = 2.0 / (2.0 + result.boundary_median);
+            // Within 1 px is as near as a person marks it: no reason to buy more.
+            result.terms[kBoundaryTerm] = 2.0 / (2.0 + std::max(0.0, result.boundary_median - 1.0));
             sum += weightOf(kBoundaryTerm) * result.terms[kBoundaryTerm];
             weight_sum += weightOf(kBoundaryTerm);
         }

@@ -31,6 +31,8 @@ struct Tally
     std::map<std::string, ClassScore> classes; ///< by scoredClassName
     std::vector<double> boundary;              ///< px, each frame's boundary error where scored
     std::size_t frames = 0;
+    double core_ms = 0; ///< the stages' time on the frames run whole (wall clock)
+    std::size_t timed_frames = 0;
     Tally& operator+=(const Tally& other);
 };
 

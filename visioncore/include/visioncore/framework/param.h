@@ -57,6 +57,10 @@ struct ParamInfo
     /// A setting of the scene a search may fit to annotations (`fieldsight tune`); false for
     /// one that measures nothing (a random seed), which fitting would only overfit.
     bool fitted = true;
+    /// How the value sets a frame's cost: +1 a larger value costs more (RANSAC samples, lines
+    /// kept), -1 a smaller one does (the spacing of scan lines), 0 neither. A search keeps such a
+    /// parameter within twice its default's cost unless told otherwise.
+    int work = 0;
 };
 
 /// Whether `value` suits `param` (range, whole numbers for integers and choices, a known choice);
@@ -74,6 +78,7 @@ struct ParamSpec
     double step = 0; ///< 0: 1 for whole numbers, (max - min) / 100 for reals
     const char* description = "";
     bool fitted = true; ///< ParamInfo::fitted
+    int work = 0;       ///< ParamInfo::work
 };
 
 /// The untyped side of a parameter, through which a stage lists and sets its parameters.

@@ -25,8 +25,8 @@ inline constexpr const char* kBoundaryTerm = "boundary";
 /// What a set of parameters scores on some frames (docs/formats.md, "How tune scores"):
 /// total = sum over terms of weight x term / sum of the weights of the terms counted, where a
 /// scored kind's term is its F1 (counted only when the frames have a true object or a detection
-/// of it) and the boundary's is 2 / (2 + median per-frame boundary error in px) (counted when
-/// some frame has both boundaries).
+/// of it) and the boundary's is 2 / (2 + max(0, median per-frame boundary error - 1 px))
+/// (counted when some frame has both boundaries).
 struct TuneScore
 {
     double total = 0;                          ///< in [0, 1]
@@ -35,6 +35,9 @@ struct TuneScore
     double boundary_median = -1;               ///< px; negative when not scored
     double boundary_mean = -1;                 ///< px; negative when not scored
     std::size_t frames = 0;
+    /// The core's mean time a frame in ms (wall clock, so only a guide: a parameter that makes
+    /// a frame cost more shows here); negative when no frame was run whole.
+    double ms_per_frame = -1;
 };
 
 /// F1 of a class score (1 when there was nothing to find and nothing found).
@@ -87,6 +90,9 @@ struct TuneOptions
     /// Keep what the first stages made of each frame while only later stages' parameters move
     /// (the same result either way, sooner; false for a test that checks that).
     bool reuse_stages = true;
+    /// Let a parameter that sets a frame's cost (ParamInfo::work) go beyond twice its default's
+    /// cost (samples up to 2x the default, spacings down to half).
+    bool allow_costly = false;
     std::function<void(const TuneProgress&)> progress; ///< called on the calling thread
     const std::atomic<bool>* cancel = nullptr; ///< stops the search; the best so far is kept
 };

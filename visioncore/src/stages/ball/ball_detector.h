@@ -47,7 +47,7 @@ private:
         1.5,
         {"max_fit_error", "px", 0.1, 20, 0.1, "How far an edge point may lie from the circle."}};
     Param<int> m_iterations{
-        this, 100, {"iterations", "", 1, 10000, 1, "Circle RANSAC samples, at most."}};
+        this, 100, {"iterations", "", 1, 10000, 1, "Circle RANSAC samples, at most.", true, +1}};
     Param<double> m_min_edge_support{
         this,
         0.25,

@@ -30,12 +30,13 @@ private:
     // With locality sampling 15 samples find what 40 independent ones did (B-Human log: 559 lines
     // in 160 frames against 558; 10 samples lost 7%), in half the time.
     Param<int> m_iterations{
-        this, 15, {"iterations", "", 1, 10000, 1, "RANSAC samples per line, at most."}};
+        this, 15, {"iterations", "", 1, 10000, 1, "RANSAC samples per line, at most.", true, +1}};
     Param<double> m_max_error{
         this,
         2.5,
         {"max_error", "px", 0.5, 50, 0.5, "How far a line point may lie from its line."}};
-    Param<int> m_max_lines{this, 6, {"max_lines", "", 1, 50, 1, "Most lines found per frame."}};
+    Param<int> m_max_lines{
+        this, 6, {"max_lines", "", 1, 50, 1, "Most lines found per frame.", true, +1}};
     Param<double> m_merge_angle{
         this,
         0.1,

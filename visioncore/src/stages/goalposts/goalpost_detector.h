@@ -24,13 +24,17 @@ private:
     Param<int> m_min_points{
         this, 6, {"min_points", "", 2, 100, 1, "Edge points needed for a post edge."}};
     Param<int> m_iterations{
-        this, 100, {"iterations", "", 1, 10000, 1, "RANSAC samples per edge line, at most."}};
+        this,
+        100,
+        {"iterations", "", 1, 10000, 1, "RANSAC samples per edge line, at most.", true, +1}};
     Param<double> m_max_error{
         this,
         5,
         {"max_error", "px", 0.5, 50, 0.5, "How far an edge point may lie from its edge line."}};
     Param<int> m_max_lines{
-        this, 3, {"max_lines", "", 1, 10, 1, "Edge lines per side (left and right edges)."}};
+        this,
+        3,
+        {"max_lines", "", 1, 10, 1, "Edge lines per side (left and right edges).", true, +1}};
     Param<double> m_matching_tolerance{
         this,
         0.2,

@@ -35,10 +35,10 @@ private:
     /// With edge_lines: moves the scan points above the field's edge lines to the thrown points.
     void throwAboveEdge(Blackboard& bb);
 
-    Param<int> m_scan_spacing{
-        this,
-        11,
-        {"scan_spacing", "px", 1, 64, 1, "Distance between the columns scanned for green."}};
+    Param<int> m_scan_spacing{this,
+                              11,
+                              {"scan_spacing", "px", 1, 64, 1,
+                               "Distance between the columns scanned for green.", true, -1}};
     Param<int> m_min_green_pixels{
         this,
         5,

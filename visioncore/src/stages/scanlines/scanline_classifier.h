@@ -24,9 +24,13 @@ public:
 
 private:
     Param<int> m_horizontal_spacing{
-        this, 4, {"horizontal_spacing", "px", 1, 64, 1, "Rows between horizontal scan lines."}};
+        this,
+        4,
+        {"horizontal_spacing", "px", 1, 64, 1, "Rows between horizontal scan lines.", true, -1}};
     Param<int> m_vertical_spacing{
-        this, 4, {"vertical_spacing", "px", 1, 64, 1, "Columns between vertical scan lines."}};
+        this,
+        4,
+        {"vertical_spacing", "px", 1, 64, 1, "Columns between vertical scan lines.", true, -1}};
     ScanlineBuffers m_buffers;
 };
 
