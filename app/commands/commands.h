@@ -21,6 +21,8 @@ int synthCommand(const QStringList& args, const Context& ctx);
 /// `import LOG --out DIR`: a robot's log folder (a B-Human log) made into a stream folder.
 int importCommand(const QStringList& args, const Context& ctx);
 int lutCommand(const QStringList& args, const Context& ctx);
+/// `tune STREAM --out PARAMS`: the stages' parameters fitted to the stream's annotations.
+int tuneCommand(const QStringList& args, const Context& ctx);
 /// The GUI: makes the QApplication from `argc` and `argv` (which hold the program name, then
 /// "gui" or nothing, then the GUI's arguments), opens the main window and runs it.
 int guiCommand(int& argc, char** argv, const Context& ctx);

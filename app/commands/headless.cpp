@@ -45,6 +45,11 @@ const std::vector<Synopsis>& synopses()
         {"annotations import-dnt",
          "LABELS --stream STREAM [--out FILE] [--post-width PX] [--orientation DEG]",
          "the Dutch Nao Team's goal-post labels"},
+        {"tune",
+         "STREAM --out PARAMS [--annotations FILE] [--stages STAGE,...] [--budget N] [--seed S] "
+         "[--holdout SHARE] [--weight TERM=W] [--json FILE] [--lut FILE] [--set STAGE.PARAM=VALUE] "
+         "[--params FILE] [--orientation DEG] [--threads N]",
+         "parameters fitted to the annotations"},
         {"import", "LOG --out DIR [--params FILE] [--set STAGE.PARAM=VALUE]",
          "a B-Human log folder made a stream: frames, kinematic horizons, colour table"},
     };
@@ -125,6 +130,8 @@ int runCommandWord(const QString& command, const QStringList& args, const Contex
         return importCommand(args, ctx);
     if (command == "lut")
         return lutCommand(args, ctx);
+    if (command == "tune")
+        return tuneCommand(args, ctx);
     if (command == "help" || command == "--help" || command == "-h") {
         ctx.out << usageText(ctx.pipeline);
         return kExitOk;

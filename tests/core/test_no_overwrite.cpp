@@ -157,6 +157,8 @@ class TestNoOverwrite : public QObject
                     "--out",       fresh + ".json"};
         if (key == "import")
             return {"import", m_log, "--out", fresh};
+        if (key == "tune")
+            return {"tune", a, "--budget", "3", "--out", fresh + ".json"};
         return {};
     }
 

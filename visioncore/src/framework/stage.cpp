@@ -41,6 +41,7 @@ ParamBase::ParamBase(Stage* owner, ParamKind kind, double default_value, const P
     if (m_info.scales_with_width)
         m_scale = &owner->m_pixel_scale;
     m_info.description = spec.description;
+    m_info.fitted = spec.fitted;
     m_info.default_value = default_value;
     m_info.min = spec.min;
     m_info.max = spec.max;

@@ -54,6 +54,9 @@ struct ParamInfo
     double max = 0;
     double step = 1;                  ///< a sensible increment for a spin box or slider
     std::vector<ParamChoice> choices; ///< Choice only
+    /// A setting of the scene a search may fit to annotations (`fieldsight tune`); false for
+    /// one that measures nothing (a random seed), which fitting would only overfit.
+    bool fitted = true;
 };
 
 /// Whether `value` suits `param` (range, whole numbers for integers and choices, a known choice);
@@ -70,6 +73,7 @@ struct ParamSpec
     double max = 0;
     double step = 0; ///< 0: 1 for whole numbers, (max - min) / 100 for reals
     const char* description = "";
+    bool fitted = true; ///< ParamInfo::fitted
 };
 
 /// The untyped side of a parameter, through which a stage lists and sets its parameters.

@@ -29,11 +29,11 @@ inline constexpr const char* kBoundaryTerm = "boundary";
 /// some frame has both boundaries).
 struct TuneScore
 {
-    double total = 0;                              ///< in [0, 1]
-    std::map<std::string, ClassScore> classes;     ///< by scoredClassName
-    std::map<std::string, double> terms;           ///< the terms counted, by class name / "boundary"
-    double boundary_median = -1;                   ///< px; negative when not scored
-    double boundary_mean = -1;                     ///< px; negative when not scored
+    double total = 0;                          ///< in [0, 1]
+    std::map<std::string, ClassScore> classes; ///< by scoredClassName
+    std::map<std::string, double> terms;       ///< the terms counted, by class name / "boundary"
+    double boundary_median = -1;               ///< px; negative when not scored
+    double boundary_mean = -1;                 ///< px; negative when not scored
     std::size_t frames = 0;
 };
 
@@ -74,7 +74,7 @@ struct TuneOptions
     /// Weight of each term (a class name such as "ball", or "boundary"); unnamed terms weigh 1,
     /// a weight of 0 leaves a term out.
     std::map<std::string, double, std::less<>> weights;
-    int threads = 0; ///< 0: one per core
+    int threads = 0;                                   ///< 0: one per core
     std::function<void(const TuneProgress&)> progress; ///< called on the calling thread
     const std::atomic<bool>* cancel = nullptr; ///< stops the search; the best so far is kept
 };
@@ -82,17 +82,18 @@ struct TuneOptions
 struct TuneResult
 {
     ParamSet start; ///< the parameters it started from (the stream's own, or the input's)
-    /// What to save: the start's values that differ from the defaults, and every change.
+    /// What to save: the values that differ from the defaults, and every change (a value put
+    /// back to its default is written too, so the file wins over the stream's own).
     ParamSet params;
-    std::vector<TuneChange> changes;                 ///< pipeline order
-    TuneScore start_fit, start_holdout;              ///< the start on fit and held-out frames
-    TuneScore tuned_fit, tuned_holdout;              ///< the result on the same frames
+    std::vector<TuneChange> changes;                     ///< pipeline order
+    TuneScore start_fit, start_holdout;                  ///< the start on fit and held-out frames
+    TuneScore tuned_fit, tuned_holdout;                  ///< the result on the same frames
     std::vector<std::string> fit_frames, holdout_frames; ///< by name, in stream order
     int evaluations = 0;
     /// The best fit score after each evaluation that improved it: (evaluations, score).
     std::vector<std::pair<int, double>> history;
-    int parameters = 0;    ///< parameters searched
-    double seconds = 0;    ///< wall-clock time of the search
+    int parameters = 0; ///< parameters searched
+    double seconds = 0; ///< wall-clock time of the search
     bool cancelled = false;
 };
 
@@ -105,6 +106,11 @@ Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weight
 /// stage, a bad weight, a frame the stream lacks, no scored frame) is an Error naming it.
 Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
                               const std::string& truth_path, const TuneOptions& options);
+
+/// Which of `frames` scored frames (in stream order) are held out: `share` of them, rounded to
+/// whole contiguous blocks (six blocks, or one per frame when fewer; at least one block held out
+/// and one fitted when share > 0 and there are two frames or more) picked by `seed`.
+std::vector<bool> holdoutFrames(std::size_t frames, double share, std::uint64_t seed);
 
 /// The parameters whose value differs from the default in `params`, every other dropped.
 ParamSet differingFromDefaults(const ParamSet& params, const Pipeline& pipeline);

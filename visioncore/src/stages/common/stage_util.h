@@ -28,7 +28,7 @@ inline constexpr Rgb kRejected{220, 20, 60};
 
 /// The seed parameter of every stage that samples with RANSAC (default 1).
 inline constexpr ParamSpec kRansacSeed{
-    "seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it."};
+    "seed", "", 0, 4294967295.0, 1, "RANSAC seed; every frame starts from it.", false};
 
 template <class P> DebugShape pointsShape(const std::vector<P>& points, Rgb colour, double size)
 {

@@ -1,0 +1,273 @@
+// `fieldsight tune`: the stages' parameters fitted to a stream's annotations (tuneParams),
+// written as fieldsight-params/1 with what each change bought, fit and held-out scores side by
+// side so a user sees overfitting.
+#include "commands/commands.h"
+
+#include "visioncore/basics/json_text.h"
+#include "visioncore/services/param_tuning.h"
+
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+namespace fieldsight::cli {
+namespace {
+
+inline const OutputFileKind kTuneFile{"fieldsight-tune/1", {}, false, true};
+
+std::atomic<bool> g_interrupted{false};
+
+/// Ctrl+C stops the search and keeps the best so far; a second one ends the program.
+extern "C" void onInterrupt(int)
+{
+    g_interrupted.store(true);
+    std::signal(SIGINT, SIG_DFL);
+}
+
+std::string scoreCell(const TuneScore& s, const std::string& term)
+{
+    char cell[64];
+    if (term == kBoundaryTerm) {
+        if (s.boundary_median < 0)
+            return "-";
+        std::snprintf(cell, sizeof cell, "%.2f px", s.boundary_median);
+        return cell;
+    }
+    const auto c = s.classes.find(term);
+    if (c == s.classes.end() || c->second.tp + c->second.fp + c->second.fn == 0)
+        return "-";
+    std::snprintf(cell, sizeof cell, "%.2f/%.2f", c->second.precision(), c->second.recall());
+    return cell;
+}
+
+std::string tuneTable(const std::string& stream, const TuneResult& r, const TuneOptions& o)
+{
+    std::string text;
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "fieldsight tune: %s, %zu scored frames: %zu fitted, %zu held out (seed %llu)\n",
+                  stream.c_str(), r.fit_frames.size() + r.holdout_frames.size(),
+                  r.fit_frames.size(), r.holdout_frames.size(), (unsigned long long)o.seed);
+    text += line;
+    std::snprintf(line, sizeof line, "%d parameters searched, %d evaluations in %.1f s%s\n",
+                  r.parameters, r.evaluations, r.seconds,
+                  r.cancelled ? " (interrupted: the best so far)" : "");
+    text += line;
+    std::snprintf(line, sizeof line, "%-11s %-23s %-23s\n", "", "fit frames", "held-out frames");
+    text += line;
+    std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s\n", "class", "start", "tuned",
+                  "start", "tuned");
+    text += line;
+    std::vector<std::string> terms;
+    for (const PerceptKind* kind : scoredKinds())
+        terms.push_back(scoredClassName(*kind));
+    terms.push_back(kBoundaryTerm);
+    for (const std::string& term : terms) {
+        std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s\n", term.c_str(),
+                      scoreCell(r.start_fit, term).c_str(), scoreCell(r.tuned_fit, term).c_str(),
+                      scoreCell(r.start_holdout, term).c_str(),
+                      scoreCell(r.tuned_holdout, term).c_str());
+        text += line;
+    }
+    const bool held = !r.holdout_frames.empty();
+    std::snprintf(line, sizeof line, "%-11s %-11.3f %-11.3f %-11s %-11s\n", "score",
+                  r.start_fit.total, r.tuned_fit.total,
+                  held ? std::to_string(r.start_holdout.total).substr(0, 5).c_str() : "-",
+                  held ? std::to_string(r.tuned_holdout.total).substr(0, 5).c_str() : "-");
+    text += line;
+    text += "(precision/recall per class; boundary: median error; score: docs/formats.md)\n";
+    if (r.changes.empty()) {
+        text += "no change beats the start on the fit frames\n";
+        return text;
+    }
+    text += "changed (what each buys on the fit frames: the score without it is lower by):\n";
+    for (const TuneChange& c : r.changes) {
+        std::string terms_text;
+        for (const auto& [term, gain] : c.term_gain)
+            if (std::abs(gain) >= 0.0005) {
+                char t[64];
+                std::snprintf(t, sizeof t, "%s%s %+.3f", terms_text.empty() ? "" : ", ",
+                              term.c_str(), gain);
+                terms_text += t;
+            }
+        std::snprintf(line, sizeof line, "  %-36s %10g -> %-10g %+.4f%s%s%s\n",
+                      (c.stage + "." + c.name).c_str(), c.before, c.after, c.gain,
+                      terms_text.empty() ? "" : " (", terms_text.c_str(),
+                      terms_text.empty() ? "" : ")");
+        text += line;
+    }
+    return text;
+}
+
+std::string tuneJson(const std::string& stream, const std::string& out, const TuneResult& r,
+                     const TuneOptions& o)
+{
+    using Json = nlohmann::ordered_json;
+    auto score = [](const TuneScore& s) {
+        Json j;
+        j["score"] = rounded(s.total, 6);
+        j["frames"] = s.frames;
+        Json classes = Json::object();
+        for (const auto& [name, c] : s.classes)
+            classes[name] = {{"tp", c.tp}, {"fp", c.fp}, {"fn", c.fn}};
+        j["classes"] = std::move(classes);
+        j["boundary_median_px"] =
+            s.boundary_median < 0 ? Json() : Json(rounded(s.boundary_median, 4));
+        j["boundary_mean_px"] = s.boundary_mean < 0 ? Json() : Json(rounded(s.boundary_mean, 4));
+        return j;
+    };
+    Json j;
+    j["format"] = "fieldsight-tune/1";
+    j["stream"] = stream;
+    j["params"] = out;
+    j["seed"] = o.seed;
+    j["budget"] = o.budget;
+    j["evaluations"] = r.evaluations;
+    j["seconds"] = rounded(r.seconds, 3);
+    j["cancelled"] = r.cancelled;
+    j["fit_frames"] = r.fit_frames;
+    j["holdout_frames"] = r.holdout_frames;
+    j["start"] = {{"fit", score(r.start_fit)}, {"holdout", score(r.start_holdout)}};
+    j["tuned"] = {{"fit", score(r.tuned_fit)}, {"holdout", score(r.tuned_holdout)}};
+    Json changes = Json::array();
+    for (const TuneChange& c : r.changes)
+        changes.push_back({{"stage", c.stage},
+                           {"param", c.name},
+                           {"before", c.before},
+                           {"after", c.after},
+                           {"gain", rounded(c.gain, 6)}});
+    j["changes"] = std::move(changes);
+    Json history = Json::array();
+    for (const auto& [evaluations, best] : r.history)
+        history.push_back({evaluations, rounded(best, 6)});
+    j["history"] = std::move(history);
+    return jsonText(j, 2) + "\n";
+}
+
+} // namespace
+
+int tuneCommand(const QStringList& args, const Context& ctx)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "Fits the stages' parameters to the stream's annotations: searches their registered "
+        "ranges to maximise the score on some annotated frames, scores the others (held out) "
+        "too, and writes the parameters that differ from the defaults. Ctrl+C stops the search "
+        "and keeps the best so far.");
+    parser.addPositionalArgument("STREAM", "Image folder or .strm file.");
+    parser.addOption({"out", "The fitted parameters (fieldsight-params/1).", "PARAMS"});
+    parser.addOption({"annotations",
+                      "Annotations to fit (default: annotations.json in the stream folder).",
+                      "FILE"});
+    parser.addOption(
+        {"stages", "Only these stages' parameters (default: every stage).", "STAGE,..."});
+    parser.addOption({"budget", "Evaluations of a parameter set, at most (default 1500).", "N"});
+    parser.addOption({"seed", "Seed of the search and of the held-out frames (default 1).", "S"});
+    parser.addOption({"holdout",
+                      "Share of the annotated frames held out, in contiguous blocks (default "
+                      "0.33; 0 fits them all).",
+                      "SHARE"});
+    parser.addOption({"weight",
+                      "Weight of a score term, e.g. obstacle=2 or boundary=0 (repeatable; "
+                      "terms: ball, goalpost, obstacle, field_line, boundary; default 1).",
+                      "TERM=W"});
+    parser.addOption({"json", "Also write the report as fieldsight-tune/1 JSON.", "FILE"});
+    parser.addOption(lutOption());
+    parser.addOption(setOption());
+    parser.addOption(paramsOption());
+    parser.addOption(orientationOption());
+    parser.addOption(threadsOption("0"));
+    if (auto done = parseCommand(parser, "tune", args, 1, 1, ctx))
+        return *done;
+
+    try {
+        const std::string stream = toLocalPath(parser.positionalArguments().first());
+        if (!parser.isSet("out"))
+            return badInput(ctx, "tune: --out PARAMS is required");
+        const std::string out = toLocalPath(parser.value("out"));
+        const std::string json = toLocalPath(parser.value("json"));
+        const std::string truth_path = parser.isSet("annotations")
+                                           ? toLocalPath(parser.value("annotations"))
+                                           : defaultTruthPath(stream);
+        const std::vector<std::string> inputs{stream, truth_path, toLocalPath(parser.value("lut")),
+                                              toLocalPath(parser.value("params"))};
+        if (Status s = checkOutputFile("tune --out", out, inputs, kParamsFile); !s)
+            return badInput(ctx, s.error().message);
+        if (Status s = checkOutputFile("tune --json", json, inputs, kTuneFile); !s)
+            return badInput(ctx, s.error().message);
+        if (!json.empty() && json == out)
+            return badInput(ctx, "tune: --json and --out name the same file");
+
+        TuneOptions options;
+        QString error;
+        const auto budget = intOption(parser, "budget", options.budget, 1, error);
+        const auto seed =
+            intOption(parser, "seed", 1, 0, error, std::numeric_limits<long long>::max());
+        const auto threads = intOption(parser, "threads", 0, 0, error);
+        if (!budget || !seed || !threads)
+            return badInput(ctx, "tune: " + error);
+        options.budget = int(*budget);
+        options.seed = std::uint64_t(*seed);
+        options.threads = int(*threads);
+        if (parser.isSet("holdout")) {
+            bool ok = false;
+            options.holdout = parser.value("holdout").toDouble(&ok);
+            if (!ok || options.holdout < 0 || options.holdout > 0.9)
+                return badInput(ctx, "tune: --holdout must be a share from 0 to 0.9, not '" +
+                                         parser.value("holdout") + "'");
+        }
+        for (const QString& w : parser.values("weight")) {
+            const auto parts = w.split('=');
+            bool ok = parts.size() == 2;
+            const double value = ok ? parts[1].toDouble(&ok) : 0;
+            if (!ok)
+                return badInput(ctx, "tune: --weight takes TERM=W, not '" + w + "'");
+            options.weights[parts[0].toStdString()] = value;
+        }
+        if (Status s = checkTuneWeights(options.weights); !s)
+            return badInput(ctx, "tune --weight: " + s.error().message);
+        for (const QString& id : parser.value("stages").split(',', Qt::SkipEmptyParts))
+            options.stages.push_back(id.trimmed().toStdString());
+
+        auto input = openInput(parser, stream, ctx);
+        if (!input)
+            return badInput(ctx, input.error().message);
+        auto truth = Annotations::load(truth_path, ctx.pipeline.perceptKinds(),
+                                       input.value().info().frame_count);
+        if (!truth)
+            return badInput(ctx, truth.error().message);
+
+        const bool terminal = &ctx.err == &std::cerr && isatty(STDERR_FILENO);
+        options.progress = [&](const TuneProgress& p) {
+            if (terminal)
+                ctx.err << "\rtune: " << p.evaluations << " of " << p.budget
+                        << " evaluations, best fit score " << rounded(p.best_fit, 4) << std::flush;
+        };
+        g_interrupted.store(false);
+        options.cancel = &g_interrupted;
+        auto* previous = std::signal(SIGINT, onInterrupt);
+        auto result = tuneParams(input.value(), truth.value(), truth_path, options);
+        std::signal(SIGINT, previous == SIG_ERR ? SIG_DFL : previous);
+        if (terminal)
+            ctx.err << "\r\033[K" << std::flush;
+        if (!result)
+            return badInput(ctx, result.error().message);
+        if (Status s = result.value().params.save(out); !s) {
+            printError(ctx.err, s.error().message);
+            return kExitFailure;
+        }
+        std::string table = tuneTable(stream, result.value(), options);
+        table += "wrote " + out + "\n";
+        return finishReport(ctx, table, json, tuneJson(stream, out, result.value(), options));
+    } catch (const std::exception& e) {
+        return failure(ctx, "tune", e);
+    }
+}
+
+} // namespace fieldsight::cli

@@ -1,0 +1,182 @@
+// The parameter search's frames and scoring: every scored frame decoded once, a seeded split
+// into fit and held-out blocks, and one parameter set scored by matchFrame (THE matching path).
+#include "param_tuning_eval.h"
+
+#include "visioncore/basics/splitmix.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <numeric>
+#include <stdexcept>
+
+namespace fieldsight {
+
+double f1Score(const ClassScore& score)
+{
+    const int denominator = 2 * score.tp + score.fp + score.fn;
+    return denominator == 0 ? 1.0 : 2.0 * score.tp / double(denominator);
+}
+
+Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights)
+{
+    for (const auto& [name, weight] : weights) {
+        bool known = name == kBoundaryTerm;
+        for (const PerceptKind* kind : scoredKinds())
+            known = known || scoredClassName(*kind) == name;
+        if (!known) {
+            std::string names;
+            for (const PerceptKind* kind : scoredKinds())
+                names += scoredClassName(*kind) + ", ";
+            return Error{"unknown score term '" + name + "' (known: " + names + kBoundaryTerm +
+                         ")"};
+        }
+        if (!(weight >= 0) || !std::isfinite(weight))
+            return Error{"the weight of '" + name + "' must be a number >= 0"};
+    }
+    return {};
+}
+
+ParamSet differingFromDefaults(const ParamSet& params, const Pipeline& pipeline)
+{
+    ParamSet out;
+    for (const auto& [stage, values] : params.values) {
+        const StageDescriptor* descriptor = pipeline.find(stage);
+        for (const auto& [name, value] : values) {
+            bool is_default = false;
+            if (descriptor)
+                for (const ParamInfo& p : descriptor->params)
+                    is_default = is_default || (p.name == name && p.default_value == value);
+            if (!is_default)
+                out.set(stage, name, value);
+        }
+    }
+    return out;
+}
+
+std::vector<bool> holdoutFrames(std::size_t frames, double share, std::uint64_t seed)
+{
+    std::vector<bool> held(frames, false);
+    if (frames < 2 || share <= 0)
+        return held;
+    const std::size_t blocks = std::min<std::size_t>(6, frames);
+    const std::size_t hold =
+        std::clamp<std::size_t>(std::size_t(std::lround(double(blocks) * share)), 1, blocks - 1);
+    std::vector<std::size_t> order(blocks);
+    std::iota(order.begin(), order.end(), 0);
+    SplitMix64 random(seed ^ 0x686f6c646f7574ull); // "holdout"
+    for (std::size_t i = blocks - 1; i > 0; --i)   // Fisher-Yates, the same on every platform
+        std::swap(order[i], order[random() % (i + 1)]);
+    for (std::size_t b = 0; b < hold; ++b) {
+        const std::size_t block = order[b];
+        for (std::size_t f = block * frames / blocks; f < (block + 1) * frames / blocks; ++f)
+            held[f] = true;
+    }
+    return held;
+}
+
+namespace tuning {
+
+Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annotations& truth,
+                                                const std::string& truth_path, int threads)
+{
+    auto names = scoredFrameIndices(input, truth, truth_path);
+    if (!names)
+        return names.error();
+    if (names.value().empty())
+        return Error{truth_path + ": no frame is done or reviewed, so there is nothing to fit"};
+    std::map<std::size_t, std::vector<std::string>> by_index;
+    for (const auto& [name, index] : names.value())
+        by_index[index].push_back(name);
+    std::vector<std::size_t> indices;
+    for (const auto& [index, _] : by_index)
+        indices.push_back(index);
+
+    std::mutex mutex;
+    std::map<std::size_t, Frame> decoded;
+    RunHooks hooks;
+    hooks.prefilter = [&](std::size_t index, const Frame& frame) {
+        Frame copy = frame;
+        copy.ycbcr = frame.ycbcr.clone(); // the reader may reuse its buffer
+        const std::lock_guard lock(mutex);
+        decoded.emplace(index, std::move(copy));
+        return false;
+    };
+    auto run = runStream(input, indices, threads, hooks);
+    if (!run)
+        return run.error();
+    std::vector<HeldFrame> frames;
+    for (const auto& [index, frame_names] : by_index) {
+        for (const std::string& name : frame_names) {
+            HeldFrame held;
+            held.index = index;
+            held.name = name;
+            held.frame = decoded.at(index);
+            held.truth = &truth.frames.at(name);
+            frames.push_back(std::move(held));
+        }
+    }
+    return frames;
+}
+
+Scorer::Scorer(const StreamInput& input)
+    : m_data(input.lut), m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline))
+{
+    for (const std::string& id : input.skip)
+        if (Status s = m_control->setStageEnabled(id, false); !s)
+            throw std::invalid_argument(s.error().message);
+}
+
+TuneScore Scorer::score(const ParamSet& params, const std::vector<HeldFrame>& frames,
+                        const std::vector<std::size_t>& positions,
+                        const std::map<std::string, double, std::less<>>& weights)
+{
+    m_control->resetParams();
+    if (Status s = m_control->applyParams(params); !s)
+        throw std::invalid_argument(s.error().message);
+    TuneScore result;
+    std::vector<double> boundary;
+    for (std::size_t position : positions) {
+        const HeldFrame& held = frames[position];
+        m_data.setFrame(held.frame);
+        if (auto report = m_control->runFrame(); !report)
+            throw std::invalid_argument(held.name + ": " + report.error().message);
+        const FrameMatch match = matchFrame(m_control->blackboard().percepts, *held.truth,
+                                            held.frame.ycbcr.cols, held.frame.ycbcr.rows);
+        for (const KindMatch& kind : match.kinds)
+            result.classes[scoredClassName(*kind.kind)] += kind.score;
+        if (match.boundary_error >= 0)
+            boundary.push_back(match.boundary_error);
+        ++result.frames;
+    }
+    const auto weightOf = [&](const std::string& term) {
+        const auto w = weights.find(term);
+        return w == weights.end() ? 1.0 : w->second;
+    };
+    double sum = 0;
+    double weight_sum = 0;
+    for (const auto& [name, score] : result.classes) {
+        if (score.tp + score.fp + score.fn == 0 || weightOf(name) == 0)
+            continue;
+        result.terms[name] = f1Score(score);
+        sum += weightOf(name) * result.terms[name];
+        weight_sum += weightOf(name);
+    }
+    if (!boundary.empty()) {
+        std::sort(boundary.begin(), boundary.end());
+        const std::size_t n = boundary.size();
+        result.boundary_median =
+            n % 2 ? boundary[n / 2] : 0.5 * (boundary[n / 2 - 1] + boundary[n / 2]);
+        result.boundary_mean = std::accumulate(boundary.begin(), boundary.end(), 0.0) / double(n);
+        if (weightOf(kBoundaryTerm) > 0) {
+            result.terms[kBoundaryTerm] = 2.0 / (2.0 + result.boundary_median);
+            sum += weightOf(kBoundaryTerm) * result.terms[kBoundaryTerm];
+            weight_sum += weightOf(kBoundaryTerm);
+        }
+    }
+    result.total = weight_sum > 0 ? sum / weight_sum : 0;
+    return result;
+}
+
+} // namespace tuning
+} // namespace fieldsight
