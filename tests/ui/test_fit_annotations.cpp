@@ -305,7 +305,10 @@ private slots:
         QTest::mouseClick(&dialog->applyButton(), Qt::LeftButton);
         QTRY_VERIFY(!fitCommands(w).resultDialog());
         QCOMPARE(w.session().settings().undoStack().count(), steps + 1);
-        QCOMPARE(w.session().settings().paramChanges().values, r.params.values);
+        // The settings keep what differs from the defaults (a value put back to its default is
+        // no change).
+        const ParamSet tuned = differingFromDefaults(r.params, w.session().pipeline());
+        QCOMPARE(w.session().settings().paramChanges().values, tuned.values);
         for (const TuneChange& c : r.changes)
             QCOMPARE(w.session().settings().paramValue(c.stage, c.name), c.after);
         QVERIFY(allValues(w) != before);
@@ -319,7 +322,7 @@ private slots:
         QCOMPARE(w.session().settings().paramChanges().values, changes_before.values);
         QCOMPARE(w.session().lut().undoStack().index(), 1); // the table's edit is still in
         QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
-        QCOMPARE(w.session().settings().paramChanges().values, r.params.values);
+        QCOMPARE(w.session().settings().paramChanges().values, tuned.values);
 
         // The existing save path writes them as the stream's params.json.
         QVERIFY(!QFileInfo::exists(stream + "/params.json"));
@@ -328,7 +331,7 @@ private slots:
         save->trigger();
         auto saved = ParamSet::load(ui::toLocalPath(stream + "/params.json"));
         QVERIFY2(saved.ok(), saved.ok() ? "" : saved.error().message.c_str());
-        QCOMPARE(saved.value().values, r.params.values);
+        QCOMPARE(saved.value().values, tuned.values);
         QVERIFY(dialogs.unanswered.isEmpty());
 
         // The budget is offered again next time, and kept between sessions.
@@ -368,6 +371,9 @@ private slots:
         QVERIFY(progress);
         QTRY_VERIFY(progress->isVisible());
         QTRY_VERIFY(progress->labelText().contains("Best score"));
+        if (const QByteArray shot = qgetenv("FIELDSIGHT_FIT_SCREENSHOT"); !shot.isEmpty())
+            QVERIFY(progress->grab().save(
+                QString::fromLocal8Bit(shot).replace(".png", "-progress.png")));
         auto* cancel = progress->findChild<QPushButton*>();
         QVERIFY(cancel);
         QTest::mouseClick(cancel, Qt::LeftButton);

@@ -135,8 +135,9 @@ bool FitCommands::start(int budget)
     m_start_lut = input->lut;
     m_run->start(std::move(input), std::move(truth), toLocalPath(annotations.path()),
                  std::move(tune));
-    const QString label =
-        tr("Fitting the parameters to %n annotated frame(s)…", nullptr, int(scored));
+    const QString label = scored == 1 ? tr("Fitting the parameters to 1 annotated frame…")
+                                      : tr("Fitting the parameters to %1 annotated frames…")
+                                            .arg(QLocale().toString(qulonglong(scored)));
     QProgressDialog* progress =
         showProgress(&m_window, label, QStringLiteral("fit.progress"),
                      {[this] { return m_run->progress(); }, [this] { return m_run->running(); },
@@ -192,8 +193,13 @@ bool FitCommands::apply(const TuneResult& result)
 {
     PipelineSettings& settings = m_window.session().settings();
     const int changed = int(result.changes.size());
+    // The settings hold the values that differ from the defaults (the stream's own are in
+    // them already): a value the search put back to its default is dropped, as the pipeline
+    // panel drops one, rather than kept as a change.
     if (Status s = settings.setParamChanges(
-            result.params, tr("Fit to annotations (%n parameter(s))", nullptr, changed));
+            differingFromDefaults(result.params, settings.pipeline()),
+            changed == 1 ? tr("Fit to annotations (1 parameter)")
+                         : tr("Fit to annotations (%1 parameters)").arg(changed));
         !s) {
         m_window.showMessage(tr("The fitted parameters were not applied: %1")
                                  .arg(QString::fromStdString(s.error().message)));

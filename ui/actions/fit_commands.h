@@ -43,8 +43,8 @@ public:
     TuneRun& run() { return *m_run; }
     /// The result dialog shown last (null once it closed).
     FitResultDialog* resultDialog() const;
-    /// Puts `result`'s parameters in use as one undo step; false (a message says why) when the
-    /// pipeline refuses them.
+    /// Puts `result`'s parameters in use as one undo step (those equal to their default as
+    /// defaults, not changes); false (a message says why) when the pipeline refuses them.
     bool apply(const TuneResult& result);
 
 signals:
