@@ -2,6 +2,7 @@
 
 #include "ui/actions/annotation_commands.h"
 #include "ui/actions/calibrate_commands.h"
+#include "ui/actions/fit_commands.h"
 #include "ui/actions/disk_watch.h"
 #include "ui/actions/file_commands.h"
 #include "ui/actions/menus.h"
@@ -448,6 +449,8 @@ void MainWindow::saveSettings() const
     w.preview = tools.previewOn();
     if (const auto* propagate = findChild<QAction*>(QStringLiteral("object.propagate_next")))
         w.propagate_frames = propagate->data().toInt();
+    if (const auto* fit = findChild<FitCommands*>())
+        w.fit_budget = fit->budget();
     w.save();
 }
 
@@ -488,6 +491,8 @@ void MainWindow::restoreSettings()
     tools.setPreviewOn(w.preview);
     if (auto* propagate = findChild<QAction*>(QStringLiteral("object.propagate_next")))
         propagate->setData(w.propagate_frames);
+    if (auto* fit = findChild<FitCommands*>())
+        fit->setBudget(w.fit_budget);
     m_tools->activate(w.tool);
 }
 

@@ -94,6 +94,8 @@ WindowSettings WindowSettings::load()
     w.keep_others = s.value(QStringLiteral("tools/keep_others"), false).toBool();
     w.propagate_frames =
         std::clamp(s.value(QStringLiteral("tools/propagate_frames"), 10).toInt(), 1, 100000);
+    w.fit_budget =
+        std::clamp(s.value(QStringLiteral("pipeline/fit_budget"), 300).toInt(), 10, 100000);
     w.soft_classes = s.value(QStringLiteral("tools/soft_classes"), false).toBool();
     w.preview = s.value(QStringLiteral("tools/preview"), true).toBool();
     return w;
@@ -136,6 +138,7 @@ void WindowSettings::save() const
     s.setValue(QStringLiteral("tools/brush_radius"), brush_radius);
     s.setValue(QStringLiteral("tools/keep_others"), keep_others);
     s.setValue(QStringLiteral("tools/propagate_frames"), propagate_frames);
+    s.setValue(QStringLiteral("pipeline/fit_budget"), fit_budget);
     s.setValue(QStringLiteral("tools/soft_classes"), soft_classes);
     s.setValue(QStringLiteral("tools/preview"), preview);
 }

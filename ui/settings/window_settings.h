@@ -35,6 +35,7 @@ struct WindowSettings
     bool soft_classes = false;
     bool preview = true;
     int propagate_frames = 10; ///< how far the last propagation of an object went
+    int fit_budget = 300;      ///< the evaluations Pipeline > Fit to annotations was given last
     /// Why the settings were not read (the window then starts with its defaults), or empty.
     QString problem;
 
