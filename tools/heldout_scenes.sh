@@ -38,6 +38,8 @@ tuning=(
     "tune_crowded_s1 crowded 1 0.45"
     "tune_crowded_s2 crowded 2 0.45"
     "tune_crowded_s3 crowded 3 0.45"
+    "tune_lab1_s8_h40 lab1 8 0.40"
+    "tune_rc2013_s5 rc2013 5 0.45"
 )
 heldout=(
     "held_crowded_s101_h45 crowded 101 0.45"
