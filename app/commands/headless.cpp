@@ -29,7 +29,7 @@ const std::vector<Synopsis>& synopses()
          "frames fixed and broken by table or parameters B"},
         {"synth",
          "--out DIR [--scenario NAME] [--frames N|paper] [--seed S] [--width PX] [--height PX] "
-         "[--strm] [--no-png] [--drift F [--table-light P]]",
+         "[--camera-height M] [--strm] [--no-png] [--drift F [--table-light P]]",
          "a generated stream with exact ground truth"},
         {"lut convert", "IN OUT", "another team's table as a .lut"},
         {"lut build",

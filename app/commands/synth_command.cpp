@@ -13,15 +13,25 @@ int synthCommand(const QStringList& args, const Context& ctx)
     QString names;
     for (const std::string& name : synth::scenarioNames())
         names += (names.isEmpty() ? "" : ", ") + QString::fromStdString(name);
-    parser.addOption({"scenario", "One of " + names + " (default lab2).", "NAME"});
+    parser.addOption({"scenario",
+                      "One of " + names +
+                          " (default lab2). crowded is no stream of the paper's but a scene to "
+                          "test on: five robots around the ball, two of them between the camera "
+                          "and the ball and as close as 0.2 m (filling the frame); the camera "
+                          "scans often, so the ball and posts are cut by the frame's sides.",
+                      "NAME"});
     parser.addOption({"frames",
                       "Number of frames (default 30), or 'paper' for the paper's length of the "
-                      "scenario (5090, 470, 175, 2640, 625).",
+                      "scenario (5090, 470, 175, 2640, 625; crowded 300).",
                       "N"});
     parser.addOption({"seed", "Random seed (default 1).", "S"});
     parser.addOption({"out", "Stream folder to create.", "DIR"});
     parser.addOption({"width", "Image width in px (default 320).", "PX"});
     parser.addOption({"height", "Image height in px (default 240).", "PX"});
+    parser.addOption({"camera-height",
+                      "The camera's height above the carpet in m, 0.3 to 0.7 (default 0.45, "
+                      "the NAO's head); stream.json's camera.height_m says it.",
+                      "M"});
     parser.addOption({"strm", "Also write image.strm."});
     parser.addOption({"no-png", "Do not write PNG frames (needs --strm)."});
     parser.addOption({"drift",
@@ -80,6 +90,14 @@ int synthCommand(const QStringList& args, const Context& ctx)
         if (!ok || !(options.table_light >= 0 && options.table_light <= 1))
             return badInput(ctx, "synth: --table-light: expected a number from 0 to 1, got '" +
                                      parser.value("table-light") + "'");
+    }
+    if (parser.isSet("camera-height")) {
+        bool ok = false;
+        options.camera_height = parser.value("camera-height").toDouble(&ok);
+        if (!ok || !(options.camera_height >= 0.3 && options.camera_height <= 0.7))
+            return badInput(ctx, "synth: --camera-height: expected a number from 0.3 to 0.7, "
+                                 "got '" +
+                                     parser.value("camera-height") + "'");
     }
     options.write_strm = parser.isSet("strm");
     options.write_png = !parser.isSet("no-png");

@@ -9,8 +9,12 @@
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"
 
+#include "synth/scenario_script.h"
+#include "synth/stream_frame.h"
+
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -59,6 +63,37 @@ void set(ControlWrapper& core, const char* param, double value)
     const auto r = core.setParam("obstacles", param, value);
     if (!r.ok())
         qFatal("obstacles.%s: %s", param, r.error().message.c_str());
+}
+
+/// Frame `index` of the generated crowded scene (seed 1) painted in the test table's colours from
+/// the renderer's own labels, with its camera horizon and its true robots.
+struct Generated
+{
+    cv::Mat frame;
+    Horizon horizon;
+    std::vector<Obstacle> truth;
+};
+
+Generated crowdedFrame(int index)
+{
+    const synth::ScenarioScript script(synth::Scenario::Crowded, 1, 320, 240);
+    const synth::StreamFrame rendered = synth::renderStreamFrame(script, index);
+    const cv::Mat& labels = rendered.image.labels;
+    Generated g{test::filledFrame(labels.cols, labels.rows, Colour::Unclassified), rendered.horizon,
+                rendered.truth.truth.list<Obstacle>()};
+    for (int y = 0; y < labels.rows; ++y)
+        for (int x = 0; x < labels.cols; ++x)
+            fillRect(g.frame, x, y, x, y, Colour(labels.at<uchar>(y, x)));
+    return g;
+}
+
+/// The detected boxes that overlap `truth` horizontally over more than half of their own width.
+int boxesOn(const std::vector<Obstacle>& found, const Obstacle& truth)
+{
+    return int(std::count_if(found.begin(), found.end(), [&](const Obstacle& o) {
+        const int overlap = std::min(o.right, truth.right) - std::max(o.left, truth.left) + 1;
+        return 2 * overlap > o.right - o.left + 1;
+    }));
 }
 
 } // namespace
@@ -324,6 +359,28 @@ private slots:
             QVERIFY2(std::abs(far.left - far_left) <= 2 && far.right - far.left <= 19,
                      mirrored ? "mirrored" : "as drawn");
         }
+    }
+
+    /// A robot close to the camera, cut by the image's bottom and seen from behind, fills half of
+    /// the generated frame: its arm hangs beside it, ending above the bottom with field below,
+    /// and is one obstacle with the body, not a second box beside it (issue 34).
+    void aCloseRobotCutByTheBottomIsOneObstacle()
+    {
+        const Generated g = crowdedFrame(5);
+        const auto close = std::find_if(g.truth.begin(), g.truth.end(), [](const Obstacle& o) {
+            return o.right - o.left + 1 >= 150 && o.bottom >= 239;
+        });
+        QVERIFY(close != g.truth.end());
+        Seen seen(g.frame, g.horizon);
+        ControlWrapper& core = *seen.core;
+        QCOMPARE(boxesOn(obstacles(core), *close), 1);
+        for (const Obstacle& o : obstacles(core))
+            if (boxesOn({o}, *close) == 1)
+                QVERIFY2(o.right - o.left + 1 >= 0.9 * (close->right - close->left + 1),
+                         std::to_string(o.right - o.left + 1).c_str());
+
+        set(core, "cut_width_ratio", 0); // the arm is a box of its own
+        QVERIFY(boxesOn(obstacles(core), *close) >= 2);
     }
 
     void somethingFarNarrowerThanARobotIsNone()

@@ -8,6 +8,8 @@
 #include "synth/stream_frame.h"
 #include "synth/synth.h"
 
+#include "visioncore/percepts/obstacle.h"
+
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -15,6 +17,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -131,7 +134,7 @@ private slots:
     void scenarioNamesRoundTrip()
     {
         const std::vector<std::string> names = scenarioNames();
-        QCOMPARE(names.size(), std::size_t(5));
+        QCOMPARE(names.size(), std::size_t(6));
         for (const std::string& name : names) {
             const auto scenario = scenarioFromName(name);
             QVERIFY(scenario.ok());
@@ -478,6 +481,44 @@ private slots:
         }
         const double mean = double(obstacles) / kFrames;
         QVERIFY2(mean >= 3.5 && mean <= 8.5, std::to_string(mean).c_str());
+    }
+
+    /// The crowded test scene: five robots, and now and then one close enough to the camera to
+    /// fill over half of the frame's width.
+    void crowdedSceneHasARobotFillingTheFrame()
+    {
+        const ScenarioScript script(Scenario::Crowded, 1, 320, 240);
+        int widest = 0;
+        for (int i = 0; i < 120; i += 4) {
+            const Scene scene = script.sceneAt(i);
+            QCOMPARE(
+                std::count_if(scene.objects.begin(), scene.objects.end(),
+                              [](const SceneObject& o) { return o.kind == ObjectKind::Robot; }),
+                std::ptrdiff_t(5));
+            if (i % 12 != 0)
+                continue;
+            const StreamFrame frame = renderStreamFrame(script, i);
+            for (const Obstacle& o : frame.truth.truth.list<Obstacle>())
+                widest = std::max(widest, o.right - o.left + 1);
+        }
+        QVERIFY2(widest > 160, std::to_string(widest).c_str());
+    }
+
+    /// --camera-height moves the camera and nothing else of the scene; 0.45 is the default.
+    void cameraHeightMovesOnlyTheCamera()
+    {
+        const ScenarioScript usual(Scenario::RC2012, 3, 320, 240);
+        ScenarioScript low = usual;
+        low.setCameraHeight(0.35);
+        for (int i : {0, 17, 40}) {
+            const Scene a = usual.sceneAt(i);
+            const Scene b = low.sceneAt(i);
+            QVERIFY(std::abs(a.camera.position.z() - 0.45) < 0.01);
+            QVERIFY(std::abs(a.camera.position.z() - b.camera.position.z() - 0.1) < 1e-9);
+            QCOMPARE(a.objects.size(), b.objects.size());
+            for (std::size_t k = 0; k < a.objects.size(); ++k)
+                QVERIFY(a.objects[k].position == b.objects[k].position);
+        }
     }
 
     void goalpostBoxesShowYellow()

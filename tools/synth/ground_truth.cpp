@@ -354,8 +354,12 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
         case ObjectKind::Person: {
             if (box.width() < 6 || seen.visibility_parts[o] == 0)
                 break;
+            // At least half of it in view, or (close to the camera, cut by the frame) filling
+            // a quarter of the frame: an obstacle either way.
             const long full = unoccludedPixels(scene, int(o), camera);
-            if (full > 0 && double(seen.visibility_parts[o]) >= 0.5 * double(full))
+            const long seen_px = seen.visibility_parts[o];
+            if ((full > 0 && double(seen_px) >= 0.5 * double(full)) ||
+                4 * seen_px >= long(w) * long(h))
                 obstacles.push_back({box.left, box.right, box.top, box.bottom});
             break;
         }

@@ -1,4 +1,5 @@
-// The five modelled streams: surroundings, motion, light and camera quality per scenario.
+// The five modelled streams and the crowded test scene: surroundings, motion, light and camera
+// quality per scenario.
 #include "synth/scenario_script.h"
 
 #include <algorithm>
@@ -167,6 +168,19 @@ ScenarioScript::ScenarioScript(Scenario scenario, std::uint64_t seed, int width,
         s.camera_distance_max = 2.6;
         s.effects = {0.6, 0.15, 0.0, 0.0, true, {1, 1, 1}}; // "predominantly high quality"
         m_carpet = Rgbf(50, 132, 48);
+        break;
+    case Scenario::Crowded:
+        // Five robots in a competition hall, two of them between the camera and the ball and
+        // allowed close enough to fill the frame; the camera scans often, so the ball and the
+        // posts are cut by the frame's sides.
+        s.level = 1.0;
+        s.spots = 0.05;
+        s.track_bias = 0.4;
+        s.camera_distance_min = 0.6;
+        s.camera_distance_max = 2.2;
+        s.robot_clearance = 0.2;
+        s.effects = {0.7, 0.18, 1.0, 0.8, true, {1, 1, 1}};
+        m_carpet = Rgbf(44, 126, 50);
         break;
     }
     buildSurroundings(rng);
@@ -404,6 +418,15 @@ void ScenarioScript::planObjects(Rng& rng)
         m_people.back().follows_play = true;                                         // the referee
         person(Vec2(rng.uniform(-2, 2), rng.chance(0.5) ? 2.35 : -2.35), 1.0, true); // captain
         break;
+    case Scenario::Crowded:
+        occluder(rng.chance(0.5), rng.uniform(0.15, 0.35)); // close to the camera, and in view
+        m_robots.back().wy.a1 *= 0.3;                       // more often than not
+        m_robots.back().wy.a2 *= 0.3;
+        occluder(rng.chance(0.5), rng.uniform(0.45, 0.7));
+        crowd(true, rng.uniform(-0.8, -0.3), 0.3, 0.8);
+        crowd(false, rng.uniform(0.2, 0.7), 0.4, 1.0);
+        follower(rng.chance(0.5), 0.5, 1.2);
+        break;
     }
 }
 
@@ -440,7 +463,8 @@ CameraPose ScenarioScript::poseAt(double t, const Eigen::Vector2d& ball) const
     const Vec2 cam = cameraAt(t);
     const double step = 2 * kPi * m_step_hz * t + m_step_phase;
     CameraPose pose;
-    pose.position = Eigen::Vector3d(cam.x(), cam.y(), 0.45 + m_style.bob * 0.006 * std::sin(step));
+    pose.position =
+        Eigen::Vector3d(cam.x(), cam.y(), m_camera_height + m_style.bob * 0.006 * std::sin(step));
     const double r = FieldGeometry::kBallDiameter / 2;
     const Vec2 to_ball = ball - cam;
     const double yaw_ball = std::atan2(to_ball.y(), to_ball.x());

@@ -42,6 +42,8 @@ public:
     void setLightDrift(double drift, int frames, std::optional<double> held = std::nullopt);
     /// How far frame `index` is along the drift, 0..1.
     double driftPhase(int index) const;
+    /// m, the camera's height above the carpet (0.45 unless set).
+    void setCameraHeight(double metres) { m_camera_height = metres; }
     /// Seed for the sensor noise of frame `index`.
     std::uint64_t noiseSeed(int index) const;
 
@@ -110,6 +112,7 @@ private:
     double m_drift = 0;
     int m_drift_frames = 1;
     std::optional<double> m_drift_held;
+    double m_camera_height = 0.45;
 };
 
 /// The R, G, B gains of a light drifted by `drift` at `phase` (0..1) of the drift: warmer (red

@@ -42,7 +42,7 @@ double round2(double v)
 
 std::vector<std::string> scenarioNames()
 {
-    return {"lab1", "lab2", "difficult", "rc2012", "rc2013"};
+    return {"lab1", "lab2", "difficult", "rc2012", "rc2013", "crowded"};
 }
 
 Result<Scenario> scenarioFromName(const std::string& name)
@@ -75,6 +75,8 @@ int paperFrameCount(Scenario scenario)
         return 2640;
     case Scenario::RC2013:
         return 625;
+    case Scenario::Crowded:
+        return 300;
     }
     return 0;
 }
@@ -131,6 +133,9 @@ Status generateStream(const SynthOptions& options, bool* refused)
     if (!(options.drift >= 0 && options.drift <= 0.5))
         return Error{options.out_dir + ": light drift " + std::to_string(options.drift) +
                      " is out of range (0..0.5)"};
+    if (!(options.camera_height >= 0.3 && options.camera_height <= 0.7))
+        return Error{options.out_dir + ": camera height " + std::to_string(options.camera_height) +
+                     " m is out of range (0.3..0.7)"};
     if (options.width < 16 || options.height < 16 || options.width > 4096 || options.height > 4096)
         return Error{options.out_dir + ": image size " + std::to_string(options.width) + "x" +
                      std::to_string(options.height) + " is out of range (16x16..4096x4096)"};
@@ -166,6 +171,7 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
     std::error_code ec;
 
     ScenarioScript script(options.scenario, options.seed, options.width, options.height);
+    script.setCameraHeight(options.camera_height);
     // The table is voted from frames all in one light: the first frame's, or the one asked for.
     ScenarioScript first_light = script;
     if (options.table_light != 0)
@@ -193,6 +199,7 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
             : first_light;
     if (small_training && options.table_light != 0)
         training_light.setLightDrift(options.drift, options.frames, options.table_light);
+    training_light.setCameraHeight(options.camera_height);
 
     const int rendered = std::max(options.frames, kMinTrainingFrames);
     for (int i = 0; i < rendered; ++i) {
@@ -253,15 +260,16 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
         four_by_three
             ? 48.8
             : std::round(CameraModel(options.width, options.height).fovYDeg() * 100) / 100;
-    nlohmann::json manifest = {{"format", "fieldsight-stream/1"},
-                               {"pixel_format", "rgb"},
-                               {"lut", "default.lut"},
-                               {"camera", {{"fov_deg", {62.8, fov_y}}, {"height_m", 0.45}}},
-                               {"generator",
-                                {{"scenario", scenarioName(options.scenario)},
-                                 {"seed", options.seed},
-                                 {"ball_diameter_m", FieldGeometry::kBallDiameter}}},
-                               {"frames", frames}};
+    nlohmann::json manifest = {
+        {"format", "fieldsight-stream/1"},
+        {"pixel_format", "rgb"},
+        {"lut", "default.lut"},
+        {"camera", {{"fov_deg", {62.8, fov_y}}, {"height_m", options.camera_height}}},
+        {"generator",
+         {{"scenario", scenarioName(options.scenario)},
+          {"seed", options.seed},
+          {"ball_diameter_m", FieldGeometry::kBallDiameter}}},
+        {"frames", frames}};
     if (options.drift != 0)
         manifest["generator"]["light_drift"] = options.drift;
     return writeFileAtomically((dir / "stream.json").string(), manifest.dump(1) + "\n");

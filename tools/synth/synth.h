@@ -10,8 +10,9 @@
 
 namespace fieldsight::synth {
 
-/// The paper's five streams, modelled.
-enum class Scenario { Lab1, Lab2, Difficult, RC2012, RC2013 };
+/// The paper's five streams, modelled, and a crowded scene made to test on (not one of the
+/// paper's): five robots around the ball, some close enough to the camera to fill the frame.
+enum class Scenario { Lab1, Lab2, Difficult, RC2012, RC2013, Crowded };
 
 struct SynthOptions
 {
@@ -32,12 +33,15 @@ struct SynthOptions
     /// With a drift, default.lut is the ideal table of the light at this point of it instead
     /// (0: the first frame's, 1: the last frame's): the table made for a later frame's light.
     double table_light = 0;
+    /// m, the camera's height above the carpet (the NAO's head, 0.45, by default; 0.3..0.7).
+    double camera_height = 0.45;
 };
 
-std::vector<std::string> scenarioNames(); ///< "lab1", "lab2", "difficult", "rc2012", "rc2013"
+/// "lab1", "lab2", "difficult", "rc2012", "rc2013", "crowded"
+std::vector<std::string> scenarioNames();
 Result<Scenario> scenarioFromName(const std::string& name);
 std::string scenarioName(Scenario scenario);
-/// Frame counts of the paper's streams: 5090 / 470 / 175 / 2640 / 625.
+/// Frame counts of the paper's streams: 5090 / 470 / 175 / 2640 / 625 (crowded: 300).
 int paperFrameCount(Scenario scenario);
 
 /// Renders the stream beside options.out_dir, then moves it in: into a new or empty folder, or

@@ -374,10 +374,19 @@ void ObstacleDetector::run(Blackboard& bb)
         }
         // A piece on two or more scan lines standing far behind is its own robot.
         const bool apart = a.far != b.far && (a.far ? a : b).columns >= 2;
-        if (!apart &&
-            (one_robot ||
-             (neighbours && width <= m_max_width_ratio * (bottom - top + 1) &&
-              joined(a.last_x, b.first_x, std::max(a.top, b.top), std::min(a.bottom, b.bottom))))) {
+        // Something cut by the image's bottom row is close and taller than it shows, and a piece
+        // beside it that does not reach up to the green horizon (field above it) is no robot
+        // standing there but a part of the close one (an arm, a hand): their union's seen height
+        // bounds its width less (cut_width_ratio).
+        const auto hangs = [&](const Group& g) {
+            return g.bottom < h - 1 && g.top > topOfField(g.first_x, g.last_x) + maxBridged();
+        };
+        const bool close_part = (a.bottom >= h - 1 && hangs(b)) || (b.bottom >= h - 1 && hangs(a));
+        const double width_ratio =
+            close_part ? std::max<double>(m_max_width_ratio, m_cut_width_ratio) : m_max_width_ratio;
+        if (!apart && (one_robot || (neighbours && width <= width_ratio * (bottom - top + 1) &&
+                                     joined(a.last_x, b.first_x, std::max(a.top, b.top),
+                                            std::min(a.bottom, b.bottom))))) {
             a.last_x = b.last_x;
             a.top = top;
             a.bottom = bottom;
@@ -451,10 +460,13 @@ void ObstacleDetector::run(Blackboard& bb)
         }
         // A post's sides blur into what stands behind it: a box beside a post and no wider than
         // it is that fringe, not a robot (a robot is several posts wide at the same distance).
+        // The fringe ends about where the post stands: a box whose foot is half the post's
+        // height above or below its base stands elsewhere (a far robot beside a close post).
         const auto fringe = [&](const Goalpost& p) {
             const int width = p.right - p.left + 1;
+            const int rows = std::max<int>(m_max_foot_jump, (p.bottom - p.top + 1) / 2);
             return o.right - o.left + 1 <= width && o.left <= p.right + spacing + width &&
-                   o.right >= p.left - spacing - width;
+                   o.right >= p.left - spacing - width && std::abs(o.bottom - p.bottom) <= rows;
         };
         if (m_post_fringe && std::any_of(goalposts.begin(), goalposts.end(), fringe)) {
             rejectBox(o.left, o.top, o.right, o.bottom, [] {

@@ -80,6 +80,15 @@ private:
         0.75,
         {"max_width_ratio", "", 0, 5, 0.05,
          "Pieces of one robot merge while the whole is at most this wide for its height."}};
+    Param<double> m_cut_width_ratio{
+        this,
+        1.5,
+        {"cut_width_ratio", "", 0, 5, 0.05,
+         "A piece that does not reach up to the green horizon (field above it: an arm, a hand) "
+         "beside something cut by the image's bottom row (a robot close to the camera, taller "
+         "than it shows) is part of it while the whole is at most this wide for its seen "
+         "height (with a horizontal scan line crossing between them); at most max_width_ratio: "
+         "no wider than other pieces of one robot."}};
     Param<double> m_min_width_ratio{
         this,
         0,
@@ -153,8 +162,9 @@ private:
         this,
         true,
         {"post_fringe", "", 0, 1, 1,
-         "A box beside a goalpost and no wider than it is the post's blurred side, not a robot "
-         "(a robot is several posts wide at the same distance)."}};
+         "A box beside a goalpost, no wider than it and standing about where it stands (its "
+         "foot within half the post's height of the post's base) is the post's blurred "
+         "side, not a robot (a robot is several posts wide at the same distance)."}};
     Param<bool> m_white_robots{
         this,
         false,
