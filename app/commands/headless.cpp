@@ -47,7 +47,8 @@ const std::vector<Synopsis>& synopses()
          "the Dutch Nao Team's goal-post labels"},
         {"tune",
          "STREAM --out PARAMS [--annotations FILE] [--stages STAGE,...] [--budget N] [--seed S] "
-         "[--holdout SHARE] [--folds K] [--agree N] [--allow-costly] [--weight TERM=W] [--json FILE] [--lut FILE] [--set STAGE.PARAM=VALUE] "
+         "[--holdout SHARE] [--folds K] [--agree N] [--allow-costly] [--weight TERM=W] [--json "
+         "FILE] [--lut FILE] [--set STAGE.PARAM=VALUE] "
          "[--params FILE] [--orientation DEG] [--threads N]",
          "parameters fitted to the annotations"},
         {"import", "LOG --out DIR [--params FILE] [--set STAGE.PARAM=VALUE]",
