@@ -464,9 +464,10 @@ void ObstacleDetector::run(Blackboard& bb)
         // height above or below its base stands elsewhere (a far robot beside a close post).
         const auto fringe = [&](const Goalpost& p) {
             const int width = p.right - p.left + 1;
-            const int rows = std::max<int>(m_max_foot_jump, (p.bottom - p.top + 1) / 2);
+            const int foot_reach = std::max<int>(m_max_foot_jump, (p.bottom - p.top + 1) / 2);
             return o.right - o.left + 1 <= width && o.left <= p.right + spacing + width &&
-                   o.right >= p.left - spacing - width && std::abs(o.bottom - p.bottom) <= rows;
+                   o.right >= p.left - spacing - width &&
+                   std::abs(o.bottom - p.bottom) <= foot_reach;
         };
         if (m_post_fringe && std::any_of(goalposts.begin(), goalposts.end(), fringe)) {
             rejectBox(o.left, o.top, o.right, o.bottom, [] {
