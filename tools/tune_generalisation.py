@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Does `fieldsight tune` generalise? For each generated scenario: the defaults, parameters tuned
-on ANOTHER stream of the same scene (the bundled one, seed 1), and parameters tuned on the stream
+on ANOTHER stream of the same scene (the bundled one, or seed 1 where none is bundled), and parameters tuned on the stream
 itself, all scored on a held-out stream of that scene (a seed nobody tuned on).
 
     tools/tune_generalisation.py build/app/fieldsight OUTDIR [--seed 301] [--frames 30]
-        [--scenarios lab1,lab2,difficult,rc2012,rc2013] [--budget 1500]
+        [--scenarios lab1,lab2,difficult,rc2012,rc2013,crowded] [--budget 1500]
 
 Prints one table (TP/FP/FN per class and the boundary's mean error) and writes OUTDIR/report.json.
 The held-out streams are made once in OUTDIR and reused.
@@ -51,7 +51,7 @@ def main():
     parser.add_argument("--seed", type=int, default=301)
     parser.add_argument("--frames", type=int, default=30)
     parser.add_argument("--budget", type=int, default=1500)
-    parser.add_argument("--scenarios", default="lab1,lab2,difficult,rc2012,rc2013")
+    parser.add_argument("--scenarios", default="lab1,lab2,difficult,rc2012,rc2013,crowded")
     parser.add_argument("--samples", default=os.path.join(os.path.dirname(__file__), "..",
                                                           "sample_streams"))
     a = parser.parse_args()
@@ -65,6 +65,11 @@ def main():
             run([a.exe, "synth", "--scenario", scene, "--frames", str(a.frames), "--seed",
                  str(a.seed), "--out", held])
         other = os.path.join(a.samples, scene)
+        if not os.path.isdir(other):  # no bundled stream of the scene (crowded): seed 1
+            other = os.path.join(a.outdir, "%s_seed1" % scene)
+            if not os.path.exists(os.path.join(other, "annotations.json")):
+                run([a.exe, "synth", "--scenario", scene, "--frames", str(a.frames), "--seed",
+                     "1", "--out", other])
         on_other = os.path.join(a.outdir, "%s_tuned_on_seed1.json" % scene)
         on_itself = os.path.join(a.outdir, "%s_tuned_on_itself.json" % scene)
         for params, stream in ((on_other, other), (on_itself, held)):
