@@ -340,19 +340,33 @@ void searchFrom(Search& search, const std::vector<Searched>& params, ParamSet& b
     }
 }
 
-/// Puts back every change that buys nothing on the fit frames, then works out what each of the
-/// others buys (one evaluation per changed parameter each).
+/// Puts back every change, or as much of it as loses nothing on the fit frames, then works out
+/// what each change left buys (up to five evaluations per changed parameter).
 void pruneAndPrice(Search& search, const std::vector<Searched>& params, ParamSet& best,
                    TuneScore& best_score, TuneResult& result)
 {
+    // The smallest change that keeps the fit score: each change put back, or else moved a
+    // quarter, a half, three quarters of the way back (the first that loses nothing), so a
+    // coarse grid's step (a minimum radius of 12.5 where 4 does as well) is not kept for nothing.
     for (const Searched& p : params) {
-        if (valueOf(best, p) == p.start)
+        const double now = valueOf(best, p);
+        if (now == p.start)
             continue;
-        const ParamSet back = with(best, p, p.start);
-        const TuneScore score = search.scoreAll({back}, search.fit(), false).front();
-        if (score.total >= best_score.total) {
-            best = back;
-            best_score = score;
+        std::vector<double> back{p.start};
+        if (p.info.kind == ParamKind::Integer || p.info.kind == ParamKind::Real)
+            for (double t : {0.75, 0.5, 0.25}) {
+                const double v = legal(p.info, p.start + (1 - t) * (now - p.start));
+                if (v != now && std::find(back.begin(), back.end(), v) == back.end())
+                    back.push_back(v);
+            }
+        for (double v : back) {
+            const ParamSet moved = with(best, p, v);
+            const TuneScore score = search.scoreAll({moved}, search.fit(), false).front();
+            if (score.total >= best_score.total) {
+                best = moved;
+                best_score = score;
+                break;
+            }
         }
     }
     for (const Searched& p : params) {
