@@ -10,6 +10,16 @@
 
 namespace fieldsight::test {
 
+/// Copies every file of the folder `from` (frames, table, annotations) into the folder `to`,
+/// made if needed: a stream a test may write. Returns `to`.
+inline QString copyFolderFiles(const QString& from, const QString& to)
+{
+    QDir().mkpath(to);
+    for (const QString& file : QDir(from).entryList(QDir::Files))
+        QFile::copy(from + "/" + file, to + "/" + file);
+    return to;
+}
+
 /// The bundled stream the window tests open (sample_streams/lab1).
 inline QString sampleStream()
 {

@@ -42,6 +42,14 @@ inline bool openAndWait(MainWindow& w, const QString& stream)
     return waitForFrame(w, w.session().stream().currentIndex());
 }
 
+/// Shows `w` at 1280x800, waits until it is the active window, then opens `stream`.
+inline bool showAndOpen(MainWindow& w, const QString& stream)
+{
+    w.resize(1280, 800);
+    w.show();
+    return QTest::qWaitForWindowActive(&w) && openAndWait(w, stream);
+}
+
 /// Waits until the window's evaluation has finished a run with nothing pending (a report, or a
 /// problem said).
 inline bool waitForEvaluation(MainWindow& w, int ms = 60000)

@@ -116,18 +116,7 @@ class TestCalibrate : public QObject
     /// A copy of the bundled stream (frames, table, annotations) named `name`.
     QString copyStream(const QString& name)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-            QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-        return to;
-    }
-
-    bool showOn(MainWindow& w, const QString& stream)
-    {
-        w.resize(1280, 800);
-        w.show();
-        return QTest::qWaitForWindowActive(&w) && openAndWait(w, stream);
+        return test::copyFolderFiles(sampleStream(), m_dir.filePath(name));
     }
 
 private slots:
@@ -181,7 +170,7 @@ private slots:
         const QString stream = copyStream("method");
         const QByteArray on_disk = fileBytes(stream + "/default.lut");
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         const QByteArray before = lutBytes(w);
         const ColourLut before_table = w.session().lut().table();
         const int steps = w.session().lut().undoStack().count();
@@ -245,7 +234,7 @@ private slots:
     {
         const QString stream = copyStream("goal");
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         QVERIFY(waitForEvaluation(w));
         const std::vector<double> goals_before = goalColours(w);
         QVERIFY(!goals_before.empty());
@@ -309,7 +298,7 @@ private slots:
     {
         const QString stream = copyStream("cancel");
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         const QByteArray before = lutBytes(w);
         const int steps = w.session().lut().undoStack().count();
         // A run that goes on until it is cancelled (at most a minute).
@@ -357,7 +346,7 @@ private slots:
     {
         const QString stream = copyStream("damaged");
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         const QByteArray before = lutBytes(w);
         const int steps = w.session().lut().undoStack().count();
         // Damaged after the stream opened (the window shows frame 0, read before).
@@ -383,7 +372,7 @@ private slots:
         const QString first = copyStream("first");
         const QString second = copySampleFrames(m_dir.filePath("second"), 4);
         MainWindow w;
-        QVERIFY(showOn(w, first));
+        QVERIFY(showAndOpen(w, first));
         AutoLut made;
         made.lut.setCell(7, Colour::White);
         w.calibrate().run().setBuilder(

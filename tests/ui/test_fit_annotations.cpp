@@ -107,18 +107,7 @@ class TestFitAnnotations : public QObject
     /// A copy of the bundled stream (frames, table, annotations) named `name`.
     QString copyStream(const QString& name)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-            QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-        return to;
-    }
-
-    bool showOn(MainWindow& w, const QString& stream)
-    {
-        w.resize(1280, 800);
-        w.show();
-        return QTest::qWaitForWindowActive(&w) && openAndWait(w, stream);
+        return test::copyFolderFiles(sampleStream(), m_dir.filePath(name));
     }
 
 private slots:
@@ -167,7 +156,7 @@ private slots:
         const QString stream = copyStream("none");
         QVERIFY(QFile::remove(stream + "/annotations.json"));
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         const int steps = w.session().settings().undoStack().count();
         QTest::keyClick(&w, Qt::Key_F, Qt::ControlModifier | Qt::ShiftModifier);
         QVERIFY(!fitCommands(w).running());
@@ -199,7 +188,7 @@ private slots:
         ScriptedDialogs dialogs;
         const QString stream = copyStream("apply");
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         // Unsaved edits the search must see: frame 7 no longer done, and the table's orange
         // (the ball's colour) taken out.
         ui::AnnotationsDocument& doc = w.session().annotations();
@@ -348,7 +337,7 @@ private slots:
         ScriptedDialogs dialogs;
         const QString stream = copyStream("cancel");
         MainWindow w;
-        QVERIFY(showOn(w, stream));
+        QVERIFY(showAndOpen(w, stream));
         const std::map<std::string, double> before = allValues(w);
         const int steps = w.session().settings().undoStack().count();
         dialogs.numbers.push_back(100000); // far more than it is let run
@@ -411,7 +400,7 @@ private slots:
         const QString first = copyStream("first");
         const QString second = copyStream("second");
         MainWindow w;
-        QVERIFY(showOn(w, first));
+        QVERIFY(showAndOpen(w, first));
         dialogs.numbers.push_back(100000);
         QSignalSpy done(&fitCommands(w), &FitCommands::finished);
         fitAction(w)->trigger();
