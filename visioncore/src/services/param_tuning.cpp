@@ -218,7 +218,8 @@ public:
             }
         }
         if (m_options.progress)
-            m_options.progress({m_evaluations, m_options.budget, std::max(top, best_score.total)});
+            m_options.progress({m_progress_offset + m_evaluations, m_progress_total,
+                                std::max(top, best_score.total)});
         if (winner == sets.size())
             return false;
         best = sets[winner];
