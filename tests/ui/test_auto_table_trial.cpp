@@ -226,8 +226,9 @@ private slots:
                      .arg(clicks <= 3 && scores_s <= 60 ? "met" : "NOT met");
         lines << "  " + w.lastMessage();
         lines << QString("  %1 done frames, %2 reviewed").arg(s.frames).arg(s.frames_reviewed);
-        lines << scoreLine("ball", s.balls) << scoreLine("goalpost", s.goalposts)
-              << scoreLine("obstacle", s.obstacles) << scoreLine("field line", s.field_lines);
+        lines << scoreLine("ball", s.of<Ball>()) << scoreLine("goalpost", s.of<Goalpost>())
+              << scoreLine("obstacle", s.of<Obstacle>())
+              << scoreLine("field line", s.of<FieldLine>());
         if (s.boundary_frames > 0)
             lines << QString("  field boundary: mean error %1 px over %2 frames")
                          .arg(s.boundaryMeanError(), 0, 'f', 2)
@@ -238,7 +239,7 @@ private slots:
         // The table finds the ball and the posts (measured, precision/recall: NUbots ball and
         // posts 1/1; DNT posts 1/1; B-Human ball and posts 1/1, the team's own table
         // 0.903/1 and 1/1 with these parameters).
-        for (const ClassScore* c : {&s.balls, &s.goalposts}) {
+        for (const ClassScore* c : {&s.of<Ball>(), &s.of<Goalpost>()}) {
             if (c->tp + c->fn == 0)
                 continue;
             QVERIFY2(c->recall() >= 0.95 && c->precision() >= 0.9, qPrintable(lines.join("\n")));
