@@ -123,21 +123,10 @@ class TestAnnotateActions : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_annotate_actions");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
+        QCOMPARE(test::startWindowSuite("test_annotate_actions", m_dir), QString());
     }
 
-    void init()
-    {
-        QSettings().clear();
-        // No recovery file of an earlier test is offered to this one.
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void vCopiesThePreviousAnnotatedFrame()
     {

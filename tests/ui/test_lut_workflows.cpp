@@ -58,25 +58,15 @@ class TestLutWorkflows : public QObject
     /// A copy of the bundled stream's frames (and its table, with `lut`).
     QString copyStream(const QString& name, bool lut = true)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-            if (file.startsWith("frame_") || (lut && file == "default.lut"))
-                QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-        return to;
+        return copyFolderFiles(sampleStream(), m_dir.filePath(name),
+                               lut ? isFrameOrTable : isFrameFile);
     }
 
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_lut_workflows");
+        QCOMPARE(test::startWindowSuite("test_lut_workflows", m_dir), QString());
         QSettings().clear();
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init() { QSettings().clear(); }

@@ -148,17 +148,7 @@ class TestWorkflows : public QObject
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_workflows");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo::exists(QString::fromStdString(sampleStreamsDir() + "/lab1")),
-                 qPrintable("the bundled sample stream is missing: " +
-                            QString::fromStdString(sampleStreamsDir() + "/lab1")));
-    }
+    void initTestCase() { QCOMPARE(test::startWindowSuite("test_workflows", m_dir), QString()); }
 
     void init()
     {
