@@ -170,7 +170,13 @@ private slots:
         for (const std::string& layer : coreLayers())
             if (fs::is_directory(include / layer))
                 expected.push_back(layer);
-        QCOMPARE(rows, expected);
+        const auto join = [](const std::vector<std::string>& folders) {
+            std::string text;
+            for (const std::string& folder : folders)
+                text += folder + " ";
+            return QString::fromStdString(text);
+        };
+        QCOMPARE(join(rows), join(expected));
     }
 
     void layerCheckFindsUpwardIncludes()
