@@ -8,6 +8,7 @@
 // quality: the table the window got is byte for byte buildAutoLut's of the same upright frames,
 // one undo step, and the goal colour found is the pipeline's. FIELDSIGHT_TRIAL_STREAM=DIR adds a
 // stream of your own (with its annotations.json), opened without its table.
+#include "support/test_files.h"
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -128,17 +129,10 @@ class TestAutoTableTrial : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_auto_table_trial");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_auto_table_trial", m_dir), QString());
     }
 
-    void init()
-    {
-        QSettings().clear();
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void fromAnEmptyTable_data()
     {

@@ -81,13 +81,7 @@ class TestEvaluationPanel : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_evaluation_panel");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
+        QCOMPARE(test::startWindowSuite("test_evaluation_panel", m_dir), QString());
     }
 
     void init() { QSettings().clear(); }

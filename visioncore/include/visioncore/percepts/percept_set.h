@@ -3,7 +3,7 @@
 #pragma once
 
 #include "visioncore/basics/colour.h"
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 
 #include <nlohmann/json_fwd.hpp>
 
