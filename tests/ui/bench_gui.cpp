@@ -9,6 +9,8 @@
 // - a LUT edit (a click's tolerance box) to the repainted frame, and to the whole-stream effect
 //   strip fully updated, with the window's longest stall and frame steps meanwhile
 //   (`bench_gui DIR --edits-only` runs this part alone);
+// - an annotation drag: a box tool's drag, each mouse move to the view painted with it, and the
+//   frame requests the drag made (with the steps: `--steps-only` times it too);
 // - opening a 9,000-frame .strm and a folder of 9,000 PNGs, and resident memory while playing the
 //   .strm through.
 #include "commands/commands.h"
@@ -17,6 +19,7 @@
 #include "ui/settings/window_settings.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/panels/layers_panel.h"
+#include "ui/tools/annotate_tool.h"
 #include "visioncore/services/lut_editing.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
@@ -314,6 +317,74 @@ void benchStepping(const QString& label, const QString& stream)
                 double(painted) * 1000.0 / double(t.elapsed()));
 }
 
+/// An annotation drag with every layer on: a box drawn with its tool at 2x, then grabbed and
+/// moved a pixel at a time; each mouse move's time to the view painted with it (and with every
+/// frame request made meanwhile answered), and the frame requests the whole drag made.
+void benchDrag(const QString& label, const QString& stream)
+{
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    (void)QTest::qWaitForWindowActive(&w);
+    if (!open(w, stream)) {
+        std::cout << label.toStdString() << ": cannot open\n";
+        return;
+    }
+    allLayers(w);
+    (void)waitPainted(w);
+    for (const auto& tool : w.tools().tools())
+        if (auto* a = qobject_cast<ui::AnnotateTool*>(tool.get());
+            a && a->kind().form == ShapeForm::Box) {
+            w.tools().activate(a->info().id);
+            break;
+        }
+    if (!qobject_cast<ui::AnnotateTool*>(&w.tools().active())) {
+        std::cout << label.toStdString() << ": no box tool\n";
+        return;
+    }
+    constexpr int kZoom = 2;
+    w.view().setZoom(kZoom);
+    w.view().setImageOrigin({0, 0});
+    const auto at = [](int x, int y) { return QPoint(x * kZoom + 1, y * kZoom + 1); };
+    QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(40, 40));
+    QTest::mouseMove(&w.view(), at(60, 55));
+    QTest::mouseMove(&w.view(), at(80, 70));
+    QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(80, 70));
+    (void)waitPainted(w);
+    QTest::qWait(100);
+
+    // A paint counts once it shows the newest answer: a move that asks the worker again is
+    // painted only with that answer.
+    int settled = 0;
+    const QMetaObject::Connection on_paint =
+        QObject::connect(&w.view(), &ui::FrameView::painted, [&] {
+            settled += !w.session().stream().waiting() &&
+                       w.view().paintedSerial() >= w.session().stream().lastSerial();
+        });
+    const std::uint64_t serial_before = w.session().stream().lastSerial();
+    std::vector<double> move_ms;
+    QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(60, 55));
+    for (int i = 1; i <= 40; ++i) {
+        const int before = settled;
+        QElapsedTimer t;
+        t.start();
+        QTest::mouseMove(&w.view(), at(60 + i, 55 + i / 2));
+        while (settled == before && t.elapsed() < 5000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+        if (settled == before)
+            break;
+        move_ms.push_back(double(t.nsecsElapsed()) / 1e6);
+        QTest::qWait(16); // a mouse moves at about 60 events a second
+    }
+    QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(100, 75));
+    QObject::disconnect(on_paint);
+    std::printf("%-20s annotation drag    move to repaint median %5.2f ms  p95 %5.2f ms  max "
+                "%5.2f ms (%zu moves, %llu frame requests)\n",
+                qPrintable(label), percentile(move_ms, 0.5), percentile(move_ms, 0.95),
+                percentile(move_ms, 1.0), move_ms.size(),
+                static_cast<unsigned long long>(w.session().stream().lastSerial() - serial_before));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -379,6 +450,7 @@ int main(int argc, char** argv)
             continue;
         benchStepping(QStringLiteral("%1x%2 PNG folder").arg(w).arg(h), stream);
         benchStepping(QStringLiteral("%1x%2 .strm").arg(w).arg(h), stream + "/image.strm");
+        benchDrag(QStringLiteral("%1x%2 .strm").arg(w).arg(h), stream + "/image.strm");
     }
 
     if (steps_only)
