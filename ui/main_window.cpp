@@ -128,6 +128,7 @@ void MainWindow::buildCentre()
     m_view->setObjectName(QStringLiteral("frame_view"));
     m_view->setTools(m_tools);
     m_view->setStream(m_session->stream());
+    m_view->setAnnotations(m_session->annotations());
     column->addWidget(m_view, 1);
     // The bars float over the view's top: one appearing never moves the frame under the mouse.
     auto* bars = new BarOverlay(m_view);

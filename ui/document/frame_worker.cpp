@@ -182,7 +182,7 @@ bool FrameWorker::aheadAnswers(const FrameRequest& request, bool any_frame) cons
     const FrameRequest& k = m_ahead_for;
     return m_ahead && k.source == request.source && (any_frame || k.index == request.index) &&
            k.lut == request.lut && k.params == request.params && k.skip == request.skip &&
-           k.truth == request.truth && k.light == request.light;
+           k.light == request.light;
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
@@ -364,12 +364,8 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     out.result =
         collectResult(request.index, frame.name, std::move(report).value(), control.blackboard());
 
-    const PerceptSet* truth = nullptr;
-    if (request.truth) {
-        const auto it = request.truth->truth.find(frameStem(frame.name));
-        truth = it == request.truth->truth.end() ? nullptr : it->second;
-    }
-    out.drawings = frameDrawings(m_pipeline, m_layers, m_data.canvas(), out.result.percepts, truth);
+    out.drawings =
+        frameDrawings(m_pipeline, m_layers, m_data.canvas(), out.result.percepts, nullptr);
     out.items = perceptItems(out.result.percepts);
 }
 

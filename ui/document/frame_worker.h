@@ -6,8 +6,6 @@
 #include "ui/document/gui_data_wrapper.h"
 #include "ui/document/read_ahead.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "ui/document/annotations_document.h"
-#include "visioncore/io/annotations.h"
 #include "visioncore/datawrappers/camera_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/stream_runner.h"
@@ -44,8 +42,7 @@ struct FrameRequest
     std::size_t index = 0;
     std::shared_ptr<FrameSource> source;
     std::shared_ptr<const ColourLut> lut;
-    std::shared_ptr<const ParamSet> params;          ///< values that differ from the defaults
-    std::shared_ptr<const AnnotationsVersion> truth; ///< drawn on the truth layers (may be null)
+    std::shared_ptr<const ParamSet> params; ///< values that differ from the defaults
     /// "Follow the light": every frame's light from `lut`'s; a frame it covers is read through
     /// its light's input map (null: the table as it is).
     std::shared_ptr<const LightTrack> light;
@@ -75,7 +72,7 @@ struct FrameOutput
     QImage classified; ///< RGB32, every pixel in its colour class's display colour (SPEC §1)
     cv::Mat classes;   ///< CV_8U colour ids
     FrameResult result;
-    std::vector<DebugDrawing> drawings; ///< every layer, in drawing order
+    std::vector<DebugDrawing> drawings; ///< every layer but the truth's, in drawing order
     std::vector<PerceptItem> items;
     double wait_ms = 0;   ///< from the request to the worker taking it up
     double worker_ms = 0; ///< read, run and convert
@@ -86,7 +83,8 @@ class FrameWorker : public QObject
     Q_OBJECT
 public:
     /// Every layer of `pipeline` is drawn on every run, so a layer toggle needs no re-run
-    /// (the stages' drawing costs about 0.2 ms a frame at 320x240).
+    /// (the stages' drawing costs about 0.2 ms a frame at 320x240). The truth is not the
+    /// worker's to draw: the view draws it from the annotations document.
     explicit FrameWorker(const Pipeline& pipeline);
 
     /// Thread-safe. Replaces any request not yet started.

@@ -75,23 +75,11 @@ QString sessionStreamName(const QString& spec)
 }
 
 StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
-                               PipelineSettings& settings, AnnotationsDocument& annotations,
-                               QObject* parent)
-    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings),
-      m_annotations(annotations)
+                               PipelineSettings& settings, QObject* parent)
+    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
 {
     connect(&m_lut, &LutDocument::changed, this, &StreamDocument::submit);
     connect(&m_settings, &PipelineSettings::changed, this, &StreamDocument::submit);
-    connect(&m_annotations, &AnnotationsDocument::changed, this, [this](const QStringList& frames) {
-        // Only the open stream's annotations are drawn over its frames (a session adopts the
-        // next stream's annotations just before the stream).
-        if (!m_stream || m_stream->names.empty() ||
-            m_annotations.stream() != sessionStreamName(m_stream->spec))
-            return;
-        const std::string shown = m_annotations.keyOf(m_stream->names[m_index]);
-        if (frames.isEmpty() || frames.contains(QString::fromStdString(shown)))
-            submit();
-    });
     qRegisterMetaType<std::shared_ptr<const FrameOutput>>();
     m_worker = new FrameWorker(pipeline);
     m_worker->moveToThread(&m_thread);
@@ -340,7 +328,6 @@ FrameRequest StreamDocument::request() const
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
-    request.truth = m_annotations.version();
     request.light = m_light;
     return request;
 }

@@ -6,6 +6,7 @@
 
 #include "ui/document/frame_worker.h"
 #include "visioncore/basics/file_fingerprint.h"
+#include "visioncore/io/annotations.h"
 
 #include <QObject>
 #include <QString>
@@ -43,7 +44,6 @@ struct OpenedStream
     std::optional<ParamSet> params;
 };
 
-class AnnotationsDocument;
 class LutDocument;
 class PipelineSettings;
 
@@ -56,11 +56,10 @@ class StreamDocument : public QObject
     Q_OBJECT
 public:
     /// Frames are run with `lut`'s current table and `settings`' values: the document observes
-    /// both and runs the current frame again when either changes.
-    /// The truth drawn over each frame is `annotations`' (the frame is drawn again when the
-    /// annotations of the frame shown change).
+    /// both and runs the current frame again when either changes. (The truth over a frame is
+    /// the annotations document's, drawn by the view: an annotation edit runs nothing.)
     StreamDocument(const Pipeline& pipeline, LutDocument& lut, PipelineSettings& settings,
-                   AnnotationsDocument& annotations, QObject* parent = nullptr);
+                   QObject* parent = nullptr);
     ~StreamDocument() override;
 
     const Pipeline& pipeline() const { return m_pipeline; }
@@ -168,7 +167,6 @@ private:
     const Pipeline& m_pipeline;
     LutDocument& m_lut;
     PipelineSettings& m_settings;
-    AnnotationsDocument& m_annotations;
     QThread m_thread;
     FrameWorker* m_worker = nullptr;
 
