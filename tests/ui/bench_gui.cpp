@@ -1,5 +1,6 @@
 // The GUI's speed (issue 8's targets), measured offscreen on the real main window with every layer
-// on, and printed; nothing is asserted (timings depend on the machine). Label `bench`:
+// on (or those `--layers` names; `--layers default` the window's own), and printed; nothing is
+// asserted (timings depend on the machine). Label `bench`:
 //   ctest --test-dir build -L bench -R bench_gui --verbose  or  build/tests/bench_gui [DIR
 //   [--steps-only]]
 // - step: key press (Right) to the painted frame, median and 95th percentile, at 320x240,
@@ -114,9 +115,16 @@ bool open(MainWindow& w, const QString& stream)
     return opened.wait(60000) && opened.front().front().toBool() && waitPainted(w);
 }
 
-void allLayers(MainWindow& w)
+/// The layers shown: "all" unless --layers says otherwise ("default": the window's defaults).
+std::string g_layers = "all";
+
+void showLayers(MainWindow& w)
 {
-    w.layersPanel().setVisibleLayers(selectLayers("all", w.session().stream().pipeline()).value());
+    const Pipeline& pipeline = w.session().stream().pipeline();
+    w.layersPanel().setVisibleLayers(g_layers == "default"
+                                         ? ui::LayersPanel::defaultLayers(pipeline)
+                                         : selectLayers(g_layers, pipeline).value());
+    (void)waitPainted(w); // a stage layer shown runs the frame again
 }
 
 /// A click's edit at `p` of the current frame: its tolerance box becomes `colour`.
@@ -178,7 +186,7 @@ void benchEdits(const QString& label, const QString& stream, int scans)
         std::cout << label.toStdString() << ": cannot open\n";
         return;
     }
-    allLayers(w);
+    showLayers(w);
     waitForScan(w, nullptr);
     std::printf("%-20s first whole-stream scan (%zu frames) done %.2f s after the open\n",
                 qPrintable(label), w.session().effectScan().effects().size(),
@@ -248,7 +256,7 @@ void benchStepping(const QString& label, const QString& stream)
         std::cout << label.toStdString() << ": cannot open\n";
         return;
     }
-    allLayers(w);
+    showLayers(w);
     // Two rounds over the stream: steps 30 ms apart (a held key repeats at 25-40 per second, and
     // a single press comes later still), then back to back (each key as soon as the last frame
     // is painted, so the next frame's prefetch is often still running).
@@ -330,7 +338,7 @@ void benchDrag(const QString& label, const QString& stream)
         std::cout << label.toStdString() << ": cannot open\n";
         return;
     }
-    allLayers(w);
+    showLayers(w);
     (void)waitPainted(w);
     for (const auto& tool : w.tools().tools())
         if (auto* a = qobject_cast<ui::AnnotateTool*>(tool.get());
@@ -410,6 +418,10 @@ int main(int argc, char** argv)
     parser.addOption(steps_option);
     parser.addOption(edits_option);
     parser.addOption(sizes_option);
+    const QCommandLineOption layers_option(
+        "layers", "the layers shown (default all; \"default\": the window's own defaults)", "LIST",
+        "all");
+    parser.addOption(layers_option);
     parser.process(app);
     if (parser.positionalArguments().size() > 1) {
         std::cerr << "usage: bench_gui [DIR] [--steps-only | --edits-only] (bench_gui --help says "
@@ -423,8 +435,14 @@ int main(int argc, char** argv)
     const QString dir =
         parser.positionalArguments().isEmpty() ? tmp.path() : parser.positionalArguments().front();
     const bool steps_only = parser.isSet(steps_option);
+    g_layers = parser.value(layers_option).toStdString();
+    if (g_layers != "default" && !selectLayers(g_layers, Pipeline::standard())) {
+        std::cerr << "bench_gui: --layers: "
+                  << selectLayers(g_layers, Pipeline::standard()).error().message << "\n";
+        return 2;
+    }
     const bool edits_only = parser.isSet(edits_option);
-    std::printf("bench_gui: offscreen, every layer on, window 1280x800\n");
+    std::printf("bench_gui: offscreen, layers %s, window 1280x800\n", g_layers.c_str());
 
     std::vector<std::pair<int, int>> sizes;
     for (const QString& size : parser.value(sizes_option).split(',', Qt::SkipEmptyParts)) {
@@ -506,7 +524,7 @@ int main(int argc, char** argv)
     w.show();
     if (!open(w, big_strm))
         return 1;
-    allLayers(w);
+    showLayers(w);
     const double rss_start = rssMb();
     double rss_max = rss_start;
     w.navigator().setSpeed(0);

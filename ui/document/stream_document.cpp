@@ -11,6 +11,8 @@
 #include <QFileInfo>
 #include <QTimer>
 
+#include <algorithm>
+
 #include <filesystem>
 
 namespace fieldsight::ui {
@@ -78,6 +80,9 @@ StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
                                PipelineSettings& settings, QObject* parent)
     : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
 {
+    for (const LayerInfo& layer : pipeline.layers())
+        m_shown_layers.insert(layer.id);
+    m_layers = m_shown_layers;
     connect(&m_lut, &LutDocument::changed, this, &StreamDocument::submit);
     connect(&m_settings, &PipelineSettings::changed, this, &StreamDocument::submit);
     qRegisterMetaType<std::shared_ptr<const FrameOutput>>();
@@ -320,6 +325,39 @@ void StreamDocument::setLight(std::shared_ptr<const LightTrack> light)
     submit();
 }
 
+void StreamDocument::setLayersShown(const LayerSet& layers)
+{
+    m_shown_layers.clear();
+    for (const LayerInfo& layer : m_pipeline.layers())
+        if (layers.count(layer.id))
+            m_shown_layers.insert(layer.id);
+    updateLayers();
+}
+
+void StreamDocument::setAllLayersWanted(bool all)
+{
+    m_all_layers = all;
+    updateLayers();
+}
+
+void StreamDocument::updateLayers()
+{
+    LayerSet layers;
+    for (const LayerInfo& layer : m_pipeline.layers())
+        if (m_all_layers || m_shown_layers.count(layer.id))
+            layers.insert(layer.id);
+    if (layers == m_layers)
+        return;
+    m_layers = std::move(layers);
+    // A layer hidden needs nothing (the view leaves it out); one the frame shown was run without
+    // is drawn by running the frame again.
+    const bool drawn =
+        m_current && std::includes(m_current->layers.begin(), m_current->layers.end(),
+                                   m_layers.begin(), m_layers.end());
+    if (!drawn)
+        submit();
+}
+
 FrameRequest StreamDocument::request() const
 {
     FrameRequest request;
@@ -328,6 +366,7 @@ FrameRequest StreamDocument::request() const
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
+    request.layers = m_layers;
     request.light = m_light;
     return request;
 }
