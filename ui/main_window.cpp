@@ -93,10 +93,13 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     });
     connect(m_view, &FrameView::pixelHovered, this, [this](QPoint p) {
         m_hover = p;
+        // The inspector lists each stage's shapes under the pixel, shown or not.
+        m_session->stream().setAllLayersWanted(m_inspector->isVisible());
         m_inspector->inspect(m_session->stream().current().get(), p);
     });
     connect(m_view, &FrameView::hoverLeft, this, [this] {
         m_hover.reset();
+        m_session->stream().setAllLayersWanted(false);
         m_inspector->clearPixel();
     });
     connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshCellHighlights);
@@ -128,6 +131,7 @@ void MainWindow::buildCentre()
     m_view->setObjectName(QStringLiteral("frame_view"));
     m_view->setTools(m_tools);
     m_view->setStream(m_session->stream());
+    m_view->setAnnotations(m_session->annotations());
     column->addWidget(m_view, 1);
     // The bars float over the view's top: one appearing never moves the frame under the mouse.
     auto* bars = new BarOverlay(m_view);
@@ -220,6 +224,8 @@ void MainWindow::buildDocks()
     EditingSession& s = *m_session;
     m_layers = new LayersPanel(s.pipeline(), this);
     connect(m_layers, &LayersPanel::visibleLayersChanged, m_view, &FrameView::setVisibleLayers);
+    connect(m_layers, &LayersPanel::visibleLayersChanged, &s.stream(),
+            &StreamDocument::setLayersShown);
     QDockWidget* layers = dock(m_layers, tr("Layers"), "layers_dock", Qt::LeftDockWidgetArea);
     m_inspector = new InspectorPanel(s.pipeline(), this);
     QDockWidget* inspector = dock(inScrollArea(m_inspector), tr("Pixel inspector"),

@@ -1,5 +1,6 @@
 // The GUI's speed (issue 8's targets), measured offscreen on the real main window with every layer
-// on, and printed; nothing is asserted (timings depend on the machine). Label `bench`:
+// on (or those `--layers` names; `--layers default` the window's own), and printed; nothing is
+// asserted (timings depend on the machine). Label `bench`:
 //   ctest --test-dir build -L bench -R bench_gui --verbose  or  build/tests/bench_gui [DIR
 //   [--steps-only]]
 // - step: key press (Right) to the painted frame, median and 95th percentile, at 320x240,
@@ -9,6 +10,8 @@
 // - a LUT edit (a click's tolerance box) to the repainted frame, and to the whole-stream effect
 //   strip fully updated, with the window's longest stall and frame steps meanwhile
 //   (`bench_gui DIR --edits-only` runs this part alone);
+// - an annotation drag: a box tool's drag, each mouse move to the view painted with it, and the
+//   frame requests the drag made (with the steps: `--steps-only` times it too);
 // - opening a 9,000-frame .strm and a folder of 9,000 PNGs, and resident memory while playing the
 //   .strm through.
 #include "commands/commands.h"
@@ -17,6 +20,7 @@
 #include "ui/settings/window_settings.h"
 #include "ui/document/edit_effect_scan.h"
 #include "ui/panels/layers_panel.h"
+#include "ui/tools/annotate_tool.h"
 #include "visioncore/services/lut_editing.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
@@ -111,9 +115,16 @@ bool open(MainWindow& w, const QString& stream)
     return opened.wait(60000) && opened.front().front().toBool() && waitPainted(w);
 }
 
-void allLayers(MainWindow& w)
+/// The layers shown: "all" unless --layers says otherwise ("default": the window's defaults).
+std::string g_layers = "all";
+
+void showLayers(MainWindow& w)
 {
-    w.layersPanel().setVisibleLayers(selectLayers("all", w.session().stream().pipeline()).value());
+    const Pipeline& pipeline = w.session().stream().pipeline();
+    w.layersPanel().setVisibleLayers(g_layers == "default"
+                                         ? ui::LayersPanel::defaultLayers(pipeline)
+                                         : selectLayers(g_layers, pipeline).value());
+    (void)waitPainted(w); // a stage layer shown runs the frame again
 }
 
 /// A click's edit at `p` of the current frame: its tolerance box becomes `colour`.
@@ -175,7 +186,7 @@ void benchEdits(const QString& label, const QString& stream, int scans)
         std::cout << label.toStdString() << ": cannot open\n";
         return;
     }
-    allLayers(w);
+    showLayers(w);
     waitForScan(w, nullptr);
     std::printf("%-20s first whole-stream scan (%zu frames) done %.2f s after the open\n",
                 qPrintable(label), w.session().effectScan().effects().size(),
@@ -245,7 +256,7 @@ void benchStepping(const QString& label, const QString& stream)
         std::cout << label.toStdString() << ": cannot open\n";
         return;
     }
-    allLayers(w);
+    showLayers(w);
     // Two rounds over the stream: steps 30 ms apart (a held key repeats at 25-40 per second, and
     // a single press comes later still), then back to back (each key as soon as the last frame
     // is painted, so the next frame's prefetch is often still running).
@@ -314,6 +325,74 @@ void benchStepping(const QString& label, const QString& stream)
                 double(painted) * 1000.0 / double(t.elapsed()));
 }
 
+/// An annotation drag with every layer on: a box drawn with its tool at 2x, then grabbed and
+/// moved a pixel at a time; each mouse move's time to the view painted with it (and with every
+/// frame request made meanwhile answered), and the frame requests the whole drag made.
+void benchDrag(const QString& label, const QString& stream)
+{
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    (void)QTest::qWaitForWindowActive(&w);
+    if (!open(w, stream)) {
+        std::cout << label.toStdString() << ": cannot open\n";
+        return;
+    }
+    showLayers(w);
+    (void)waitPainted(w);
+    for (const auto& tool : w.tools().tools())
+        if (auto* a = qobject_cast<ui::AnnotateTool*>(tool.get());
+            a && a->kind().form == ShapeForm::Box) {
+            w.tools().activate(a->info().id);
+            break;
+        }
+    if (!qobject_cast<ui::AnnotateTool*>(&w.tools().active())) {
+        std::cout << label.toStdString() << ": no box tool\n";
+        return;
+    }
+    constexpr int kZoom = 2;
+    w.view().setZoom(kZoom);
+    w.view().setImageOrigin({0, 0});
+    const auto at = [](int x, int y) { return QPoint(x * kZoom + 1, y * kZoom + 1); };
+    QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(40, 40));
+    QTest::mouseMove(&w.view(), at(60, 55));
+    QTest::mouseMove(&w.view(), at(80, 70));
+    QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(80, 70));
+    (void)waitPainted(w);
+    QTest::qWait(100);
+
+    // A paint counts once it shows the newest answer: a move that asks the worker again is
+    // painted only with that answer.
+    int settled = 0;
+    const QMetaObject::Connection on_paint =
+        QObject::connect(&w.view(), &ui::FrameView::painted, [&] {
+            settled += !w.session().stream().waiting() &&
+                       w.view().paintedSerial() >= w.session().stream().lastSerial();
+        });
+    const std::uint64_t serial_before = w.session().stream().lastSerial();
+    std::vector<double> move_ms;
+    QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(60, 55));
+    for (int i = 1; i <= 40; ++i) {
+        const int before = settled;
+        QElapsedTimer t;
+        t.start();
+        QTest::mouseMove(&w.view(), at(60 + i, 55 + i / 2));
+        while (settled == before && t.elapsed() < 5000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+        if (settled == before)
+            break;
+        move_ms.push_back(double(t.nsecsElapsed()) / 1e6);
+        QTest::qWait(16); // a mouse moves at about 60 events a second
+    }
+    QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(100, 75));
+    QObject::disconnect(on_paint);
+    std::printf("%-20s annotation drag    move to repaint median %5.2f ms  p95 %5.2f ms  max "
+                "%5.2f ms (%zu moves, %llu frame requests)\n",
+                qPrintable(label), percentile(move_ms, 0.5), percentile(move_ms, 0.95),
+                percentile(move_ms, 1.0), move_ms.size(),
+                static_cast<unsigned long long>(w.session().stream().lastSerial() - serial_before));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -339,6 +418,10 @@ int main(int argc, char** argv)
     parser.addOption(steps_option);
     parser.addOption(edits_option);
     parser.addOption(sizes_option);
+    const QCommandLineOption layers_option(
+        "layers", "the layers shown (default all; \"default\": the window's own defaults)", "LIST",
+        "all");
+    parser.addOption(layers_option);
     parser.process(app);
     if (parser.positionalArguments().size() > 1) {
         std::cerr << "usage: bench_gui [DIR] [--steps-only | --edits-only] (bench_gui --help says "
@@ -352,8 +435,14 @@ int main(int argc, char** argv)
     const QString dir =
         parser.positionalArguments().isEmpty() ? tmp.path() : parser.positionalArguments().front();
     const bool steps_only = parser.isSet(steps_option);
+    g_layers = parser.value(layers_option).toStdString();
+    if (g_layers != "default" && !selectLayers(g_layers, Pipeline::standard())) {
+        std::cerr << "bench_gui: --layers: "
+                  << selectLayers(g_layers, Pipeline::standard()).error().message << "\n";
+        return 2;
+    }
     const bool edits_only = parser.isSet(edits_option);
-    std::printf("bench_gui: offscreen, every layer on, window 1280x800\n");
+    std::printf("bench_gui: offscreen, layers %s, window 1280x800\n", g_layers.c_str());
 
     std::vector<std::pair<int, int>> sizes;
     for (const QString& size : parser.value(sizes_option).split(',', Qt::SkipEmptyParts)) {
@@ -379,6 +468,7 @@ int main(int argc, char** argv)
             continue;
         benchStepping(QStringLiteral("%1x%2 PNG folder").arg(w).arg(h), stream);
         benchStepping(QStringLiteral("%1x%2 .strm").arg(w).arg(h), stream + "/image.strm");
+        benchDrag(QStringLiteral("%1x%2 .strm").arg(w).arg(h), stream + "/image.strm");
     }
 
     if (steps_only)
@@ -434,7 +524,7 @@ int main(int argc, char** argv)
     w.show();
     if (!open(w, big_strm))
         return 1;
-    allLayers(w);
+    showLayers(w);
     const double rss_start = rssMb();
     double rss_max = rss_start;
     w.navigator().setSpeed(0);

@@ -206,6 +206,7 @@ int main(int argc, char** argv)
         w.layersPanel().setVisibleLayers(
             ui::LayersPanel::defaultLayers(w.session().stream().pipeline()));
     }
+    waitFrame(); // a stage layer shown runs the frame again to draw it
     const QString mode = p.value("mode");
     const ui::ViewMode m = mode == "classified" ? ui::ViewMode::Classified
                            : mode == "side"     ? ui::ViewMode::SideBySide

@@ -8,6 +8,7 @@
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
+#include "ui/panels/layers_panel.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/tools/annotate_tool.h"
 
@@ -193,6 +194,59 @@ private slots:
         for (ShapeForm form :
              {ShapeForm::Circle, ShapeForm::Box, ShapeForm::Polyline, ShapeForm::Segment})
             QVERIFY(toolOf(w, form));
+    }
+
+    /// A drag's edits are painted from the annotations document: no frame is run again, and the
+    /// truth layer in the grabbed view shows the box where it was dropped, not where it was.
+    void aDragPaintsTheTruthWithoutRunningTheFrame()
+    {
+        MainWindow w;
+        QVERIFY(open(w, copyStream("drag_truth")));
+        AnnotateTool* tool = toolOf(w, ShapeForm::Box);
+        QVERIFY(tool);
+        w.tools().activate(tool->info().id);
+        QTest::mouseMove(&w.view(), at({30, 30})); // hovered: the inspector's layers are drawn
+        QVERIFY(waitForFrame(w, 0));
+        drag(w, {40, 40}, {80, 70});
+        QVERIFY(waitForFrame(w, 0));
+        const std::uint64_t serial = w.session().stream().lastSerial();
+        drag(w, {60, 55}, {90, 95});
+        QCOMPARE(text(shapesOn(w, 0, tool->kind())), text(EditShape{{{70, 80}, {110, 110}}, 0}));
+        QCOMPARE(w.session().stream().lastSerial(), serial); // not one frame request
+        QVERIFY(!w.session().stream().waiting());
+
+        // A LUT tool: the tool's own outline of the box goes, the truth layer shows it; the
+        // pointer gone, so does the tool's preview.
+        QTest::keyClick(&w, Qt::Key_C);
+        QVERIFY(!qobject_cast<AnnotateTool*>(&w.tools().active()));
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(&w.view(), &leave);
+        QCoreApplication::processEvents();
+        const QImage with = w.view().grab().toImage();
+        LayerSet layers = w.view().visibleLayers();
+        std::erase_if(layers, [](const std::string& id) { return id.starts_with("truth."); });
+        w.layersPanel().setVisibleLayers(layers);
+        QCoreApplication::processEvents();
+        const QImage without = w.view().grab().toImage();
+        QCOMPARE(w.session().stream().lastSerial(), serial);
+        QCOMPARE(with.size(), without.size());
+        // Every pixel the truth changes is at the dropped box (widget px: image coordinate c is
+        // at (c + 0.5) * kZoom; its outline has a dark rim, and a box's truth marks its foot),
+        // none where it was; its top edge is dashed along the whole width.
+        const QRectF outline(at({70, 80}), at({110, 110}));
+        const QRectF near = outline.adjusted(-8, -8, 8, 8);
+        int changed = 0;
+        int top_edge = 0;
+        for (int y = 0; y < with.height(); ++y)
+            for (int x = 0; x < with.width(); ++x) {
+                if (with.pixel(x, y) == without.pixel(x, y))
+                    continue;
+                ++changed;
+                top_edge += y == int(outline.top()) && x >= outline.left() && x <= outline.right();
+                QVERIFY2(near.contains(x, y), qPrintable(QStringLiteral("(%1, %2)").arg(x).arg(y)));
+            }
+        QVERIFY2(top_edge > 40, qPrintable(QString::number(top_edge)));
+        QVERIFY2(changed > 150, qPrintable(QString::number(changed)));
     }
 
     /// Each form drawn with the mouse, moved, resized by a handle, undone and redone, deleted;

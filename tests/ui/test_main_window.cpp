@@ -299,6 +299,7 @@ private slots:
         w.session().stream().setCurrentIndex(4);
         QVERIFY(waitForFrame(w, 4));
         w.layersPanel().setVisibleLayers(selectLayers("all", m_pipeline).value());
+        QVERIFY(waitForFrame(w, 4));    // the stage layers shown are drawn
         w.view().setLabelsShown(false); // text labels are the window's own, not the render's
         const QImage shown = viewImage(w);
 
@@ -317,25 +318,51 @@ private slots:
         QCOMPARE(countDifferent(shown, rendered), 0);
     }
 
+    /// A hidden stage layer is not drawn, yet the pixel inspector lists every stage's shapes under
+    /// the pointer: while the pointer is on the frame, the frame is run with every layer.
+    void theInspectorSeesHiddenLayersUnderThePointer()
+    {
+        MainWindow w(m_pipeline);
+        w.show();
+        QVERIFY(openAndWait(w, sampleStream()));
+        w.layersPanel().setVisibleLayers({});
+        QVERIFY(!w.session().stream().layers().count("fake.box"));
+        w.view().setZoom(1);
+        w.view().setImageOrigin({0, 0});
+        QTest::mouseMove(&w.view(), QPoint(15, 15)); // image pixel (15, 15), in the fake box
+        QVERIFY(w.session().stream().layers().count("fake.box"));
+        QVERIFY(waitForFrame(w, 0));
+        QVERIFY2(w.inspector().text().contains("Fake box #0"), qPrintable(w.inspector().text()));
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(&w.view(), &leave);
+        QVERIFY(!w.session().stream().layers().count("fake.box"));
+    }
+
     void aLayerTogglesExactlyItsPixels()
     {
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(openAndWait(w, sampleStream()));
         w.view().setLabelsShown(false);
-        const auto out = w.session().stream().current();
-        const DebugDrawing* box = nullptr;
-        for (const DebugDrawing& d : out->drawings)
-            if (d.layer == "fake.box")
-                box = &d;
-        QVERIFY(box && !box->shapes.empty());
+        const auto drawn = [&w](const char* layer) {
+            for (const DebugDrawing& d : w.session().stream().current()->drawings)
+                if (d.layer == layer)
+                    return !d.shapes.empty();
+            return false;
+        };
 
         LayerSet layers = ui::LayersPanel::defaultLayers(w.session().stream().pipeline());
         layers.erase("fake.box");
         w.layersPanel().setVisibleLayers(layers);
+        QVERIFY(!w.session().stream().waiting());
+        QVERIFY(!drawn("fake.box")); // hidden: the core does not draw it
         const QImage without = viewImage(w);
+        const std::uint64_t serial = w.session().stream().lastSerial();
         w.layersPanel().layerItem("fake.box")->setCheckState(0, Qt::Checked); // as a click does
         QVERIFY(w.view().visibleLayers().count("fake.box"));
+        QCOMPARE(w.session().stream().lastSerial(), serial + 1); // shown: the frame runs again
+        QVERIFY(waitForFrame(w, 0));
+        QVERIFY(drawn("fake.box"));
         const QImage with = viewImage(w);
         QRect changed;
         // The fake box fills pixels (10, 10) to (19, 19): exactly those change.

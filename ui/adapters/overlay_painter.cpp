@@ -123,6 +123,12 @@ bool isTruthLayer(std::string_view layer)
            layer[kTruthLayerPrefix.size()] == '.';
 }
 
+bool isPerceptLayer(std::string_view layer)
+{
+    return layer.size() > kPerceptLayerPrefix.size() && layer.starts_with(kPerceptLayerPrefix) &&
+           layer[kPerceptLayerPrefix.size()] == '.';
+}
+
 void paintShape(QPainter& painter, const DebugShape& shape, bool dashed)
 {
     painter.setRenderHint(QPainter::Antialiasing, false);
@@ -186,6 +192,19 @@ void paintDrawing(QPainter& painter, const DebugDrawing& drawing)
     painter.restore();
 }
 
+void paintDrawings(QPainter& painter, const std::vector<const DebugDrawing*>& drawings,
+                   double detection_opacity)
+{
+    const double opacity = painter.opacity();
+    for (const DebugDrawing* drawing : drawings) {
+        if (!drawing)
+            continue;
+        painter.setOpacity(opacity * (isPerceptLayer(drawing->layer) ? detection_opacity : 1.0));
+        paintDrawing(painter, *drawing);
+    }
+    painter.setOpacity(opacity);
+}
+
 QImage renderOverlay(const cv::Mat& ycbcr, const std::vector<const DebugDrawing*>& drawings,
                      int scale)
 {
@@ -194,10 +213,7 @@ QImage renderOverlay(const cv::Mat& ycbcr, const std::vector<const DebugDrawing*
         return image;
     QPainter painter(&image);
     painter.scale(std::max(1, scale), std::max(1, scale));
-    for (const DebugDrawing* drawing : drawings) {
-        if (drawing)
-            paintDrawing(painter, *drawing);
-    }
+    paintDrawings(painter, drawings);
     painter.end();
     return image;
 }

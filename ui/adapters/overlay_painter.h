@@ -39,6 +39,8 @@ namespace fieldsight::ui {
 
 /// A ground-truth layer id ("truth.balls"): painted dashed.
 bool isTruthLayer(std::string_view layer);
+/// A detection layer id ("percepts.balls").
+bool isPerceptLayer(std::string_view layer);
 
 /// Paints one shape with the conventions above (outlines `dashed`, as ground truth's). Sets the
 /// painter's pen, brush and antialiasing hint and leaves them set (it is called in loops;
@@ -47,6 +49,12 @@ void paintShape(QPainter& painter, const DebugShape& shape, bool dashed = false)
 
 /// Paints the drawing's shapes in order; the painter's state is unchanged afterwards.
 void paintDrawing(QPainter& painter, const DebugDrawing& drawing);
+
+/// Paints a frame's overlay: `drawings` in order (a later one covers an earlier one; null ones
+/// skipped), the detections' at `detection_opacity` (a window dims them while the truth is
+/// being drawn). The window's view and renderOverlay() both paint through here.
+void paintDrawings(QPainter& painter, const std::vector<const DebugDrawing*>& drawings,
+                   double detection_opacity = 1.0);
 
 /// A CV_8UC3 Y, Cb, Cr frame enlarged `scale` times (scale < 1 counts as 1) with nearest
 /// neighbour, so each image pixel is a scale x scale block, with `drawings` painted over it in

@@ -31,7 +31,7 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_lut = new LutDocument(this);
     m_settings = new PipelineSettings(pipeline, this);
     m_annotations = new AnnotationsDocument(pipeline, this);
-    m_stream = new StreamDocument(pipeline, *m_lut, *m_settings, *m_annotations, this);
+    m_stream = new StreamDocument(pipeline, *m_lut, *m_settings, this);
     m_bookmarks = new BookmarksDocument(this);
     m_samples = new SamplesDocument(*m_lut, this);
     m_effect = new EditEffectScan(pipeline, this);

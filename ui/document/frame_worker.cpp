@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 
 namespace fieldsight::ui {
@@ -21,12 +22,10 @@ constexpr int kIdleLookAheadMs = 60;
 /// decoding; reading it again here would take as long).
 constexpr std::chrono::milliseconds kWaitForReadAhead{2000};
 
-LayerSet stageLayerIds(const Pipeline& pipeline)
+LayerSet perceptLayers(const Pipeline& pipeline)
 {
-    LayerSet ids;
-    for (const LayerInfo& layer : pipeline.layers())
-        ids.insert(layer.id);
-    return ids;
+    const std::vector<std::string> ids = perceptLayerIds(pipeline.perceptKinds(), false);
+    return LayerSet(ids.begin(), ids.end());
 }
 
 std::optional<double> number(const nlohmann::ordered_json& object, const char* key)
@@ -96,10 +95,8 @@ std::vector<PerceptItem> perceptItems(const PerceptSet& percepts)
 }
 
 FrameWorker::FrameWorker(const Pipeline& pipeline)
-    : m_pipeline(pipeline), m_layers(selectLayers("all", pipeline).value()),
-      m_control(m_data, pipeline)
+    : m_pipeline(pipeline), m_percept_layers(perceptLayers(pipeline)), m_control(m_data, pipeline)
 {
-    m_data.setRequestedLayers(stageLayerIds(pipeline));
     for (const StageDescriptor& stage : pipeline.descriptors())
         if (stage.info.skippable)
             m_skippable.push_back(stage.info.id);
@@ -182,7 +179,9 @@ bool FrameWorker::aheadAnswers(const FrameRequest& request, bool any_frame) cons
     const FrameRequest& k = m_ahead_for;
     return m_ahead && k.source == request.source && (any_frame || k.index == request.index) &&
            k.lut == request.lut && k.params == request.params && k.skip == request.skip &&
-           k.truth == request.truth && k.light == request.light;
+           k.light == request.light &&
+           std::includes(k.layers.begin(), k.layers.end(), request.layers.begin(),
+                         request.layers.end()); // more layers than asked for answer it too
 }
 
 std::shared_ptr<FrameOutput> FrameWorker::takeAhead(const FrameRequest& request)
@@ -224,6 +223,7 @@ void FrameWorker::lookAhead(const FrameRequest& request)
     const auto start = std::chrono::steady_clock::now();
     auto out = std::make_shared<FrameOutput>();
     out->index = next.index;
+    out->layers = next.layers;
     swapPrefetch();
     try {
         runCore(next, m_control, m_applied_params, m_data.frame(), *out);
@@ -346,6 +346,7 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
         (void)control.setStageEnabled(id, request.skip.count(id) == 0);
     const std::shared_ptr<const ColourLut> lut = lutFor(request, request.index);
     m_data.setLut(lut);
+    m_data.setRequestedLayers(request.layers); // a live camera's core draws through m_data too
     m_last_lut = request.lut;
 
     Result<FrameReport> report = control.runFrame();
@@ -364,12 +365,9 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     out.result =
         collectResult(request.index, frame.name, std::move(report).value(), control.blackboard());
 
-    const PerceptSet* truth = nullptr;
-    if (request.truth) {
-        const auto it = request.truth->truth.find(frameStem(frame.name));
-        truth = it == request.truth->truth.end() ? nullptr : it->second;
-    }
-    out.drawings = frameDrawings(m_pipeline, m_layers, m_data.canvas(), out.result.percepts, truth);
+    LayerSet wanted = m_percept_layers;
+    wanted.insert(request.layers.begin(), request.layers.end());
+    out.drawings = frameDrawings(m_pipeline, wanted, m_data.canvas(), out.result.percepts, nullptr);
     out.items = perceptItems(out.result.percepts);
 }
 
@@ -398,6 +396,7 @@ std::shared_ptr<FrameOutput> FrameWorker::run(const FrameRequest& request)
     out->serial = request.serial;
     out->index = request.index;
     out->wait_ms = std::chrono::duration<double, std::milli>(start - request.submitted).count();
+    out->layers = request.layers; // asked for, whether or not the frame could be run
     if (!request.source || (!request.source->reader && !request.source->camera)) {
         out->error = QStringLiteral("no stream is open");
         return out;

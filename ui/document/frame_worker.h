@@ -6,8 +6,7 @@
 #include "ui/document/gui_data_wrapper.h"
 #include "ui/document/read_ahead.h"
 #include "visioncore/framework/control_wrapper.h"
-#include "ui/document/annotations_document.h"
-#include "visioncore/io/annotations.h"
+#include "visioncore/services/layers.h"
 #include "visioncore/datawrappers/camera_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/stream_runner.h"
@@ -44,8 +43,11 @@ struct FrameRequest
     std::size_t index = 0;
     std::shared_ptr<FrameSource> source;
     std::shared_ptr<const ColourLut> lut;
-    std::shared_ptr<const ParamSet> params;          ///< values that differ from the defaults
-    std::shared_ptr<const AnnotationsVersion> truth; ///< drawn on the truth layers (may be null)
+    std::shared_ptr<const ParamSet> params; ///< values that differ from the defaults
+    /// The stages' debug layers the core draws (ids from the pipeline's registry); the others
+    /// cost nothing. The detections are drawn on every layer of theirs; the truth is the
+    /// window's to draw (FrameView), not the worker's.
+    LayerSet layers;
     /// "Follow the light": every frame's light from `lut`'s; a frame it covers is read through
     /// its light's input map (null: the table as it is).
     std::shared_ptr<const LightTrack> light;
@@ -75,7 +77,8 @@ struct FrameOutput
     QImage classified; ///< RGB32, every pixel in its colour class's display colour (SPEC §1)
     cv::Mat classes;   ///< CV_8U colour ids
     FrameResult result;
-    std::vector<DebugDrawing> drawings; ///< every layer, in drawing order
+    std::vector<DebugDrawing> drawings; ///< the request's layers and the detections', in order
+    LayerSet layers;                    ///< the stage layers asked for (FrameRequest::layers)
     std::vector<PerceptItem> items;
     double wait_ms = 0;   ///< from the request to the worker taking it up
     double worker_ms = 0; ///< read, run and convert
@@ -85,8 +88,7 @@ class FrameWorker : public QObject
 {
     Q_OBJECT
 public:
-    /// Every layer of `pipeline` is drawn on every run, so a layer toggle needs no re-run
-    /// (the stages' drawing costs about 0.2 ms a frame at 320x240).
+    /// Each run draws the stage layers its request asks for and every detection layer.
     explicit FrameWorker(const Pipeline& pipeline);
 
     /// Thread-safe. Replaces any request not yet started.
@@ -131,7 +133,7 @@ private:
     std::shared_ptr<const ColourLut> lutFor(const FrameRequest& request, std::size_t index);
 
     const Pipeline& m_pipeline;
-    std::set<std::string, std::less<>> m_layers;
+    LayerSet m_percept_layers; ///< drawn on every run: they cost no stage any work
     GuiDataWrapper m_data;
     ControlWrapper m_control;
     std::shared_ptr<const ParamSet> m_applied_params; ///< in m_control (null: the defaults)

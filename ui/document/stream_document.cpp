@@ -11,6 +11,8 @@
 #include <QFileInfo>
 #include <QTimer>
 
+#include <algorithm>
+
 #include <filesystem>
 
 namespace fieldsight::ui {
@@ -75,23 +77,14 @@ QString sessionStreamName(const QString& spec)
 }
 
 StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
-                               PipelineSettings& settings, AnnotationsDocument& annotations,
-                               QObject* parent)
-    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings),
-      m_annotations(annotations)
+                               PipelineSettings& settings, QObject* parent)
+    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
 {
+    for (const LayerInfo& layer : pipeline.layers())
+        m_shown_layers.insert(layer.id);
+    m_layers = m_shown_layers;
     connect(&m_lut, &LutDocument::changed, this, &StreamDocument::submit);
     connect(&m_settings, &PipelineSettings::changed, this, &StreamDocument::submit);
-    connect(&m_annotations, &AnnotationsDocument::changed, this, [this](const QStringList& frames) {
-        // Only the open stream's annotations are drawn over its frames (a session adopts the
-        // next stream's annotations just before the stream).
-        if (!m_stream || m_stream->names.empty() ||
-            m_annotations.stream() != sessionStreamName(m_stream->spec))
-            return;
-        const std::string shown = m_annotations.keyOf(m_stream->names[m_index]);
-        if (frames.isEmpty() || frames.contains(QString::fromStdString(shown)))
-            submit();
-    });
     qRegisterMetaType<std::shared_ptr<const FrameOutput>>();
     m_worker = new FrameWorker(pipeline);
     m_worker->moveToThread(&m_thread);
@@ -332,6 +325,39 @@ void StreamDocument::setLight(std::shared_ptr<const LightTrack> light)
     submit();
 }
 
+void StreamDocument::setLayersShown(const LayerSet& layers)
+{
+    m_shown_layers.clear();
+    for (const LayerInfo& layer : m_pipeline.layers())
+        if (layers.count(layer.id))
+            m_shown_layers.insert(layer.id);
+    updateLayers();
+}
+
+void StreamDocument::setAllLayersWanted(bool all)
+{
+    m_all_layers = all;
+    updateLayers();
+}
+
+void StreamDocument::updateLayers()
+{
+    LayerSet layers;
+    for (const LayerInfo& layer : m_pipeline.layers())
+        if (m_all_layers || m_shown_layers.count(layer.id))
+            layers.insert(layer.id);
+    if (layers == m_layers)
+        return;
+    m_layers = std::move(layers);
+    // A layer hidden needs nothing (the view leaves it out); one the frame shown was run without
+    // is drawn by running the frame again.
+    const bool drawn =
+        m_current && std::includes(m_current->layers.begin(), m_current->layers.end(),
+                                   m_layers.begin(), m_layers.end());
+    if (!drawn)
+        submit();
+}
+
 FrameRequest StreamDocument::request() const
 {
     FrameRequest request;
@@ -340,7 +366,7 @@ FrameRequest StreamDocument::request() const
     request.lut = m_lut.version();
     request.params = m_settings.paramVersion();
     request.skip = m_settings.skippedStages();
-    request.truth = m_annotations.version();
+    request.layers = m_layers;
     request.light = m_light;
     return request;
 }

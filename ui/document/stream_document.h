@@ -6,6 +6,7 @@
 
 #include "ui/document/frame_worker.h"
 #include "visioncore/basics/file_fingerprint.h"
+#include "visioncore/io/annotations.h"
 
 #include <QObject>
 #include <QString>
@@ -43,7 +44,6 @@ struct OpenedStream
     std::optional<ParamSet> params;
 };
 
-class AnnotationsDocument;
 class LutDocument;
 class PipelineSettings;
 
@@ -56,11 +56,10 @@ class StreamDocument : public QObject
     Q_OBJECT
 public:
     /// Frames are run with `lut`'s current table and `settings`' values: the document observes
-    /// both and runs the current frame again when either changes.
-    /// The truth drawn over each frame is `annotations`' (the frame is drawn again when the
-    /// annotations of the frame shown change).
+    /// both and runs the current frame again when either changes. (The truth over a frame is
+    /// the annotations document's, drawn by the view: an annotation edit runs nothing.)
     StreamDocument(const Pipeline& pipeline, LutDocument& lut, PipelineSettings& settings,
-                   AnnotationsDocument& annotations, QObject* parent = nullptr);
+                   QObject* parent = nullptr);
     ~StreamDocument() override;
 
     const Pipeline& pipeline() const { return m_pipeline; }
@@ -123,6 +122,15 @@ public:
     /// "Follow the light": every frame's light (null: none), used from the next run on.
     void setLight(std::shared_ptr<const LightTrack> light);
     const std::shared_ptr<const LightTrack>& light() const { return m_light; }
+    /// The layers shown (ids of the pipeline's registry; the stage layers among them count): the
+    /// core draws only those, and one newly shown runs the frame shown again to draw it. Every
+    /// stage layer until this is called.
+    void setLayersShown(const LayerSet& layers);
+    /// Every stage layer is drawn while `all` (the pixel inspector lists each stage's shapes
+    /// under the pointer, shown or not).
+    void setAllLayersWanted(bool all);
+    /// The stage layers each run draws.
+    const LayerSet& layers() const { return m_layers; }
 
     /// The newest frame result (null before the first).
     const std::shared_ptr<const FrameOutput>& current() const { return m_current; }
@@ -164,11 +172,12 @@ private:
     /// What the current frame with the current table and settings asks of the worker.
     FrameRequest request() const;
     void onFrameDone(std::shared_ptr<const FrameOutput> output);
+    /// m_layers from what is shown and wanted; runs the frame shown again for a layer it lacks.
+    void updateLayers();
 
     const Pipeline& m_pipeline;
     LutDocument& m_lut;
     PipelineSettings& m_settings;
-    AnnotationsDocument& m_annotations;
     QThread m_thread;
     FrameWorker* m_worker = nullptr;
 
@@ -182,6 +191,9 @@ private:
     StageMean m_total_mean;
     std::shared_ptr<const FrameOutput> m_current;
     std::shared_ptr<const LightTrack> m_light;
+    LayerSet m_shown_layers; ///< setLayersShown (stage layers only)
+    bool m_all_layers = false;
+    LayerSet m_layers; ///< what a request asks the core to draw
     std::map<std::string, StageMean, std::less<>> m_means;
 };
 

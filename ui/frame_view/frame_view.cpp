@@ -23,12 +23,6 @@ namespace {
 /// The detections' opacity while an annotation tool is active: the truth being drawn stands out.
 constexpr double kDimmedDetections = 0.35;
 
-bool isPerceptLayer(const std::string& layer)
-{
-    return layer.starts_with(kPerceptLayerPrefix) && layer.size() > kPerceptLayerPrefix.size() &&
-           layer[kPerceptLayerPrefix.size()] == '.';
-}
-
 /// Zoom steps of the wheel and the zoom actions: whole multiples above 1 keep every image pixel
 /// the same size on screen.
 constexpr std::array<double, 14> kZoomSteps{0.25, 0.5, 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
@@ -67,13 +61,41 @@ void FrameView::setOutput(std::shared_ptr<const FrameOutput> output)
     m_output = std::move(output);
     if (imageSize() != before && m_fit)
         applyFit();
+    refreshTruth();
     update();
 }
 
 void FrameView::setVisibleLayers(LayerSet layers)
 {
     m_visible = std::move(layers);
+    refreshTruth();
     update();
+}
+
+void FrameView::setAnnotations(const AnnotationsDocument& annotations)
+{
+    m_annotations = &annotations;
+    connect(&annotations, &AnnotationsDocument::changed, this, [this](const QStringList& frames) {
+        if (!m_output)
+            return;
+        const std::string shown = m_annotations->keyOf(m_output->frame.name);
+        if (!frames.isEmpty() && !frames.contains(QString::fromStdString(shown)))
+            return;
+        refreshTruth();
+        update();
+    });
+    refreshTruth();
+    update();
+}
+
+void FrameView::refreshTruth()
+{
+    m_truth.clear();
+    // A frame that could not be read or run shows no overlay at all.
+    if (!m_annotations || !m_output || !m_output->error.isEmpty())
+        return;
+    if (const FrameAnnotation* frame = m_annotations->frame(m_output->frame.name))
+        m_truth = truthDrawings(m_visible, frame->truth);
 }
 
 void FrameView::setMode(ViewMode mode)
@@ -259,10 +281,13 @@ void FrameView::paintEvent(QPaintEvent*)
     }
     const QSize image = imageSize();
     if (!image.isEmpty()) {
+        // The core's drawings, then the truth over them (layers.h's order, as a render's).
         std::vector<const DebugDrawing*> layers;
         for (const DebugDrawing& d : m_output->drawings)
             if (m_visible.count(d.layer))
                 layers.push_back(&d);
+        for (const DebugDrawing& d : m_truth)
+            layers.push_back(&d);
         for (int panel = 0; panel < panelCount(); ++panel) {
             p.save();
             p.translate(panelX(panel), m_origin.y());
@@ -281,11 +306,7 @@ void FrameView::paintEvent(QPaintEvent*)
             const double margin = 3 / m_zoom;
             p.setClipRect(
                 QRectF(-margin, -margin, image.width() + 2 * margin, image.height() + 2 * margin));
-            const bool dim = detectionsDimmed();
-            for (const DebugDrawing* d : layers) {
-                p.setOpacity(dim && isPerceptLayer(d->layer) ? kDimmedDetections : 1.0);
-                paintDrawing(p, *d);
-            }
+            paintDrawings(p, layers, detectionsDimmed() ? kDimmedDetections : 1.0);
             p.restore();
         }
         if (m_labels)

@@ -3,6 +3,7 @@
 // detections.
 #pragma once
 
+#include "ui/document/annotations_document.h"
 #include "ui/document/frame_worker.h"
 #include "ui/document/stream_document.h"
 #include "ui/tools/tool_manager.h"
@@ -34,6 +35,10 @@ public:
     /// Shows `stream`'s frames as they come (a new stream fits the window).
     void setStream(StreamDocument& stream);
     const std::shared_ptr<const FrameOutput>& output() const { return m_output; }
+
+    /// The ground truth drawn over each frame is `annotations`' own, as it is now: an edit is
+    /// painted at once, without running the frame again.
+    void setAnnotations(const AnnotationsDocument& annotations);
 
     void setVisibleLayers(LayerSet layers);
     const LayerSet& visibleLayers() const { return m_visible; }
@@ -94,6 +99,8 @@ protected:
 
 private:
     void followPointer();
+    /// The shown frame's truth drawings, from the annotations document.
+    void refreshTruth();
     QSize imageSize() const;
     int panelCount() const { return m_mode == ViewMode::SideBySide ? 2 : 1; }
     /// Widget x of panel `panel`'s image origin.
@@ -108,6 +115,8 @@ private:
     int brushRadius() const;
 
     std::shared_ptr<const FrameOutput> m_output;
+    const AnnotationsDocument* m_annotations = nullptr;
+    std::vector<DebugDrawing> m_truth; ///< the shown frame's, of the visible truth layers
     LayerSet m_visible;
     ViewMode m_mode = ViewMode::Raw;
     bool m_labels = true;

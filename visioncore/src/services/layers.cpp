@@ -57,16 +57,23 @@ std::vector<DebugDrawing> frameDrawings(const Pipeline& pipeline, const LayerSet
         if (it != canvas.drawings().end())
             out.push_back(it->second);
     }
-    const auto keep = [&](std::vector<DebugDrawing> drawings) {
-        for (DebugDrawing& d : drawings)
-            if (wanted.count(d.layer))
-                out.push_back(std::move(d));
-    };
+    for (DebugDrawing& d : percepts.drawings(false))
+        if (wanted.count(d.layer))
+            out.push_back(std::move(d));
     // The truth goes over the detections: drawn dashed and thin, it shows where the two lie on
     // top of each other (a detection drawn last would hide it).
-    keep(percepts.drawings(false));
     if (truth)
-        keep(truth->drawings(true));
+        for (DebugDrawing& d : truthDrawings(wanted, *truth))
+            out.push_back(std::move(d));
+    return out;
+}
+
+std::vector<DebugDrawing> truthDrawings(const LayerSet& wanted, const PerceptSet& truth)
+{
+    std::vector<DebugDrawing> out;
+    for (DebugDrawing& d : truth.drawings(true))
+        if (wanted.count(d.layer))
+            out.push_back(std::move(d));
     return out;
 }
 

@@ -32,4 +32,8 @@ std::vector<DebugDrawing> frameDrawings(const Pipeline& pipeline, const LayerSet
                                         const DebugCanvas& canvas, const PerceptSet& percepts,
                                         const PerceptSet* truth);
 
+/// The drawings of one frame's ground truth whose id is in `wanted`: what frameDrawings() ends
+/// with, and what a window that holds the truth itself draws over the core's drawings.
+std::vector<DebugDrawing> truthDrawings(const LayerSet& wanted, const PerceptSet& truth);
+
 } // namespace fieldsight
