@@ -38,12 +38,12 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_evaluation = new EvaluationScan(pipeline, this);
     m_light = new LightScan(this);
 
-    addUndoDocument(tr("Colour table"), m_lut->undoStack());
-    addUndoDocument(tr("LUT samples"), m_samples->undoStack());
-    addUndoDocument(tr("Pipeline settings"), m_settings->undoStack());
-    addUndoDocument(tr("Bookmarks"), m_bookmarks->undoStack());
-    addUndoDocument(tr("Annotations"), m_annotations->undoStack());
-    addUndoDocument(tr("Stream orientation"), m_stream->undoStack());
+    addDocument(tr("Colour table"), *m_lut);
+    addDocument(tr("LUT samples"), *m_samples);
+    addDocument(tr("Pipeline settings"), *m_settings);
+    addDocument(tr("Bookmarks"), *m_bookmarks);
+    addDocument(tr("Annotations"), *m_annotations);
+    addDocument(tr("Stream orientation"), *m_stream);
     m_undo_group.setActiveStack(&m_lut->undoStack());
 
     // The whole-stream scan observes the table and the settings.
@@ -83,11 +83,6 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
         m_effect->setStream(m_stream->streamSpec(), m_lut->version(), options);
     });
 
-    connect(m_stream, &StreamDocument::problem, this, &EditingSession::problem);
-    connect(m_lut, &LutDocument::problem, this, &EditingSession::problem);
-    connect(m_samples, &SamplesDocument::problem, this, &EditingSession::problem);
-    connect(m_bookmarks, &BookmarksDocument::problem, this, &EditingSession::problem);
-    connect(m_annotations, &AnnotationsDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::notice, this, &EditingSession::notice);
 }
 
@@ -110,8 +105,10 @@ std::shared_ptr<const Annotations> EditingSession::truthVersion() const
     return {std::move(version), annotations}; // shares the version's ownership
 }
 
-void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
+void EditingSession::addDocument(const QString& name, Document& document)
 {
+    connect(&document, &Document::problem, this, &EditingSession::problem);
+    QUndoStack& stack = document.undoStack();
     m_undo_group.addStack(&stack);
     m_undo_documents.push_back({name, &stack});
     // The document edited last is the one Edit > Undo acts on.

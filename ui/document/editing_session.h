@@ -111,7 +111,9 @@ signals:
     void notice(const QString& message);
 
 private:
-    void addUndoDocument(const QString& name, QUndoStack& stack);
+    /// `document` joins the undo group and the history dock as `name`; its problems are the
+    /// session's.
+    void addDocument(const QString& name, Document& document);
     /// The annotations document's current truth, for the evaluation.
     std::shared_ptr<const Annotations> truthVersion() const;
 

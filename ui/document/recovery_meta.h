@@ -1,13 +1,10 @@
-// What the documents' recovery files share: the autosave that writes them, paths written so they
-// are found again byte for byte, and fields read without ever throwing on a damaged file.
+// What the documents' recovery files share (Document runs the autosave that writes them): paths
+// written so they are found again byte for byte, and fields read without ever throwing on a
+// damaged file.
 #pragma once
-
-#include "visioncore/basics/result.h"
 
 #include <QString>
 #include <QStandardPaths>
-#include <QTimer>
-#include <QUndoStack>
 
 #include <nlohmann/json.hpp>
 
@@ -30,28 +27,6 @@ std::string recoveryTimestamp();
 inline QString defaultRecoveryDir()
 {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-}
-
-/// Wires `doc`'s autosave: `timer` fires once, 30 s (or its interval) after the first unsaved
-/// edit, and writes the recovery file while `doc` is still modified (a failure goes to its
-/// problem signal); undoing back to the saved state stops it and removes the recovery file.
-template <class Document> void wireAutosave(Document& doc, QTimer& timer, QUndoStack& undo)
-{
-    timer.setSingleShot(true);
-    timer.setInterval(30000);
-    QObject::connect(&timer, &QTimer::timeout, &doc, [&doc] {
-        if (!doc.modified())
-            return;
-        if (Status s = doc.writeRecovery(); !s)
-            emit doc.problem(QString::fromStdString(s.error().message));
-    });
-    QObject::connect(&undo, &QUndoStack::cleanChanged, &doc, [&doc, &timer] {
-        if (!doc.modified()) { // undone back to what was saved: nothing to recover
-            timer.stop();
-            doc.discardOwnRecovery();
-        }
-        emit doc.modifiedChanged(doc.modified());
-    });
 }
 
 } // namespace fieldsight::ui

@@ -77,7 +77,7 @@ QString sessionStreamName(const QString& spec)
 StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
                                PipelineSettings& settings, AnnotationsDocument& annotations,
                                QObject* parent)
-    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings),
+    : Document(Saving::None, parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings),
       m_annotations(annotations)
 {
     connect(&m_lut, &LutDocument::changed, this, &StreamDocument::submit);
@@ -200,7 +200,7 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
         m_worker->release(std::move(m_stream->source)); // closed on the worker thread
     m_stream = std::move(opened);
     m_stream->lut.reset(); // the LUT document's now
-    m_undo.clear();        // the orientations of the stream before
+    undoStack().clear();   // the orientations of the stream before
     m_index = 0;
     m_current.reset();
     m_light.reset(); // the stream before's
@@ -251,7 +251,7 @@ Status StreamDocument::setOrientation(Orientation o)
     auto reader = openStream(local(m_stream->spec), StreamOptions{o});
     if (!reader)
         return reader.error();
-    m_undo.push(new OrientationCommand(*this, orientation(), o, std::move(reader).value()));
+    undoStack().push(new OrientationCommand(*this, orientation(), o, std::move(reader).value()));
     return {};
 }
 

@@ -4,14 +4,13 @@
 // upright (its orientation) is a command on its own undo stack.
 #pragma once
 
+#include "ui/document/document.h"
 #include "ui/document/frame_worker.h"
 #include "visioncore/basics/file_fingerprint.h"
 
-#include <QObject>
 #include <QString>
 #include <QStringList>
 #include <QThread>
-#include <QUndoStack>
 
 #include <functional>
 #include <map>
@@ -51,7 +50,7 @@ class PipelineSettings;
 /// its absolute path, a live camera as its spec.
 QString sessionStreamName(const QString& spec);
 
-class StreamDocument : public QObject
+class StreamDocument : public Document
 {
     Q_OBJECT
 public:
@@ -113,7 +112,8 @@ public:
     {
         return hasStream() && info().orientation != info().stream_orientation;
     }
-    QUndoStack& undoStack() { return m_undo; }
+    // undoStack() holds the orientation changes of the open stream; problem() says an undo or
+    // redo could not reopen the stream (it stays as it was).
 
     std::size_t currentIndex() const { return m_index; }
     /// Shows frame `index` (clamped to the stream); the newest request supersedes older ones.
@@ -149,8 +149,6 @@ signals:
     void streamChanged();
     /// The pictures are turned another way (or the orientation was saved); a frame follows.
     void orientationChanged();
-    /// An undo or redo could not reopen the stream (it stays as it was).
-    void problem(const QString& message);
     void currentIndexChanged(std::size_t index);
     void frameReady();
     void meansReset();
@@ -174,7 +172,6 @@ private:
 
     std::shared_ptr<OpenedStream> m_stream;
     std::size_t m_index = 0;
-    QUndoStack m_undo; ///< orientation changes of the open stream
 
     std::uint64_t m_serial = 0;
     std::uint64_t m_answered = 0;
