@@ -1,13 +1,13 @@
 #include "ui/main_window.h"
 
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/actions/calibrate_commands.h"
 #include "ui/actions/fit_commands.h"
 #include "ui/actions/disk_watch.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/image_adapter.h"
-#include "ui/document/frame_recorder.h"
+#include "ui/recording/frame_recorder.h"
 #include "ui/panels/bookmarks_panel.h"
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/evaluation_panel.h"
@@ -53,8 +53,8 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_tools = new ToolManager(*m_session, tools, this);
     m_recorder = new FrameRecorder(m_session->stream(), this);
     buildCentre();
-    m_files = new FileCommands(*this);
-    m_annotation_files = new AnnotationCommands(*this);
+    m_files = new SessionFiles(*this);
+    m_annotation_files = new AnnotationsFile(*this);
     m_calibrate = new CalibrateCommands(*this);
     m_disk_watch = new DiskWatch(*this);
     buildStatusBar();
@@ -86,8 +86,8 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     connect(m_pipeline, &PipelinePanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::notice, this, note);
-    connect(m_recovery_bar, &OfferBar::accepted, m_files, &FileCommands::recoverLut);
-    connect(m_recovery_bar, &OfferBar::declined, m_files, &FileCommands::discardRecovery);
+    connect(m_recovery_bar, &OfferBar::accepted, m_files, &SessionFiles::recoverLut);
+    connect(m_recovery_bar, &OfferBar::declined, m_files, &SessionFiles::discardRecovery);
     connect(m_view, &FrameView::painted, this, [this] {
         QMetaObject::invokeMethod(this, &MainWindow::refreshPanels, Qt::QueuedConnection);
     });

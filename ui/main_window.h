@@ -19,7 +19,7 @@ class QMenu;
 
 namespace fieldsight::ui {
 
-class AnnotationCommands;
+class AnnotationsFile;
 class AnnotationStrip;
 class BookmarksPanel;
 class CalibrateCommands;
@@ -29,7 +29,7 @@ class EffectStrip;
 class EvaluationPanel;
 class FrameMarksStrip;
 class LightStrip;
-class FileCommands;
+class SessionFiles;
 class FrameRecorder;
 class HistoryPanel;
 class InspectorPanel;
@@ -52,8 +52,8 @@ public:
 
     EditingSession& session() { return *m_session; }
     ToolManager& tools() { return *m_tools; }
-    FileCommands& files() { return *m_files; }
-    AnnotationCommands& annotationFiles() { return *m_annotation_files; }
+    SessionFiles& files() { return *m_files; }
+    AnnotationsFile& annotationFiles() { return *m_annotation_files; }
     CalibrateCommands& calibrate() { return *m_calibrate; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
@@ -118,8 +118,8 @@ private:
 
     EditingSession* m_session = nullptr;
     ToolManager* m_tools = nullptr;
-    FileCommands* m_files = nullptr;
-    AnnotationCommands* m_annotation_files = nullptr;
+    SessionFiles* m_files = nullptr;
+    AnnotationsFile* m_annotation_files = nullptr;
     CalibrateCommands* m_calibrate = nullptr;
     FrameRecorder* m_recorder = nullptr;
     FrameView* m_view = nullptr;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "ui/frame_view/frame_view.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/detections_panel.h"
@@ -34,7 +34,7 @@ inline bool waitForFrame(MainWindow& w, std::size_t index)
 
 inline bool openAndWait(MainWindow& w, const QString& stream)
 {
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(stream);
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;

@@ -8,7 +8,7 @@
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/services/annotation_editing.h"
@@ -395,7 +395,7 @@ private slots:
         QVERIFY(doc.writeRecovery().ok()); // as the autosave would
 
         dialogs.answers.push_back(answer);
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         bool closed = false;
         if (close) {
             closed = w.close();

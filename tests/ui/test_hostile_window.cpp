@@ -3,7 +3,7 @@
 // offer naming a very long path with a time that is not a time.
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/document/editing_session.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"

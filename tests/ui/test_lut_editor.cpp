@@ -4,13 +4,13 @@
 // crashed session are offered and restored.
 #include "support/test_files.h"
 #include "support/synthetic_frames.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "support/scripted_dialogs.h"
 #include "ui/widgets/message_bar.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
-#include "ui/panels/lut_compare_dialog.h"
+#include "ui/dialogs/lut_compare_dialog.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "visioncore/services/stream_runner.h"
@@ -50,7 +50,7 @@ bool waitForLut(MainWindow& w, const std::shared_ptr<const ColourLut>& lut)
 
 bool openAndWait(MainWindow& w)
 {
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(sampleStream());
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;
@@ -683,7 +683,7 @@ private slots:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         w.files().openStream(copy);
         QVERIFY(opened.wait(10000));
         QVERIFY(waitForLut(w, w.session().lut().version()));
@@ -774,7 +774,7 @@ private slots:
 
         // A window opened later finds the samples again.
         MainWindow again;
-        QSignalSpy reopened(&again.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy reopened(&again.files(), &ui::SessionFiles::streamOpened);
         again.files().openStream(copy);
         QVERIFY(reopened.wait(10000));
         QCOMPARE(again.session().samples().samples().samples.size(), std::size_t(1));

@@ -7,7 +7,7 @@
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
-#include "ui/panels/ab_compare_dialog.h"
+#include "ui/dialogs/ab_compare_dialog.h"
 
 #include "visioncore/basics/output_guard.h"
 #include "visioncore/io/orientation.h"

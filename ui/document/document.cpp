@@ -1,7 +1,7 @@
 #include "ui/document/document.h"
 
 #include "ui/adapters/local_path.h"
-#include "ui/document/recovery_meta.h"
+#include "ui/recovery/recovery_meta.h"
 #include "visioncore/basics/atomic_file.h"
 
 namespace fieldsight::ui {

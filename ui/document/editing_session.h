@@ -9,9 +9,9 @@
 
 #include "ui/document/annotations_document.h"
 #include "ui/document/bookmarks_document.h"
-#include "ui/document/edit_effect_scan.h"
-#include "ui/document/evaluation_scan.h"
-#include "ui/document/light_scan.h"
+#include "ui/scans/edit_effect_scan.h"
+#include "ui/scans/evaluation_scan.h"
+#include "ui/scans/light_scan.h"
 #include "ui/document/lut_document.h"
 #include "ui/document/samples_document.h"
 #include "ui/document/pipeline_settings.h"

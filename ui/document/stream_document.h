@@ -5,7 +5,7 @@
 #pragma once
 
 #include "ui/document/document.h"
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 #include "visioncore/basics/file_fingerprint.h"
 
 #include <QString>

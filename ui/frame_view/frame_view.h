@@ -3,7 +3,7 @@
 // detections.
 #pragma once
 
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 #include "ui/document/stream_document.h"
 #include "ui/tools/tool_manager.h"
 #include "visioncore/services/layers.h"

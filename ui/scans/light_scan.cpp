@@ -1,5 +1,5 @@
 // The window's light scan: one thread, one reader of its own, trackLight from frame 0.
-#include "ui/document/light_scan.h"
+#include "ui/scans/light_scan.h"
 
 #include "ui/adapters/local_path.h"
 #include "visioncore/services/stream_runner.h"

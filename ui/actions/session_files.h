@@ -21,11 +21,11 @@ namespace fieldsight::ui {
 class LutCompareDialog;
 class MainWindow;
 
-class FileCommands : public QObject
+class SessionFiles : public QObject
 {
     Q_OBJECT
 public:
-    explicit FileCommands(MainWindow& window);
+    explicit SessionFiles(MainWindow& window);
 
     /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
     /// before); streamOpened() tells how it went. An error shows in the window.
