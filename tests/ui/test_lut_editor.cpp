@@ -57,6 +57,13 @@ bool openAndWait(MainWindow& w)
     return waitForLut(w, w.session().lut().version());
 }
 
+/// The frame shown (YCbCr), what a retarget is estimated from.
+const cv::Mat* shownFrame(MainWindow& w)
+{
+    const auto& out = w.session().stream().current();
+    return out && !out->frame.ycbcr.empty() ? &out->frame.ycbcr : nullptr;
+}
+
 /// Widget position of image pixel `p` at zoom 1 with the image at the view's corner.
 QPoint at(QPoint p)
 {
@@ -636,20 +643,20 @@ private slots:
         QVERIFY(showAndOpen(w));
         const ColourLut lab = w.session().lut().table();
         std::size_t samples = 0;
-        const ColourShift none = w.lutPanel().estimateRetarget(&samples);
+        const ColourShift none = w.session().lut().estimateRetarget(shownFrame(w), &samples);
         QCOMPARE(samples, std::size_t(320 * (240 - 160)));
         // The lab's own frame: the table fits it, the estimate is small.
         QVERIFY(std::abs(none.y) <= 12 && std::abs(none.cb) <= 6 && std::abs(none.cr) <= 6);
 
         // The same table moved away by a known shift is brought back close to where it was.
         const ColourShift away{-20, 8, -8};
-        QVERIFY(w.lutPanel().retarget(away));
-        const ColourShift back = w.lutPanel().estimateRetarget();
+        QVERIFY(w.session().lut().retarget(away));
+        const ColourShift back = w.session().lut().estimateRetarget(shownFrame(w));
         QVERIFY2(std::abs(back.y - (none.y + 20)) <= 2 && std::abs(back.cb - (none.cb - 8)) <= 2 &&
                      std::abs(back.cr - (none.cr + 8)) <= 2,
                  qPrintable(QString("%1 %2 %3").arg(back.y).arg(back.cb).arg(back.cr)));
         const int steps = w.session().lut().undoStack().count();
-        QVERIFY(w.lutPanel().retarget(back));
+        QVERIFY(w.session().lut().retarget(back));
         QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         // Green is where the field is again: most of the bottom third classifies green.
         QVERIFY(waitForLut(w, w.session().lut().version()));

@@ -66,22 +66,19 @@ void copyPrevious(MainWindow& w)
     const auto index = shownFrame(w);
     if (!index)
         return;
-    AnnotationsDocument& doc = w.session().annotations();
-    const FrameStates states = frameStates(frameNames(w.session().stream()), doc.annotations());
-    const std::optional<std::size_t> from = previousAnnotated(states.annotated, *index);
-    if (!from) {
+    const AnnotationsDocument::Copy copy =
+        w.session().annotations().copyPrevious(frameNames(w.session().stream()), *index);
+    if (!copy.from) {
         w.showMessage(tr("No frame before this one has annotations to copy"), false);
         return;
     }
-    const FrameAnnotation* source = doc.frame(nameOf(w, *from));
-    const FrameAnnotation copy = copiedAnnotation(*source);
-    if (!doc.editFrame(nameOf(w, *index), copy, tr("Copy frame %1's annotations").arg(*from))) {
-        tell(w, tr("This frame's annotations already equal frame %1's").arg(*from));
+    if (!copy.changed) {
+        tell(w, tr("This frame's annotations already equal frame %1's").arg(*copy.from));
         return;
     }
     tell(w, tr("Copied frame %1's annotations (%n object(s)) onto frame %2, not done yet",
-               int(objectCount(copy)))
-                .arg(*from)
+               int(copy.objects))
+                .arg(*copy.from)
                 .arg(*index));
 }
 
@@ -103,19 +100,15 @@ void detectionsToTruth(MainWindow& w, const std::vector<const PerceptKind*>& kin
         w.showMessage(tr("This frame has no detections to take: %1").arg(out->error));
         return;
     }
-    AnnotationsDocument& doc = w.session().annotations();
-    const std::string name = nameOf(w, *index);
-    const FrameAnnotation* now = doc.frame(name);
-    const FrameAnnotation after =
-        detectionsAsTruth(now ? *now : FrameAnnotation{}, out->result.percepts, kinds);
-    if (!doc.editFrame(name, after,
-                       tr("Detections to annotations: %1 (frame %2)").arg(which).arg(*index))) {
+    const std::optional<std::size_t> objects = w.session().annotations().takeDetections(
+        frameNames(w.session().stream()), *index, out->result.percepts, kinds, which);
+    if (!objects) {
         tell(w, tr("This frame's annotations (%1) already equal its detections").arg(which));
         return;
     }
     tell(w, tr("This frame's detections (%1) are its annotations now (%n object(s) on the frame): "
                "correct them, then mark the frame done (D)",
-               int(objectCount(after)))
+               int(*objects))
                 .arg(which));
 }
 

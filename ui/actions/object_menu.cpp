@@ -131,11 +131,8 @@ void propagateSelected(MainWindow& w, int direction, QAction* remembered)
     if (!count)
         return;
     remembered->setData(*count);
-    AnnotationChanges changes(w.session().annotations().annotations());
-    const std::size_t made = propagate(changes, annotationFrameKeys(w.session()), t->at, *t->kind,
-                                       t->index, direction * *count);
-    commit(w, changes,
-           QObject::tr("%1: propagated to %n frame(s)", nullptr, int(made)).arg(t->title));
+    w.session().annotations().propagate(annotationFrameKeys(w.session()), t->at, *t->kind, t->index,
+                                        direction * *count);
 }
 
 } // namespace

@@ -5,6 +5,8 @@
 
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/json_text.h"
+#include "visioncore/services/annotation_editing.h"
+#include "visioncore/services/annotation_tracks.h"
 #include "visioncore/services/evaluation.h"
 
 #include <QCryptographicHash>
@@ -159,6 +161,44 @@ bool AnnotationsDocument::editFrame(const std::string& name, FrameAnnotation aft
     FrameEdits edits;
     edits.emplace(name, std::move(after));
     return edit(text, std::move(edits), merge);
+}
+
+AnnotationsDocument::Copy AnnotationsDocument::copyPrevious(const std::vector<std::string>& frames,
+                                                            std::size_t index)
+{
+    Copy copy;
+    const FrameStates states = frameStates(frames, m_annotations);
+    copy.from = previousAnnotated(states.annotated, index);
+    if (!copy.from)
+        return copy;
+    const FrameAnnotation copied = copiedAnnotation(*frame(frames[*copy.from]));
+    copy.objects = objectCount(copied);
+    copy.changed =
+        editFrame(frames[index], copied, tr("Copy frame %1's annotations").arg(*copy.from));
+    return copy;
+}
+
+std::optional<std::size_t> AnnotationsDocument::takeDetections(
+    const std::vector<std::string>& frames, std::size_t index, const PerceptSet& detections,
+    const std::vector<const PerceptKind*>& kinds, const QString& which)
+{
+    const FrameAnnotation* now = frame(frames[index]);
+    const FrameAnnotation after =
+        detectionsAsTruth(now ? *now : FrameAnnotation{}, detections, kinds);
+    if (!editFrame(frames[index], after,
+                   tr("Detections to annotations: %1 (frame %2)").arg(which).arg(index)))
+        return std::nullopt;
+    return objectCount(after);
+}
+
+std::size_t AnnotationsDocument::propagate(const std::vector<std::string>& frames, std::size_t at,
+                                           const PerceptKind& kind, std::size_t object, int count)
+{
+    AnnotationChanges changes(m_annotations);
+    const std::size_t made = fieldsight::propagate(changes, frames, at, kind, object, count);
+    const QString title = QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size()));
+    edit(tr("%1: propagated to %n frame(s)", nullptr, int(made)).arg(title), changes.frames());
+    return made;
 }
 
 void AnnotationsDocument::apply(const FrameEdits& edits)

@@ -78,6 +78,30 @@ public:
     bool editFrame(const std::string& name, FrameAnnotation after, const QString& text,
                    int merge = 0);
 
+    // The frame-level operations of the Annotate and Object menus, each one undo step (the rules
+    // are services/annotation_editing's and annotation_tracks'). `frames` are the stream's frame
+    // names in order (the annotations' keys for propagate()), `index` the frame's place there.
+    /// What copyPrevious() did.
+    struct Copy
+    {
+        std::optional<std::size_t> from; ///< the frame copied (none: no frame before has any)
+        bool changed = false;            ///< false: the frame held the same already
+        std::size_t objects = 0;         ///< objects copied
+    };
+    /// Frame `index` gets a copy of the objects of the annotated frame before it (not done yet).
+    Copy copyPrevious(const std::vector<std::string>& frames, std::size_t index);
+    /// The `detections` of `kinds` become frame `index`'s annotations; the other kinds keep theirs
+    /// (a keyframed track of another kind survives). `which` names the kinds in the step. The
+    /// objects on the frame after, or nullopt when it held them already.
+    std::optional<std::size_t> takeDetections(const std::vector<std::string>& frames,
+                                              std::size_t index, const PerceptSet& detections,
+                                              const std::vector<const PerceptKind*>& kinds,
+                                              const QString& which);
+    /// Copies object `object` of `kind` on frame `at` to the next `count` frames (the previous
+    /// -`count` when negative) as objects of its track; the frames that got it.
+    std::size_t propagate(const std::vector<std::string>& frames, std::size_t at,
+                          const PerceptKind& kind, std::size_t object, int count);
+
     // Saved with Document::save() and saveAs(); a file that could not be read when the stream
     // opened is not written over by save().
     /// Reads path() again as one undo step ("Reload annotations from disk"; Undo brings the

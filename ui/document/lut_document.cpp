@@ -1,5 +1,6 @@
 #include "ui/document/lut_document.h"
 
+#include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
 #include "ui/recovery/recovery_meta.h"
 
@@ -86,6 +87,38 @@ bool LutDocument::edit(const QString& text, std::vector<CellChange> changes, int
     pushEdit(new LutCellsCommand(*this, text, std::move(changes), stroke), stroke);
     m_in_edit = false;
     return true;
+}
+
+std::size_t LutDocument::clearClass(Colour colour)
+{
+    if (colour == Colour::Unclassified)
+        return 0;
+    std::vector<CellChange> changes;
+    const std::uint8_t* cells = m_table.data();
+    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
+        if (cells[i] == std::uint8_t(colour))
+            changes.push_back({std::uint32_t(i), colour, Colour::Unclassified});
+    const std::size_t n = changes.size();
+    edit(tr("Clear %1").arg(colourLabel(colour)), std::move(changes));
+    return n;
+}
+
+ColourShift LutDocument::estimateRetarget(const cv::Mat* frame, std::size_t* samples) const
+{
+    std::vector<cv::Vec3b> field;
+    if (frame)
+        for (int y = frame->rows * 2 / 3; y < frame->rows; ++y)
+            for (int x = 0; x < frame->cols; ++x)
+                field.push_back(frame->at<cv::Vec3b>(y, x));
+    if (samples)
+        *samples = field.size();
+    return estimateShift(m_table, Colour::Green, field);
+}
+
+bool LutDocument::retarget(const ColourShift& shift)
+{
+    return edit(tr("Retarget by Y %1, Cb %2, Cr %3").arg(shift.y).arg(shift.cb).arg(shift.cr),
+                shiftChanges(m_table, shift));
 }
 
 void LutDocument::apply(const std::vector<CellChange>& changes, bool forwards)

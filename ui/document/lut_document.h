@@ -46,6 +46,13 @@ public:
     /// (newMerge()) merge into one step (a brush stroke while the mouse is down). False when
     /// nothing changes.
     bool edit(const QString& text, std::vector<CellChange> changes, int stroke = 0);
+    /// Makes every cell of `colour` unclassified, as one undoable edit; the cells it cleared.
+    std::size_t clearClass(Colour colour);
+    /// Retargeting to a venue: the shift that moves the table's green onto the field of `frame`
+    /// (YCbCr; null: no frame), taken as its bottom third (`samples`: how many pixels that was).
+    ColourShift estimateRetarget(const cv::Mat* frame, std::size_t* samples = nullptr) const;
+    /// Moves the whole table by `shift` as one undoable edit; false when nothing changes.
+    bool retarget(const ColourShift& shift);
     /// The table before the last edit, undo or redo (a whole brush stroke counts as one edit);
     /// null after a reset. What the whole-stream effect compares the current table with.
     std::shared_ptr<const ColourLut> editBase() const { return m_edit_base; }
