@@ -113,10 +113,10 @@ void toggleInterpolation(MainWindow& w)
                .arg(t->title));
 }
 
-/// Asks how many frames (starting from the last answer, kept as `remembered`'s data, which the
-/// window's settings keep between sessions) and propagates the selected object that many frames
+/// Asks how many frames (starting from the last answer, which the selection keeps and the
+/// window's settings between sessions) and propagates the selected object that many frames
 /// forward (`direction` 1) or back (-1).
-void propagateSelected(MainWindow& w, int direction, QAction* remembered)
+void propagateSelected(MainWindow& w, int direction)
 {
     const auto t = targetOrHint(w);
     if (!t)
@@ -127,10 +127,10 @@ void propagateSelected(MainWindow& w, int direction, QAction* remembered)
                       : QObject::tr("Propagate to the previous frames"),
         QObject::tr("Copy the selected object to how many frames %1 this one?")
             .arg(direction > 0 ? QObject::tr("after") : QObject::tr("before")),
-        std::clamp(remembered->data().toInt(), 1, 100000), 1, 100000);
+        std::clamp(w.tools().selection().propagateFrames(), 1, 100000), 1, 100000);
     if (!count)
         return;
-    remembered->setData(*count);
+    w.tools().selection().setPropagateFrames(*count);
     w.session().annotations().propagate(annotationFrameKeys(w.session()), t->at, *t->kind, t->index,
                                         direction * *count);
 }
@@ -151,16 +151,13 @@ void addObjectMenu(MainWindow& w)
     keyframe->setObjectName(QStringLiteral("object.keyframe"));
     interpolate->setObjectName(QStringLiteral("object.interpolate"));
     menu->addSeparator();
-    // How many frames the last propagation went (both ways) is the first action's data, offered
-    // again.
-    QAction* next = menu->addAction(QObject::tr("Propagate to the next frames…"));
-    next->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-    next->setObjectName(QStringLiteral("object.propagate_next"));
-    next->setData(10);
-    QObject::connect(next, &QAction::triggered, &w, [&w, next] { propagateSelected(w, 1, next); });
+    addMenuItem(menu, QObject::tr("Propagate to the next frames…"),
+                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), &w,
+                [&w] { propagateSelected(w, 1); })
+        ->setObjectName(QStringLiteral("object.propagate_next"));
     addMenuItem(menu, QObject::tr("Propagate to the previous frames…"),
                 QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P), &w,
-                [&w, next] { propagateSelected(w, -1, next); })
+                [&w] { propagateSelected(w, -1); })
         ->setObjectName(QStringLiteral("object.propagate_previous"));
 
     // The checks show the selected object's flags (none selected: all clear).

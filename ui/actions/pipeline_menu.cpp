@@ -136,7 +136,7 @@ void addPipelineMenu(MainWindow& w)
     compare->setObjectName(QStringLiteral("pipeline.compare_ab"));
     compare->setToolTip(QObject::tr("Run the annotated frames with another table or parameter set "
                                     "and list the frames it fixes and breaks"));
-    auto* fit = new FitCommands(w);
+    FitCommands* fit = &w.fit();
     QAction* fit_action = addMenuItem(pipe, QObject::tr("Fit to annotations…"),
                                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), fit,
                                       &FitCommands::fitToAnnotations);

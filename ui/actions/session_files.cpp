@@ -6,6 +6,7 @@
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
 #include "ui/dialogs/lut_compare_dialog.h"
+#include "ui/settings/window_settings.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/output_guard.h"
@@ -413,6 +414,24 @@ void SessionFiles::rememberFrame()
     const StreamDocument& stream = m_window.session().stream();
     if (stream.hasStream())
         m_frames[recentKey(stream.streamSpec())] = int(stream.currentIndex());
+}
+
+void SessionFiles::saveSettings(WindowSettings& w) const
+{
+    w.recent = m_recent;
+    w.recent_frames = recentFrames();
+    const StreamDocument& stream = m_window.session().stream();
+    if (!stream.hasStream())
+        return;
+    w.stream = w.recent.value(0, stream.streamSpec());
+    const QString lut = m_window.session().lut().path();
+    w.lut = lut.isEmpty() ? QString() : QFileInfo(lut).absoluteFilePath();
+}
+
+void SessionFiles::restoreSettings(const WindowSettings& w)
+{
+    setRecent(w.recent);
+    setRecentFrames(w.recent_frames);
 }
 
 QList<int> SessionFiles::recentFrames() const

@@ -3,6 +3,7 @@
 #include "ui/adapters/local_path.h"
 #include "visioncore/io/lut_import.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QFutureWatcherBase>
 #include <QLocale>
@@ -310,6 +311,35 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
         m_light->setStream(spec, m_lut->version(), options);
     // Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
+}
+
+QString EditingSession::title() const
+{
+    if (!m_stream->hasStream())
+        return QStringLiteral("Fieldsight");
+    const bool annotations_edited = m_annotations->modified();
+    // Qt shows a * at every [*]: one after each document with unsaved edits.
+    const QString marker =
+        m_lut->modified() || !annotations_edited ? QStringLiteral("[*]") : QString();
+    const QString lut = m_lut->path();
+    QString title = QStringLiteral("%1 — %2%3")
+                        .arg(QFileInfo(m_stream->streamSpec()).fileName(),
+                             lut.isEmpty() ? tr("new LUT")
+                                           // Which default.lut: its folder too.
+                                           : QFileInfo(lut).dir().dirName() + QLatin1Char('/') +
+                                                 QFileInfo(lut).fileName(),
+                             marker);
+    if (annotations_edited) {
+        const QString file = m_annotations->path();
+        title += QStringLiteral(" — %1[*]")
+                     .arg(file.isEmpty() ? tr("annotations") : QFileInfo(file).fileName());
+    }
+    return title + QStringLiteral(" — Fieldsight");
+}
+
+bool EditingSession::unsavedEdits() const
+{
+    return m_lut->modified() || (m_stream->hasStream() && m_annotations->modified());
 }
 
 Status EditingSession::openLut(const QString& path)

@@ -93,6 +93,13 @@ public:
     /// when the stream has every annotated frame): `fieldsight eval` refuses such a file.
     QString missingAnnotatedFrames() const;
 
+    /// The window's title for what is open: the stream, the table and, when they have unsaved
+    /// edits, the annotations, with a [*] after each document with unsaved edits (after the
+    /// table when none has).
+    QString title() const;
+    /// The table or the open stream's annotations have unsaved edits.
+    bool unsavedEdits() const;
+
     /// Loads a table in any importable format as the LUT document's (clean, new history).
     Status openLut(const QString& path);
 

@@ -40,6 +40,7 @@ public:
     void setMode(ViewMode mode);
     ViewMode mode() const { return m_mode; }
     void setLabelsShown(bool shown);
+    bool labelsShown() const { return m_labels; }
 
     double zoom() const { return m_zoom; }
     /// Zooms to `zoom` keeping the image point under `anchor` (widget px) where it is.
@@ -53,6 +54,10 @@ public:
     /// Where image pixel (0, 0)'s top-left corner is, in widget px (whole pixels).
     QPoint imageOrigin() const { return m_origin; }
     void setImageOrigin(QPoint origin);
+    /// Puts image point `point` (pixels) at the view's centre.
+    void centreOn(QPointF point);
+    /// Image rectangle `rect` (pixels) is wholly in sight.
+    bool shows(const QRectF& rect) const;
 
     /// The image pixel under widget point `pos`, if any.
     std::optional<QPoint> pixelAt(QPointF pos) const;
@@ -79,6 +84,8 @@ signals:
     void pixelHovered(QPoint pixel);
     void hoverLeft();
     void zoomChanged(double zoom);
+    void modeChanged(ViewMode mode);
+    void labelsShownChanged(bool shown);
     void painted(std::uint64_t serial);
 
 protected:

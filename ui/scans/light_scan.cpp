@@ -26,6 +26,7 @@ void LightScan::setEnabled(bool on)
         return;
     m_enabled = on;
     restart();
+    emit enabledChanged(on);
 }
 
 void LightScan::setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,
