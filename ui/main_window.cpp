@@ -58,16 +58,19 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_disk_watch = new DiskWatch(*this);
     buildStatusBar();
     buildDocks();
+    const MenuTarget target{*m_session, *m_tools, this,
+                            [this](const QString& m, bool error) { showMessage(m, error); },
+                            [this](const QString& m, int ms) { statusBar()->showMessage(m, ms); }};
     m_highlights =
         new CellHighlights(*m_view, m_session->stream(), m_uv->canvas().selection(), this);
     addFileMenu(*this);
     addEditMenu(*this);
     addViewMenu(*this);
     addNavigateMenu(*this);
-    addObjectMenu(*this);
+    addObjectMenu(*menuBar(), target);
     addPipelineMenu(*this);
     addCalibrateMenu(*this);
-    addAnnotateMenu(*this);
+    addAnnotateMenu(*menuBar(), target);
     addHelpMenu(*this);
 
     // The window shows what the documents say; it relays nothing between them.
@@ -87,8 +90,6 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     connect(m_pipeline, &PipelinePanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::notice, this, note);
-    connect(m_recovery_bar, &OfferBar::accepted, m_files, &SessionFiles::recoverLut);
-    connect(m_recovery_bar, &OfferBar::declined, m_files, &SessionFiles::discardRecovery);
     connect(m_view, &FrameView::painted, this, [this] {
         QMetaObject::invokeMethod(this, &MainWindow::refreshPanels, Qt::QueuedConnection);
     });

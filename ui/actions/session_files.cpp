@@ -65,6 +65,8 @@ bool isLutFile(const QString& path)
 
 SessionFiles::SessionFiles(MainWindow& window) : QObject(&window), m_window(window)
 {
+    connect(&window.recoveryBar(), &OfferBar::accepted, this, &SessionFiles::recoverLut);
+    connect(&window.recoveryBar(), &OfferBar::declined, this, &SessionFiles::discardRecovery);
     EditingSession& session = m_window.session();
     connect(&session, &EditingSession::opened, this, &SessionFiles::onOpened);
 }
