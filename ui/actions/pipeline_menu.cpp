@@ -25,6 +25,13 @@ namespace {
 /// the window and on the command line). Never over a file the stream does not name.
 void saveParams(MainWindow& w);
 
+/// The stream names `file` as its own parameters, which hold what the settings hold.
+void markSaved(MainWindow& w, const std::string& file)
+{
+    w.session().stream().setParamsFile(file);
+    w.session().settings().setFile(fromLocalPath(file));
+}
+
 void saveParamsToStream(MainWindow& w)
 {
     StreamDocument& stream = w.session().stream();
@@ -54,12 +61,12 @@ void saveParamsToStream(MainWindow& w)
         if (!s)
             w.showMessage(QString::fromStdString(s.error().message));
         else
-            stream.setParamsFile(file);
+            markSaved(w, file);
         return s.ok();
     };
     bool overwrite = false; // the stream's own file is written either way
-    if (settleDiskChange(w, named && stream.paramsFileChanged(), QObject::tr("the parameters"),
-                         fromLocalPath(file), overwrite, reload,
+    if (settleDiskChange(w, named && w.session().settings().changedOnDisk(),
+                         QObject::tr("the parameters"), fromLocalPath(file), overwrite, reload,
                          [&w] {
                              saveParams(w);
                              return true;
@@ -73,7 +80,7 @@ void saveParamsToStream(MainWindow& w)
         w.showMessage(QString::fromStdString(s.error().message));
         return;
     }
-    stream.setParamsFile(file);
+    markSaved(w, file);
     w.showMessage(QObject::tr("Saved the parameters as the stream's own (%1): it opens with them")
                       .arg(fromLocalPath(file)),
                   false);

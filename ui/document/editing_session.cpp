@@ -270,6 +270,9 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     const QString spec = opened->spec;
     const QString lut_path = opened->lut_path;
     const std::optional<ParamSet> params = opened->params;
+    const QString params_file =
+        opened->info.params.empty() ? QString() : fromLocalPath(opened->info.params);
+    const FileFingerprint params_read = opened->params_read;
     std::shared_ptr<const ColourLut> table = opened->lut;
     const FileFingerprint lut_read = opened->lut_read;
     // Its annotations just before it, so its first frame is drawn with its own truth. Unsaved
@@ -300,6 +303,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     if (params)
         wanted.merge(m_param_overrides);
     m_settings->reset(wanted);
+    m_settings->setFile(params_file, params_read);
     const StreamOptions options{m_stream->orientation()};
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());

@@ -25,6 +25,9 @@ public:
     explicit PipelineSettings(const Pipeline& pipeline, QObject* parent = nullptr);
 
     const Pipeline& pipeline() const { return m_pipeline; }
+    /// The open stream's own parameter file (empty: it has none), as it was read (`read`) or just
+    /// saved: changedOnDisk() then says another window or a command wrote it since.
+    using Document::setFile;
 
     bool stageEnabled(std::string_view stage_id) const { return m_skip.count(stage_id) == 0; }
     const StageSet& skippedStages() const { return m_skip; }

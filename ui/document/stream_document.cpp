@@ -223,13 +223,6 @@ void StreamDocument::setParamsFile(const std::string& path)
     if (!m_stream)
         return;
     m_stream->info.params = path;
-    m_stream->params_read = fingerprintFile(path);
-}
-
-bool StreamDocument::paramsFileChanged() const
-{
-    return m_stream && !m_stream->info.params.empty() &&
-           fileChangedSince(m_stream->info.params, m_stream->params_read);
 }
 
 QString StreamDocument::frameName(std::size_t index) const

@@ -77,11 +77,9 @@ public:
     bool hasStream() const { return m_stream != nullptr; }
     QString streamSpec() const { return m_stream ? m_stream->spec : QString(); }
     const StreamInfo& info() const;
-    /// The stream's manifest now names `path` as its parameter file (it was just written there).
+    /// The stream's manifest now names `path` as its parameter file (it was just written there;
+    /// whether it changed on disk since is the pipeline settings' to tell).
     void setParamsFile(const std::string& path);
-    /// The stream's own parameter file is no longer what it was when the stream opened or the
-    /// window last saved it there (another window or a command wrote it).
-    bool paramsFileChanged() const;
     bool live() const { return m_stream && m_stream->info.kind == StreamKind::Camera; }
     /// Frames of the stream (0 for a camera).
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }
