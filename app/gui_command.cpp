@@ -1,7 +1,7 @@
 // `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
 #include "gui_command.h"
 
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
 #include "ui/application.h"
 #include "ui/main_window.h"
@@ -75,7 +75,7 @@ int guiCommand(int& argc, char** argv, const Context& ctx)
     if (!positional.isEmpty())
         window.files().openStream(positional.front(), lut);
     else if (!lut.isEmpty())
-        window.files().openStream(ui::FileCommands::sampleStreamCopy(), lut);
+        window.files().openStream(ui::SessionFiles::sampleStreamCopy(), lut);
     else if (const ui::WindowSettings last = ui::WindowSettings::load(); true)
         window.files().openLastSession(last.stream, last.lut);
     return QApplication::exec();

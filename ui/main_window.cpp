@@ -1,13 +1,13 @@
 #include "ui/main_window.h"
 
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/actions/calibrate_commands.h"
 #include "ui/actions/fit_commands.h"
 #include "ui/actions/disk_watch.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/actions/menus.h"
-#include "ui/adapters/image_adapter.h"
-#include "ui/document/frame_recorder.h"
+#include "ui/frame_view/cell_highlights.h"
+#include "ui/recording/frame_recorder.h"
 #include "ui/panels/bookmarks_panel.h"
 #include "ui/panels/detections_panel.h"
 #include "ui/panels/evaluation_panel.h"
@@ -18,19 +18,17 @@
 #include "ui/panels/pipeline_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/settings/window_settings.h"
-#include "ui/stream_navigator/light_strip.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/frame_marks_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
+#include "ui/stream_navigator/timeline.h"
 #include "ui/widgets/bar_overlay.h"
 #include "ui/widgets/message_bar.h"
 #include "ui/widgets/scroll_area.h"
 
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QDir>
-#include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QMenu>
@@ -53,20 +51,26 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_tools = new ToolManager(*m_session, tools, this);
     m_recorder = new FrameRecorder(m_session->stream(), this);
     buildCentre();
-    m_files = new FileCommands(*this);
-    m_annotation_files = new AnnotationCommands(*this);
+    m_files = new SessionFiles(*this);
+    m_annotation_files = new AnnotationsFile(*this);
     m_calibrate = new CalibrateCommands(*this);
+    m_fit = new FitCommands(*this);
     m_disk_watch = new DiskWatch(*this);
     buildStatusBar();
     buildDocks();
+    const MenuTarget target{*m_session, *m_tools, this,
+                            [this](const QString& m, bool error) { showMessage(m, error); },
+                            [this](const QString& m, int ms) { statusBar()->showMessage(m, ms); }};
+    m_highlights =
+        new CellHighlights(*m_view, m_session->stream(), m_uv->canvas().selection(), this);
     addFileMenu(*this);
     addEditMenu(*this);
     addViewMenu(*this);
     addNavigateMenu(*this);
-    addObjectMenu(*this);
+    addObjectMenu(*menuBar(), target);
     addPipelineMenu(*this);
     addCalibrateMenu(*this);
-    addAnnotateMenu(*this);
+    addAnnotateMenu(*menuBar(), target);
     addHelpMenu(*this);
 
     // The window shows what the documents say; it relays nothing between them.
@@ -86,8 +90,6 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     connect(m_pipeline, &PipelinePanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::problem, this, error);
     connect(m_lut_panel, &LutPanel::notice, this, note);
-    connect(m_recovery_bar, &OfferBar::accepted, m_files, &FileCommands::recoverLut);
-    connect(m_recovery_bar, &OfferBar::declined, m_files, &FileCommands::discardRecovery);
     connect(m_view, &FrameView::painted, this, [this] {
         QMetaObject::invokeMethod(this, &MainWindow::refreshPanels, Qt::QueuedConnection);
     });
@@ -102,7 +104,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
         m_session->stream().setAllLayersWanted(false);
         m_inspector->clearPixel();
     });
-    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, this, &MainWindow::refreshCellHighlights);
+    connect(&m_uv->canvas(), &UvCanvas::selectionChanged, m_highlights, &CellHighlights::refresh);
     connect(m_lut_panel, &LutPanel::cellsToOutline, &m_uv->canvas(), &UvCanvas::setOutlinedCells);
     // The tool's preview also in the status bar: the editor's own line may be out of sight.
     connect(m_tools, &ToolManager::previewChanged, this, [this] {
@@ -150,39 +152,7 @@ void MainWindow::buildCentre()
     m_navigator = new StreamNavigator(m_session->stream(), central);
     column->addWidget(m_navigator);
     setCentralWidget(central);
-    // What the last change did to the evaluation's scores, over the strip of what it did to
-    // every frame; shown once there is such a change.
-    m_scores_change = new QLabel(m_navigator);
-    m_scores_change->setObjectName(QStringLiteral("scores_change"));
-    m_scores_change->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    m_scores_change->setContentsMargins(4, 1, 4, 1);
-    // Its line is kept while hidden: its showing never shrinks the view above.
-    QSizePolicy keep = m_scores_change->sizePolicy();
-    keep.setRetainSizeWhenHidden(true);
-    m_scores_change->setSizePolicy(keep);
-    m_scores_change->hide();
-    m_navigator->addTimelineStrip(m_scores_change);
-    m_effect_strip = new EffectStrip(m_session->effectScan(), *m_navigator->slider(), m_navigator);
-    m_navigator->addTimelineStrip(m_effect_strip);
-    connect(m_effect_strip, &EffectStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
-    connect(m_navigator->slider(), &QSlider::valueChanged, m_effect_strip,
-            qOverload<>(&QWidget::update));
-    m_annotation_strip = new AnnotationStrip(m_session->annotations(), m_session->stream(),
-                                             *m_navigator->slider(), m_navigator);
-    m_navigator->addTimelineStrip(m_annotation_strip);
-    connect(m_annotation_strip, &AnnotationStrip::frameClicked, m_navigator,
-            &StreamNavigator::goToFrame);
-    m_disagreement_strip =
-        new FrameMarksStrip(*m_navigator->slider(), QColor(0, 190, 255), m_navigator);
-    m_disagreement_strip->setObjectName(QStringLiteral("disagreement_strip"));
-    m_disagreement_strip->setToolTip(tr("Frames where detections and truth disagree"));
-    m_navigator->addTimelineStrip(m_disagreement_strip);
-    connect(m_navigator->slider(), &QSlider::valueChanged, m_disagreement_strip,
-            qOverload<>(&QWidget::update));
-    m_light_strip = new LightStrip(m_session->lightScan(), *m_navigator->slider(), m_navigator);
-    m_light_strip->setToolTip(tr("How far the light has moved from the table's, per frame"));
-    m_navigator->addTimelineStrip(m_light_strip);
-    connect(m_light_strip, &LightStrip::frameClicked, m_navigator, &StreamNavigator::goToFrame);
+    m_timeline = std::make_unique<Timeline>(*m_session, *m_navigator);
 }
 
 void MainWindow::buildStatusBar()
@@ -198,13 +168,13 @@ void MainWindow::buildStatusBar()
     m_status_annotation = new QLabel(this);
     m_status_annotation->setObjectName(QStringLiteral("annotation_status"));
     statusBar()->addPermanentWidget(m_status_annotation);
-    connect(m_annotation_strip, &AnnotationStrip::statusChanged, m_status_annotation,
+    connect(&m_timeline->annotationStrip(), &AnnotationStrip::statusChanged, m_status_annotation,
             &QLabel::setText);
     statusBar()->addPermanentWidget(m_status_time);
     statusBar()->addPermanentWidget(m_status_zoom);
     connect(&m_session->effectScan(), &EditEffectScan::updated, this, [this] {
-        m_status_effect->setText(m_effect_strip->summary());
-        m_status_effect->setToolTip(m_effect_strip->summary());
+        m_status_effect->setText(m_timeline->effectStrip().summary());
+        m_status_effect->setToolTip(m_timeline->effectStrip().summary());
     });
     connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
         m_status_zoom->setText(tr("zoom %1%").arg(zoom * 100, 0, 'f', 0));
@@ -243,36 +213,23 @@ void MainWindow::buildDocks()
     connect(m_evaluation, &EvaluationPanel::highlightChanged, m_view, [this](const QImage& image) {
         m_view->setHighlight(QStringLiteral("evaluation"), image);
     });
-    connect(m_evaluation, &EvaluationPanel::culpritsAt, this, [this](const QRect& r) {
+    connect(m_evaluation, &EvaluationPanel::culpritsAt, m_view, [this](const QRect& r) {
         // Centred when they are not all in sight (zoomed in on another part of the frame).
-        const double zoom = m_view->zoom();
-        const QRectF shown(QPointF(m_view->imageOrigin()) + QPointF(r.topLeft()) * zoom,
-                           QSizeF(r.size()) * zoom);
-        if (QRectF(m_view->rect()).contains(shown))
-            return;
-        const QPointF centre = (QRectF(r).center()) * zoom;
-        m_view->setImageOrigin((QPointF(m_view->rect().center()) - centre).toPoint());
+        if (!m_view->shows(r))
+            m_view->centreOn(QRectF(r).center());
     });
     connect(m_evaluation, &EvaluationPanel::marksChanged, this, [this] {
-        m_disagreement_strip->setMarks(m_evaluation->frameMarks(),
-                                       m_session->stream().frameCount());
-        const QString change = m_evaluation->changeText();
-        m_scores_change->setText(tr("Scores after the last change: %1").arg(change));
-        m_scores_change->setToolTip(m_scores_change->text());
-        m_scores_change->setVisible(!change.isEmpty());
+        m_timeline->showEvaluation(m_evaluation->frameMarks(), m_evaluation->changeText());
     });
-    connect(m_disagreement_strip, &FrameMarksStrip::frameClicked, m_evaluation,
+    connect(&m_timeline->disagreementStrip(), &FrameMarksStrip::frameClicked, m_evaluation,
             &EvaluationPanel::showFrame);
 
     m_pipeline = new PipelinePanel(s.stream(), s.settings(), this);
     QDockWidget* pipeline =
         dock(m_pipeline, tr("Pipeline"), "pipeline_dock", Qt::RightDockWidgetArea);
     m_detections = new DetectionsPanel(this);
-    connect(m_detections, &DetectionsPanel::detectionActivated, this, [this](const QRectF& r) {
-        // Centre the view on the chosen detection.
-        const QPointF centre = (r.center() + QPointF(0.5, 0.5)) * m_view->zoom();
-        m_view->setImageOrigin((QPointF(m_view->rect().center()) - centre).toPoint());
-    });
+    connect(m_detections, &DetectionsPanel::detectionActivated, m_view,
+            [this](const QRectF& r) { m_view->centreOn(r.center() + QPointF(0.5, 0.5)); });
     QDockWidget* detections =
         dock(m_detections, tr("Detections"), "detections_dock", Qt::RightDockWidgetArea);
     m_lut_panel = new LutPanel(s.lut(), s.stream(), s.samples(), *m_tools, this);
@@ -313,13 +270,6 @@ void MainWindow::buildDocks()
     m_docks_menu->addAction(annotate->toggleViewAction());
 }
 
-void MainWindow::setMode(ViewMode mode)
-{
-    m_view->setMode(mode);
-    if (auto* a = findChild<QAction*>(QStringLiteral("view.mode.%1").arg(int(mode))))
-        a->setChecked(true);
-}
-
 void MainWindow::showMessage(const QString& text, bool error)
 {
     m_last_message = text;
@@ -343,10 +293,7 @@ QImage MainWindow::snapshot()
 void MainWindow::showCompareCells(const std::vector<std::uint32_t>& cells)
 {
     m_uv->canvas().setOutlinedCells(cells);
-    m_compare_cells.reset();
-    if (!cells.empty())
-        m_compare_cells = CellMask::of(cells);
-    refreshCellHighlights();
+    m_highlights->setCompareCells(cells);
 }
 
 void MainWindow::onStreamChanged()
@@ -358,31 +305,14 @@ void MainWindow::onStreamChanged()
 void MainWindow::onFrameReady()
 {
     const auto& out = m_session->stream().current();
-    refreshCellHighlights();
-    // The view first; the panels follow once it has painted (at once when it cannot paint).
+    // The view first (its highlights are found again already); the panels follow once it has
+    // painted (at once when it cannot paint).
     if (!m_view->isVisible())
         refreshPanels();
     if (out)
         m_status_time->setText(tr("core %1 ms · worker %2 ms")
                                    .arg(out->result.report.total_ms, 0, 'f', 3)
                                    .arg(out->worker_ms, 0, 'f', 2));
-}
-
-void MainWindow::refreshCellHighlights()
-{
-    // The pixels of the current frame in the cells of a UV selection (cyan) and of the compare
-    // dialog's chosen row (orange), found again for every frame shown.
-    const auto& out = m_session->stream().current();
-    const auto light = [&](const QString& id, const CellMask* cells, QColor colour) {
-        m_view->setHighlight(id, cells && out && !out->frame.ycbcr.empty()
-                                     ? maskToQImage(pixelsIn(out->frame.ycbcr, *cells), colour)
-                                     : QImage());
-    };
-    const auto& selection = m_uv->canvas().selection();
-    light(QStringLiteral("uv_selection"), selection ? &*selection : nullptr,
-          QColor(0, 230, 255, 170));
-    light(QStringLiteral("compare"), m_compare_cells ? &*m_compare_cells : nullptr,
-          QColor(255, 140, 0, 170));
 }
 
 void MainWindow::refreshPanels()
@@ -397,33 +327,8 @@ void MainWindow::refreshPanels()
 
 void MainWindow::updateTitle()
 {
-    const StreamDocument& stream = m_session->stream();
-    const LutDocument& lut = m_session->lut();
-    const AnnotationsDocument& annotations = m_session->annotations();
-    const bool annotations_edited = stream.hasStream() && annotations.modified();
-    QString title = QStringLiteral("Fieldsight");
-    if (stream.hasStream()) {
-        // A [*] after each document with unsaved edits (Qt shows a * at every one), after the
-        // table when none has.
-        const QString marker =
-            lut.modified() || !annotations_edited ? QStringLiteral("[*]") : QString();
-        title =
-            QStringLiteral("%1 — %2%3")
-                .arg(QFileInfo(stream.streamSpec()).fileName(),
-                     lut.path().isEmpty() ? tr("new LUT")
-                                          // Which default.lut: its folder too.
-                                          : QFileInfo(lut.path()).dir().dirName() +
-                                                QLatin1Char('/') + QFileInfo(lut.path()).fileName(),
-                     marker);
-        if (annotations_edited)
-            title +=
-                QStringLiteral(" — %1[*]")
-                    .arg(annotations.path().isEmpty() ? tr("annotations")
-                                                      : QFileInfo(annotations.path()).fileName());
-        title += QStringLiteral(" — Fieldsight");
-    }
-    setWindowTitle(title);
-    setWindowModified(lut.modified() || annotations_edited);
+    setWindowTitle(m_session->title());
+    setWindowModified(m_session->unsavedEdits());
 }
 
 void MainWindow::saveSettings() const
@@ -433,30 +338,13 @@ void MainWindow::saveSettings() const
     w.state = saveState();
     w.layers = m_view->visibleLayers();
     w.mode = int(m_view->mode());
-    if (const auto* labels = findChild<QAction*>(QStringLiteral("view.labels")))
-        w.labels = labels->isChecked();
+    w.labels = m_view->labelsShown();
     w.follow_light = m_session->lightScan().enabled();
     w.fps = m_navigator->speed();
     w.loop = m_navigator->loopAction()->isChecked();
-    w.recent = m_files->recent();
-    w.recent_frames = m_files->recentFrames();
-    const StreamDocument& stream = m_session->stream();
-    if (stream.hasStream()) {
-        w.stream = w.recent.value(0, stream.streamSpec());
-        const QString lut = m_session->lut().path();
-        w.lut = lut.isEmpty() ? QString() : QFileInfo(lut).absoluteFilePath();
-    }
-    const LutToolSettings& tools = m_tools->settings();
-    w.tool = m_tools->active().info().id;
-    w.tolerance = tools.tolerance();
-    w.brush_radius = tools.brushRadius();
-    w.keep_others = tools.keepOthers();
-    w.soft_classes = tools.softClasses();
-    w.preview = tools.previewOn();
-    if (const auto* propagate = findChild<QAction*>(QStringLiteral("object.propagate_next")))
-        w.propagate_frames = propagate->data().toInt();
-    if (const auto* fit = findChild<FitCommands*>())
-        w.fit_budget = fit->budget();
+    m_files->saveSettings(w);
+    m_tools->saveSettings(w);
+    w.fit_budget = m_fit->budget();
     w.save();
 }
 
@@ -477,29 +365,14 @@ void MainWindow::restoreSettings()
     restoreState(w.state);
     m_layers->setVisibleLayers(w.layers ? *w.layers
                                         : LayersPanel::defaultLayers(m_session->pipeline()));
-    setMode(ViewMode(w.mode));
-    if (auto* labels = findChild<QAction*>(QStringLiteral("view.labels")))
-        labels->setChecked(w.labels);
+    m_view->setMode(ViewMode(w.mode));
     m_view->setLabelsShown(w.labels);
-    if (auto* follow = findChild<QAction*>(QStringLiteral("view.follow_light"))) {
-        follow->setChecked(w.follow_light);
-        m_session->lightScan().setEnabled(w.follow_light);
-    }
+    m_session->lightScan().setEnabled(w.follow_light);
     m_navigator->setSpeed(w.fps);
     m_navigator->loopAction()->setChecked(w.loop);
-    m_files->setRecent(w.recent);
-    m_files->setRecentFrames(w.recent_frames);
-    LutToolSettings& tools = m_tools->settings();
-    tools.setTolerance(w.tolerance);
-    tools.setBrushRadius(w.brush_radius);
-    tools.setKeepOthers(w.keep_others);
-    tools.setSoftClasses(w.soft_classes);
-    tools.setPreviewOn(w.preview);
-    if (auto* propagate = findChild<QAction*>(QStringLiteral("object.propagate_next")))
-        propagate->setData(w.propagate_frames);
-    if (auto* fit = findChild<FitCommands*>())
-        fit->setBudget(w.fit_budget);
-    m_tools->activate(w.tool);
+    m_files->restoreSettings(w);
+    m_fit->setBudget(w.fit_budget);
+    m_tools->restoreSettings(w);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -7,11 +7,13 @@
 
 #include "ui/document/editing_session.h"
 #include "ui/frame_view/frame_view.h"
+#include "ui/stream_navigator/timeline.h"
 #include "ui/tools/tool_manager.h"
 #include "visioncore/services/lut_compare.h"
 
 #include <QMainWindow>
 
+#include <memory>
 #include <optional>
 
 class QLabel;
@@ -19,17 +21,19 @@ class QMenu;
 
 namespace fieldsight::ui {
 
-class AnnotationCommands;
+class AnnotationsFile;
 class AnnotationStrip;
 class BookmarksPanel;
 class CalibrateCommands;
+class CellHighlights;
 class DetectionsPanel;
 class DiskWatch;
 class EffectStrip;
 class EvaluationPanel;
+class FitCommands;
 class FrameMarksStrip;
 class LightStrip;
-class FileCommands;
+class SessionFiles;
 class FrameRecorder;
 class HistoryPanel;
 class InspectorPanel;
@@ -52,9 +56,10 @@ public:
 
     EditingSession& session() { return *m_session; }
     ToolManager& tools() { return *m_tools; }
-    FileCommands& files() { return *m_files; }
-    AnnotationCommands& annotationFiles() { return *m_annotation_files; }
+    SessionFiles& files() { return *m_files; }
+    AnnotationsFile& annotationFiles() { return *m_annotation_files; }
     CalibrateCommands& calibrate() { return *m_calibrate; }
+    FitCommands& fit() { return *m_fit; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -64,11 +69,11 @@ public:
     LutPanel& lutPanel() { return *m_lut_panel; }
     UvPlanePanel& uvPanel() { return *m_uv; }
     BookmarksPanel& bookmarksPanel() { return *m_bookmarks; }
-    EffectStrip& effectStrip() { return *m_effect_strip; }
+    EffectStrip& effectStrip() { return m_timeline->effectStrip(); }
     EvaluationPanel& evaluationPanel() { return *m_evaluation; }
     /// The timeline's marks of the frames where detections and truth disagree.
-    FrameMarksStrip& disagreementStrip() { return *m_disagreement_strip; }
-    LightStrip& lightStrip() { return *m_light_strip; }
+    FrameMarksStrip& disagreementStrip() { return m_timeline->disagreementStrip(); }
+    LightStrip& lightStrip() { return m_timeline->lightStrip(); }
     FrameRecorder& recorder() { return *m_recorder; }
     MessageBar& messageBar() { return *m_message_bar; }
     OfferBar& recoveryBar() { return *m_recovery_bar; }
@@ -78,7 +83,7 @@ public:
     /// The offer to reload a document's file another window or a program changed (DiskWatch).
     OfferBar& diskBar() { return *m_disk_bar; }
     DiskWatch& diskWatch() { return *m_disk_watch; }
-    AnnotationStrip& annotationStrip() { return *m_annotation_strip; }
+    AnnotationStrip& annotationStrip() { return m_timeline->annotationStrip(); }
     QMenu& docksMenu() { return *m_docks_menu; }
 
     /// Shows `text` in the message bar (red for an error, blue for a note) and the status bar.
@@ -88,7 +93,6 @@ public:
     /// Hides the message bar, unless a problem that lasts the session (the settings could not
     /// be read) is to be seen: then that is shown again.
     void clearMessage();
-    void setMode(ViewMode mode);
     /// The frame view as shown.
     QImage snapshot();
     /// Lights the current frame's pixels in `cells` (the compare dialog's chosen row).
@@ -111,28 +115,23 @@ private:
     void onFrameReady();
     /// The detections and inspector panels show the current frame (after the view painted it).
     void refreshPanels();
-    /// The current frame's pixels in chosen cells (the UV plane's selection, the compare
-    /// dialog's row), highlighted in the image.
-    void refreshCellHighlights();
     void updateTitle();
 
     EditingSession* m_session = nullptr;
     ToolManager* m_tools = nullptr;
-    FileCommands* m_files = nullptr;
-    AnnotationCommands* m_annotation_files = nullptr;
+    SessionFiles* m_files = nullptr;
+    AnnotationsFile* m_annotation_files = nullptr;
     CalibrateCommands* m_calibrate = nullptr;
+    FitCommands* m_fit = nullptr;
     FrameRecorder* m_recorder = nullptr;
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;
-    EffectStrip* m_effect_strip = nullptr;
-    FrameMarksStrip* m_disagreement_strip = nullptr;
-    LightStrip* m_light_strip = nullptr;
+    std::unique_ptr<Timeline> m_timeline;
     MessageBar* m_message_bar = nullptr;
     OfferBar* m_recovery_bar = nullptr;
     OfferBar* m_annotations_recovery_bar = nullptr;
     OfferBar* m_disk_bar = nullptr;
     DiskWatch* m_disk_watch = nullptr;
-    AnnotationStrip* m_annotation_strip = nullptr;
     LayersPanel* m_layers = nullptr;
     PipelinePanel* m_pipeline = nullptr;
     DetectionsPanel* m_detections = nullptr;
@@ -146,9 +145,8 @@ private:
     QLabel* m_status_zoom = nullptr;
     QLabel* m_status_time = nullptr;
     QLabel* m_status_effect = nullptr;
-    QLabel* m_scores_change = nullptr; ///< what the last change did to the evaluation
     QLabel* m_status_annotation = nullptr;
-    std::optional<CellMask> m_compare_cells; ///< the compare dialog's chosen row, if any
+    CellHighlights* m_highlights = nullptr;
     std::optional<QPoint> m_hover;
     QString m_last_message;
     QString m_standing_problem; ///< what clearMessage() shows again (settings not read)

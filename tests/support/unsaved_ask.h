@@ -56,7 +56,7 @@ inline void answerUnsavedAsk(MainWindow& w, ScriptedDialogs& dialogs, const Unsa
 {
     const auto canonical = [](const QString& path) { return QFileInfo(path).canonicalFilePath(); };
     dialogs.answers.push_back(answer);
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     bool closed = false;
     if (close) {
         closed = w.close();

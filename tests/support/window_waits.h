@@ -2,9 +2,9 @@
 // a scan.
 #pragma once
 
-#include "ui/document/edit_effect_scan.h"
+#include "ui/scans/edit_effect_scan.h"
 #include "ui/frame_view/frame_view.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/detections_panel.h"
@@ -36,7 +36,7 @@ inline bool waitForFrame(MainWindow& w, std::size_t index)
 
 inline bool openAndWait(MainWindow& w, const QString& stream)
 {
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(stream);
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;

@@ -9,9 +9,9 @@
 // - the same evaluation headless (evaluateStream, as `fieldsight eval`), for comparison.
 //   build/tests/bench_evaluation [DIR]
 #include "commands/commands.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/document/annotations_document.h"
-#include "ui/document/evaluation_scan.h"
+#include "ui/scans/evaluation_scan.h"
 #include "ui/main_window.h"
 #include "ui/panels/evaluation_panel.h"
 #include "visioncore/services/lut_editing.h"
@@ -173,7 +173,7 @@ int main(int argc, char** argv)
     w.show();
     QElapsedTimer opened;
     opened.start();
-    QSignalSpy open(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy open(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(big);
     if (!open.wait(120000) || !open.front().front().toBool())
         return 1;

@@ -15,10 +15,10 @@
 // - opening a 9,000-frame .strm and a folder of 9,000 PNGs, and resident memory while playing the
 //   .strm through.
 #include "commands/commands.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
-#include "ui/document/edit_effect_scan.h"
+#include "ui/scans/edit_effect_scan.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/tools/annotate_tool.h"
 #include "visioncore/services/lut_editing.h"
@@ -110,7 +110,7 @@ bool waitPainted(MainWindow& w, int timeout_ms = 5000)
 
 bool open(MainWindow& w, const QString& stream)
 {
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(stream);
     return opened.wait(60000) && opened.front().front().toBool() && waitPainted(w);
 }

@@ -14,14 +14,14 @@
 // of disagreements (go there, culprits drawn; --dock evaluation_dock shows the list).
 // --signature writes what the shot shows of the window's make-up (menus, docks, tool bars, layers)
 // beside it, so a check can tell a screenshot made from an older window (docs/make_screenshots.sh).
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/inspector_panel.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/uv_plane_panel.h"
-#include "ui/document/edit_effect_scan.h"
+#include "ui/scans/edit_effect_scan.h"
 #include "ui/panels/evaluation_panel.h"
 
 #include "tool_platform.h"
@@ -167,7 +167,7 @@ int main(int argc, char** argv)
         p.value("size").isEmpty() ? QStringList{"1280", "800"} : p.value("size").split('x');
     w.resize(size[0].toInt(), size[1].toInt());
     w.show();
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(pos[1], p.value("lut"));
     if (!opened.wait(20000) || !opened.front().front().toBool()) {
         std::cerr << "cannot open: " << w.lastMessage().toStdString() << "\n";

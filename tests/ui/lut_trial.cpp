@@ -12,8 +12,8 @@
 // light), it opens that set with the table and clicks the posts on two of its pictures, 000009
 // and 000048, and wand-fills the carpet there; the other 24 are not touched, so they score the
 // table as a venue's new frames would. Screenshots of the editor go to OUT_DIR/*.png.
-#include "ui/document/edit_effect_scan.h"
-#include "ui/actions/file_commands.h"
+#include "ui/scans/edit_effect_scan.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
@@ -120,7 +120,7 @@ int main(int argc, char** argv)
     ui::MainWindow w;
     w.resize(1500, 950);
     w.show();
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(stream); // no default.lut: an empty table
     if (!opened.wait(20000) || !opened.front().front().toBool())
         return 1;

@@ -6,7 +6,7 @@
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/panels/ab_compare_dialog.h"
+#include "ui/dialogs/ab_compare_dialog.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/services/stream_runner.h"
 

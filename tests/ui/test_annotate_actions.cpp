@@ -9,7 +9,7 @@
 #include "support/test_files.h"
 #include "support/unsaved_ask.h"
 #include "support/window_waits.h"
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/services/annotation_editing.h"

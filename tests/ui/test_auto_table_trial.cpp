@@ -163,7 +163,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         // An empty table: a new one, whatever the stream brings.
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         w.files().openStream(stream);
         QVERIFY(opened.wait(30000) && opened.front().front().toBool());
         QVERIFY(w.files().newLut());

@@ -8,7 +8,7 @@
 #include "support/window_waits.h"
 #include "ui/adapters/local_path.h"
 #include "ui/document/lut_document.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 #include "visioncore/basics/colour_lut.h"
@@ -163,7 +163,7 @@ class TestBadInput : public QObject
             ui::fromLocalPath(c.gui_stream.starts_with("/") ? c.gui_stream : at(c.gui_stream));
         QString message;
         if (c.gui_frame == 0) {
-            QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+            QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
             if (!c.gui_lut.empty())
                 w.files().openLut(ui::fromLocalPath(c.gui_lut));
             else

@@ -6,9 +6,9 @@
 #include "support/child_process.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/document/annotations_document.h"
-#include "ui/document/evaluation_scan.h"
+#include "ui/scans/evaluation_scan.h"
 #include "ui/main_window.h"
 #include "ui/panels/evaluation_panel.h"
 #include "ui/panels/lut_panel.h"
@@ -256,7 +256,7 @@ private slots:
         QVERIFY(panel.changeText().isEmpty()); // no change yet
         const double before = cell(panel, 0, 5).toDouble();
         QVERIFY2(before > 0.5, qPrintable(cell(panel, 0, 5)));
-        QVERIFY(w.lutPanel().clearClass(Colour::Orange) > 0);
+        QVERIFY(w.session().lut().clearClass(Colour::Orange) > 0);
         QVERIFY(w.session().evaluation().pending());
         QVERIFY(waitForEvaluation(w));
         const double after = cell(panel, 0, 5).toDouble();
@@ -278,7 +278,7 @@ private slots:
                 .arg(QString::number(after, 'f', 2), QString::number(before, 'f', 2))));
         // The table edit again, and an annotation edit landing while it is being scored: the
         // change is still shown, measured on the annotations as they now are.
-        QVERIFY(w.lutPanel().clearClass(Colour::Orange) > 0);
+        QVERIFY(w.session().lut().clearClass(Colour::Orange) > 0);
         ui::AnnotationsDocument& truth = w.session().annotations();
         FrameAnnotation f3 = *truth.frame("frame_000003.png");
         f3.truth.output<Ball>().clear(); // its ball no longer there: one fewer to find

@@ -11,7 +11,7 @@
 #include "ui/actions/fit_commands.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
-#include "ui/panels/fit_result_dialog.h"
+#include "ui/dialogs/fit_result_dialog.h"
 #include "ui/settings/window_settings.h"
 #include "ui/widgets/message_bar.h"
 

@@ -5,7 +5,7 @@
 #include "support/light_ramp.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/document/light_scan.h"
+#include "ui/scans/light_scan.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
 #include "ui/stream_navigator/light_strip.h"

@@ -4,7 +4,7 @@
 #include "support/test_files.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/document/editing_session.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"

@@ -5,13 +5,13 @@
 #include "support/window_waits.h"
 #include "support/test_files.h"
 #include "support/synthetic_frames.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "support/scripted_dialogs.h"
 #include "ui/widgets/message_bar.h"
 #include "ui/settings/window_settings.h"
 #include "ui/panels/lut_panel.h"
-#include "ui/panels/lut_compare_dialog.h"
+#include "ui/dialogs/lut_compare_dialog.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "visioncore/services/stream_runner.h"
@@ -52,11 +52,18 @@ bool waitForLut(MainWindow& w, const std::shared_ptr<const ColourLut>& lut)
 
 bool openAndWait(MainWindow& w)
 {
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(sampleStream());
     if (!opened.wait(10000) || !opened.front().front().toBool())
         return false;
     return waitForLut(w, w.session().lut().version());
+}
+
+/// The frame shown (YCbCr), what a retarget is estimated from.
+const cv::Mat* shownFrame(MainWindow& w)
+{
+    const auto& out = w.session().stream().current();
+    return out && !out->frame.ycbcr.empty() ? &out->frame.ycbcr : nullptr;
 }
 
 /// Widget position of image pixel `p` at zoom 1 with the image at the view's corner.
@@ -616,20 +623,20 @@ private slots:
         QVERIFY(showAndOpen(w));
         const ColourLut lab = w.session().lut().table();
         std::size_t samples = 0;
-        const ColourShift none = w.lutPanel().estimateRetarget(&samples);
+        const ColourShift none = w.session().lut().estimateRetarget(shownFrame(w), &samples);
         QCOMPARE(samples, std::size_t(320 * (240 - 160)));
         // The lab's own frame: the table fits it, the estimate is small.
         QVERIFY(std::abs(none.y) <= 12 && std::abs(none.cb) <= 6 && std::abs(none.cr) <= 6);
 
         // The same table moved away by a known shift is brought back close to where it was.
         const ColourShift away{-20, 8, -8};
-        QVERIFY(w.lutPanel().retarget(away));
-        const ColourShift back = w.lutPanel().estimateRetarget();
+        QVERIFY(w.session().lut().retarget(away));
+        const ColourShift back = w.session().lut().estimateRetarget(shownFrame(w));
         QVERIFY2(std::abs(back.y - (none.y + 20)) <= 2 && std::abs(back.cb - (none.cb - 8)) <= 2 &&
                      std::abs(back.cr - (none.cr + 8)) <= 2,
                  qPrintable(QString("%1 %2 %3").arg(back.y).arg(back.cb).arg(back.cr)));
         const int steps = w.session().lut().undoStack().count();
-        QVERIFY(w.lutPanel().retarget(back));
+        QVERIFY(w.session().lut().retarget(back));
         QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         // Green is where the field is again: most of the bottom third classifies green.
         QVERIFY(waitForLut(w, w.session().lut().version()));
@@ -663,7 +670,7 @@ private slots:
         MainWindow w;
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         w.files().openStream(copy);
         QVERIFY(opened.wait(10000));
         QVERIFY(waitForLut(w, w.session().lut().version()));
@@ -754,7 +761,7 @@ private slots:
 
         // A window opened later finds the samples again.
         MainWindow again;
-        QSignalSpy reopened(&again.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy reopened(&again.files(), &ui::SessionFiles::streamOpened);
         again.files().openStream(copy);
         QVERIFY(reopened.wait(10000));
         QCOMPARE(again.session().samples().samples().samples.size(), std::size_t(1));

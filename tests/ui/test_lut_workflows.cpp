@@ -7,7 +7,7 @@
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
 #include "ui/adapters/image_adapter.h"
-#include "ui/document/frame_recorder.h"
+#include "ui/recording/frame_recorder.h"
 #include "ui/panels/lut_panel.h"
 #include "ui/panels/pipeline_panel.h"
 #include "ui/tools/tool.h"
@@ -381,7 +381,7 @@ private slots:
             QVERIFY(waitForFrame(w, 3));
             QVERIFY(openAndWait(w, b));
             QCOMPARE(w.session().stream().currentIndex(), std::size_t(0));
-            QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+            QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
             w.files().openStream(a);
             QVERIFY(opened.wait(10000));
             QVERIFY(waitForFrame(w, 3));
@@ -393,7 +393,7 @@ private slots:
         again.show();
         const ui::WindowSettings last = ui::WindowSettings::load();
         QCOMPARE(last.stream, a);
-        QSignalSpy opened(&again.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&again.files(), &ui::SessionFiles::streamOpened);
         again.files().openLastSession(last.stream, last.lut);
         QVERIFY(opened.wait(10000));
         QVERIFY(waitForFrame(again, 5));

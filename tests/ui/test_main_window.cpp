@@ -11,9 +11,9 @@
 #include "ui/adapters/local_path.h"
 #include "ui/adapters/overlay_painter.h"
 #include "ui/document/bookmarks.h"
-#include "ui/document/frame_recorder.h"
+#include "ui/recording/frame_recorder.h"
 #include "ui/document/samples_document.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
 #include "ui/panels/bookmarks_panel.h"
 #include "ui/panels/inspector_panel.h"
@@ -570,7 +570,7 @@ private slots:
     {
         MainWindow w(m_pipeline);
         QVERIFY(openAndWait(w, sampleStream()));
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         const QString missing = m_dir.filePath("no_such_stream");
         w.files().openStream(missing);
         QVERIFY(opened.wait(5000));
@@ -672,7 +672,7 @@ private slots:
         QCOMPARE(w.navigator().speed(), 10);
         QVERIFY(w.navigator().loopAction()->isChecked());
         QCOMPARE(w.size(), QSize(1200, 760));
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         w.files().openLastSession(ui::WindowSettings::load().stream,
                                   ui::WindowSettings::load().lut);
         QVERIFY(opened.wait(5000));
@@ -682,13 +682,13 @@ private slots:
 
     void aFirstRunOpensTheUsersCopyOfTheSampleNotTheBundledOne()
     {
-        const QString bundled = ui::FileCommands::bundledSampleStream();
+        const QString bundled = ui::SessionFiles::bundledSampleStream();
         QVERIFY2(!bundled.isEmpty(), "the bundled sample stream is part of the project");
-        const QString copy = ui::FileCommands::sampleStreamCopy();
+        const QString copy = ui::SessionFiles::sampleStreamCopy();
         QDir(copy).removeRecursively(); // as on a first run
         MainWindow w(m_pipeline);
         w.show();
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         w.files().openLastSession({}, {});
         QVERIFY(opened.wait(5000));
         const QString shown = QFileInfo(w.session().stream().streamSpec()).canonicalFilePath();
@@ -697,7 +697,7 @@ private slots:
         QCOMPARE(QDir(copy).entryList(QDir::Files), QDir(bundled).entryList(QDir::Files));
         // A save goes into the copy; the next run keeps that copy as it is.
         QVERIFY(w.session().lut().saveAs(copy + "/mine.lut").ok());
-        QCOMPARE(ui::FileCommands::sampleStreamCopy(), copy);
+        QCOMPARE(ui::SessionFiles::sampleStreamCopy(), copy);
         QVERIFY(QFileInfo::exists(copy + "/mine.lut"));
         QVERIFY(!QFileInfo::exists(bundled + "/mine.lut"));
     }
@@ -736,7 +736,7 @@ private slots:
             w.close(); // saves the settings
         }
         MainWindow w(m_pipeline);
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         w.files().openLastSession(ui::WindowSettings::load().stream,
                                   ui::WindowSettings::load().lut);
         QVERIFY(opened.wait(5000));

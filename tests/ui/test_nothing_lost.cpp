@@ -7,7 +7,7 @@
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/document/bookmarks_document.h"
 #include "ui/document/samples_document.h"
 #include "ui/panels/pipeline_panel.h"

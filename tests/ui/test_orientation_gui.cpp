@@ -7,9 +7,9 @@
 #include "support/window_waits.h"
 #include "support/synthetic_frames.h"
 #include "support/turned_streams.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/adapters/image_adapter.h"
-#include "ui/document/edit_effect_scan.h"
+#include "ui/scans/edit_effect_scan.h"
 #include "ui/main_window.h"
 
 #include <nlohmann/json.hpp>
@@ -78,7 +78,7 @@ bool waitFrame(MainWindow& w)
 
 bool open(MainWindow& w, const std::string& stream, const QString& lut = {})
 {
-    QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+    QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
     w.files().openStream(QString::fromStdString(stream), lut);
     return opened.wait(10000) && opened.front().front().toBool() && waitFrame(w);
 }

@@ -2,7 +2,7 @@
 // icon found by its id, the default parameters file kept equal to the stage registry's
 // defaults, and the installed sample stream found from the installed executable.
 #include "support/fake_tool.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/application.h"
 #include "ui/document/editing_session.h"
 #include "ui/tools/tool_manager.h"
@@ -177,10 +177,10 @@ private slots:
         const QString before = qEnvironmentVariable("FIELDSIGHT_SAMPLE_STREAM");
         qunsetenv("FIELDSIGHT_SAMPLE_STREAM");
         // Nothing installed yet: the source tree's stream.
-        QCOMPARE(FileCommands::bundledSampleStream(bin),
+        QCOMPARE(SessionFiles::bundledSampleStream(bin),
                  QDir::cleanPath(sourcePath("sample_streams/lab1")));
         QVERIFY(QDir().mkpath(installed));
-        QCOMPARE(FileCommands::bundledSampleStream(bin), QDir::cleanPath(installed));
+        QCOMPARE(SessionFiles::bundledSampleStream(bin), QDir::cleanPath(installed));
         if (!before.isEmpty())
             qputenv("FIELDSIGHT_SAMPLE_STREAM", before.toLocal8Bit());
     }

@@ -416,7 +416,7 @@ private slots:
         QVERIFY(openAndWait(w, a));
         QVERIFY(w.recoveryBar().isVisible());
         QVERIFY2(w.recoveryBar().question().contains(b), qPrintable(w.recoveryBar().question()));
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         QVERIFY(w.files().recoverLut());
         QVERIFY(opened.wait(10000));
         QVERIFY(opened.front().front().toBool());

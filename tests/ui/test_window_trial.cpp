@@ -10,7 +10,7 @@
 #include "support/test_files.h"
 #include "support/window_waits.h"
 
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/overlay_painter.h"
 #include "ui/dialogs/dialogs.h"

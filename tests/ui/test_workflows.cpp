@@ -368,7 +368,7 @@ private slots:
         QVERIFY(!drop(w, QUrl("https://example.org/stream")));
         QCOMPARE(canonical(w.session().stream().streamSpec()), canonical(a));
 
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+        QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
         QVERIFY(drop(w, QUrl::fromLocalFile(b)));
         QVERIFY(opened.wait(10000));
         QVERIFY(opened.front().front().toBool());
@@ -411,7 +411,7 @@ private slots:
             QVERIFY(openAndWait(w, a));
             QVERIFY(openAndWait(w, b));
             QCOMPARE(listed(w), (QStringList{b, a}));
-            QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
+            QSignalSpy opened(&w.files(), &ui::SessionFiles::streamOpened);
             recentMenu(w)->actions().at(1)->trigger();
             QVERIFY(opened.wait(10000));
             QCOMPARE(canonical(w.session().stream().streamSpec()), canonical(a));

@@ -6,11 +6,11 @@
 // services/annotation_editing's.
 #include "ui/actions/menus.h"
 #include "ui/document/annotations_document.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
+#include "ui/tools/tool_manager.h"
 #include "visioncore/services/annotation_editing.h"
 
 #include <QMenuBar>
-#include <QStatusBar>
 
 #include <optional>
 
@@ -29,9 +29,9 @@ QString titleOf(const PerceptKind& kind)
 }
 
 /// The frame shown, when the open stream has frames to annotate; else says why not.
-std::optional<std::size_t> shownFrame(MainWindow& w)
+std::optional<std::size_t> shownFrame(const MenuTarget& w)
 {
-    const StreamDocument& stream = w.session().stream();
+    const StreamDocument& stream = w.session.stream();
     if (!stream.hasStream() || stream.live() || stream.frameCount() == 0) {
         w.showMessage(tr("Annotations are made on the frames of a stream (a live camera has "
                          "none to come back to)"),
@@ -41,9 +41,9 @@ std::optional<std::size_t> shownFrame(MainWindow& w)
     return stream.currentIndex();
 }
 
-std::string nameOf(MainWindow& w, std::size_t index)
+std::string nameOf(const MenuTarget& w, std::size_t index)
 {
-    return w.session().stream().frameName(index).toStdString();
+    return w.session.stream().frameName(index).toStdString();
 }
 
 std::vector<std::string> frameNames(const StreamDocument& stream)
@@ -56,44 +56,41 @@ std::vector<std::string> frameNames(const StreamDocument& stream)
 }
 
 /// A note in the status bar: what an action did.
-void tell(MainWindow& w, const QString& text)
+void tell(const MenuTarget& w, const QString& text)
 {
-    w.statusBar()->showMessage(text, 6000);
+    w.showStatus(text, 6000);
 }
 
-void copyPrevious(MainWindow& w)
+void copyPrevious(const MenuTarget& w)
 {
     const auto index = shownFrame(w);
     if (!index)
         return;
-    AnnotationsDocument& doc = w.session().annotations();
-    const FrameStates states = frameStates(frameNames(w.session().stream()), doc.annotations());
-    const std::optional<std::size_t> from = previousAnnotated(states.annotated, *index);
-    if (!from) {
+    const AnnotationsDocument::Copy copy =
+        w.session.annotations().copyPrevious(frameNames(w.session.stream()), *index);
+    if (!copy.from) {
         w.showMessage(tr("No frame before this one has annotations to copy"), false);
         return;
     }
-    const FrameAnnotation* source = doc.frame(nameOf(w, *from));
-    const FrameAnnotation copy = copiedAnnotation(*source);
-    if (!doc.editFrame(nameOf(w, *index), copy, tr("Copy frame %1's annotations").arg(*from))) {
-        tell(w, tr("This frame's annotations already equal frame %1's").arg(*from));
+    if (!copy.changed) {
+        tell(w, tr("This frame's annotations already equal frame %1's").arg(*copy.from));
         return;
     }
     tell(w, tr("Copied frame %1's annotations (%n object(s)) onto frame %2, not done yet",
-               int(objectCount(copy)))
-                .arg(*from)
+               int(copy.objects))
+                .arg(*copy.from)
                 .arg(*index));
 }
 
 /// Makes the detections of `kinds` this frame's annotations; the other kinds keep theirs (a
 /// keyframed track of another kind survives).
-void detectionsToTruth(MainWindow& w, const std::vector<const PerceptKind*>& kinds,
+void detectionsToTruth(const MenuTarget& w, const std::vector<const PerceptKind*>& kinds,
                        const QString& which)
 {
     const auto index = shownFrame(w);
     if (!index)
         return;
-    const std::shared_ptr<const FrameOutput>& out = w.session().stream().current();
+    const std::shared_ptr<const FrameOutput>& out = w.session.stream().current();
     if (!out || out->index != *index) {
         w.showMessage(tr("This frame's detections are not in yet; try again when it is shown"),
                       false);
@@ -103,28 +100,24 @@ void detectionsToTruth(MainWindow& w, const std::vector<const PerceptKind*>& kin
         w.showMessage(tr("This frame has no detections to take: %1").arg(out->error));
         return;
     }
-    AnnotationsDocument& doc = w.session().annotations();
-    const std::string name = nameOf(w, *index);
-    const FrameAnnotation* now = doc.frame(name);
-    const FrameAnnotation after =
-        detectionsAsTruth(now ? *now : FrameAnnotation{}, out->result.percepts, kinds);
-    if (!doc.editFrame(name, after,
-                       tr("Detections to annotations: %1 (frame %2)").arg(which).arg(*index))) {
+    const std::optional<std::size_t> objects = w.session.annotations().takeDetections(
+        frameNames(w.session.stream()), *index, out->result.percepts, kinds, which);
+    if (!objects) {
         tell(w, tr("This frame's annotations (%1) already equal its detections").arg(which));
         return;
     }
     tell(w, tr("This frame's detections (%1) are its annotations now (%n object(s) on the frame): "
                "correct them, then mark the frame done (D)",
-               int(objectCount(after)))
+               int(*objects))
                 .arg(which));
 }
 
-void toggleDone(MainWindow& w)
+void toggleDone(const MenuTarget& w)
 {
     const auto index = shownFrame(w);
     if (!index)
         return;
-    AnnotationsDocument& doc = w.session().annotations();
+    AnnotationsDocument& doc = w.session.annotations();
     const std::string name = nameOf(w, *index);
     const FrameAnnotation* now = doc.frame(name);
     FrameAnnotation after = now ? *now : FrameAnnotation{};
@@ -134,12 +127,12 @@ void toggleDone(MainWindow& w)
                              : tr("Frame %1 not done").arg(*index));
 }
 
-void toggleReviewed(MainWindow& w, const PerceptKind& kind)
+void toggleReviewed(const MenuTarget& w, const PerceptKind& kind)
 {
     const auto index = shownFrame(w);
     if (!index)
         return;
-    AnnotationsDocument& doc = w.session().annotations();
+    AnnotationsDocument& doc = w.session.annotations();
     const std::string name = nameOf(w, *index);
     const FrameAnnotation* now = doc.frame(name);
     const FrameAnnotation before = now ? *now : FrameAnnotation{};
@@ -160,14 +153,14 @@ void toggleReviewed(MainWindow& w, const PerceptKind& kind)
                     .arg(titleOf(kind)));
 }
 
-void jumpNotDone(MainWindow& w, int direction)
+void jumpNotDone(const MenuTarget& w, int direction)
 {
     const auto index = shownFrame(w);
     if (!index)
         return;
-    StreamDocument& stream = w.session().stream();
+    StreamDocument& stream = w.session.stream();
     const FrameStates states =
-        frameStates(frameNames(stream), w.session().annotations().annotations());
+        frameStates(frameNames(stream), w.session.annotations().annotations());
     const std::optional<NotDoneHit> hit = nextNotDone(states.done, *index, direction);
     if (!hit) {
         w.showMessage(tr("Every frame is done (%1 frames)").arg(qulonglong(states.done.size())),
@@ -187,48 +180,48 @@ void jumpNotDone(MainWindow& w, int direction)
 
 } // namespace
 
-void addAnnotateMenu(MainWindow& w)
+void addAnnotateMenu(QMenuBar& bar, const MenuTarget& w)
 {
-    QMenu* menu = w.menuBar()->addMenu(QObject::tr("&Annotate"));
+    QMenu* menu = bar.addMenu(QObject::tr("&Annotate"));
     menu->setObjectName(QStringLiteral("annotate_menu"));
     const auto item = [&](const QString& text, const QKeySequence& key, const char* name, auto fn) {
-        QAction* a = addMenuItem(menu, text, key, &w, fn);
+        QAction* a = addMenuItem(menu, text, key, w.parent, fn);
         a->setObjectName(QLatin1String(name));
         return a;
     };
     QList<QAction*> edits;
     edits << item(tr("Copy the previous annotated frame here"), QKeySequence(Qt::Key_V),
-                  "annotate.copy_previous", [&w] { copyPrevious(w); });
+                  "annotate.copy_previous", [w] { copyPrevious(w); });
     // One item per kind drawn by hand, from the registry, and all of them (A): taking one kind
     // leaves the others' annotations (a keyframed track) as they are.
     QMenu* take = menu->addMenu(tr("Detections to annotations"));
     take->setObjectName(QStringLiteral("annotate.detections_menu"));
-    QAction* all = addMenuItem(take, tr("All kinds"), QKeySequence(Qt::Key_A), &w, [&w] {
-        detectionsToTruth(w, w.session().annotations().kinds(), tr("all kinds"));
+    QAction* all = addMenuItem(take, tr("All kinds"), QKeySequence(Qt::Key_A), w.parent, [w] {
+        detectionsToTruth(w, w.session.annotations().kinds(), tr("all kinds"));
     });
     all->setObjectName(QStringLiteral("annotate.detections"));
     edits << all;
     take->addSeparator();
-    for (const PerceptKind* kind : w.session().annotations().kinds()) {
+    for (const PerceptKind* kind : w.session.annotations().kinds()) {
         if (kind->form == ShapeForm::None)
             continue;
         QAction* a = take->addAction(tr("%1 only").arg(titleOf(*kind)));
         a->setObjectName(
             QStringLiteral("annotate.detections.") +
             QString::fromUtf8(kind->truth_key.data(), qsizetype(kind->truth_key.size())));
-        QObject::connect(a, &QAction::triggered, &w,
-                         [&w, kind] { detectionsToTruth(w, {kind}, titleOf(*kind)); });
+        QObject::connect(a, &QAction::triggered, w.parent,
+                         [w, kind] { detectionsToTruth(w, {kind}, titleOf(*kind)); });
         edits << a;
     }
     QAction* done =
-        item(tr("Frame done"), QKeySequence(Qt::Key_D), "annotate.done", [&w] { toggleDone(w); });
+        item(tr("Frame done"), QKeySequence(Qt::Key_D), "annotate.done", [w] { toggleDone(w); });
     done->setCheckable(true);
     edits << done;
 
     menu->addSection(tr("Reviewed, nothing here"));
     std::vector<std::pair<QAction*, const PerceptKind*>> reviewed;
     int key = Qt::Key_1;
-    for (const PerceptKind* kind : w.session().annotations().kinds()) {
+    for (const PerceptKind* kind : w.session.annotations().kinds()) {
         if (kind->form == ShapeForm::None)
             continue;
         QAction* a = menu->addAction(tr("%1: reviewed, nothing here").arg(titleOf(*kind)));
@@ -239,24 +232,24 @@ void addAnnotateMenu(MainWindow& w)
             a->setShortcut(QKeyCombination(Qt::ControlModifier | Qt::AltModifier, Qt::Key(key++)));
         a->setCheckable(true);
         a->setToolTip(tr("Empties this frame's list and marks it complete; again: not reviewed"));
-        QObject::connect(a, &QAction::triggered, &w, [&w, kind] { toggleReviewed(w, *kind); });
+        QObject::connect(a, &QAction::triggered, w.parent, [w, kind] { toggleReviewed(w, *kind); });
         reviewed.emplace_back(a, kind);
         edits << a;
     }
     menu->addSeparator();
     edits << item(tr("Next frame not done"), QKeySequence(Qt::Key_N), "annotate.next_not_done",
-                  [&w] { jumpNotDone(w, 1); });
+                  [w] { jumpNotDone(w, 1); });
     edits << item(tr("Previous frame not done"), QKeySequence(Qt::SHIFT | Qt::Key_N),
-                  "annotate.previous_not_done", [&w] { jumpNotDone(w, -1); });
+                  "annotate.previous_not_done", [w] { jumpNotDone(w, -1); });
 
     // The checks follow the frame shown; the items need a stream of frames.
-    const auto refresh = [&w, done, reviewed, edits] {
-        StreamDocument& stream = w.session().stream();
+    const auto refresh = [w, done, reviewed, edits] {
+        StreamDocument& stream = w.session.stream();
         const bool frames = stream.hasStream() && !stream.live() && stream.frameCount() > 0;
         for (QAction* a : edits)
             a->setEnabled(frames);
         const FrameAnnotation* frame =
-            frames ? w.session().annotations().frame(nameOf(w, stream.currentIndex())) : nullptr;
+            frames ? w.session.annotations().frame(nameOf(w, stream.currentIndex())) : nullptr;
         done->setChecked(frame && frame->done);
         for (const auto& [action, kind] : reviewed) {
             const PerceptEntry* list = frame ? frame->truth.find(*kind) : nullptr;
@@ -264,10 +257,10 @@ void addAnnotateMenu(MainWindow& w)
                                (!list || list->size() == 0));
         }
     };
-    StreamDocument& stream = w.session().stream();
+    StreamDocument& stream = w.session.stream();
     QObject::connect(&stream, &StreamDocument::streamChanged, menu, refresh);
     QObject::connect(&stream, &StreamDocument::currentIndexChanged, menu, refresh);
-    QObject::connect(&w.session().annotations(), &AnnotationsDocument::changed, menu, refresh);
+    QObject::connect(&w.session.annotations(), &AnnotationsDocument::changed, menu, refresh);
     refresh();
 }
 

@@ -5,7 +5,7 @@
 // table as it was.
 #pragma once
 
-#include "ui/document/auto_lut_run.h"
+#include "ui/scans/auto_lut_run.h"
 
 #include <QObject>
 #include <QString>

@@ -1,7 +1,7 @@
 #include "ui/actions/disk_watch.h"
 
-#include "ui/actions/annotation_commands.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/annotations_file.h"
+#include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
 #include "ui/main_window.h"
 #include "ui/widgets/message_bar.h"

@@ -1,10 +1,10 @@
 // File: streams, tables, the camera recording and snapshots of the view.
 #include "ui/actions/coco_export_command.h"
-#include "ui/actions/annotation_commands.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/annotations_file.h"
+#include "ui/actions/session_files.h"
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/document/frame_recorder.h"
+#include "ui/recording/frame_recorder.h"
 #include "ui/main_window.h"
 #include "visioncore/io/lut_import.h"
 
@@ -61,7 +61,7 @@ void addRecordItem(MainWindow& w, QMenu* file)
 
 void addFileMenu(MainWindow& w)
 {
-    FileCommands& files = w.files();
+    SessionFiles& files = w.files();
     EditingSession& session = w.session();
     QMenu* file = w.menuBar()->addMenu(QObject::tr("&File"));
     addMenuItem(file, QObject::tr("Open stream folder…"), QKeySequence::Open, &w, [&] {
@@ -143,7 +143,7 @@ void addFileMenu(MainWindow& w)
                 files.saveSnapshot(path);
         });
     addMenuItem(file, QObject::tr("Copy view"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C),
-                &files, &FileCommands::copySnapshot);
+                &files, &SessionFiles::copySnapshot);
     file->addSeparator();
     addMenuItem(file, QObject::tr("Quit"), QKeySequence::Quit, &w, &QWidget::close);
 }

@@ -3,7 +3,7 @@
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
-#include "ui/panels/fit_result_dialog.h"
+#include "ui/dialogs/fit_result_dialog.h"
 #include "ui/widgets/progress_poll.h"
 
 #include <QLocale>

@@ -7,7 +7,7 @@
 // to the stream then writes. A stream without done annotations gets a message instead of a run.
 #pragma once
 
-#include "ui/document/tune_run.h"
+#include "ui/scans/tune_run.h"
 
 #include <QObject>
 #include <QPointer>

@@ -4,13 +4,13 @@
 // annotations document; the Qt-free rules are in visioncore/services/annotation_tracks.h.
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
+#include "ui/tools/tool_manager.h"
 #include "ui/tools/annotation_selection.h"
 
 #include "visioncore/services/annotation_tracks.h"
 
 #include <QMenuBar>
-#include <QStatusBar>
 
 #include <memory>
 
@@ -29,10 +29,10 @@ struct Target
     QString title; ///< the kind's, for the undo step's name
 };
 
-std::optional<Target> target(MainWindow& w)
+std::optional<Target> target(const MenuTarget& w)
 {
-    EditingSession& session = w.session();
-    const auto& object = w.tools().selection().object();
+    EditingSession& session = w.session;
+    const auto& object = w.tools.selection().object();
     if (!object || object->frame != currentFrameName(session))
         return std::nullopt;
     const FrameAnnotation* frame = session.annotations().frame(object->frame);
@@ -48,26 +48,26 @@ std::optional<Target> target(MainWindow& w)
 }
 
 /// The selected object, or a word in the status bar on how to select one.
-std::optional<Target> targetOrHint(MainWindow& w)
+std::optional<Target> targetOrHint(const MenuTarget& w)
 {
     auto t = target(w);
     if (!t)
-        w.statusBar()->showMessage(
-            QObject::tr("Select an object first: click it with its annotation tool"), 5000);
+        w.showStatus(QObject::tr("Select an object first: click it with its annotation tool"),
+                     5000);
     return t;
 }
 
-void commit(MainWindow& w, const AnnotationChanges& changes, const QString& text)
+void commit(const MenuTarget& w, const AnnotationChanges& changes, const QString& text)
 {
-    w.session().annotations().edit(text, changes.frames());
+    w.session.annotations().edit(text, changes.frames());
 }
 
-void toggleConcealed(MainWindow& w)
+void toggleConcealed(const MenuTarget& w)
 {
     const auto t = targetOrHint(w);
     if (!t)
         return;
-    AnnotationChanges changes(w.session().annotations().annotations());
+    AnnotationChanges changes(w.session.annotations().annotations());
     ObjectFlags flags = t->flags;
     flags.concealed = !flags.concealed;
     changes.edit(t->key).setFlags(t->kind->truth_key, t->index, flags);
@@ -76,16 +76,16 @@ void toggleConcealed(MainWindow& w)
                .arg(t->title));
 }
 
-void toggleKeyframe(MainWindow& w)
+void toggleKeyframe(const MenuTarget& w)
 {
     const auto t = targetOrHint(w);
     if (!t)
         return;
-    AnnotationChanges changes(w.session().annotations().annotations());
+    AnnotationChanges changes(w.session.annotations().annotations());
     const bool keyframe = !t->flags.keyframe;
-    if (!setKeyframe(changes, annotationFrameKeys(w.session()), t->at, *t->kind, t->index,
+    if (!setKeyframe(changes, annotationFrameKeys(w.session), t->at, *t->kind, t->index,
                      keyframe)) {
-        w.statusBar()->showMessage(
+        w.showStatus(
             QObject::tr("%1: this kind has no keyframes (propagate it instead)").arg(t->title),
             5000);
         return;
@@ -94,16 +94,16 @@ void toggleKeyframe(MainWindow& w)
            (keyframe ? QObject::tr("%1: keyframe") : QObject::tr("%1: no keyframe")).arg(t->title));
 }
 
-void toggleInterpolation(MainWindow& w)
+void toggleInterpolation(const MenuTarget& w)
 {
     const auto t = targetOrHint(w);
     if (!t)
         return;
-    AnnotationChanges changes(w.session().annotations().annotations());
+    AnnotationChanges changes(w.session.annotations().annotations());
     const bool interpolate = !t->flags.interpolate;
-    if (!setInterpolate(changes, annotationFrameKeys(w.session()), t->at, *t->kind, t->index,
+    if (!setInterpolate(changes, annotationFrameKeys(w.session), t->at, *t->kind, t->index,
                         interpolate)) {
-        w.statusBar()->showMessage(
+        w.showStatus(
             QObject::tr("Only a keyframe is interpolated from the one before: mark it first (K)"),
             5000);
         return;
@@ -113,61 +113,55 @@ void toggleInterpolation(MainWindow& w)
                .arg(t->title));
 }
 
-/// Asks how many frames (starting from the last answer, kept as `remembered`'s data, which the
-/// window's settings keep between sessions) and propagates the selected object that many frames
+/// Asks how many frames (starting from the last answer, which the selection keeps and the
+/// window's settings between sessions) and propagates the selected object that many frames
 /// forward (`direction` 1) or back (-1).
-void propagateSelected(MainWindow& w, int direction, QAction* remembered)
+void propagateSelected(const MenuTarget& w, int direction)
 {
     const auto t = targetOrHint(w);
     if (!t)
         return;
     const std::optional<int> count = Dialogs::current().number(
-        &w,
+        w.parent,
         direction > 0 ? QObject::tr("Propagate to the next frames")
                       : QObject::tr("Propagate to the previous frames"),
         QObject::tr("Copy the selected object to how many frames %1 this one?")
             .arg(direction > 0 ? QObject::tr("after") : QObject::tr("before")),
-        std::clamp(remembered->data().toInt(), 1, 100000), 1, 100000);
+        std::clamp(w.tools.selection().propagateFrames(), 1, 100000), 1, 100000);
     if (!count)
         return;
-    remembered->setData(*count);
-    AnnotationChanges changes(w.session().annotations().annotations());
-    const std::size_t made = propagate(changes, annotationFrameKeys(w.session()), t->at, *t->kind,
-                                       t->index, direction * *count);
-    commit(w, changes,
-           QObject::tr("%1: propagated to %n frame(s)", nullptr, int(made)).arg(t->title));
+    w.tools.selection().setPropagateFrames(*count);
+    w.session.annotations().propagate(annotationFrameKeys(w.session), t->at, *t->kind, t->index,
+                                      direction * *count);
 }
 
 } // namespace
 
-void addObjectMenu(MainWindow& w)
+void addObjectMenu(QMenuBar& bar, const MenuTarget& w)
 {
-    QMenu* menu = w.menuBar()->addMenu(QObject::tr("&Object"));
-    QAction* concealed = addMenuItem(menu, QObject::tr("Concealed"), QKeySequence(Qt::Key_Q), &w,
-                                     [&w] { toggleConcealed(w); });
-    QAction* keyframe = addMenuItem(menu, QObject::tr("Keyframe"), QKeySequence(Qt::Key_K), &w,
-                                    [&w] { toggleKeyframe(w); });
+    QMenu* menu = bar.addMenu(QObject::tr("&Object"));
+    QAction* concealed = addMenuItem(menu, QObject::tr("Concealed"), QKeySequence(Qt::Key_Q),
+                                     w.parent, [w] { toggleConcealed(w); });
+    QAction* keyframe = addMenuItem(menu, QObject::tr("Keyframe"), QKeySequence(Qt::Key_K),
+                                    w.parent, [w] { toggleKeyframe(w); });
     QAction* interpolate =
         addMenuItem(menu, QObject::tr("Interpolated from the previous keyframe"),
-                    QKeySequence(Qt::SHIFT | Qt::Key_K), &w, [&w] { toggleInterpolation(w); });
+                    QKeySequence(Qt::SHIFT | Qt::Key_K), w.parent, [w] { toggleInterpolation(w); });
     concealed->setObjectName(QStringLiteral("object.concealed"));
     keyframe->setObjectName(QStringLiteral("object.keyframe"));
     interpolate->setObjectName(QStringLiteral("object.interpolate"));
     menu->addSeparator();
-    // How many frames the last propagation went (both ways) is the first action's data, offered
-    // again.
-    QAction* next = menu->addAction(QObject::tr("Propagate to the next frames…"));
-    next->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
-    next->setObjectName(QStringLiteral("object.propagate_next"));
-    next->setData(10);
-    QObject::connect(next, &QAction::triggered, &w, [&w, next] { propagateSelected(w, 1, next); });
+    addMenuItem(menu, QObject::tr("Propagate to the next frames…"),
+                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), w.parent,
+                [w] { propagateSelected(w, 1); })
+        ->setObjectName(QStringLiteral("object.propagate_next"));
     addMenuItem(menu, QObject::tr("Propagate to the previous frames…"),
-                QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P), &w,
-                [&w, next] { propagateSelected(w, -1, next); })
+                QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P), w.parent,
+                [w] { propagateSelected(w, -1); })
         ->setObjectName(QStringLiteral("object.propagate_previous"));
 
     // The checks show the selected object's flags (none selected: all clear).
-    const auto sync = [&w, concealed, keyframe, interpolate] {
+    const auto sync = [w, concealed, keyframe, interpolate] {
         const auto t = target(w);
         concealed->setChecked(t && t->flags.concealed);
         keyframe->setChecked(t && t->flags.keyframe);
@@ -175,10 +169,10 @@ void addObjectMenu(MainWindow& w)
     };
     for (QAction* a : {concealed, keyframe, interpolate}) {
         a->setCheckable(true);
-        QObject::connect(a, &QAction::triggered, &w, sync); // also when nothing changed
+        QObject::connect(a, &QAction::triggered, w.parent, sync); // also when nothing changed
     }
-    QObject::connect(&w.tools().selection(), &AnnotationSelection::changed, &w, sync);
-    QObject::connect(&w.session().annotations(), &AnnotationsDocument::changed, &w, sync);
+    QObject::connect(&w.tools.selection(), &AnnotationSelection::changed, w.parent, sync);
+    QObject::connect(&w.session.annotations(), &AnnotationsDocument::changed, w.parent, sync);
     sync();
 }
 

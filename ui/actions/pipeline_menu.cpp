@@ -7,7 +7,7 @@
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
-#include "ui/panels/ab_compare_dialog.h"
+#include "ui/dialogs/ab_compare_dialog.h"
 
 #include "visioncore/basics/output_guard.h"
 #include "visioncore/io/orientation.h"
@@ -24,6 +24,13 @@ namespace {
 /// params.json in its folder, which the manifest then names (so the stream opens with them, in
 /// the window and on the command line). Never over a file the stream does not name.
 void saveParams(MainWindow& w);
+
+/// The stream names `file` as its own parameters, which hold what the settings hold.
+void markSaved(MainWindow& w, const std::string& file)
+{
+    w.session().stream().setParamsFile(file);
+    w.session().settings().setFile(fromLocalPath(file));
+}
 
 void saveParamsToStream(MainWindow& w)
 {
@@ -54,12 +61,12 @@ void saveParamsToStream(MainWindow& w)
         if (!s)
             w.showMessage(QString::fromStdString(s.error().message));
         else
-            stream.setParamsFile(file);
+            markSaved(w, file);
         return s.ok();
     };
     bool overwrite = false; // the stream's own file is written either way
-    if (settleDiskChange(w, named && stream.paramsFileChanged(), QObject::tr("the parameters"),
-                         fromLocalPath(file), overwrite, reload,
+    if (settleDiskChange(w, named && w.session().settings().changedOnDisk(),
+                         QObject::tr("the parameters"), fromLocalPath(file), overwrite, reload,
                          [&w] {
                              saveParams(w);
                              return true;
@@ -73,7 +80,7 @@ void saveParamsToStream(MainWindow& w)
         w.showMessage(QString::fromStdString(s.error().message));
         return;
     }
-    stream.setParamsFile(file);
+    markSaved(w, file);
     w.showMessage(QObject::tr("Saved the parameters as the stream's own (%1): it opens with them")
                       .arg(fromLocalPath(file)),
                   false);
@@ -136,7 +143,7 @@ void addPipelineMenu(MainWindow& w)
     compare->setObjectName(QStringLiteral("pipeline.compare_ab"));
     compare->setToolTip(QObject::tr("Run the annotated frames with another table or parameter set "
                                     "and list the frames it fixes and breaks"));
-    auto* fit = new FitCommands(w);
+    FitCommands* fit = &w.fit();
     QAction* fit_action = addMenuItem(pipe, QObject::tr("Fit to annotations…"),
                                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), fit,
                                       &FitCommands::fitToAnnotations);

@@ -1,5 +1,5 @@
 // Where the bundled sample stream is, and the user's own copy of it that a first run opens.
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 
 #include "ui/adapters/local_path.h"
 
@@ -12,7 +12,7 @@
 
 namespace fieldsight::ui {
 
-QString FileCommands::bundledSampleStream(const QString& exe_dir)
+QString SessionFiles::bundledSampleStream(const QString& exe_dir)
 {
     const QString app = exe_dir.isEmpty() ? QCoreApplication::applicationDirPath() : exe_dir;
     const QStringList candidates{
@@ -28,7 +28,7 @@ QString FileCommands::bundledSampleStream(const QString& exe_dir)
     return {};
 }
 
-QString FileCommands::sampleStreamCopy(QString* problem)
+QString SessionFiles::sampleStreamCopy(QString* problem)
 {
     const QString sample = bundledSampleStream();
     if (sample.isEmpty())

@@ -1,6 +1,6 @@
 // After Save LUT As: the offer to make the table the stream's own, with the orientation it was
 // made on (a table made on upright frames is no use to `run` reading them upside down).
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
@@ -10,7 +10,7 @@
 
 namespace fieldsight::ui {
 
-void FileCommands::offerAsStreamTable(const QString& path)
+void SessionFiles::offerAsStreamTable(const QString& path)
 {
     // A table saved under another name is not what the stream opens with next time, unless
     // its manifest names it: offer that.

@@ -78,14 +78,20 @@ void addViewMenu(MainWindow& w)
         {QObject::tr("Blend"), ViewMode::Blend}};
     int key = Qt::Key_1;
     for (const auto& [text, mode] : mode_list) {
-        QAction* a = addMenuItem(view, text, QKeySequence(Qt::ALT | key++), &w,
-                                 [&w, m = mode] { w.setMode(m); });
+        QAction* a = addMenuItem(view, text, QKeySequence(Qt::ALT | key++), &v,
+                                 [&v, m = mode] { v.setMode(m); });
         a->setObjectName(QStringLiteral("view.mode.%1").arg(int(mode)));
         a->setCheckable(true);
         a->setData(int(mode));
         modes->addAction(a);
     }
     modes->actions().front()->setChecked(true);
+    // The checks follow the view, whoever sets its mode (the saved settings, a test).
+    QObject::connect(&v, &FrameView::modeChanged, modes, [modes](ViewMode mode) {
+        for (QAction* a : modes->actions())
+            if (a->data().toInt() == int(mode))
+                a->setChecked(true);
+    });
     view->addSeparator();
     addMenuItem(view, QObject::tr("Zoom in"), QKeySequence::ZoomIn, &v, &FrameView::zoomIn);
     addMenuItem(view, QObject::tr("Zoom out"), QKeySequence::ZoomOut, &v, &FrameView::zoomOut);
@@ -97,7 +103,8 @@ void addViewMenu(MainWindow& w)
                                   &v, &FrameView::setLabelsShown);
     labels->setObjectName(QStringLiteral("view.labels"));
     labels->setCheckable(true);
-    labels->setChecked(true);
+    labels->setChecked(v.labelsShown());
+    QObject::connect(&v, &FrameView::labelsShownChanged, labels, &QAction::setChecked);
     addOrientationMenu(w, *view->addMenu(QObject::tr("&Orientation")));
     // The table follows slow changes of the light over the stream (fieldsight --adapt); the
     // strip under the timeline shows how far it has moved.
@@ -107,6 +114,7 @@ void addViewMenu(MainWindow& w)
     follow->setObjectName(QStringLiteral("view.follow_light"));
     follow->setCheckable(true);
     follow->setChecked(light.enabled());
+    QObject::connect(&light, &LightScan::enabledChanged, follow, &QAction::setChecked);
     follow->setToolTip(QObject::tr("From the stream's table, follow slow changes of the light's "
                                    "colour and level over the frames, as --adapt does"));
     view->addSeparator();

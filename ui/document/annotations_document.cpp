@@ -1,10 +1,12 @@
 #include "ui/document/annotations_document.h"
 
 #include "ui/adapters/local_path.h"
-#include "ui/document/recovery_meta.h"
+#include "ui/recovery/recovery_meta.h"
 
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/json_text.h"
+#include "visioncore/services/annotation_editing.h"
+#include "visioncore/services/annotation_tracks.h"
 #include "visioncore/services/evaluation.h"
 
 #include <QCryptographicHash>
@@ -58,16 +60,8 @@ private:
 };
 
 AnnotationsDocument::AnnotationsDocument(const Pipeline& pipeline, QObject* parent)
-    : QObject(parent), m_kinds(pipeline.perceptKinds())
+    : Document(Saving::ByUser, parent), m_kinds(pipeline.perceptKinds())
 {
-    m_recovery_dir = defaultRecoveryDir();
-    wireAutosave(*this, m_autosave, m_undo);
-}
-
-AnnotationsDocument::~AnnotationsDocument()
-{
-    QObject::disconnect(&m_undo, nullptr, this, nullptr);
-    blockSignals(true);
 }
 
 QString AnnotationsDocument::defaultPath(const QString& stream)
@@ -81,11 +75,8 @@ void AnnotationsDocument::reset()
     for (const auto& [name, frame] : m_annotations.frames)
         m_key_by_stem.emplace(frameStem(name), name);
     m_version.reset();
-    m_recovered = false;
-    m_undo.clear();
-    m_autosave.stop();
-    m_top_merge = 0;
-    m_top_index = -1;
+    clearHistory();
+    resetMerge();
 }
 
 void AnnotationsDocument::adopt(const QString& stream, const QString& path, Annotations annotations,
@@ -93,13 +84,9 @@ void AnnotationsDocument::adopt(const QString& stream, const QString& path, Anno
                                 const std::optional<FileFingerprint>& read)
 {
     m_stream = stream;
-    m_path = path;
     m_load_problem = load_problem;
     m_annotations = std::move(annotations);
-    if (read)
-        m_disk.remember(path, *read);
-    else
-        m_disk.remember(path);
+    setFile(path, read);
     reset();
     m_offered_recovery = findRecovery().has_value();
     emit changed({});
@@ -163,12 +150,8 @@ bool AnnotationsDocument::edit(const QString& text, FrameEdits after, int merge)
     }
     if (keyed.empty())
         return false;
-    const bool merging = merge > 0 && merge == m_top_merge && m_undo.index() == m_top_index;
-    if (!merging)
-        m_top_merge = 0;
-    m_undo.push(new AnnotationsCommand(*this, text, std::move(before), std::move(keyed), merge));
-    m_top_merge = merge;
-    m_top_index = m_undo.index();
+    pushEdit(new AnnotationsCommand(*this, text, std::move(before), std::move(keyed), merge),
+             merge);
     return true;
 }
 
@@ -178,6 +161,44 @@ bool AnnotationsDocument::editFrame(const std::string& name, FrameAnnotation aft
     FrameEdits edits;
     edits.emplace(name, std::move(after));
     return edit(text, std::move(edits), merge);
+}
+
+AnnotationsDocument::Copy AnnotationsDocument::copyPrevious(const std::vector<std::string>& frames,
+                                                            std::size_t index)
+{
+    Copy copy;
+    const FrameStates states = frameStates(frames, m_annotations);
+    copy.from = previousAnnotated(states.annotated, index);
+    if (!copy.from)
+        return copy;
+    const FrameAnnotation copied = copiedAnnotation(*frame(frames[*copy.from]));
+    copy.objects = objectCount(copied);
+    copy.changed =
+        editFrame(frames[index], copied, tr("Copy frame %1's annotations").arg(*copy.from));
+    return copy;
+}
+
+std::optional<std::size_t> AnnotationsDocument::takeDetections(
+    const std::vector<std::string>& frames, std::size_t index, const PerceptSet& detections,
+    const std::vector<const PerceptKind*>& kinds, const QString& which)
+{
+    const FrameAnnotation* now = frame(frames[index]);
+    const FrameAnnotation after =
+        detectionsAsTruth(now ? *now : FrameAnnotation{}, detections, kinds);
+    if (!editFrame(frames[index], after,
+                   tr("Detections to annotations: %1 (frame %2)").arg(which).arg(index)))
+        return std::nullopt;
+    return objectCount(after);
+}
+
+std::size_t AnnotationsDocument::propagate(const std::vector<std::string>& frames, std::size_t at,
+                                           const PerceptKind& kind, std::size_t object, int count)
+{
+    AnnotationChanges changes(m_annotations);
+    const std::size_t made = fieldsight::propagate(changes, frames, at, kind, object, count);
+    const QString title = QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size()));
+    edit(tr("%1: propagated to %n frame(s)", nullptr, int(made)).arg(title), changes.frames());
+    return made;
 }
 
 void AnnotationsDocument::apply(const FrameEdits& edits)
@@ -194,34 +215,31 @@ void AnnotationsDocument::apply(const FrameEdits& edits)
         names << QString::fromStdString(name);
     }
     m_version.reset();
-    if (!m_autosave.isActive())
-        m_autosave.start(); // at most the delay after the first unsaved edit
+    noteEdit();
     emit changed(names);
 }
 
-Status AnnotationsDocument::save()
+QString AnnotationsDocument::noFileMessage() const
 {
-    if (m_path.isEmpty())
-        return Error{"the annotations have no file yet: use Save Annotations As"};
-    if (!m_load_problem.isEmpty())
-        return Error{toLocalPath(m_path) +
-                     ": could not be read when the stream opened, so it is not written over; "
-                     "save the annotations under another name"};
-    if (changedOnDisk())
-        return Error{toLocalPath(m_path) +
-                     ": changed on disk since it was read (another window or program wrote "
-                     "it), so it is not written over; reload it or save under another name"};
-    return saveAs(m_path);
+    return QStringLiteral("the annotations have no file yet: use Save Annotations As");
+}
+
+QString AnnotationsDocument::saveRefusal() const
+{
+    if (m_load_problem.isEmpty())
+        return {};
+    return QStringLiteral(": could not be read when the stream opened, so it is not written over; "
+                          "save the annotations under another name");
 }
 
 Status AnnotationsDocument::reload(std::size_t frames)
 {
     // Noted before reading: a write during the read is a change still to be seen.
     DiskState read;
-    read.remember(m_path);
+    read.remember(path());
     Annotations disk;
-    if (!m_path.isEmpty() && localPathExists(m_path)) {
-        auto loaded = Annotations::load(toLocalPath(m_path), m_kinds, frames);
+    if (!path().isEmpty() && localPathExists(path())) {
+        auto loaded = Annotations::load(toLocalPath(path()), m_kinds, frames);
         if (!loaded)
             return loaded.error();
         disk = std::move(loaded).value();
@@ -233,31 +251,19 @@ Status AnnotationsDocument::reload(std::size_t frames)
     for (auto& [name, annotation] : disk.frames)
         edits.emplace(name, std::move(annotation));
     edit(tr("Reload annotations from disk"), std::move(edits));
-    m_top_merge = 0;
+    endMerge();
     m_load_problem.clear();
-    m_disk = read;
+    setDisk(read);
     markClean();
     return {};
 }
 
-void AnnotationsDocument::markClean()
+Status AnnotationsDocument::writeFile(const QString& to)
 {
-    m_recovered = false;
-    m_undo.setClean();
-    m_autosave.stop();
-    discardOwnRecovery();
-    emit modifiedChanged(false);
-}
-
-Status AnnotationsDocument::saveAs(const QString& path)
-{
-    if (Status s = m_annotations.save(toLocalPath(path), m_kinds); !s)
-        return s; // the edits stay in memory, and modified
-    if (path != m_path)
+    if (Status s = m_annotations.save(toLocalPath(to), m_kinds); !s)
+        return s;
+    if (to != path())
         m_load_problem.clear();
-    m_path = path;
-    m_disk.remember(path);
-    markClean();
     return {};
 }
 
@@ -267,7 +273,7 @@ QString AnnotationsDocument::recoveryFile(const QString& stream) const
                                                      QCryptographicHash::Sha1)
                                 .toHex()
                                 .left(16);
-    return QDir(m_recovery_dir)
+    return QDir(recoveryDir())
         .filePath(QStringLiteral("annotations-recovery-%1.json").arg(QString::fromLatin1(hash)));
 }
 
@@ -277,11 +283,11 @@ Status AnnotationsDocument::writeRecovery()
         return Error{"a live camera's annotations have no stream to be recovered onto"};
     if (m_offered_recovery)
         return {}; // the earlier session's file is not written over before the user chooses
-    if (!makeLocalFolder(m_recovery_dir))
-        return Error{toLocalPath(m_recovery_dir) + ": cannot create the recovery folder"};
+    if (!makeLocalFolder(recoveryDir()))
+        return Error{toLocalPath(recoveryDir()) + ": cannot create the recovery folder"};
     auto root = nlohmann::ordered_json::parse(m_annotations.toJson(m_kinds));
     nlohmann::ordered_json meta{{"format", kRecoveryFormat}};
-    putPath(meta, "path", m_path);
+    putPath(meta, "path", path());
     putPath(meta, "stream", m_stream);
     meta["saved_at"] = recoveryTimestamp();
     root["recovery"] = std::move(meta);
@@ -329,12 +335,11 @@ Status AnnotationsDocument::recover(const AnnotationsRecovery& recovery)
     if (!annotations)
         return annotations.error();
     m_annotations = std::move(annotations).value();
-    m_path = recovery.path;
     m_load_problem.clear();
-    m_disk.remember(m_path);
+    setFile(recovery.path);
     reset();
     m_offered_recovery = false;
-    m_recovered = true;
+    setRecovered();
     emit changed({});
     emit modifiedChanged(true);
     return {};

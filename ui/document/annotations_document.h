@@ -5,15 +5,12 @@
 // edit, and offered again only when that stream is opened.
 #pragma once
 
-#include "ui/document/disk_state.h"
+#include "ui/document/document.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
 
-#include <QObject>
 #include <QString>
 #include <QStringList>
-#include <QTimer>
-#include <QUndoStack>
 
 #include <map>
 #include <memory>
@@ -40,12 +37,11 @@ struct AnnotationsRecovery
     std::size_t frames = 0; ///< annotated frames in it
 };
 
-class AnnotationsDocument : public QObject
+class AnnotationsDocument : public Document
 {
     Q_OBJECT
 public:
     explicit AnnotationsDocument(const Pipeline& pipeline, QObject* parent = nullptr);
-    ~AnnotationsDocument() override;
 
     /// The kinds read and written, in the order files list them (the pipeline's percept kinds).
     const std::vector<const PerceptKind*>& kinds() const { return m_kinds; }
@@ -64,7 +60,6 @@ public:
     static QString defaultPath(const QString& stream);
 
     QString stream() const { return m_stream; }
-    QString path() const { return m_path; }
     QString loadProblem() const { return m_load_problem; }
     const Annotations& annotations() const { return m_annotations; }
     /// The annotation of frame `name` (found by name, or by frame stem), null when it has none.
@@ -74,9 +69,6 @@ public:
     /// The current annotations as an immutable version (one copy per change).
     std::shared_ptr<const AnnotationsVersion> version() const;
 
-    bool modified() const { return m_recovered || !m_undo.isClean(); }
-    QUndoStack& undoStack() { return m_undo; }
-
     /// Frame name -> its annotation after the edit (nullopt: the frame has none).
     using FrameEdits = std::map<std::string, std::optional<FrameAnnotation>>;
     /// Applies `after` as one undo step named `text`; edits with the same nonzero `merge` follow
@@ -85,72 +77,75 @@ public:
     /// The same for one frame.
     bool editFrame(const std::string& name, FrameAnnotation after, const QString& text,
                    int merge = 0);
-    /// A fresh merge id for edit().
-    int newMerge() { return ++m_last_merge; }
 
-    /// Saves to path() (atomically); an Error names the file and keeps the edits in memory. A
-    /// file that could not be read when the stream opened is not written over, nor one another
-    /// window or program changed since it was read or saved here (changedOnDisk()): use
-    /// saveAs() (the same path overwrites) or reload().
-    Status save();
-    Status saveAs(const QString& path);
-    /// The file was written (or made, or removed) by someone else since it was read or saved.
-    bool changedOnDisk() const { return m_disk.changed(); }
+    // The frame-level operations of the Annotate and Object menus, each one undo step (the rules
+    // are services/annotation_editing's and annotation_tracks'). `frames` are the stream's frame
+    // names in order (the annotations' keys for propagate()), `index` the frame's place there.
+    /// What copyPrevious() did.
+    struct Copy
+    {
+        std::optional<std::size_t> from; ///< the frame copied (none: no frame before has any)
+        bool changed = false;            ///< false: the frame held the same already
+        std::size_t objects = 0;         ///< objects copied
+    };
+    /// Frame `index` gets a copy of the objects of the annotated frame before it (not done yet).
+    Copy copyPrevious(const std::vector<std::string>& frames, std::size_t index);
+    /// The `detections` of `kinds` become frame `index`'s annotations; the other kinds keep theirs
+    /// (a keyframed track of another kind survives). `which` names the kinds in the step. The
+    /// objects on the frame after, or nullopt when it held them already.
+    std::optional<std::size_t> takeDetections(const std::vector<std::string>& frames,
+                                              std::size_t index, const PerceptSet& detections,
+                                              const std::vector<const PerceptKind*>& kinds,
+                                              const QString& which);
+    /// Copies object `object` of `kind` on frame `at` to the next `count` frames (the previous
+    /// -`count` when negative) as objects of its track; the frames that got it.
+    std::size_t propagate(const std::vector<std::string>& frames, std::size_t at,
+                          const PerceptKind& kind, std::size_t object, int count);
+
+    // Saved with Document::save() and saveAs(); a file that could not be read when the stream
+    // opened is not written over by save().
     /// Reads path() again as one undo step ("Reload annotations from disk"; Undo brings the
     /// edits before it back, unsaved): the document is then clean and what is on disk. An absent
     /// file reads as empty; a damaged one is an Error and changes nothing.
     Status reload(std::size_t frames = 0);
 
-    /// Where the recovery files go; the app data folder by default. The autosave runs `delay_ms`
-    /// after the first unsaved edit (30 s by default).
-    void setRecoveryDir(const QString& dir) { m_recovery_dir = dir; }
-    void setAutosaveDelay(int delay_ms) { m_autosave.setInterval(delay_ms); }
     /// Writes the recovery file of the open stream now; while the file an earlier session left is
     /// still on offer (neither recovered nor discarded) it is kept, not written over.
-    Status writeRecovery();
+    Status writeRecovery() override;
     /// The recovery file left for `stream` (the open one when empty), if any.
     std::optional<AnnotationsRecovery> findRecovery(const QString& stream = {}) const;
     /// Loads a recovery of the open stream (one of another stream is refused, naming both): the
     /// annotations become modified, to be saved to the path they came from.
     Status recover(const AnnotationsRecovery& recovery);
     /// Removes the open stream's recovery file (the user declines it).
-    void discardRecovery();
+    void discardRecovery() override;
     /// Removes the recovery file of this session's edits (they were saved or dropped); an earlier
     /// session's file still on offer stays.
-    void discardOwnRecovery();
+    void discardOwnRecovery() override;
 
 signals:
     /// The annotations of `frames` changed (an edit, undo or redo); empty: all of them (a new
     /// stream, a recovery).
     void changed(const QStringList& frames);
-    void modifiedChanged(bool modified);
-    /// A background problem (the autosave failed), for the window's message bar.
-    void problem(const QString& message);
+
+protected:
+    Status writeFile(const QString& path) override;
+    QString noFileMessage() const override;
+    QString saveRefusal() const override;
 
 private:
     friend class AnnotationsCommand;
     void apply(const FrameEdits& edits);
     QString recoveryFile(const QString& stream) const;
     void reset();
-    /// What the document holds is what its file holds (saved, or read again).
-    void markClean();
 
     std::vector<const PerceptKind*> m_kinds;
     Annotations m_annotations;
     std::map<std::string, std::string> m_key_by_stem;
     mutable std::shared_ptr<const AnnotationsVersion> m_version;
     QString m_stream;
-    QString m_path;
     QString m_load_problem;
-    DiskState m_disk; ///< the file as read or last saved
-    QUndoStack m_undo;
-    QTimer m_autosave;
-    QString m_recovery_dir;
-    bool m_recovered = false;
     bool m_offered_recovery = false; ///< an earlier session's recovery file waits for a choice
-    int m_last_merge = 0;
-    int m_top_merge = 0;
-    int m_top_index = -1;
 };
 
 } // namespace fieldsight::ui

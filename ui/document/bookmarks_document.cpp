@@ -1,7 +1,6 @@
 #include "ui/document/bookmarks_document.h"
 
 #include "ui/adapters/local_path.h"
-#include "visioncore/basics/atomic_file.h"
 
 #include <QUndoCommand>
 
@@ -24,28 +23,22 @@ private:
     Bookmarks m_after;
 };
 
-BookmarksDocument::BookmarksDocument(QObject* parent) : QObject(parent) {}
-
-BookmarksDocument::~BookmarksDocument()
-{
-    blockSignals(true);
-}
+BookmarksDocument::BookmarksDocument(QObject* parent) : Document(Saving::EveryChange, parent) {}
 
 Status BookmarksDocument::setStream(const QString& spec)
 {
-    m_undo.clear();
+    clearHistory();
     m_marks = Bookmarks{};
-    m_unreadable = false;
+    setUnreadable(false);
     m_spec = spec;
-    m_path = fromLocalPath(Bookmarks::sidecarPath(toLocalPath(spec)));
-    m_disk.remember(m_path);
+    setFile(fromLocalPath(Bookmarks::sidecarPath(toLocalPath(spec))));
     Status status;
-    if (!m_path.isEmpty()) {
-        auto marks = Bookmarks::load(toLocalPath(m_path));
+    if (!path().isEmpty()) {
+        auto marks = Bookmarks::load(toLocalPath(path()));
         if (marks) {
             m_marks = std::move(marks).value();
         } else {
-            m_unreadable = true;
+            setUnreadable(true);
             status = Error{marks.error().message +
                            " (it is set aside, not overwritten, when a bookmark is saved)"};
         }
@@ -59,10 +52,10 @@ void BookmarksDocument::setBookmark(std::size_t frame, const QString& name, cons
     Bookmarks after = m_marks;
     const Bookmark* existing = m_marks.find(frame);
     after.set({frame, toLocalPath(name), note.toStdString()});
-    m_undo.push(new BookmarksCommand(*this,
-                                     existing ? tr("Edit bookmark of frame %1").arg(frame)
-                                              : tr("Bookmark frame %1").arg(frame),
-                                     m_marks, std::move(after)));
+    undoStack().push(new BookmarksCommand(*this,
+                                          existing ? tr("Edit bookmark of frame %1").arg(frame)
+                                                   : tr("Bookmark frame %1").arg(frame),
+                                          m_marks, std::move(after)));
 }
 
 void BookmarksDocument::removeBookmark(std::size_t frame)
@@ -70,8 +63,8 @@ void BookmarksDocument::removeBookmark(std::size_t frame)
     Bookmarks after = m_marks;
     if (!after.remove(frame))
         return;
-    m_undo.push(new BookmarksCommand(*this, tr("Remove bookmark of frame %1").arg(frame), m_marks,
-                                     std::move(after)));
+    undoStack().push(new BookmarksCommand(*this, tr("Remove bookmark of frame %1").arg(frame),
+                                          m_marks, std::move(after)));
 }
 
 Status BookmarksDocument::reload()
@@ -81,7 +74,7 @@ Status BookmarksDocument::reload()
 
 void BookmarksDocument::overwrite()
 {
-    if (!m_path.isEmpty())
+    if (!path().isEmpty())
         write();
 }
 
@@ -89,7 +82,7 @@ void BookmarksDocument::store(const Bookmarks& marks)
 {
     m_marks = marks;
     emit changed();
-    if (m_path.isEmpty()) {
+    if (path().isEmpty()) {
         emit problem(tr("a live camera has no file to keep bookmarks beside (the bookmarks are "
                         "kept until the window closes)"));
         return;
@@ -98,7 +91,7 @@ void BookmarksDocument::store(const Bookmarks& marks)
         emit problem(tr("%1 changed on disk since this window read it (another window or a "
                         "program wrote it): the bookmarks are kept here, not written over it; "
                         "reload it or keep yours")
-                         .arg(m_path));
+                         .arg(path()));
         return;
     }
     write();
@@ -106,10 +99,7 @@ void BookmarksDocument::store(const Bookmarks& marks)
 
 void BookmarksDocument::write()
 {
-    const std::string path = toLocalPath(m_path);
-    auto saved = saveReplacingUnreadable(path, m_unreadable, [&] { return m_marks.save(path); });
-    if (saved)
-        m_disk.remember(m_path);
+    auto saved = writeAtChange([this](const std::string& file) { return m_marks.save(file); });
     if (!saved)
         emit problem(QString::fromStdString(saved.error().message) +
                      tr(" (the bookmarks are kept until the window closes)"));

@@ -3,6 +3,7 @@
 #include "ui/adapters/local_path.h"
 #include "visioncore/io/lut_import.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QFutureWatcherBase>
 #include <QLocale>
@@ -38,12 +39,12 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_evaluation = new EvaluationScan(pipeline, this);
     m_light = new LightScan(this);
 
-    addUndoDocument(tr("Colour table"), m_lut->undoStack());
-    addUndoDocument(tr("LUT samples"), m_samples->undoStack());
-    addUndoDocument(tr("Pipeline settings"), m_settings->undoStack());
-    addUndoDocument(tr("Bookmarks"), m_bookmarks->undoStack());
-    addUndoDocument(tr("Annotations"), m_annotations->undoStack());
-    addUndoDocument(tr("Stream orientation"), m_stream->undoStack());
+    addDocument(tr("Colour table"), *m_lut);
+    addDocument(tr("LUT samples"), *m_samples);
+    addDocument(tr("Pipeline settings"), *m_settings);
+    addDocument(tr("Bookmarks"), *m_bookmarks);
+    addDocument(tr("Annotations"), *m_annotations);
+    addDocument(tr("Stream orientation"), *m_stream);
     m_undo_group.setActiveStack(&m_lut->undoStack());
 
     // The whole-stream scan observes the table and the settings.
@@ -83,11 +84,6 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
         m_effect->setStream(m_stream->streamSpec(), m_lut->version(), options);
     });
 
-    connect(m_stream, &StreamDocument::problem, this, &EditingSession::problem);
-    connect(m_lut, &LutDocument::problem, this, &EditingSession::problem);
-    connect(m_samples, &SamplesDocument::problem, this, &EditingSession::problem);
-    connect(m_bookmarks, &BookmarksDocument::problem, this, &EditingSession::problem);
-    connect(m_annotations, &AnnotationsDocument::problem, this, &EditingSession::problem);
     connect(m_bookmarks, &BookmarksDocument::notice, this, &EditingSession::notice);
 }
 
@@ -110,8 +106,10 @@ std::shared_ptr<const Annotations> EditingSession::truthVersion() const
     return {std::move(version), annotations}; // shares the version's ownership
 }
 
-void EditingSession::addUndoDocument(const QString& name, QUndoStack& stack)
+void EditingSession::addDocument(const QString& name, Document& document)
 {
+    connect(&document, &Document::problem, this, &EditingSession::problem);
+    QUndoStack& stack = document.undoStack();
     m_undo_group.addStack(&stack);
     m_undo_documents.push_back({name, &stack});
     // The document edited last is the one Edit > Undo acts on.
@@ -272,6 +270,9 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     const QString spec = opened->spec;
     const QString lut_path = opened->lut_path;
     const std::optional<ParamSet> params = opened->params;
+    const QString params_file =
+        opened->info.params.empty() ? QString() : fromLocalPath(opened->info.params);
+    const FileFingerprint params_read = opened->params_read;
     std::shared_ptr<const ColourLut> table = opened->lut;
     const FileFingerprint lut_read = opened->lut_read;
     // Its annotations just before it, so its first frame is drawn with its own truth. Unsaved
@@ -302,6 +303,7 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
     if (params)
         wanted.merge(m_param_overrides);
     m_settings->reset(wanted);
+    m_settings->setFile(params_file, params_read);
     const StreamOptions options{m_stream->orientation()};
     m_samples->setStreamOptions(options);
     m_effect->setSettings(m_settings->paramVersion(), m_settings->skippedStages());
@@ -313,6 +315,35 @@ void EditingSession::adopt(std::shared_ptr<OpenedStream> opened)
         m_light->setStream(spec, m_lut->version(), options);
     // Undo starts on the new stream's table.
     m_undo_group.setActiveStack(&m_lut->undoStack());
+}
+
+QString EditingSession::title() const
+{
+    if (!m_stream->hasStream())
+        return QStringLiteral("Fieldsight");
+    const bool annotations_edited = m_annotations->modified();
+    // Qt shows a * at every [*]: one after each document with unsaved edits.
+    const QString marker =
+        m_lut->modified() || !annotations_edited ? QStringLiteral("[*]") : QString();
+    const QString lut = m_lut->path();
+    QString title = QStringLiteral("%1 — %2%3")
+                        .arg(QFileInfo(m_stream->streamSpec()).fileName(),
+                             lut.isEmpty() ? tr("new LUT")
+                                           // Which default.lut: its folder too.
+                                           : QFileInfo(lut).dir().dirName() + QLatin1Char('/') +
+                                                 QFileInfo(lut).fileName(),
+                             marker);
+    if (annotations_edited) {
+        const QString file = m_annotations->path();
+        title += QStringLiteral(" — %1[*]")
+                     .arg(file.isEmpty() ? tr("annotations") : QFileInfo(file).fileName());
+    }
+    return title + QStringLiteral(" — Fieldsight");
+}
+
+bool EditingSession::unsavedEdits() const
+{
+    return m_lut->modified() || (m_stream->hasStream() && m_annotations->modified());
 }
 
 Status EditingSession::openLut(const QString& path)

@@ -9,9 +9,9 @@
 
 #include "ui/document/annotations_document.h"
 #include "ui/document/bookmarks_document.h"
-#include "ui/document/edit_effect_scan.h"
-#include "ui/document/evaluation_scan.h"
-#include "ui/document/light_scan.h"
+#include "ui/scans/edit_effect_scan.h"
+#include "ui/scans/evaluation_scan.h"
+#include "ui/scans/light_scan.h"
 #include "ui/document/lut_document.h"
 #include "ui/document/samples_document.h"
 #include "ui/document/pipeline_settings.h"
@@ -93,6 +93,13 @@ public:
     /// when the stream has every annotated frame): `fieldsight eval` refuses such a file.
     QString missingAnnotatedFrames() const;
 
+    /// The window's title for what is open: the stream, the table and, when they have unsaved
+    /// edits, the annotations, with a [*] after each document with unsaved edits (after the
+    /// table when none has).
+    QString title() const;
+    /// The table or the open stream's annotations have unsaved edits.
+    bool unsavedEdits() const;
+
     /// Loads a table in any importable format as the LUT document's (clean, new history).
     Status openLut(const QString& path);
 
@@ -111,7 +118,9 @@ signals:
     void notice(const QString& message);
 
 private:
-    void addUndoDocument(const QString& name, QUndoStack& stack);
+    /// `document` joins the undo group and the history dock as `name`; its problems are the
+    /// session's.
+    void addDocument(const QString& name, Document& document);
     /// The annotations document's current truth, for the evaluation.
     std::shared_ptr<const Annotations> truthVersion() const;
 

@@ -1,7 +1,8 @@
 #include "ui/document/lut_document.h"
 
+#include "ui/adapters/image_adapter.h"
 #include "ui/adapters/local_path.h"
-#include "ui/document/recovery_meta.h"
+#include "ui/recovery/recovery_meta.h"
 
 #include "visioncore/basics/json_text.h"
 #include "visioncore/basics/atomic_file.h"
@@ -45,17 +46,7 @@ private:
     int m_stroke;
 };
 
-LutDocument::LutDocument(QObject* parent) : QObject(parent)
-{
-    m_recovery_dir = defaultRecoveryDir();
-    wireAutosave(*this, m_autosave, m_undo);
-}
-
-LutDocument::~LutDocument()
-{
-    QObject::disconnect(&m_undo, nullptr, this, nullptr);
-    blockSignals(true);
-}
+LutDocument::LutDocument(QObject* parent) : Document(Saving::ByUser, parent) {}
 
 void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& path,
                         const std::optional<FileFingerprint>& read)
@@ -63,25 +54,19 @@ void LutDocument::reset(std::shared_ptr<const ColourLut> lut, const QString& pat
     m_table = lut ? *lut : ColourLut();
     m_version = lut;
     m_saved = std::move(lut);
-    m_path = path;
-    if (read)
-        m_disk.remember(path, *read);
-    else
-        m_disk.remember(path);
-    m_recovered = false;
-    m_undo.clear();
-    m_autosave.stop();
+    setFile(path, read);
+    clearHistory();
     m_edit_base.reset();
-    m_top_stroke = 0;
+    resetMerge();
     emit changed();
     emit modifiedChanged(false);
 }
 
 void LutDocument::revert()
 {
-    const DiskState disk = m_disk; // the file as read: a change since is still one
-    reset(m_saved, m_path);
-    m_disk = disk;
+    const DiskState read = disk(); // the file as read: a change since is still one
+    reset(m_saved, path());
+    setDisk(read);
 }
 
 std::shared_ptr<const ColourLut> LutDocument::version() const
@@ -96,94 +81,106 @@ bool LutDocument::edit(const QString& text, std::vector<CellChange> changes, int
     if (changes.empty())
         return false;
     // A stroke's later pieces merge into its command: the edit's base stays the stroke's start.
-    const bool merging = stroke > 0 && stroke == m_top_stroke && m_undo.index() == m_top_index;
-    if (!merging)
+    if (!mergesWithTop(stroke))
         m_edit_base = version();
     m_in_edit = true;
-    m_undo.push(new LutCellsCommand(*this, text, std::move(changes), stroke));
+    pushEdit(new LutCellsCommand(*this, text, std::move(changes), stroke), stroke);
     m_in_edit = false;
-    m_top_stroke = stroke;
-    m_top_index = m_undo.index();
     return true;
+}
+
+std::size_t LutDocument::clearClass(Colour colour)
+{
+    if (colour == Colour::Unclassified)
+        return 0;
+    std::vector<CellChange> changes;
+    const std::uint8_t* cells = m_table.data();
+    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
+        if (cells[i] == std::uint8_t(colour))
+            changes.push_back({std::uint32_t(i), colour, Colour::Unclassified});
+    const std::size_t n = changes.size();
+    edit(tr("Clear %1").arg(colourLabel(colour)), std::move(changes));
+    return n;
+}
+
+ColourShift LutDocument::estimateRetarget(const cv::Mat* frame, std::size_t* samples) const
+{
+    std::vector<cv::Vec3b> field;
+    if (frame)
+        for (int y = frame->rows * 2 / 3; y < frame->rows; ++y)
+            for (int x = 0; x < frame->cols; ++x)
+                field.push_back(frame->at<cv::Vec3b>(y, x));
+    if (samples)
+        *samples = field.size();
+    return estimateShift(m_table, Colour::Green, field);
+}
+
+bool LutDocument::retarget(const ColourShift& shift)
+{
+    return edit(tr("Retarget by Y %1, Cb %2, Cr %3").arg(shift.y).arg(shift.cb).arg(shift.cr),
+                shiftChanges(m_table, shift));
 }
 
 void LutDocument::apply(const std::vector<CellChange>& changes, bool forwards)
 {
     if (!m_in_edit) { // an undo or redo from the stack
         m_edit_base = version();
-        m_top_stroke = 0;
+        endMerge();
     }
     applyChanges(m_table, changes, forwards);
     m_version.reset();
-    if (!m_autosave.isActive())
-        m_autosave.start(); // at most the delay after the first unsaved edit
+    noteEdit();
     emit changed();
 }
 
-Status LutDocument::save()
+QString LutDocument::noFileMessage() const
 {
-    if (m_path.isEmpty())
-        return Error{"the LUT has no file yet: use Save As"};
-    if (changedOnDisk())
-        return Error{toLocalPath(m_path) +
-                     ": changed on disk since it was read (another window or program wrote "
-                     "it), so it is not written over; reload it or save under another name"};
-    return saveAs(m_path);
+    return QStringLiteral("the LUT has no file yet: use Save As");
 }
 
 Status LutDocument::reload()
 {
-    if (m_path.isEmpty())
+    if (path().isEmpty())
         return Error{"the LUT has no file to reload"};
     // Noted before reading: a write during the read is a change still to be seen.
     DiskState read;
-    read.remember(m_path);
-    auto disk = importLut(toLocalPath(m_path));
-    if (!disk)
-        return disk.error();
-    edit(tr("Reload LUT from disk"), diffLuts(m_table, disk.value()).cells);
-    m_top_stroke = 0;
+    read.remember(path());
+    auto on_disk = importLut(toLocalPath(path()));
+    if (!on_disk)
+        return on_disk.error();
+    edit(tr("Reload LUT from disk"), diffLuts(m_table, on_disk.value()).cells);
+    endMerge();
     m_saved = version();
-    m_disk = read;
-    m_recovered = false;
-    m_undo.setClean();
-    m_autosave.stop();
-    emit modifiedChanged(false);
+    setDisk(read);
+    markClean();
     return {};
 }
 
-Status LutDocument::saveAs(const QString& path)
+Status LutDocument::writeFile(const QString& path)
 {
     // Only .lut is written; the foreign formats are import-only.
     if (!path.endsWith(QLatin1String(".lut"), Qt::CaseInsensitive))
         return Error{toLocalPath(path) + ": LUTs are saved as .lut (SPEC §3)"};
     if (Status s = m_table.save(toLocalPath(path)); !s)
-        return s; // the edits stay in memory, and modified
-    m_path = path;
-    m_disk.remember(path);
+        return s;
     m_saved = version();
-    m_recovered = false;
-    m_undo.setClean();
-    m_autosave.stop();
-    discardRecovery();
-    emit modifiedChanged(false);
     return {};
 }
 
 QString LutDocument::recoveryBase() const
 {
-    return QDir(m_recovery_dir).filePath(QStringLiteral("lut-recovery"));
+    return QDir(recoveryDir()).filePath(QStringLiteral("lut-recovery"));
 }
 
 Status LutDocument::writeRecovery()
 {
-    if (!makeLocalFolder(m_recovery_dir))
-        return Error{toLocalPath(m_recovery_dir) + ": cannot create the recovery folder"};
+    if (!makeLocalFolder(recoveryDir()))
+        return Error{toLocalPath(recoveryDir()) + ": cannot create the recovery folder"};
     const QString base = recoveryBase();
     if (Status s = m_table.save(toLocalPath(base + ".lut")); !s)
         return s;
     nlohmann::ordered_json meta{{"format", "fieldsight-lut-recovery/1"}};
-    putPath(meta, "path", m_path);
+    putPath(meta, "path", path());
     putPath(meta, "stream", m_stream);
     meta["saved_at"] = recoveryTimestamp();
     return writeFileAtomically(toLocalPath(base + ".json"), jsonText(meta, 2) + '\n');
@@ -216,12 +213,11 @@ Status LutDocument::recover(const LutRecovery& recovery)
         return table.error();
     m_table = std::move(table).value();
     m_version.reset();
-    m_path = recovery.path;
-    m_disk.remember(m_path);
-    m_undo.clear();
-    m_recovered = true;
+    setFile(recovery.path);
+    clearHistory();
+    setRecovered();
     m_edit_base.reset();
-    m_top_stroke = 0;
+    resetMerge();
     emit changed();
     emit modifiedChanged(true);
     return {};

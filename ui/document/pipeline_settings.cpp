@@ -45,13 +45,8 @@ private:
 };
 
 PipelineSettings::PipelineSettings(const Pipeline& pipeline, QObject* parent)
-    : QObject(parent), m_pipeline(pipeline)
+    : Document(Saving::None, parent), m_pipeline(pipeline)
 {
-}
-
-PipelineSettings::~PipelineSettings()
-{
-    blockSignals(true); // the stack's last signals do not reach observers being destroyed
 }
 
 const ParamInfo* PipelineSettings::paramInfo(std::string_view stage_id, std::string_view name) const
@@ -85,7 +80,7 @@ bool PipelineSettings::paramChanged(std::string_view stage_id, std::string_view 
 
 void PipelineSettings::push(const QString& text, State after, const std::string& merge_key)
 {
-    m_undo.push(
+    undoStack().push(
         new SettingsCommand(*this, text, State{m_params, m_skip}, std::move(after), merge_key));
 }
 
@@ -98,7 +93,7 @@ void PipelineSettings::store(const State& state)
 
 void PipelineSettings::reset(const ParamSet& params)
 {
-    m_undo.clear();
+    undoStack().clear();
     if (params.values != m_params->values) // the same again: nothing to run again
         store(State{std::make_shared<ParamSet>(params), m_skip});
 }

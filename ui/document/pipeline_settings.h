@@ -4,12 +4,11 @@
 // the frame worker and the whole-stream scan read without copying.
 #pragma once
 
+#include "ui/document/document.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
 
-#include <QObject>
 #include <QString>
-#include <QUndoStack>
 
 #include <memory>
 #include <set>
@@ -19,15 +18,16 @@ namespace fieldsight::ui {
 
 using StageSet = std::set<std::string, std::less<>>;
 
-class PipelineSettings : public QObject
+class PipelineSettings : public Document
 {
     Q_OBJECT
 public:
     explicit PipelineSettings(const Pipeline& pipeline, QObject* parent = nullptr);
-    ~PipelineSettings() override;
 
     const Pipeline& pipeline() const { return m_pipeline; }
-    QUndoStack& undoStack() { return m_undo; }
+    /// The open stream's own parameter file (empty: it has none), as it was read (`read`) or just
+    /// saved: changedOnDisk() then says another window or a command wrote it since.
+    using Document::setFile;
 
     bool stageEnabled(std::string_view stage_id) const { return m_skip.count(stage_id) == 0; }
     const StageSet& skippedStages() const { return m_skip; }
@@ -70,7 +70,6 @@ private:
     const Pipeline& m_pipeline;
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     StageSet m_skip;
-    QUndoStack m_undo;
 };
 
 } // namespace fieldsight::ui

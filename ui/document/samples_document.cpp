@@ -34,7 +34,8 @@ private:
     std::vector<LutSample> m_after;
 };
 
-SamplesDocument::SamplesDocument(LutDocument& lut, QObject* parent) : QObject(parent), m_lut(lut)
+SamplesDocument::SamplesDocument(LutDocument& lut, QObject* parent)
+    : Document(Saving::EveryChange, parent), m_lut(lut)
 {
     connect(&m_watcher, &QFutureWatcher<Result<Built>>::finished, this, [this] {
         auto result = m_watcher.result();
@@ -94,29 +95,27 @@ SamplesDocument::~SamplesDocument()
 {
     m_cancel = true;
     m_watcher.waitForFinished();
-    QObject::disconnect(&m_undo, nullptr, this, nullptr);
 }
 
 Status SamplesDocument::setStream(const QString& spec)
 {
     m_stream = spec;
-    m_undo.clear();
+    clearHistory();
     m_samples = {};
     m_ambiguous.clear();
     m_pending.reset();
-    m_path_unreadable = false;
+    setUnreadable(false);
     m_load_problem.clear();
-    m_path = spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
-                 ? QString()
-                 : fromLocalPath(defaultLutSamplesPath(toLocalPath(spec)));
-    m_disk.remember(m_path);
+    setFile(spec.isEmpty() || spec.startsWith(QLatin1String("camera:"))
+                ? QString()
+                : fromLocalPath(defaultLutSamplesPath(toLocalPath(spec))));
     Status status;
-    if (localPathExists(m_path)) {
-        auto loaded = loadLutSamples(toLocalPath(m_path));
+    if (localPathExists(path())) {
+        auto loaded = loadLutSamples(toLocalPath(path()));
         if (loaded) {
             m_samples = std::move(loaded).value();
         } else {
-            m_path_unreadable = true;
+            setUnreadable(true);
             status = Error{loaded.error().message +
                            " (it is set aside, not overwritten, when a sample is saved)"};
             m_load_problem = QString::fromStdString(status.error().message);
@@ -133,7 +132,7 @@ void SamplesDocument::store(std::vector<LutSample> samples)
         emit problem(tr("%1 changed on disk since this window read it (another window or a "
                         "program wrote it): the samples are kept here, not written over it; "
                         "reload it or keep yours")
-                         .arg(m_path));
+                         .arg(path()));
     else
         write();
     emit samplesChanged();
@@ -146,13 +145,10 @@ void SamplesDocument::overwrite()
 
 void SamplesDocument::write()
 {
-    if (m_path.isEmpty())
+    if (path().isEmpty())
         return;
-    const std::string path = toLocalPath(m_path);
-    auto saved = saveReplacingUnreadable(path, m_path_unreadable,
-                                         [&] { return saveLutSamples(path, m_samples); });
-    if (saved)
-        m_disk.remember(m_path);
+    auto saved =
+        writeAtChange([this](const std::string& file) { return saveLutSamples(file, m_samples); });
     if (!saved)
         emit problem(QString::fromStdString(saved.error().message) +
                      tr(" (the samples stay in memory)"));
@@ -170,13 +166,14 @@ void SamplesDocument::addRect(const QString& frame, Colour colour, const QRect& 
         {r.left(), r.top()}, {r.right(), r.top()}, {r.right(), r.bottom()}, {r.left(), r.bottom()}};
     std::vector<LutSample> after = m_samples.samples;
     after.push_back(std::move(sample));
-    m_undo.push(new SamplesCommand(*this, tr("Sample %1 on %2").arg(colourLabel(colour), frame),
-                                   m_samples.samples, std::move(after)));
+    undoStack().push(new SamplesCommand(*this,
+                                        tr("Sample %1 on %2").arg(colourLabel(colour), frame),
+                                        m_samples.samples, std::move(after)));
 }
 
 void SamplesDocument::setSamples(std::vector<LutSample> samples, const QString& text)
 {
-    m_undo.push(new SamplesCommand(*this, text, m_samples.samples, std::move(samples)));
+    undoStack().push(new SamplesCommand(*this, text, m_samples.samples, std::move(samples)));
 }
 
 Result<SamplesDocument::Built>

@@ -5,21 +5,19 @@
 // background, with progress and cancel, and the new table becomes one undoable LUT edit.
 #pragma once
 
-#include "ui/document/disk_state.h"
+#include "ui/document/document.h"
 #include "ui/document/lut_document.h"
 #include "visioncore/services/lut_building.h"
 
 #include <QFutureWatcher>
-#include <QObject>
 #include <QRect>
-#include <QUndoStack>
 
 #include <atomic>
 #include <optional>
 
 namespace fieldsight::ui {
 
-class SamplesDocument : public QObject
+class SamplesDocument : public Document
 {
     Q_OBJECT
 public:
@@ -32,21 +30,18 @@ public:
     Status setStream(const QString& spec);
     /// Why the stream's samples file could not be read (empty when it could, or there is none).
     QString loadProblem() const { return m_load_problem; }
-    QString path() const { return m_path; }
     /// How builds open the stream: turned as the window shows it, so the samples' rectangles
     /// (drawn on the shown frames) cover the same pixels.
     void setStreamOptions(StreamOptions options) { m_options = options; }
     const LutSamples& samples() const { return m_samples; }
-    QUndoStack& undoStack() { return m_undo; }
     /// Adds a rectangle of frame `frame` whose pixels show `colour` (undoable; saved at once).
     void addRect(const QString& frame, Colour colour, const QRect& rect);
     /// Replaces every sample (undoable; saved at once).
     void setSamples(std::vector<LutSample> samples, const QString& text);
 
-    /// The samples file was written (or made, or removed) by someone else since it was read or
-    /// saved here; a change is then kept in memory, not written over it, until reload() or
-    /// overwrite().
-    bool changedOnDisk() const { return m_disk.changed(); }
+    // The samples file written (or made, or removed) by someone else since it was read or saved
+    // here (changedOnDisk()): a change is then kept in memory, not written over it, until
+    // reload() or overwrite().
     /// Reads the samples file again (a clean reload: the samples made here since are dropped
     /// and the history starts again).
     Status reload() { return setStream(m_stream); }
@@ -96,7 +91,6 @@ signals:
     void buildReady();
     /// A build finished (`summary` says what it did), or failed (`summary` says why).
     void built(bool ok, const QString& summary);
-    void problem(const QString& message);
 
 private:
     friend class SamplesCommand;
@@ -106,12 +100,8 @@ private:
     LutDocument& m_lut;
     QString m_stream;
     StreamOptions m_options;
-    QString m_path;
-    DiskState m_disk;               ///< the samples file as read or last saved
-    bool m_path_unreadable = false; ///< the file there was refused: set aside before a save
     QString m_load_problem;
     LutSamples m_samples;
-    QUndoStack m_undo;
     QFutureWatcher<Result<Built>> m_watcher;
     std::atomic<bool> m_cancel{false};
     std::atomic<std::size_t> m_done{0};

@@ -78,7 +78,7 @@ QString sessionStreamName(const QString& spec)
 
 StreamDocument::StreamDocument(const Pipeline& pipeline, LutDocument& lut,
                                PipelineSettings& settings, QObject* parent)
-    : QObject(parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
+    : Document(Saving::None, parent), m_pipeline(pipeline), m_lut(lut), m_settings(settings)
 {
     for (const LayerInfo& layer : pipeline.layers())
         m_shown_layers.insert(layer.id);
@@ -193,7 +193,7 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
         m_worker->release(std::move(m_stream->source)); // closed on the worker thread
     m_stream = std::move(opened);
     m_stream->lut.reset(); // the LUT document's now
-    m_undo.clear();        // the orientations of the stream before
+    undoStack().clear();   // the orientations of the stream before
     m_index = 0;
     m_current.reset();
     m_light.reset(); // the stream before's
@@ -216,13 +216,6 @@ void StreamDocument::setParamsFile(const std::string& path)
     if (!m_stream)
         return;
     m_stream->info.params = path;
-    m_stream->params_read = fingerprintFile(path);
-}
-
-bool StreamDocument::paramsFileChanged() const
-{
-    return m_stream && !m_stream->info.params.empty() &&
-           fileChangedSince(m_stream->info.params, m_stream->params_read);
 }
 
 QString StreamDocument::frameName(std::size_t index) const
@@ -244,7 +237,7 @@ Status StreamDocument::setOrientation(Orientation o)
     auto reader = openStream(local(m_stream->spec), StreamOptions{o});
     if (!reader)
         return reader.error();
-    m_undo.push(new OrientationCommand(*this, orientation(), o, std::move(reader).value()));
+    undoStack().push(new OrientationCommand(*this, orientation(), o, std::move(reader).value()));
     return {};
 }
 

@@ -4,15 +4,14 @@
 // upright (its orientation) is a command on its own undo stack.
 #pragma once
 
-#include "ui/document/frame_worker.h"
+#include "ui/document/document.h"
+#include "ui/worker/frame_worker.h"
 #include "visioncore/basics/file_fingerprint.h"
 #include "visioncore/io/annotations.h"
 
-#include <QObject>
 #include <QString>
 #include <QStringList>
 #include <QThread>
-#include <QUndoStack>
 
 #include <functional>
 #include <map>
@@ -51,7 +50,7 @@ class PipelineSettings;
 /// its absolute path, a live camera as its spec.
 QString sessionStreamName(const QString& spec);
 
-class StreamDocument : public QObject
+class StreamDocument : public Document
 {
     Q_OBJECT
 public:
@@ -77,11 +76,9 @@ public:
     bool hasStream() const { return m_stream != nullptr; }
     QString streamSpec() const { return m_stream ? m_stream->spec : QString(); }
     const StreamInfo& info() const;
-    /// The stream's manifest now names `path` as its parameter file (it was just written there).
+    /// The stream's manifest now names `path` as its parameter file (it was just written there;
+    /// whether it changed on disk since is the pipeline settings' to tell).
     void setParamsFile(const std::string& path);
-    /// The stream's own parameter file is no longer what it was when the stream opened or the
-    /// window last saved it there (another window or a command wrote it).
-    bool paramsFileChanged() const;
     bool live() const { return m_stream && m_stream->info.kind == StreamKind::Camera; }
     /// Frames of the stream (0 for a camera).
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }
@@ -112,7 +109,8 @@ public:
     {
         return hasStream() && info().orientation != info().stream_orientation;
     }
-    QUndoStack& undoStack() { return m_undo; }
+    // undoStack() holds the orientation changes of the open stream; problem() says an undo or
+    // redo could not reopen the stream (it stays as it was).
 
     std::size_t currentIndex() const { return m_index; }
     /// Shows frame `index` (clamped to the stream); the newest request supersedes older ones.
@@ -157,8 +155,6 @@ signals:
     void streamChanged();
     /// The pictures are turned another way (or the orientation was saved); a frame follows.
     void orientationChanged();
-    /// An undo or redo could not reopen the stream (it stays as it was).
-    void problem(const QString& message);
     void currentIndexChanged(std::size_t index);
     void frameReady();
     void meansReset();
@@ -183,7 +179,6 @@ private:
 
     std::shared_ptr<OpenedStream> m_stream;
     std::size_t m_index = 0;
-    QUndoStack m_undo; ///< orientation changes of the open stream
 
     std::uint64_t m_serial = 0;
     std::uint64_t m_answered = 0;

@@ -104,12 +104,25 @@ void FrameView::setMode(ViewMode mode)
     if (m_fit)
         applyFit();
     update();
+    emit modeChanged(mode);
 }
 
 void FrameView::setLabelsShown(bool shown)
 {
     m_labels = shown;
     update();
+    emit labelsShownChanged(shown);
+}
+
+void FrameView::centreOn(QPointF point)
+{
+    setImageOrigin((QPointF(rect().center()) - point * m_zoom).toPoint());
+}
+
+bool FrameView::shows(const QRectF& r) const
+{
+    const QRectF shown(QPointF(m_origin) + r.topLeft() * m_zoom, r.size() * m_zoom);
+    return QRectF(rect()).contains(shown);
 }
 
 QSize FrameView::imageSize() const

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ui/document/annotations_document.h"
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 #include "ui/document/stream_document.h"
 #include "ui/tools/tool_manager.h"
 #include "visioncore/services/layers.h"
@@ -45,6 +45,7 @@ public:
     void setMode(ViewMode mode);
     ViewMode mode() const { return m_mode; }
     void setLabelsShown(bool shown);
+    bool labelsShown() const { return m_labels; }
 
     double zoom() const { return m_zoom; }
     /// Zooms to `zoom` keeping the image point under `anchor` (widget px) where it is.
@@ -58,6 +59,10 @@ public:
     /// Where image pixel (0, 0)'s top-left corner is, in widget px (whole pixels).
     QPoint imageOrigin() const { return m_origin; }
     void setImageOrigin(QPoint origin);
+    /// Puts image point `point` (pixels) at the view's centre.
+    void centreOn(QPointF point);
+    /// Image rectangle `rect` (pixels) is wholly in sight.
+    bool shows(const QRectF& rect) const;
 
     /// The image pixel under widget point `pos`, if any.
     std::optional<QPoint> pixelAt(QPointF pos) const;
@@ -84,6 +89,8 @@ signals:
     void pixelHovered(QPoint pixel);
     void hoverLeft();
     void zoomChanged(double zoom);
+    void modeChanged(ViewMode mode);
+    void labelsShownChanged(bool shown);
     void painted(std::uint64_t serial);
 
 protected:

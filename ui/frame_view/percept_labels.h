@@ -1,7 +1,7 @@
 // The detections' labels over the frame view ("Ball 1" on a dark box above each object).
 #pragma once
 
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 #include "visioncore/services/layers.h"
 
 #include <QPointF>

@@ -2,7 +2,7 @@
 // frame's diagnostics (a stage that threw shows here; the tool goes on).
 #pragma once
 
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 
 #include <QTreeWidget>
 

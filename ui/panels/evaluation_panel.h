@@ -6,7 +6,7 @@
 // Every kind is named by the percept registry: the dock names none.
 #pragma once
 
-#include "ui/document/evaluation_scan.h"
+#include "ui/scans/evaluation_scan.h"
 #include "ui/document/stream_document.h"
 
 #include <QImage>

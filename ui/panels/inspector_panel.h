@@ -2,7 +2,7 @@
 // which shapes of the stages' layers cover it (the scan line, the segment, a transition).
 #pragma once
 
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 
 #include <QLabel>
 

@@ -255,7 +255,7 @@ LutPanel::LutPanel(LutDocument& lut, StreamDocument& stream, SamplesDocument& sa
     clear->setToolTip(tr("Every cell of the chosen class becomes unclassified (one undo step)"));
     connect(clear, &QPushButton::clicked, this, [this] {
         const Colour colour = m_tools.settings().colour();
-        const std::size_t cells = clearClass(colour);
+        const std::size_t cells = m_lut.clearClass(colour);
         emit notice(cells == 0 ? tr("The table has no %1 cells").arg(colourLabel(colour))
                                : tr("Cleared %1 %2 cells (Ctrl+Z undoes it)")
                                      .arg(number(cells), colourLabel(colour)));
@@ -357,42 +357,10 @@ void LutPanel::askApplyBuild()
     m_samples.applyBuild(answer == 0 ? Mode::OnlyUnclassified : Mode::Replace);
 }
 
-ColourShift LutPanel::estimateRetarget(std::size_t* samples) const
-{
-    std::vector<cv::Vec3b> field;
-    if (const cv::Mat* image = currentFrame(m_stream))
-        for (int y = image->rows * 2 / 3; y < image->rows; ++y)
-            for (int x = 0; x < image->cols; ++x)
-                field.push_back(image->at<cv::Vec3b>(y, x));
-    if (samples)
-        *samples = field.size();
-    return estimateShift(m_lut.table(), Colour::Green, field);
-}
-
-bool LutPanel::retarget(const ColourShift& shift)
-{
-    return m_lut.edit(tr("Retarget by Y %1, Cb %2, Cr %3").arg(shift.y).arg(shift.cb).arg(shift.cr),
-                      shiftChanges(m_lut.table(), shift));
-}
-
-std::size_t LutPanel::clearClass(Colour colour)
-{
-    if (colour == Colour::Unclassified)
-        return 0;
-    std::vector<CellChange> changes;
-    const std::uint8_t* cells = m_lut.table().data();
-    for (std::size_t i = 0; i < ColourLut::kCells; ++i)
-        if (cells[i] == std::uint8_t(colour))
-            changes.push_back({std::uint32_t(i), colour, Colour::Unclassified});
-    const std::size_t n = changes.size();
-    m_lut.edit(tr("Clear %1").arg(colourLabel(colour)), std::move(changes));
-    return n;
-}
-
 void LutPanel::askRetarget()
 {
     std::size_t samples = 0;
-    const ColourShift shift = estimateRetarget(&samples);
+    const ColourShift shift = m_lut.estimateRetarget(currentFrame(m_stream), &samples);
     const std::size_t cells = shiftChanges(m_lut.table(), shift).size();
     if (cells == 0) {
         Dialogs::current().information(
@@ -413,7 +381,7 @@ void LutPanel::askRetarget()
             .arg(qulonglong(cells)),
         QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
     if (answer == QMessageBox::Yes)
-        retarget(shift);
+        m_lut.retarget(shift);
 }
 
 void LutPanel::refreshStats()

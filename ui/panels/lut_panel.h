@@ -33,14 +33,8 @@ public:
     void addTableAction(QAction* action);
     /// The palette's actions (one per class, keys 0-9 and -), for the window's menu.
     QList<QAction*> colourActions() const;
-    /// Retargeting to a venue: the shift that moves the table's green onto the current frame's
-    /// field, taken as the bottom third of the frame (`samples`: how many pixels that was).
-    ColourShift estimateRetarget(std::size_t* samples = nullptr) const;
-    /// Moves the whole table by `shift` as one undoable edit; false when nothing changes.
-    bool retarget(const ColourShift& shift);
-    /// Makes every cell of `colour` unclassified, as one undoable edit; the cells it cleared.
-    std::size_t clearClass(Colour colour);
-    /// Asks (showing the estimate and the cells it moves) and retargets.
+    /// Asks (showing the LUT document's estimate for the frame shown and the cells it moves) and
+    /// retargets.
     void askRetarget();
     /// Builds from the samples in the background, with a progress dialog; then asks how the
     /// built table goes in (only unclassified cells, or replace), showing what each changes.

@@ -3,7 +3,7 @@
 // where the background scan has not got to yet. Click a frame to go there.
 #pragma once
 
-#include "ui/document/edit_effect_scan.h"
+#include "ui/scans/edit_effect_scan.h"
 
 #include <QWidget>
 

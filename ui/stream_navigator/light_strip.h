@@ -3,7 +3,7 @@
 // (a flash, a view full of one colour) ticked red; hover for the numbers, click to go there.
 #pragma once
 
-#include "ui/document/light_scan.h"
+#include "ui/scans/light_scan.h"
 
 #include <QWidget>
 

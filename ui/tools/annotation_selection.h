@@ -32,12 +32,16 @@ public:
     std::optional<std::size_t> indexOf(const PerceptKind& kind, const std::string& frame) const;
     void select(const std::string& frame, const PerceptKind& kind, std::size_t index);
     void clear();
+    /// How many frames the Object menu last propagated an object (either way), offered again.
+    int propagateFrames() const { return m_propagate_frames; }
+    void setPropagateFrames(int frames) { m_propagate_frames = frames; }
 
 signals:
     void changed();
 
 private:
     std::optional<Object> m_object;
+    int m_propagate_frames = 10;
 };
 
 /// The name of the frame shown, as the stream names it (empty: no stream, or a camera).

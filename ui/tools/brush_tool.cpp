@@ -45,7 +45,7 @@ std::optional<PlannedEdit> BrushTool::plan(QPoint pixel) const
 
 void BrushTool::pressImage(QPoint pixel)
 {
-    m_stroke = m_context.session.lut().newStroke();
+    m_stroke = m_context.session.lut().newMerge();
     m_last.reset();
     dragImage(pixel);
 }

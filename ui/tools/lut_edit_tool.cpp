@@ -81,7 +81,7 @@ void LutEditTool::press(const ToolEvent& event)
     if (event.surface == ToolSurface::UvPlane) {
         if (event.button != Qt::LeftButton)
             return;
-        m_stroke = m_context.session.lut().newStroke();
+        m_stroke = m_context.session.lut().newMerge();
         m_stroke_surface = ToolSurface::UvPlane;
         m_stroke_cells.clear();
         m_last.reset();

@@ -1,6 +1,7 @@
 #include "ui/tools/tool_manager.h"
 
 #include "ui/document/editing_session.h"
+#include "ui/settings/window_settings.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -75,6 +76,28 @@ Tool* ToolManager::find(const QString& id) const
         if (tool->info().id == id)
             return tool.get();
     return nullptr;
+}
+
+void ToolManager::saveSettings(WindowSettings& w) const
+{
+    w.tool = m_active ? m_active->info().id : QString();
+    w.tolerance = m_settings.tolerance();
+    w.brush_radius = m_settings.brushRadius();
+    w.keep_others = m_settings.keepOthers();
+    w.soft_classes = m_settings.softClasses();
+    w.preview = m_settings.previewOn();
+    w.propagate_frames = m_selection.propagateFrames();
+}
+
+void ToolManager::restoreSettings(const WindowSettings& w)
+{
+    m_settings.setTolerance(w.tolerance);
+    m_settings.setBrushRadius(w.brush_radius);
+    m_settings.setKeepOthers(w.keep_others);
+    m_settings.setSoftClasses(w.soft_classes);
+    m_settings.setPreviewOn(w.preview);
+    m_selection.setPropagateFrames(w.propagate_frames);
+    activate(w.tool);
 }
 
 void ToolManager::activate(const QString& id)

@@ -19,6 +19,8 @@ class QActionGroup;
 
 namespace fieldsight::ui {
 
+struct WindowSettings;
+
 class ToolManager : public QObject
 {
     Q_OBJECT
@@ -37,6 +39,10 @@ public:
     bool deleteSelection() { return m_active && m_active->deleteSelection(); }
     /// Makes the tool `id` active (unknown ids are ignored); the first tool is active at first.
     void activate(const QString& id);
+    /// Remembers the active tool, the LUT tools' settings and the selection's propagation (the
+    /// window's settings keep them between sessions), and takes them back.
+    void saveSettings(WindowSettings& settings) const;
+    void restoreSettings(const WindowSettings& settings);
     /// One checkable action per tool, in the tool list's order, with its shortcut and its icon
     /// in the resources (:/icons/tools/<icon or id>.svg; none when there is no such file).
     QList<QAction*> actions() const;

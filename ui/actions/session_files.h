@@ -20,12 +20,13 @@ namespace fieldsight::ui {
 
 class LutCompareDialog;
 class MainWindow;
+struct WindowSettings;
 
-class FileCommands : public QObject
+class SessionFiles : public QObject
 {
     Q_OBJECT
 public:
-    explicit FileCommands(MainWindow& window);
+    explicit SessionFiles(MainWindow& window);
 
     /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
     /// before); streamOpened() tells how it went. An error shows in the window.
@@ -83,6 +84,10 @@ public:
     void setRecentFrames(const QList<int>& frames);
     /// The Recent streams menu, kept up to date.
     void setRecentMenu(QMenu* menu);
+    /// Remembers the recent streams, the frame each was on, and the stream and table open (the
+    /// window's settings keep them between sessions); takes the recent ones back.
+    void saveSettings(WindowSettings& settings) const;
+    void restoreSettings(const WindowSettings& settings);
 
 signals:
     void streamOpened(bool ok);

@@ -1,11 +1,12 @@
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 #include "ui/actions/disk_conflict.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/main_window.h"
-#include "ui/panels/lut_compare_dialog.h"
+#include "ui/dialogs/lut_compare_dialog.h"
+#include "ui/settings/window_settings.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/output_guard.h"
@@ -62,13 +63,15 @@ bool isLutFile(const QString& path)
 
 } // namespace
 
-FileCommands::FileCommands(MainWindow& window) : QObject(&window), m_window(window)
+SessionFiles::SessionFiles(MainWindow& window) : QObject(&window), m_window(window)
 {
+    connect(&window.recoveryBar(), &OfferBar::accepted, this, &SessionFiles::recoverLut);
+    connect(&window.recoveryBar(), &OfferBar::declined, this, &SessionFiles::discardRecovery);
     EditingSession& session = m_window.session();
-    connect(&session, &EditingSession::opened, this, &FileCommands::onOpened);
+    connect(&session, &EditingSession::opened, this, &SessionFiles::onOpened);
 }
 
-void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
+void SessionFiles::onOpened(bool ok, bool cancelled, const QString& error)
 {
     if (m_progress) {
         m_progress->reset();
@@ -107,7 +110,7 @@ void FileCommands::onOpened(bool ok, bool cancelled, const QString& error)
     emit streamOpened(true);
 }
 
-bool FileCommands::openStream(const QString& spec, const QString& lut)
+bool SessionFiles::openStream(const QString& spec, const QString& lut)
 {
     if (!confirmLutChanges() || !m_window.annotationFiles().confirmChanges())
         return false;
@@ -126,7 +129,7 @@ bool FileCommands::openStream(const QString& spec, const QString& lut)
     return true;
 }
 
-bool FileCommands::openLut(const QString& path)
+bool SessionFiles::openLut(const QString& path)
 {
     if (!confirmLutChanges())
         return false;
@@ -137,7 +140,7 @@ bool FileCommands::openLut(const QString& path)
     return true;
 }
 
-void FileCommands::openPath(const QString& path)
+void SessionFiles::openPath(const QString& path)
 {
     if (isLutFile(path))
         openLut(path);
@@ -145,7 +148,7 @@ void FileCommands::openPath(const QString& path)
         openStream(path);
 }
 
-LutCompareDialog* FileCommands::compareLut(const QString& path)
+LutCompareDialog* SessionFiles::compareLut(const QString& path)
 {
     auto other = importLut(toLocalPath(path));
     if (!other) {
@@ -160,7 +163,7 @@ LutCompareDialog* FileCommands::compareLut(const QString& path)
     return dialog;
 }
 
-void FileCommands::openLastSession(const QString& stream, const QString& lut)
+void SessionFiles::openLastSession(const QString& stream, const QString& lut)
 {
     if (localPathExists(stream)) {
         openStream(stream, localPathExists(lut) ? lut : QString());
@@ -178,7 +181,7 @@ void FileCommands::openLastSession(const QString& stream, const QString& lut)
         m_window.showMessage(problem);
 }
 
-bool FileCommands::newLut()
+bool SessionFiles::newLut()
 {
     if (!confirmLutChanges())
         return false;
@@ -190,7 +193,7 @@ bool FileCommands::newLut()
     return true;
 }
 
-void FileCommands::hideWhenClassified(const QString& shown)
+void SessionFiles::hideWhenClassified(const QString& shown)
 {
     QObject::disconnect(m_until_classified);
     LutDocument& lut = m_window.session().lut();
@@ -205,7 +208,7 @@ void FileCommands::hideWhenClassified(const QString& shown)
     });
 }
 
-bool FileCommands::saveLut()
+bool SessionFiles::saveLut()
 {
     LutDocument& lut = m_window.session().lut();
     if (lut.path().isEmpty() || !lut.path().endsWith(QLatin1String(".lut")))
@@ -224,7 +227,7 @@ bool FileCommands::saveLut()
     return true;
 }
 
-bool FileCommands::reloadLut()
+bool SessionFiles::reloadLut()
 {
     LutDocument& lut = m_window.session().lut();
     if (Status s = lut.reload(); !s) {
@@ -237,13 +240,13 @@ bool FileCommands::reloadLut()
     return true;
 }
 
-QString FileCommands::streamFolder() const
+QString SessionFiles::streamFolder() const
 {
     const QFileInfo spec(m_window.session().stream().streamSpec());
     return spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
 }
 
-bool FileCommands::saveLutAs(const QString& given)
+bool SessionFiles::saveLutAs(const QString& given)
 {
     LutDocument& lut = m_window.session().lut();
     QString path = given;
@@ -269,7 +272,7 @@ bool FileCommands::saveLutAs(const QString& given)
     return true;
 }
 
-bool FileCommands::confirmLutChanges()
+bool SessionFiles::confirmLutChanges()
 {
     LutDocument& lut = m_window.session().lut();
     if (!lut.modified())
@@ -287,7 +290,7 @@ bool FileCommands::confirmLutChanges()
     return true;
 }
 
-void FileCommands::offerRecovery()
+void SessionFiles::offerRecovery()
 {
     const std::optional<LutRecovery> r = m_window.session().lut().findRecovery();
     if (!r) {
@@ -311,7 +314,7 @@ void FileCommands::offerRecovery()
         tr("Table: %1\nStream: %2\nKept: %3").arg(table, stream, when));
 }
 
-bool FileCommands::recoverLut()
+bool SessionFiles::recoverLut()
 {
     const std::optional<LutRecovery> r = m_window.session().lut().findRecovery();
     m_window.recoveryBar().hide();
@@ -340,7 +343,7 @@ bool FileCommands::recoverLut()
     return true;
 }
 
-bool FileCommands::applyRecovery(const LutRecovery& recovery)
+bool SessionFiles::applyRecovery(const LutRecovery& recovery)
 {
     if (Status s = m_window.session().lut().recover(recovery); !s) {
         m_window.showMessage(qs(s.error().message));
@@ -353,13 +356,13 @@ bool FileCommands::applyRecovery(const LutRecovery& recovery)
     return true;
 }
 
-void FileCommands::discardRecovery()
+void SessionFiles::discardRecovery()
 {
     m_window.session().lut().discardRecovery();
     m_window.recoveryBar().hide();
 }
 
-bool FileCommands::saveSnapshot(const QString& path)
+bool SessionFiles::saveSnapshot(const QString& path)
 {
     // The same rule as the commands': never over a file of the stream or the table in use.
     if (Status s = checkNotAnInput("Save view as PNG", toLocalPath(path),
@@ -385,37 +388,55 @@ bool FileCommands::saveSnapshot(const QString& path)
     return true;
 }
 
-void FileCommands::copySnapshot()
+void SessionFiles::copySnapshot()
 {
     QApplication::clipboard()->setImage(m_window.snapshot());
     m_window.statusBar()->showMessage(tr("The view is on the clipboard"), 4000);
 }
 
-void FileCommands::setRecent(const QStringList& recent)
+void SessionFiles::setRecent(const QStringList& recent)
 {
     m_recent = recent.mid(0, kMaxRecent);
     rebuildRecentMenu();
 }
 
-void FileCommands::setRecentMenu(QMenu* menu)
+void SessionFiles::setRecentMenu(QMenu* menu)
 {
     m_recent_menu = menu;
     rebuildRecentMenu();
 }
 
-QString FileCommands::recentKey(const QString& spec)
+QString SessionFiles::recentKey(const QString& spec)
 {
     return spec.startsWith(QLatin1String("camera:")) ? spec : QFileInfo(spec).absoluteFilePath();
 }
 
-void FileCommands::rememberFrame()
+void SessionFiles::rememberFrame()
 {
     const StreamDocument& stream = m_window.session().stream();
     if (stream.hasStream())
         m_frames[recentKey(stream.streamSpec())] = int(stream.currentIndex());
 }
 
-QList<int> FileCommands::recentFrames() const
+void SessionFiles::saveSettings(WindowSettings& w) const
+{
+    w.recent = m_recent;
+    w.recent_frames = recentFrames();
+    const StreamDocument& stream = m_window.session().stream();
+    if (!stream.hasStream())
+        return;
+    w.stream = w.recent.value(0, stream.streamSpec());
+    const QString lut = m_window.session().lut().path();
+    w.lut = lut.isEmpty() ? QString() : QFileInfo(lut).absoluteFilePath();
+}
+
+void SessionFiles::restoreSettings(const WindowSettings& w)
+{
+    setRecent(w.recent);
+    setRecentFrames(w.recent_frames);
+}
+
+QList<int> SessionFiles::recentFrames() const
 {
     const StreamDocument& stream = m_window.session().stream();
     const QString open = stream.hasStream() ? recentKey(stream.streamSpec()) : QString();
@@ -425,13 +446,13 @@ QList<int> FileCommands::recentFrames() const
     return frames;
 }
 
-void FileCommands::setRecentFrames(const QList<int>& frames)
+void SessionFiles::setRecentFrames(const QList<int>& frames)
 {
     for (qsizetype i = 0; i < m_recent.size() && i < frames.size(); ++i)
         m_frames[m_recent[i]] = frames[i];
 }
 
-void FileCommands::rememberRecent(const QString& spec)
+void SessionFiles::rememberRecent(const QString& spec)
 {
     const QString path = recentKey(spec);
     m_recent.removeAll(path);
@@ -441,7 +462,7 @@ void FileCommands::rememberRecent(const QString& spec)
     rebuildRecentMenu();
 }
 
-void FileCommands::rebuildRecentMenu()
+void SessionFiles::rebuildRecentMenu()
 {
     if (!m_recent_menu)
         return;

@@ -1,4 +1,4 @@
-#include "ui/panels/fit_result_dialog.h"
+#include "ui/dialogs/fit_result_dialog.h"
 
 #include <QDialogButtonBox>
 #include <QGuiApplication>

@@ -1,5 +1,5 @@
 // Compare A/B in the window: choosing side B, the background run, the list of changed frames.
-#include "ui/panels/ab_compare_dialog.h"
+#include "ui/dialogs/ab_compare_dialog.h"
 
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"

@@ -1,5 +1,5 @@
 // The window's light scan: one thread, one reader of its own, trackLight from frame 0.
-#include "ui/document/light_scan.h"
+#include "ui/scans/light_scan.h"
 
 #include "ui/adapters/local_path.h"
 #include "visioncore/services/stream_runner.h"
@@ -26,6 +26,7 @@ void LightScan::setEnabled(bool on)
         return;
     m_enabled = on;
     restart();
+    emit enabledChanged(on);
 }
 
 void LightScan::setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,

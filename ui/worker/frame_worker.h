@@ -3,8 +3,8 @@
 // newer step is dropped, not queued.
 #pragma once
 
-#include "ui/document/gui_data_wrapper.h"
-#include "ui/document/read_ahead.h"
+#include "ui/worker/gui_data_wrapper.h"
+#include "ui/worker/read_ahead.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/services/layers.h"
 #include "visioncore/datawrappers/camera_data_wrapper.h"

@@ -1,4 +1,4 @@
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 
 #include "ui/adapters/image_adapter.h"
 #include "visioncore/services/layers.h"

@@ -1,4 +1,4 @@
-#include "ui/panels/lut_compare_dialog.h"
+#include "ui/dialogs/lut_compare_dialog.h"
 
 #include "ui/adapters/image_adapter.h"
 

@@ -1,4 +1,4 @@
-#include "ui/document/evaluation_scan.h"
+#include "ui/scans/evaluation_scan.h"
 
 #include "ui/adapters/local_path.h"
 

@@ -1,4 +1,4 @@
-#include "ui/document/recovery_meta.h"
+#include "ui/recovery/recovery_meta.h"
 
 #include "ui/adapters/local_path.h"
 

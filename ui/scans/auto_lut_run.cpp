@@ -1,4 +1,4 @@
-#include "ui/document/auto_lut_run.h"
+#include "ui/scans/auto_lut_run.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 

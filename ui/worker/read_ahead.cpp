@@ -1,8 +1,8 @@
 // Frames read and converted for display ahead of the one shown (see read_ahead.h).
-#include "ui/document/read_ahead.h"
+#include "ui/worker/read_ahead.h"
 
 #include "ui/adapters/image_adapter.h"
-#include "ui/document/frame_worker.h"
+#include "ui/worker/frame_worker.h"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "ui/document/frame_recorder.h"
+#include "ui/recording/frame_recorder.h"
 
 #include "ui/adapters/local_path.h"
 #include "visioncore/basics/output_guard.h"

@@ -1,7 +1,7 @@
-#include "ui/actions/annotation_commands.h"
+#include "ui/actions/annotations_file.h"
 
 #include "ui/actions/disk_conflict.h"
-#include "ui/actions/file_commands.h"
+#include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/document/annotations_document.h"
@@ -26,22 +26,22 @@ QString qs(const std::string& s)
 
 } // namespace
 
-AnnotationCommands::AnnotationCommands(MainWindow& window) : QObject(&window), m_window(window)
+AnnotationsFile::AnnotationsFile(MainWindow& window) : QObject(&window), m_window(window)
 {
     // A recovery is offered only when the stream it belongs to is open.
     connect(&m_window.session().stream(), &StreamDocument::streamChanged, this,
-            &AnnotationCommands::offerRecovery);
+            &AnnotationsFile::offerRecovery);
     OfferBar& bar = m_window.annotationsRecoveryBar();
-    connect(&bar, &OfferBar::accepted, this, &AnnotationCommands::recover);
-    connect(&bar, &OfferBar::declined, this, &AnnotationCommands::discardRecovery);
+    connect(&bar, &OfferBar::accepted, this, &AnnotationsFile::recover);
+    connect(&bar, &OfferBar::declined, this, &AnnotationsFile::discardRecovery);
 }
 
-AnnotationsDocument& AnnotationCommands::doc()
+AnnotationsDocument& AnnotationsFile::doc()
 {
     return m_window.session().annotations();
 }
 
-bool AnnotationCommands::save()
+bool AnnotationsFile::save()
 {
     AnnotationsDocument& d = doc();
     if (!m_window.session().stream().hasStream()) {
@@ -71,7 +71,7 @@ bool AnnotationCommands::save()
     return true;
 }
 
-bool AnnotationCommands::reload()
+bool AnnotationsFile::reload()
 {
     AnnotationsDocument& d = doc();
     if (Status s = d.reload(m_window.session().stream().frameCount()); !s) {
@@ -89,7 +89,7 @@ bool AnnotationCommands::reload()
     return true;
 }
 
-bool AnnotationCommands::saveAs(const QString& given)
+bool AnnotationsFile::saveAs(const QString& given)
 {
     AnnotationsDocument& d = doc();
     const StreamDocument& stream = m_window.session().stream();
@@ -131,7 +131,7 @@ bool AnnotationCommands::saveAs(const QString& given)
     return true;
 }
 
-bool AnnotationCommands::saveAll()
+bool AnnotationsFile::saveAll()
 {
     const bool annotations = doc().modified();
     bool ok = true;
@@ -142,7 +142,7 @@ bool AnnotationCommands::saveAll()
     return ok;
 }
 
-bool AnnotationCommands::confirmChanges()
+bool AnnotationsFile::confirmChanges()
 {
     AnnotationsDocument& d = doc();
     if (!d.modified())
@@ -163,7 +163,7 @@ bool AnnotationCommands::confirmChanges()
     return true;
 }
 
-void AnnotationCommands::revert()
+void AnnotationsFile::revert()
 {
     AnnotationsDocument& d = doc();
     Annotations annotations;
@@ -179,7 +179,7 @@ void AnnotationCommands::revert()
     d.adopt(d.stream(), d.path(), std::move(annotations), problem);
 }
 
-void AnnotationCommands::offerRecovery()
+void AnnotationsFile::offerRecovery()
 {
     OfferBar& bar = m_window.annotationsRecoveryBar();
     const std::optional<AnnotationsRecovery> r =
@@ -201,7 +201,7 @@ void AnnotationCommands::offerRecovery()
         tr("Annotations: %1\nStream: %2\nKept in: %3\nAt: %4").arg(file, r->stream, r->file, when));
 }
 
-bool AnnotationCommands::recover()
+bool AnnotationsFile::recover()
 {
     AnnotationsDocument& d = doc();
     const std::optional<AnnotationsRecovery> r = d.findRecovery();
@@ -227,7 +227,7 @@ bool AnnotationCommands::recover()
     return true;
 }
 
-void AnnotationCommands::discardRecovery()
+void AnnotationsFile::discardRecovery()
 {
     doc().discardRecovery();
     m_window.annotationsRecoveryBar().hide();

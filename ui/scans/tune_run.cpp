@@ -1,4 +1,4 @@
-#include "ui/document/tune_run.h"
+#include "ui/scans/tune_run.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 

@@ -1,4 +1,4 @@
-#include "ui/document/gui_data_wrapper.h"
+#include "ui/worker/gui_data_wrapper.h"
 
 namespace fieldsight::ui {
 

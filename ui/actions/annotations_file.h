@@ -13,11 +13,11 @@ namespace fieldsight::ui {
 class AnnotationsDocument;
 class MainWindow;
 
-class AnnotationCommands : public QObject
+class AnnotationsFile : public QObject
 {
     Q_OBJECT
 public:
-    explicit AnnotationCommands(MainWindow& window);
+    explicit AnnotationsFile(MainWindow& window);
 
     /// Saves the annotations to their file, atomically; asks for another file (Save As) when
     /// they have none or theirs could not be read, and what to do when another window or

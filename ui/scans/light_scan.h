@@ -47,6 +47,8 @@ public:
     QString error() const { return m_error; }
 
 signals:
+    /// Following the light was turned on or off.
+    void enabledChanged(bool on);
     /// The progress moved (about ten times a second while a scan runs).
     void progress();
     /// track() changed: a scan finished, or the track was dropped.

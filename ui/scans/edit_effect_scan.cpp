@@ -1,4 +1,4 @@
-#include "ui/document/edit_effect_scan.h"
+#include "ui/scans/edit_effect_scan.h"
 
 #include "ui/adapters/local_path.h"
 
