@@ -3,6 +3,7 @@
 // whole-stream scan reads the turned frames, the turn is one undo step that leaves every other
 // document's history alone, and "Save to stream" writes stream.json only when asked and never
 // into a read-only folder.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "support/turned_streams.h"
 #include "ui/actions/file_commands.h"
@@ -335,5 +336,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestOrientationGui)
+FIELDSIGHT_TEST_SUITE(TestOrientationGui, Widgets)
+
 #include "test_orientation_gui.moc"

@@ -1,6 +1,7 @@
 // What the venue trial of issue 21 found in the window, each as the user met it: a damaged table
 // beside a stream, a warning that outlived its cause, Save LUT As starting in the wrong folder,
 // classes without keys, the wheel changing a parameter while the panel scrolls, stale previews.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
@@ -442,5 +443,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestVenueTrial)
+FIELDSIGHT_TEST_SUITE(TestVenueTrial, Widgets)
+
 #include "test_venue_trial.moc"
