@@ -1,6 +1,7 @@
 // The fieldsight executable: the command word picks the GUI or a headless command (SPEC §5);
-// the commands live in app/commands/, the GUI in ui/.
+// the headless commands live in app/commands/, the GUI in ui/ (opened by gui_command.cpp).
 #include "commands/commands.h"
+#include "gui_command.h"
 
 #include <QCoreApplication>
 

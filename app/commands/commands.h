@@ -23,9 +23,6 @@ int importCommand(const QStringList& args, const Context& ctx);
 int lutCommand(const QStringList& args, const Context& ctx);
 /// `tune STREAM --out PARAMS`: the stages' parameters fitted to the stream's annotations.
 int tuneCommand(const QStringList& args, const Context& ctx);
-/// The GUI: makes the QApplication from `argc` and `argv` (which hold the program name, then
-/// "gui" or nothing, then the GUI's arguments), opens the main window and runs it.
-int guiCommand(int& argc, char** argv, const Context& ctx);
 
 /// One command's line in the overview: its words ("lut build"), every argument and option, and
 /// what it is for (may be empty).

@@ -43,17 +43,13 @@ std::string evalTable(const EvalReport& report)
                       c.precision(), c.recall());
         text += line;
     };
-    row("ball", s.balls);
-    row("goalpost", s.goalposts);
-    row("obstacle", s.obstacles);
-    row("field line", s.field_lines);
-    for (const auto& [name, c] :
-         {std::pair{"ball", s.balls}, std::pair{"goalpost", s.goalposts},
-          std::pair{"obstacle", s.obstacles}, std::pair{"field line", s.field_lines}})
+    for (const auto& [kind, c] : s.classes())
+        row(scoredClassText(*kind).c_str(), c);
+    for (const auto& [kind, c] : s.classes())
         if (c.concealed_found + c.concealed_missed > 0) {
             std::snprintf(line, sizeof line,
-                          "concealed %s: %d found, %d missed (in neither TP nor FN)\n", name,
-                          c.concealed_found, c.concealed_missed);
+                          "concealed %s: %d found, %d missed (in neither TP nor FN)\n",
+                          scoredClassText(*kind).c_str(), c.concealed_found, c.concealed_missed);
             text += line;
         }
     if (s.boundary_frames > 0)
@@ -90,10 +86,10 @@ std::string evalJson(const EvalReport& report)
     j["frames"] = s.frames;
     j["frames_not_done"] = s.frames_not_done;
     j["frames_reviewed"] = s.frames_reviewed;
-    j["classes"] = {{"ball", score(s.balls)},
-                    {"goalpost", score(s.goalposts)},
-                    {"obstacle", score(s.obstacles)},
-                    {"field_line", score(s.field_lines)}};
+    Json classes = Json::object();
+    for (const auto& [kind, c] : s.classes())
+        classes[scoredClassName(*kind)] = score(c);
+    j["classes"] = std::move(classes);
     Json boundary;
     if (s.boundary_frames > 0)
         boundary["mean_error_px"] = rounded(s.boundaryMeanError(), 4);
@@ -160,8 +156,9 @@ int evalCommand(const QStringList& args, const Context& ctx)
         if (!truth)
             return badInput(ctx, truth.error().message);
         // Precision and recall of nothing would print as a perfect 1.000.
+        const std::vector<const PerceptKind*> kinds = scoredKinds(ctx.pipeline.perceptKinds());
         if (std::none_of(truth.value().frames.begin(), truth.value().frames.end(),
-                         [](const auto& f) { return isScored(f.second); }))
+                         [&kinds](const auto& f) { return isScored(f.second, kinds); }))
             return badInput(ctx, truth_path + ": nothing to score (no frame is marked \"done\": "
                                               "true or has a \"reviewed\" kind)");
         auto report = evaluateStream(input.value(), truth.value(), truth_path, int(*threads));

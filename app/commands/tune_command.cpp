@@ -59,7 +59,9 @@ std::string scoreCell(const TuneScore& s, const std::string& term)
     return cell;
 }
 
-std::string tuneTable(const std::string& stream, const TuneResult& r, const TuneOptions& o)
+/// `kinds`: the pipeline's scored kinds, a row each.
+std::string tuneTable(const std::string& stream, const TuneResult& r, const TuneOptions& o,
+                      const std::vector<const PerceptKind*>& kinds)
 {
     std::string text;
     char line[320];
@@ -87,7 +89,7 @@ std::string tuneTable(const std::string& stream, const TuneResult& r, const Tune
                   "start", "tuned");
     text += line;
     std::vector<std::string> terms;
-    for (const PerceptKind* kind : scoredKinds())
+    for (const PerceptKind* kind : kinds)
         terms.push_back(scoredClassName(*kind));
     terms.push_back(kBoundaryTerm);
     for (const std::string& term : terms) {
@@ -282,7 +284,8 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                 return badInput(ctx, "tune: --weight takes TERM=W, not '" + w + "'");
             options.weights[parts[0].toStdString()] = value;
         }
-        if (Status s = checkTuneWeights(options.weights); !s)
+        if (Status s = checkTuneWeights(options.weights, scoredKinds(ctx.pipeline.perceptKinds()));
+            !s)
             return badInput(ctx, "tune --weight: " + s.error().message);
         for (const QString& id : parser.value("stages").split(',', Qt::SkipEmptyParts))
             options.stages.push_back(id.trimmed().toStdString());
@@ -311,7 +314,8 @@ int tuneCommand(const QStringList& args, const Context& ctx)
             printError(ctx.err, s.error().message);
             return kExitFailure;
         }
-        std::string table = tuneTable(stream, result.value(), options);
+        std::string table =
+            tuneTable(stream, result.value(), options, scoredKinds(ctx.pipeline.perceptKinds()));
         table += "wrote " + out + "\n";
         return finishReport(ctx, table, json, tuneJson(stream, out, result.value(), options));
     } catch (const std::exception& e) {

@@ -13,10 +13,11 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <set>
+#include <string>
+#include <vector>
 
 using namespace fieldsight;
 
@@ -24,26 +25,41 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The folders below include/visioncore/ and src/ that are layers, lowest first, and the layers
-/// each must not include (STYLE.md, "The shape": basics <- formats (io) <- framework and the
-/// DataWrappers <- percepts <- services; the stages use the framework and are used by nothing
-/// but the stage list).
-const std::map<std::string, std::set<std::string>>& forbiddenIncludes()
+/// The core's layers, lowest first, as `file` lists them (visioncore/layers.txt: one a line, `#`
+/// starts a comment); empty when the file cannot be read.
+std::vector<std::string> readLayers(const fs::path& file)
 {
-    static const std::map<std::string, std::set<std::string>> rules{
-        {"basics", {"io", "framework", "datawrappers", "percepts", "services", "stages"}},
-        {"io", {"framework", "datawrappers", "services", "stages"}},
-        {"framework", {"io", "datawrappers", "services"}},
-        {"datawrappers", {"services", "stages"}},
-        {"percepts", {"io", "datawrappers", "services", "stages"}},
-        {"services", {"stages"}},
-    };
-    return rules;
+    std::vector<std::string> layers;
+    std::ifstream in(file);
+    std::string line;
+    while (std::getline(in, line)) {
+        line = line.substr(0, line.find('#'));
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos)
+            continue;
+        layers.push_back(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
+    }
+    return layers;
+}
+
+/// The core's own list of layers.
+const std::vector<std::string>& coreLayers()
+{
+    static const std::vector<std::string> layers =
+        readLayers(fs::path(FIELDSIGHT_SOURCE_DIR) / "visioncore" / "layers.txt");
+    return layers;
+}
+
+/// The position of `folder` in `layers`, lowest first; -1 when it is not a layer.
+int rankOf(const std::vector<std::string>& layers, const std::string& folder)
+{
+    const auto it = std::find(layers.begin(), layers.end(), folder);
+    return it == layers.end() ? -1 : int(it - layers.begin());
 }
 
 /// The layer an include path names: "visioncore/io/frame.h" (public) and "io/strm_format.h"
 /// (private to the core) are both "io"; empty for anything else.
-std::string layerOfInclude(std::string path)
+std::string layerOfInclude(const std::vector<std::string>& layers, std::string path)
 {
     if (path.rfind("visioncore/", 0) == 0)
         path.erase(0, std::string("visioncore/").size());
@@ -51,13 +67,14 @@ std::string layerOfInclude(std::string path)
     if (slash == std::string::npos)
         return {};
     const std::string layer = path.substr(0, slash);
-    return forbiddenIncludes().count(layer) || layer == "stages" ? layer : std::string();
+    return rankOf(layers, layer) >= 0 ? layer : std::string();
 }
 
 /// Every quoted include of a file under `core` (a visioncore folder: include/visioncore/<layer>
-/// and src/<layer>) that its layer must not include, as "<file>: <include>". Loose headers at
-/// include/visioncore/ (in no layer) are reported too.
-std::vector<std::string> layerViolations(const fs::path& core)
+/// and src/<layer>) that names a layer after the file's own in `layers`, as "<file>: <include>".
+/// Loose headers at include/visioncore/ and folders that are in no layer are reported too.
+std::vector<std::string> layerViolations(const fs::path& core,
+                                         const std::vector<std::string>& layers)
 {
     std::vector<std::string> problems;
     const auto check = [&](const fs::path& root) {
@@ -65,17 +82,20 @@ std::vector<std::string> layerViolations(const fs::path& core)
         for (auto it = fs::recursive_directory_iterator(root, ec);
              !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
             const fs::path& file = it->path();
+            const fs::path relative = file.lexically_relative(root);
+            if (it.depth() == 0 && it->is_directory() && rankOf(layers, relative.string()) < 0) {
+                problems.push_back(file.string() + ": a folder in no layer");
+                continue;
+            }
             if (!it->is_regular_file() || (file.extension() != ".h" && file.extension() != ".cpp"))
                 continue;
-            const fs::path relative = file.lexically_relative(root);
-            if (relative.begin() == relative.end() ||
-                std::next(relative.begin()) == relative.end()) {
+            if (it.depth() == 0) {
                 if (root.filename() == "visioncore")
                     problems.push_back(file.string() + ": a header in no layer");
                 continue;
             }
-            const auto rule = forbiddenIncludes().find(relative.begin()->string());
-            if (rule == forbiddenIncludes().end())
+            const int own = rankOf(layers, relative.begin()->string());
+            if (own < 0)
                 continue;
             std::ifstream in(file);
             std::string line;
@@ -85,7 +105,7 @@ std::vector<std::string> layerViolations(const fs::path& core)
                     continue;
                 const auto start = open + std::string("#include \"").size();
                 const std::string included = line.substr(start, line.find('"', start) - start);
-                if (rule->second.count(layerOfInclude(included)))
+                if (rankOf(layers, layerOfInclude(layers, included)) > own)
                     problems.push_back(file.string() + ": " + included);
             }
         }
@@ -126,36 +146,88 @@ private slots:
     {
         const fs::path core = fs::path(FIELDSIGHT_SOURCE_DIR) / "visioncore";
         QVERIFY(fs::is_directory(core / "include" / "visioncore" / "basics"));
+        QVERIFY(rankOf(coreLayers(), "basics") == 0);
         std::string all;
-        for (const std::string& problem : layerViolations(core))
+        for (const std::string& problem : layerViolations(core, coreLayers()))
             all += problem + "\n";
         QVERIFY2(all.empty(), all.c_str());
     }
 
+    void readmeTableKeepsTheLayerOrder()
+    {
+        // The README's table names the public layer folders in the list's order, each once.
+        std::ifstream in(fs::path(FIELDSIGHT_SOURCE_DIR) / "README.md");
+        QVERIFY(in.good());
+        const std::string prefix = "| `visioncore/include/visioncore/";
+        std::vector<std::string> rows;
+        std::string line;
+        while (std::getline(in, line))
+            if (line.rfind(prefix, 0) == 0)
+                rows.push_back(
+                    line.substr(prefix.size(), line.find('/', prefix.size()) - prefix.size()));
+        std::vector<std::string> expected;
+        const fs::path include =
+            fs::path(FIELDSIGHT_SOURCE_DIR) / "visioncore" / "include" / "visioncore";
+        for (const std::string& layer : coreLayers())
+            if (fs::is_directory(include / layer))
+                expected.push_back(layer);
+        const auto join = [](const std::vector<std::string>& folders) {
+            std::string text;
+            for (const std::string& folder : folders)
+                text += folder + " ";
+            return QString::fromStdString(text);
+        };
+        QCOMPARE(join(rows), join(expected));
+    }
+
     void layerCheckFindsUpwardIncludes()
     {
-        // The check above must be able to fail: a small tree with one upward include per rule
-        // the task cares about, and one loose header.
+        // The check above must be able to fail: a small tree with upward includes, a downward
+        // one, a loose header and a folder in no layer.
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const fs::path core = fs::path(dir.path().toStdString());
         const fs::path include = core / "include" / "visioncore";
         writeFile(include / "loose.h", "#pragma once\n");
+        writeFile(include / "extras" / "x.h", "#pragma once\n");
         writeFile(include / "basics" / "ok.h", "#include \"visioncore/basics/result.h\"\n");
         writeFile(include / "basics" / "up.h", "#include \"visioncore/framework/stage.h\"\n");
         writeFile(include / "io" / "up.h", "#include \"visioncore/datawrappers/x.h\"\n");
+        writeFile(include / "io" / "ok.h", "#include \"visioncore/percepts/ball.h\"\n");
         writeFile(core / "src" / "io" / "up.cpp", "#include \"visioncore/services/y.h\"\n");
-        writeFile(core / "src" / "framework" / "up.cpp", "#include \"io/strm_format.h\"\n");
-        writeFile(core / "src" / "framework" / "ok.cpp", "#include <io/not_ours.h>\n");
-        std::vector<std::string> found = layerViolations(core);
+        writeFile(core / "src" / "percepts" / "up.cpp", "#include \"io/strm_format.h\"\n");
+        writeFile(core / "src" / "services" / "up.cpp", "#include \"stages/ball/ball.h\"\n");
+        writeFile(core / "src" / "framework" / "ok.cpp", "#include <services/not_ours.h>\n");
+        std::vector<std::string> found = layerViolations(core, coreLayers());
         for (std::string& f : found)
             f = fs::path(f.substr(0, f.find(':'))).filename().string() + f.substr(f.find(':'));
         std::sort(found.begin(), found.end());
         const std::vector<std::string> expected{
-            "loose.h: a header in no layer", "up.cpp: io/strm_format.h",
-            "up.cpp: visioncore/services/y.h", "up.h: visioncore/datawrappers/x.h",
+            "extras: a folder in no layer",      "loose.h: a header in no layer",
+            "up.cpp: io/strm_format.h",          "up.cpp: stages/ball/ball.h",
+            "up.cpp: visioncore/services/y.h",   "up.h: visioncore/datawrappers/x.h",
             "up.h: visioncore/framework/stage.h"};
         QCOMPARE(found, expected);
+    }
+
+    void layerCheckRefusesEveryCycle()
+    {
+        // For every two layers that include each other, exactly one of the includes is reported.
+        const std::vector<std::string>& layers = coreLayers();
+        QVERIFY(layers.size() >= 6);
+        for (std::size_t a = 0; a < layers.size(); ++a)
+            for (std::size_t b = a + 1; b < layers.size(); ++b) {
+                QTemporaryDir dir;
+                QVERIFY(dir.isValid());
+                const fs::path src = fs::path(dir.path().toStdString()) / "src";
+                writeFile(src / layers[a] / "a.h", "#include \"" + layers[b] + "/b.h\"\n");
+                writeFile(src / layers[b] / "b.h", "#include \"" + layers[a] + "/a.h\"\n");
+                const std::vector<std::string> found =
+                    layerViolations(fs::path(dir.path().toStdString()), layers);
+                QCOMPARE(found.size(), std::size_t(1));
+                QVERIFY2(found[0].find("a.h: " + layers[b] + "/b.h") != std::string::npos,
+                         found[0].c_str());
+            }
     }
 
     void pipelineHasTheSevenStagesInOrder()

@@ -258,9 +258,9 @@ private slots:
         QCOMPARE(s.frames, std::size_t(3));
         QCOMPARE(s.frames_not_done, std::size_t(1));
         QCOMPARE(s.frames_missing, std::size_t(1));
-        QCOMPARE(s.balls, (ClassScore{1, 0, 0}));
-        QCOMPARE(s.goalposts, (ClassScore{0, 0, 1}));
-        QCOMPARE(s.obstacles, (ClassScore{0, 1, 0}));
+        QCOMPARE(s.of<Ball>(), (ClassScore{1, 0, 0}));
+        QCOMPARE(s.of<Goalpost>(), (ClassScore{0, 0, 1}));
+        QCOMPARE(s.of<Obstacle>(), (ClassScore{0, 1, 0}));
         // Frames a (2 px) and c (4 px); d has no detected boundary.
         QCOMPARE(s.boundary_frames, std::size_t(2));
         QCOMPARE(s.boundaryMeanError(), 3.0);

@@ -96,17 +96,17 @@ private slots:
         detected["a.png"].output<Ball>() = {{101, 100, 5}, {10, 10, 5}};
         Evaluation e = evaluateFrames(detected, truth, 200, 200);
         // The concealed ball found: neither a true positive nor a false one.
-        QCOMPARE(e.scores.balls, (ClassScore{0, 1, 1, 1, 0}));
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{0, 1, 1, 1, 0}));
 
         // Missed, a concealed ball is no false negative and no disagreement.
         detected["a.png"].output<Ball>() = {{50, 50, 5}};
         e = evaluateFrames(detected, truth, 200, 200);
-        QCOMPARE(e.scores.balls, (ClassScore{1, 0, 0, 0, 1}));
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{1, 0, 0, 0, 1}));
         QVERIFY(e.disagreements.empty());
         // The same truth without the flag: a plain miss.
         f.setFlags("balls", 1, ObjectFlags{});
         e = evaluateFrames(detected, truth, 200, 200);
-        QCOMPARE(e.scores.balls, (ClassScore{1, 0, 1}));
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{1, 0, 1}));
         QCOMPARE(e.disagreements.size(), std::size_t(1));
     }
 
@@ -129,17 +129,17 @@ private slots:
         QCOMPARE(e.scores.frames, std::size_t(0));
         QCOMPARE(e.scores.frames_not_done, std::size_t(2));
         QCOMPARE(e.scores.frames_reviewed, std::size_t(1));
-        QCOMPARE(e.scores.balls, (ClassScore{0, 0, 1}));
-        QCOMPARE(e.scores.obstacles, (ClassScore{0, 1, 0}));
-        QCOMPARE(e.scores.goalposts, (ClassScore{}));
-        QCOMPARE(e.scores.field_lines, (ClassScore{}));
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{0, 0, 1}));
+        QCOMPARE(e.scores.of<Obstacle>(), (ClassScore{0, 1, 0}));
+        QCOMPARE(e.scores.of<Goalpost>(), (ClassScore{}));
+        QCOMPARE(e.scores.of<FieldLine>(), (ClassScore{}));
         QVERIFY(isScored(partial));
         QVERIFY(!isScored(truth.frames.at("b.png")));
         // Done, every kind counts again.
         partial.done = true;
         const Evaluation all = evaluateFrames(detected, truth, 200, 200);
-        QCOMPARE(all.scores.goalposts, (ClassScore{0, 0, 1}));
-        QCOMPARE(all.scores.field_lines, (ClassScore{0, 1, 0}));
+        QCOMPARE(all.scores.of<Goalpost>(), (ClassScore{0, 0, 1}));
+        QCOMPARE(all.scores.of<FieldLine>(), (ClassScore{0, 1, 0}));
     }
 
     void boundaryIsScoredOnlyWhereItsTruthIsComplete()
@@ -190,8 +190,8 @@ private slots:
         QVERIFY(d.missed.empty());
         QCOMPARE(e.scores.frames_missing, std::size_t(1));
         // The scores are the sum of the frames' matches, as evaluate() gives them.
-        QCOMPARE(e.scores.balls, evaluate(detected, truth, 200, 200).balls);
-        QCOMPARE(e.scores.balls, (ClassScore{2, 1, 1}));
+        QCOMPARE(e.scores.of<Ball>(), evaluate(detected, truth, 200, 200).of<Ball>());
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{2, 1, 1}));
     }
 
     void matchFrameIsTheOnePathOfScoreFrame()
@@ -208,9 +208,9 @@ private slots:
         scoreFrame(detected, done.truth, 200, 200, a);
         EvaluationScores b;
         b.add(matchFrame(detected, done, 200, 200));
-        QCOMPARE(a.balls, b.balls);
-        QCOMPARE(a.field_lines, (ClassScore{1, 0, 0}));
-        QCOMPARE(a.field_lines, b.field_lines);
+        QCOMPARE(a.of<Ball>(), b.of<Ball>());
+        QCOMPARE(a.of<FieldLine>(), (ClassScore{1, 0, 0}));
+        QCOMPARE(a.of<FieldLine>(), b.of<FieldLine>());
         const auto classes = a.classes();
         QCOMPARE(classes.size(), scoredKinds().size());
         QCOMPARE(classes[0].first, &perceptKind<Ball>());

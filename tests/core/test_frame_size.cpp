@@ -142,15 +142,16 @@ private slots:
         const EvaluationScores& b = hd.scores;
         qInfo("320x240: ball %d/%d/%d, posts %d/%d/%d, obstacles FP %d; 1280x720: ball "
               "%d/%d/%d, posts %d/%d/%d, obstacles FP %d",
-              a.balls.tp, a.balls.fp, a.balls.fn, a.goalposts.tp, a.goalposts.fp, a.goalposts.fn,
-              a.obstacles.fp, b.balls.tp, b.balls.fp, b.balls.fn, b.goalposts.tp, b.goalposts.fp,
-              b.goalposts.fn, b.obstacles.fp);
-        QVERIFY(a.balls.tp == 2 && a.goalposts.tp >= 2);
-        QCOMPARE(b.balls.tp, a.balls.tp);
-        QCOMPARE(b.balls.fp, 0);
-        QVERIFY(b.goalposts.tp >= a.goalposts.tp);
-        QCOMPARE(b.goalposts.fp, 0);
-        QVERIFY(b.obstacles.fp <= a.obstacles.fp);
+              a.of<Ball>().tp, a.of<Ball>().fp, a.of<Ball>().fn, a.of<Goalpost>().tp,
+              a.of<Goalpost>().fp, a.of<Goalpost>().fn, a.of<Obstacle>().fp, b.of<Ball>().tp,
+              b.of<Ball>().fp, b.of<Ball>().fn, b.of<Goalpost>().tp, b.of<Goalpost>().fp,
+              b.of<Goalpost>().fn, b.of<Obstacle>().fp);
+        QVERIFY(a.of<Ball>().tp == 2 && a.of<Goalpost>().tp >= 2);
+        QCOMPARE(b.of<Ball>().tp, a.of<Ball>().tp);
+        QCOMPARE(b.of<Ball>().fp, 0);
+        QVERIFY(b.of<Goalpost>().tp >= a.of<Goalpost>().tp);
+        QCOMPARE(b.of<Goalpost>().fp, 0);
+        QVERIFY(b.of<Obstacle>().fp <= a.of<Obstacle>().fp);
         QVERIFY(b.boundaryMeanError() >= 0 && b.boundaryMeanError() < 4 * 2.0);
     }
 };

@@ -79,7 +79,7 @@ private:
         auto report = evaluateStream(input.value(), truth, "truth", threads);
         if (!report)
             qFatal("%s", report.error().message.c_str());
-        return report.value().scores.balls.recall();
+        return report.value().scores.of<Ball>().recall();
     }
 
 private slots:

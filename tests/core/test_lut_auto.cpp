@@ -88,16 +88,17 @@ private slots:
         const EvaluationScores ideal = scoresWith(path, nullptr);
         const EvaluationScores automatic = scoresWith(path, &made.lut);
         qInfo("ball %.3f/%.3f (ideal %.3f/%.3f), goalpost %.3f/%.3f (ideal %.3f/%.3f)",
-              automatic.balls.precision(), automatic.balls.recall(), ideal.balls.precision(),
-              ideal.balls.recall(), automatic.goalposts.precision(), automatic.goalposts.recall(),
-              ideal.goalposts.precision(), ideal.goalposts.recall());
-        QVERIFY(ideal.balls.tp > 0 && ideal.goalposts.tp > 0);
+              automatic.of<Ball>().precision(), automatic.of<Ball>().recall(),
+              ideal.of<Ball>().precision(), ideal.of<Ball>().recall(),
+              automatic.of<Goalpost>().precision(), automatic.of<Goalpost>().recall(),
+              ideal.of<Goalpost>().precision(), ideal.of<Goalpost>().recall());
+        QVERIFY(ideal.of<Ball>().tp > 0 && ideal.of<Goalpost>().tp > 0);
         // Measured: lab2 ball 1.000/1.000 (ideal the same), posts 0.980/0.941 (1.000/0.961);
         // difficult ball 0.885/1.000 and posts 1.000/1.000 (the ideal table's the same).
-        QVERIFY(automatic.balls.recall() >= ideal.balls.recall() - 0.03);
-        QVERIFY(automatic.goalposts.recall() >= ideal.goalposts.recall() - 0.03);
-        QVERIFY(automatic.balls.precision() >= ideal.balls.precision() - 0.03);
-        QVERIFY(automatic.goalposts.precision() >= 0.95);
+        QVERIFY(automatic.of<Ball>().recall() >= ideal.of<Ball>().recall() - 0.03);
+        QVERIFY(automatic.of<Goalpost>().recall() >= ideal.of<Goalpost>().recall() - 0.03);
+        QVERIFY(automatic.of<Ball>().precision() >= ideal.of<Ball>().precision() - 0.03);
+        QVERIFY(automatic.of<Goalpost>().precision() >= 0.95);
     }
 
     void theSameFramesGiveTheSameTable()

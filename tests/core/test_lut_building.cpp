@@ -449,11 +449,13 @@ private slots:
 
         const EvaluationScores& a = ideal.value().scores;
         const EvaluationScores& b = built.value().scores;
-        qInfo("ball recall %.3f (ideal %.3f), goalpost recall %.3f (ideal %.3f)", b.balls.recall(),
-              a.balls.recall(), b.goalposts.recall(), a.goalposts.recall());
-        QVERIFY(a.balls.tp + a.balls.fn > 0 && a.goalposts.tp + a.goalposts.fn > 0);
-        QVERIFY(b.balls.recall() >= a.balls.recall() - 0.05);
-        QVERIFY(b.goalposts.recall() >= a.goalposts.recall() - 0.05);
+        qInfo("ball recall %.3f (ideal %.3f), goalpost recall %.3f (ideal %.3f)",
+              b.of<Ball>().recall(), a.of<Ball>().recall(), b.of<Goalpost>().recall(),
+              a.of<Goalpost>().recall());
+        QVERIFY(a.of<Ball>().tp + a.of<Ball>().fn > 0 &&
+                a.of<Goalpost>().tp + a.of<Goalpost>().fn > 0);
+        QVERIFY(b.of<Ball>().recall() >= a.of<Ball>().recall() - 0.05);
+        QVERIFY(b.of<Goalpost>().recall() >= a.of<Goalpost>().recall() - 0.05);
     }
 };
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "visioncore/framework/data_wrapper.h"
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 
 #include <map>
 #include <set>

@@ -1,6 +1,8 @@
-// Waiting, in offscreen GUI tests, for the main window to show a frame or a stream.
+// Waiting, in offscreen GUI tests, for the main window to show a frame or a stream, or to finish
+// a scan.
 #pragma once
 
+#include "ui/document/edit_effect_scan.h"
 #include "ui/frame_view/frame_view.h"
 #include "ui/actions/file_commands.h"
 #include "ui/main_window.h"
@@ -59,6 +61,20 @@ inline bool waitForEvaluation(MainWindow& w, int ms = 60000)
     clock.start();
     while (clock.elapsed() < ms) {
         if (!scan.running() && !scan.pending() && (scan.report() || !scan.problem().isEmpty()))
+            return true;
+        QTest::qWait(5);
+    }
+    return false;
+}
+
+/// Waits until the whole-stream edit-effect scan has finished every frame with nothing running.
+inline bool waitForScan(ui::EditEffectScan& scan, int ms = 20000)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < ms) {
+        if (!scan.running() && !scan.effects().empty() &&
+            scan.framesDone() == scan.effects().size())
             return true;
         QTest::qWait(5);
     }

@@ -57,10 +57,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_ab_compare_window");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_ab_compare_window", m_dir), QString());
         // The bundled streams are part of the project: a wrong path must fail, not skip.
         QVERIFY2(QFileInfo(lab2()).isDir(),
                  qPrintable("the bundled sample stream is missing: " + lab2()));

@@ -8,6 +8,7 @@
 #include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
+#include "support/unsaved_ask.h"
 #include "support/window_waits.h"
 #include "ui/actions/annotation_commands.h"
 #include "ui/stream_navigator/annotation_strip.h"
@@ -79,11 +80,6 @@ QString qstr(std::string_view s)
     return QString::fromUtf8(s.data(), qsizetype(s.size()));
 }
 
-QString canonical(const QString& path)
-{
-    return QFileInfo(path).canonicalFilePath();
-}
-
 } // namespace
 
 class TestAnnotateActions : public QObject
@@ -124,21 +120,10 @@ class TestAnnotateActions : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_annotate_actions");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
+        QCOMPARE(test::startWindowSuite("test_annotate_actions", m_dir), QString());
     }
 
-    void init()
-    {
-        QSettings().clear();
-        // No recovery file of an earlier test is offered to this one.
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void vCopiesThePreviousAnnotatedFrame()
     {
@@ -367,23 +352,13 @@ private slots:
         QVERIFY(temporaries(stream).isEmpty());
     }
 
-    void unsavedAnnotationsAskSaveDiscardOrCancel_data()
-    {
-        QTest::addColumn<QMessageBox::StandardButton>("answer");
-        QTest::addColumn<bool>("close");
-        for (bool close : {true, false}) {
-            const char* how = close ? "close" : "open";
-            QTest::addRow("%s, cancel", how) << QMessageBox::Cancel << close;
-            QTest::addRow("%s, discard", how) << QMessageBox::Discard << close;
-            QTest::addRow("%s, save", how) << QMessageBox::Save << close;
-        }
-    }
+    void unsavedAnnotationsAskSaveDiscardOrCancel_data() { addUnsavedAskRows(); }
 
     void unsavedAnnotationsAskSaveDiscardOrCancel()
     {
         QFETCH(QMessageBox::StandardButton, answer);
         QFETCH(bool, close);
-        const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(", ", "_");
+        const QString tag = unsavedAskTag();
         const QString a = copyStream("ask_a_" + tag), b = copyStream("ask_b_" + tag, 3);
         const QString file = a + "/annotations.json";
         ScriptedDialogs dialogs;
@@ -395,47 +370,17 @@ private slots:
         const FrameAnnotation edited = *doc.frame(name(w, 0));
         QVERIFY(doc.writeRecovery().ok()); // as the autosave would
 
-        dialogs.answers.push_back(answer);
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
-        bool closed = false;
-        if (close) {
-            closed = w.close();
-        } else {
-            dialogs.paths.push_back(b);
-            QTest::keyClick(&w, Qt::Key_O, Qt::ControlModifier); // File > Open stream folder
-        }
-        QCOMPARE(dialogs.asked.value(dialogs.asked.size() - 1),
-                 QStringLiteral("Unsaved annotations"));
-        QVERIFY(dialogs.unanswered.isEmpty());
-
-        if (answer == QMessageBox::Cancel) {
-            // Nothing goes: the window, the stream, the edit and its recovery file stay.
-            QVERIFY(!opened.wait(300));
-            QVERIFY(!closed && w.isVisible());
-            QCOMPARE(canonical(w.session().stream().streamSpec()), canonical(a));
-            QVERIFY(doc.modified() && *doc.frame(name(w, 0)) == edited);
-            QVERIFY(w.isWindowModified());
-            QVERIFY(!QFileInfo::exists(file));
-            QVERIFY(doc.findRecovery().has_value());
-            return;
-        }
-        if (answer == QMessageBox::Save) {
+        UnsavedDocument annotations;
+        annotations.question = QStringLiteral("Unsaved annotations");
+        annotations.holds_edit = [&] { return doc.modified() && *doc.frame(name(w, 0)) == edited; };
+        annotations.file_has_edit = [&] {
             auto read = Annotations::load(toLocal(file), doc.kinds());
-            QVERIFY(read);
-            QVERIFY(read.value().frames.at(name(w, 0)) == edited);
-        } else {
-            QVERIFY(!QFileInfo::exists(file));
-        }
-        QVERIFY(!doc.findRecovery().has_value()); // saved or discarded: not offered again
-        if (close) {
-            QVERIFY(closed && !w.isVisible());
-            return;
-        }
-        QVERIFY(opened.wait(10000));
-        QVERIFY(opened.front().front().toBool());
-        QCOMPARE(canonical(w.session().stream().streamSpec()), canonical(b));
-        QVERIFY(!doc.modified());
-        QVERIFY(!w.isWindowModified());
+            return read && read.value().frames.at(name(w, 0)) == edited;
+        };
+        annotations.file_as_before = [&] { return !QFileInfo::exists(file); };
+        annotations.has_recovery = [&] { return doc.findRecovery().has_value(); };
+        annotations.shows_other = [&] { return !doc.modified(); };
+        answerUnsavedAsk(w, dialogs, annotations, answer, close, a, b);
     }
 
     void aRecoveryIsOfferedOnlyOnItsOwnStream_data()

@@ -112,12 +112,7 @@ class TestAnnotateTools : public QObject
     /// A copy of the sample stream without its annotations.
     QString copyStream(const QString& name)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-            if (file != QLatin1String("annotations.json"))
-                QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-        return to;
+        return test::copyFolderFiles(sampleStream(), m_dir.filePath(name), test::isNotAnnotations);
     }
 
     /// `w` showing `stream` at kZoom with image pixel (0, 0) at the view's corner.
@@ -158,14 +153,8 @@ class TestAnnotateTools : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_annotate_tools");
+        QCOMPARE(test::startWindowSuite("test_annotate_tools", m_dir), QString());
         QSettings().clear();
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init() { QSettings().clear(); }

@@ -41,12 +41,7 @@ FrameAnnotation withShape(FrameAnnotation frame, const PerceptKind& kind, const 
 /// A copy of the sample stream (without annotations) in `dir`.
 QString copyOfSample(const QTemporaryDir& dir, const QString& name)
 {
-    const QString to = dir.filePath(name);
-    QDir().mkpath(to);
-    for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-        if (file != QLatin1String("annotations.json"))
-            QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-    return to;
+    return test::copyFolderFiles(sampleStream(), dir.filePath(name), test::isNotAnnotations);
 }
 
 } // namespace

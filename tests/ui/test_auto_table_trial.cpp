@@ -9,6 +9,7 @@
 // one undo step, and the goal colour found is the pipeline's. FIELDSIGHT_TRIAL_STREAM=DIR adds a
 // stream of your own (with its annotations.json), opened without its table.
 #include "support/test_suite.h"
+#include "support/test_files.h"
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -129,17 +130,10 @@ class TestAutoTableTrial : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_auto_table_trial");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_auto_table_trial", m_dir), QString());
     }
 
-    void init()
-    {
-        QSettings().clear();
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void fromAnEmptyTable_data()
     {
@@ -227,8 +221,9 @@ private slots:
                      .arg(clicks <= 3 && scores_s <= 60 ? "met" : "NOT met");
         lines << "  " + w.lastMessage();
         lines << QString("  %1 done frames, %2 reviewed").arg(s.frames).arg(s.frames_reviewed);
-        lines << scoreLine("ball", s.balls) << scoreLine("goalpost", s.goalposts)
-              << scoreLine("obstacle", s.obstacles) << scoreLine("field line", s.field_lines);
+        lines << scoreLine("ball", s.of<Ball>()) << scoreLine("goalpost", s.of<Goalpost>())
+              << scoreLine("obstacle", s.of<Obstacle>())
+              << scoreLine("field line", s.of<FieldLine>());
         if (s.boundary_frames > 0)
             lines << QString("  field boundary: mean error %1 px over %2 frames")
                          .arg(s.boundaryMeanError(), 0, 'f', 2)
@@ -239,7 +234,7 @@ private slots:
         // The table finds the ball and the posts (measured, precision/recall: NUbots ball and
         // posts 1/1; DNT posts 1/1; B-Human ball and posts 1/1, the team's own table
         // 0.903/1 and 1/1 with these parameters).
-        for (const ClassScore* c : {&s.balls, &s.goalposts}) {
+        for (const ClassScore* c : {&s.of<Ball>(), &s.of<Goalpost>()}) {
             if (c->tp + c->fn == 0)
                 continue;
             QVERIFY2(c->recall() >= 0.95 && c->precision() >= 0.9, qPrintable(lines.join("\n")));

@@ -63,19 +63,6 @@ std::optional<bool> waitForRun(QSignalSpy& spy, int ms = 60000)
 }
 
 /// Waits until the whole-stream scan has covered every frame.
-bool waitForScan(ui::EditEffectScan& scan)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 30000) {
-        if (!scan.running() && !scan.effects().empty() &&
-            scan.framesDone() == scan.effects().size())
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 /// The value of every colour parameter named goal_colour, found as the window finds it.
 std::vector<double> goalColours(MainWindow& w)
 {
@@ -121,22 +108,9 @@ class TestCalibrate : public QObject
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_calibrate");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
-    }
+    void initTestCase() { QCOMPARE(test::startWindowSuite("test_calibrate", m_dir), QString()); }
 
-    void init()
-    {
-        QSettings().clear();
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void theCalibrateMenuAndTheEditorOfferTheAutomaticTable()
     {
@@ -205,7 +179,7 @@ private slots:
                      qPrintable(w.lastMessage()));
 
         // The whole-stream strip shows this edit's cells.
-        QVERIFY(waitForScan(w.session().effectScan()));
+        QVERIFY(waitForScan(w.session().effectScan(), 30000));
         QVERIFY(w.session().effectScan().showsEdit());
         QCOMPARE(w.session().effectScan().changedCells(),
                  diffLuts(before_table, w.session().lut().table()).cells.size());

@@ -82,13 +82,7 @@ class TestEvaluationPanel : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_evaluation_panel");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
+        QCOMPARE(test::startWindowSuite("test_evaluation_panel", m_dir), QString());
     }
 
     void init() { QSettings().clear(); }
@@ -291,10 +285,10 @@ private slots:
         f3.truth.output<Ball>().clear(); // its ball no longer there: one fewer to find
         QVERIFY(truth.editFrame("frame_000003.png", f3, "no ball"));
         QVERIFY(waitForEvaluation(w));
-        const ClassScore balls = *w.session().evaluation().report()->scores.of(perceptKind<Ball>());
+        const ClassScore balls = w.session().evaluation().report()->scores.of<Ball>();
         const EvaluationScores* scored_before = w.session().evaluation().before();
         QVERIFY(scored_before);
-        const ClassScore was = *scored_before->of(perceptKind<Ball>());
+        const ClassScore was = scored_before->of<Ball>();
         QCOMPARE(was.tp + was.fn, balls.tp + balls.fn); // the same annotations on both sides
         QVERIFY2(was.recall() > balls.recall(), qPrintable(panel.changeText()));
         QVERIFY2(panel.changeText().contains("ball recall"), qPrintable(panel.changeText()));
@@ -356,17 +350,17 @@ private slots:
     void scoreChangeTextNamesKindsByTheirNouns()
     {
         EvaluationScores a;
-        a.balls = {91, 0, 9};
-        a.goalposts = {10, 0, 0};
+        a.of<Ball>() = {91, 0, 9};
+        a.of<Goalpost>() = {10, 0, 0};
         EvaluationScores b = a;
-        b.balls = {97, 0, 3};
-        b.goalposts = {24, 1, 0};
+        b.of<Ball>() = {97, 0, 3};
+        b.of<Goalpost>() = {24, 1, 0};
         QCOMPARE(ui::scoreChangeText(a, b),
                  QString("ball recall 0.91 → 0.97, goalpost precision 1.00 → 0.96"));
         // A change two decimals would hide shows three.
         b = a;
-        b.balls = {910, 0, 89};
-        a.balls = {910, 0, 90};
+        b.of<Ball>() = {910, 0, 89};
+        a.of<Ball>() = {910, 0, 90};
         QCOMPARE(ui::scoreChangeText(a, b), QString("ball recall 0.910 → 0.911"));
         QCOMPARE(ui::scoreChangeText(a, a), QString("no change in the scores"));
     }

@@ -114,20 +114,13 @@ class TestFitAnnotations : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_fit_annotations");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_fit_annotations", m_dir), QString());
         // The bundled streams are part of the project: a wrong path must fail, not skip.
         QVERIFY2(QFileInfo(sampleStream() + "/annotations.json").isFile(),
                  qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
-    void init()
-    {
-        QSettings().clear();
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void thePipelineMenuOffersItWithItsKey()
     {

@@ -49,10 +49,7 @@ private:
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_follow_light");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_follow_light", m_dir), QString());
         // The bundled lab2 stream, its light going 30% warmer and 15% dimmer over its frames.
         m_stream = m_dir.filePath("drift");
         const QString made = writeLightRamp(QString::fromStdString(sampleStreamsDir() + "/lab2"),

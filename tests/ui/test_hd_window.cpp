@@ -3,6 +3,7 @@
 // parameters (lengths in px follow the frame's width), whether the frame came from the frames
 // read ahead or was read on request.
 #include "support/test_suite.h"
+#include "support/test_files.h"
 #include "support/window_waits.h"
 #include "synth/synth.h"
 #include "ui/main_window.h"
@@ -32,11 +33,8 @@ class TestHdWindow : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_hd_window");
+        QCOMPARE(test::startWindowSuite("test_hd_window", m_dir), QString());
         QSettings().clear();
-        QVERIFY(m_dir.isValid());
         synth::SynthOptions options;
         options.scenario = synth::Scenario::Lab2;
         options.frames = kFrames;

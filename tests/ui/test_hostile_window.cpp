@@ -2,6 +2,7 @@
 // stuck in the system when the window quits, frame entries that are no frame, and a recovery
 // offer naming a very long path with a time that is not a time.
 #include "support/test_suite.h"
+#include "support/test_files.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
 #include "ui/actions/file_commands.h"
@@ -65,10 +66,7 @@ class TestHostileWindow : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_hostile_window");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_hostile_window", m_dir), QString());
     }
 
     void aSettingsFileThatIsAFifoLeavesTheWindowItsDefaults()

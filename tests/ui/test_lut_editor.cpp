@@ -3,6 +3,7 @@
 // the frame is reclassified, save then load gives the same bytes, and unsaved edits left by a
 // crashed session are offered and restored.
 #include "support/test_suite.h"
+#include "support/window_waits.h"
 #include "support/test_files.h"
 #include "support/synthetic_frames.h"
 #include "ui/actions/file_commands.h"
@@ -33,6 +34,7 @@
 using namespace fieldsight;
 using fieldsight::ui::MainWindow;
 using test::sampleStream;
+using test::waitForScan;
 
 namespace {
 
@@ -102,19 +104,6 @@ bool openWithUvPlane(MainWindow& w)
 }
 
 /// Waits until the whole-stream scan has covered every frame.
-bool waitForScan(ui::EditEffectScan& scan)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 20000) {
-        if (!scan.running() && !scan.effects().empty() &&
-            scan.framesDone() == scan.effects().size())
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 cv::Vec3b colourAt(MainWindow& w, QPoint p)
 {
     return w.session().stream().current()->frame.ycbcr.at<cv::Vec3b>(p.y(), p.x());
@@ -129,16 +118,7 @@ class TestLutEditor : public QObject
     QTemporaryDir m_dir;
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_lut_editor");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
-    }
+    void initTestCase() { QCOMPARE(test::startWindowSuite("test_lut_editor", m_dir), QString()); }
 
     void init()
     {

@@ -83,22 +83,9 @@ class TestNothingLost : public QObject
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_nothing_lost");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
-    }
+    void initTestCase() { QCOMPARE(test::startWindowSuite("test_nothing_lost", m_dir), QString()); }
 
-    void init()
-    {
-        QSettings().clear();
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     void aFingerprintSeesOtherBytesNotATouch()
     {

@@ -4,6 +4,8 @@
 // document's history alone, and "Save to stream" writes stream.json only when asked and never
 // into a read-only folder.
 #include "support/test_suite.h"
+#include "support/test_files.h"
+#include "support/window_waits.h"
 #include "support/synthetic_frames.h"
 #include "support/turned_streams.h"
 #include "ui/actions/file_commands.h"
@@ -26,6 +28,7 @@
 #include <sstream>
 
 using namespace fieldsight;
+using fieldsight::test::waitForScan;
 using fieldsight::ui::MainWindow;
 namespace fs = std::filesystem;
 
@@ -91,19 +94,6 @@ bool trigger(MainWindow& w, const QString& name)
     return waitFrame(w);
 }
 
-bool waitForScan(ui::EditEffectScan& scan)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (clock.elapsed() < 20000) {
-        if (!scan.running() && !scan.effects().empty() &&
-            scan.framesDone() == scan.effects().size())
-            return true;
-        QTest::qWait(5);
-    }
-    return false;
-}
-
 /// Per frame, the detections the whole-stream scan says appeared after a click that makes the
 /// drawn disc's colour orange (at its upright place in frame 0).
 std::vector<int> appearedAfterClick(MainWindow& w)
@@ -147,10 +137,7 @@ class TestOrientationGui : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_orientation_gui");
-        QVERIFY(m_dir.isValid());
+        QCOMPARE(test::startWindowSuite("test_orientation_gui", m_dir), QString());
         m_upright = path("upright");
         m_half = path("half");
         QVERIFY(test::writeTurnedStream(m_upright, scenes(), {Orientation::Upright, {}, {}}));

@@ -70,14 +70,10 @@ class TestSession : public QObject
     Pipeline m_pipeline = withFakeStage();
     QTemporaryDir m_dir;
 
+    /// A copy of the sample stream's frames and table.
     QString copyStream(const QString& name)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-            if (file.startsWith("frame_") || file == "default.lut")
-                QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-        return to;
+        return test::copyFolderFiles(sampleStream(), m_dir.filePath(name), test::isFrameOrTable);
     }
 
     /// Edit > Undo then Edit > Redo: `bytes` reads the document, `before` and `after` are what
@@ -119,14 +115,8 @@ class TestSession : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_session");
+        QCOMPARE(test::startWindowSuite("test_session", m_dir), QString());
         QSettings().clear();
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init()

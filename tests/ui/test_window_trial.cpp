@@ -134,21 +134,9 @@ class TestWindowTrial : public QObject
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_window_trial");
-        QVERIFY(m_dir.isValid());
-        if (!QFileInfo(sampleStream()).isDir())
-            QSKIP("the bundled sample stream is missing");
-    }
+    void initTestCase() { QCOMPARE(test::startWindowSuite("test_window_trial", m_dir), QString()); }
 
-    void init()
-    {
-        QSettings().clear();
-        QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).removeRecursively();
-    }
+    void init() { test::forgetEarlierTests(); }
 
     /// A detection exactly on its true object: the truth, dashed and drawn over it, still shows
     /// (its white dashes), and so does the detection (its colour in the gaps); the headless

@@ -70,13 +70,7 @@ class TestWorkflowKeys : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_workflow_keys");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
+        QCOMPARE(test::startWindowSuite("test_workflow_keys", m_dir), QString());
     }
 
     void init() { QSettings().clear(); }

@@ -8,6 +8,7 @@
 #include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
+#include "support/unsaved_ask.h"
 #include "support/window_waits.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/io/lut_import.h"
@@ -149,17 +150,7 @@ class TestWorkflows : public QObject
     }
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_workflows");
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo::exists(QString::fromStdString(sampleStreamsDir() + "/lab1")),
-                 qPrintable("the bundled sample stream is missing: " +
-                            QString::fromStdString(sampleStreamsDir() + "/lab1")));
-    }
+    void initTestCase() { QCOMPARE(test::startWindowSuite("test_workflows", m_dir), QString()); }
 
     void init()
     {
@@ -169,23 +160,13 @@ private slots:
             QFile::remove(app.filePath(QString::fromLatin1(name)));
     }
 
-    void unsavedEditsAskSaveDiscardOrCancel_data()
-    {
-        QTest::addColumn<QMessageBox::StandardButton>("answer");
-        QTest::addColumn<bool>("close"); // closing the window instead of opening another stream
-        for (bool close : {false, true}) {
-            const char* when = close ? "close" : "open";
-            QTest::addRow("%s, Save", when) << QMessageBox::Save << close;
-            QTest::addRow("%s, Discard", when) << QMessageBox::Discard << close;
-            QTest::addRow("%s, Cancel", when) << QMessageBox::Cancel << close;
-        }
-    }
+    void unsavedEditsAskSaveDiscardOrCancel_data() { addUnsavedAskRows(); }
 
     void unsavedEditsAskSaveDiscardOrCancel()
     {
         QFETCH(QMessageBox::StandardButton, answer);
         QFETCH(bool, close);
-        const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(", ", "_");
+        const QString tag = unsavedAskTag();
         const QString a = copyStream("ask_a_" + tag), b = copyStream("ask_b_" + tag, 50);
         const QString file = a + "/default.lut";
         // A second name for the file as it is: an atomic save replaces the name's file and
@@ -198,46 +179,21 @@ private slots:
         const ColourLut edited = w.session().lut().table();
         QVERIFY(w.isWindowModified());
 
-        dialogs.answers.push_back(answer);
-        QSignalSpy opened(&w.files(), &ui::FileCommands::streamOpened);
-        bool closed = false;
-        if (close) {
-            closed = w.close();
-        } else {
-            dialogs.paths.push_back(b);
-            QTest::keyClick(&w, Qt::Key_O, Qt::ControlModifier); // File > Open stream folder
-        }
-        QCOMPARE(dialogs.asked.last(), QStringLiteral("Unsaved LUT edits"));
-        QVERIFY(dialogs.unanswered.isEmpty());
+        UnsavedDocument lut;
+        lut.question = QStringLiteral("Unsaved LUT edits");
+        lut.holds_edit = [&] { return w.session().lut().table() == edited; };
+        // Written by replacing the file whole.
+        lut.file_has_edit = [&] { return loadTable(file) == edited; };
+        lut.file_as_before = [&] { return fileBytes(file) == on_disk; };
+        lut.has_recovery = [&] { return w.session().lut().findRecovery().has_value(); };
+        lut.shows_other = [&] {
+            return w.session().lut().table() == loadTable(b + "/default.lut");
+        };
+        answerUnsavedAsk(w, dialogs, lut, answer, close, a, b);
+        if (QTest::currentTestFailed())
+            return;
         QVERIFY(temporaries(a).isEmpty());
         QCOMPARE(fileBytes(a + "/held.lut"), on_disk);
-
-        if (answer == QMessageBox::Cancel) {
-            // Nothing goes: the stream, the edit and its recovery file stay; nothing written.
-            QVERIFY(!opened.wait(300));
-            QVERIFY(!closed && w.isVisible());
-            QCOMPARE(canonical(w.session().stream().streamSpec()), canonical(a));
-            QVERIFY(w.session().lut().table() == edited);
-            QVERIFY(w.isWindowModified());
-            QCOMPARE(fileBytes(file), on_disk);
-            QVERIFY(w.session().lut().findRecovery().has_value());
-            return;
-        }
-        if (answer == QMessageBox::Save) {
-            QVERIFY(loadTable(file) == edited); // written, by replacing the file whole
-        } else {
-            QCOMPARE(fileBytes(file), on_disk);
-        }
-        QVERIFY(!w.session().lut().findRecovery()); // saved or discarded: never offered again
-        if (close) {
-            QVERIFY(closed && !w.isVisible());
-            return;
-        }
-        QVERIFY(opened.wait(10000));
-        QVERIFY(opened.front().front().toBool());
-        QCOMPARE(canonical(w.session().stream().streamSpec()), canonical(b));
-        QVERIFY(w.session().lut().table() == loadTable(b + "/default.lut"));
-        QVERIFY(!w.isWindowModified());
     }
 
     void theRecoveryBarRecoversOrDiscards_data()

@@ -19,10 +19,13 @@ namespace {
 constexpr int kMinBudget = 10;
 constexpr int kMaxBudget = 100000;
 
-std::size_t scoredFrames(const Annotations& truth)
+/// The frames of `truth` with something to score by `pipeline`'s kinds.
+std::size_t scoredFrames(const Annotations& truth, const Pipeline& pipeline)
 {
-    return std::size_t(std::count_if(truth.frames.begin(), truth.frames.end(),
-                                     [](const auto& f) { return isScored(f.second); }));
+    const std::vector<const PerceptKind*> kinds = scoredKinds(pipeline.perceptKinds());
+    return std::size_t(
+        std::count_if(truth.frames.begin(), truth.frames.end(),
+                      [&kinds](const auto& f) { return isScored(f.second, kinds); }));
 }
 
 } // namespace
@@ -88,7 +91,7 @@ bool FitCommands::ready()
         m_window.showMessage(tr("Fit to annotations: %1").arg(annotations.loadProblem()));
         return false;
     }
-    if (scoredFrames(annotations.annotations()) == 0) {
+    if (scoredFrames(annotations.annotations(), session.pipeline()) == 0) {
         m_window.showMessage(
             annotations.annotations().frames.empty()
                 ? tr("This stream has no annotations yet: annotate some frames and mark them done "
@@ -109,7 +112,7 @@ bool FitCommands::start(int budget)
     // The annotations as the document holds them, unsaved edits too.
     const AnnotationsDocument& annotations = session.annotations();
     Annotations truth = annotations.annotations();
-    const std::size_t scored = scoredFrames(truth);
+    const std::size_t scored = scoredFrames(truth, session.pipeline());
     const std::string spec = toLocalPath(stream.streamSpec());
     StreamOptions options;
     options.orientation = stream.orientation();

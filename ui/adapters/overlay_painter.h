@@ -1,7 +1,7 @@
 // The one painter of the core's debug drawings, shared by the GUI frame view and headless renders.
 #pragma once
 
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 
 #include <QImage>
 

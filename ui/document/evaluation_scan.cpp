@@ -16,10 +16,13 @@ namespace {
 /// whole-stream scan's: its few frames give the scores of an edit before the scan's strip is full.
 constexpr int kNiceness = 5;
 
-std::size_t scoredCount(const Annotations* truth)
+/// The frames of `truth` with something to score by `pipeline`'s kinds.
+std::size_t scoredCount(const Annotations* truth, const Pipeline& pipeline)
 {
-    return truth ? std::size_t(std::count_if(truth->frames.begin(), truth->frames.end(),
-                                             [](const auto& f) { return isScored(f.second); }))
+    const std::vector<const PerceptKind*> kinds = scoredKinds(pipeline.perceptKinds());
+    return truth ? std::size_t(
+                       std::count_if(truth->frames.begin(), truth->frames.end(),
+                                     [&kinds](const auto& f) { return isScored(f.second, kinds); }))
                  : 0;
 }
 
@@ -123,7 +126,8 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
                 if (const auto b = job->baseline->find(name); b != job->baseline->end())
                     percepts = b->second;
             out.before =
-                fieldsight::evaluate(before, *job->truth, input.info().width, input.info().height);
+                fieldsight::evaluate(before, *job->truth, input.info().width, input.info().height,
+                                     scoredKinds(job->pipeline->perceptKinds()));
         }
     } catch (const std::bad_alloc&) {
         out.error = job->stream + ": not enough memory to evaluate it";
@@ -239,7 +243,7 @@ const EvaluationScan::Detections& EvaluationScan::detected() const
 
 bool EvaluationScan::nothingToScore()
 {
-    if (scoredCount(m_truth.get()) > 0)
+    if (scoredCount(m_truth.get(), m_pipeline) > 0)
         return false;
     m_report.reset();
     m_detected.reset();
@@ -287,7 +291,7 @@ void EvaluationScan::start()
         job->known = m_detected;
     job->baseline = m_baseline;
     job->requested = m_requested;
-    job->total = scoredCount(m_truth.get());
+    job->total = scoredCount(m_truth.get(), m_pipeline);
     m_pending_edit = false;
     m_rerun_all = false;
     m_job = job;
@@ -325,7 +329,7 @@ void EvaluationScan::onFinished()
                                                                   job->requested)
                             .count();
             m_failing.clear();
-            const std::vector<const PerceptKind*>& kinds = scoredKinds();
+            const std::vector<const PerceptKind*> kinds = scoredKinds(m_pipeline.perceptKinds());
             for (const FrameDisagreement& d : m_report->disagreements)
                 m_failing.push_back({m_report->frame_index.at(d.frame), d});
             const auto rank = [&kinds](const PerceptKind* k) {

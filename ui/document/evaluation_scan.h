@@ -45,6 +45,9 @@ public:
     /// Cancels a run and waits for it (after the frame each thread is on).
     ~EvaluationScan() override;
 
+    /// The pipeline it runs (its scored kinds are the scores' rows).
+    const Pipeline& pipeline() const { return m_pipeline; }
+
     /// Worker threads of a run (0: one per core).
     void setThreads(int threads) { m_threads = threads; }
     /// Quiet time after a change before the run starts, so a brush stroke is scored once.

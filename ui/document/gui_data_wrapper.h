@@ -20,7 +20,6 @@ public:
     Frame& frame() { return m_frame; }
     const Frame& frame() const { return m_frame; }
     void setLut(std::shared_ptr<const ColourLut> lut) { m_lut = std::move(lut); }
-    const std::shared_ptr<const ColourLut>& lutVersion() const { return m_lut; }
     void setRequestedLayers(std::set<std::string, std::less<>> layers)
     {
         m_layers = std::move(layers);

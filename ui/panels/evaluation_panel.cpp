@@ -62,7 +62,7 @@ QString scoreChangeText(const EvaluationScores& before, const EvaluationScores& 
 {
     QStringList parts;
     for (const auto& [kind, a] : after.classes()) {
-        const ClassScore* b = before.of(*kind);
+        const ClassScore* b = before.find(*kind);
         if (!b)
             continue;
         if (b->precision() != a.precision())
@@ -152,12 +152,13 @@ EvaluationPanel::EvaluationPanel(EvaluationScan& scan, StreamDocument& stream, Q
     m_scores->setWordWrap(false);
     m_scores->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_scores->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_scores->setRowCount(int(scoredKinds().size()));
-    for (int r = 0; r < m_scores->rowCount(); ++r)
-        m_scores->setItem(r, 0,
-                          new QTableWidgetItem(QString::fromUtf8(
-                              scoredKinds()[std::size_t(r)]->title.data(),
-                              qsizetype(scoredKinds()[std::size_t(r)]->title.size()))));
+    m_kinds = scoredKinds(m_scan.pipeline().perceptKinds());
+    m_scores->setRowCount(int(m_kinds.size()));
+    for (int r = 0; r < m_scores->rowCount(); ++r) {
+        const std::string_view title = m_kinds[std::size_t(r)]->title;
+        m_scores->setItem(
+            r, 0, new QTableWidgetItem(QString::fromUtf8(title.data(), qsizetype(title.size()))));
+    }
     int height = m_scores->horizontalHeader()->sizeHint().height() + 2 * m_scores->frameWidth();
     for (int r = 0; r < m_scores->rowCount(); ++r)
         height += m_scores->rowHeight(r);
@@ -260,8 +261,9 @@ void EvaluationPanel::refresh()
                                   return c.second.concealed_found + c.second.concealed_missed > 0;
                               }));
     for (int r = 0; r < m_scores->rowCount(); ++r) {
-        const bool known = std::size_t(r) < classes.size();
-        const ClassScore c = known ? classes[std::size_t(r)].second : ClassScore{};
+        const ClassScore* score = report ? report->scores.find(*m_kinds[std::size_t(r)]) : nullptr;
+        const bool known = score != nullptr;
+        const ClassScore c = known ? *score : ClassScore{};
         const QString dash = QStringLiteral("–");
         const QStringList cells{known ? QString::number(c.tp) : dash,
                                 known ? QString::number(c.fp) : dash,

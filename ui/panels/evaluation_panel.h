@@ -75,6 +75,7 @@ private:
     QPushButton* m_run = nullptr;
     QPushButton* m_cancel = nullptr;
     QTableWidget* m_scores = nullptr;
+    std::vector<const PerceptKind*> m_kinds; ///< the scored kinds, one a row of m_scores
     QLabel* m_boundary = nullptr;
     QLabel* m_change = nullptr;
     QListWidget* m_frames = nullptr;

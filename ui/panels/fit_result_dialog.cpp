@@ -49,12 +49,12 @@ QString signedScore(double v)
            QString::number(std::abs(v), 'f', 3);
 }
 
-/// A term's title: its kind's (the registry's), else the name itself.
-QString termTitle(const std::string& term)
+/// A term's title: its kind's (of `kinds`, the pipeline's scored kinds), else the name itself.
+QString termTitle(const std::string& term, const std::vector<const PerceptKind*>& kinds)
 {
     if (term == kBoundaryTerm)
         return qs(boundaryKind().title);
-    for (const PerceptKind* kind : scoredKinds())
+    for (const PerceptKind* kind : kinds)
         if (scoredClassName(*kind) == term)
             return qs(kind->title);
     return QString::fromStdString(term);
@@ -175,7 +175,7 @@ FitResultDialog::FitResultDialog(TuneResult result, const Pipeline& pipeline, QW
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     column->addWidget(buttons);
 
-    fillScores();
+    fillScores(pipeline);
     fillChanges(pipeline);
 
     const TuneResult& r = m_result;
@@ -223,7 +223,7 @@ void FitResultDialog::setNote(const QString& note)
     m_note->setVisible(!note.isEmpty());
 }
 
-void FitResultDialog::fillScores()
+void FitResultDialog::fillScores(const Pipeline& pipeline)
 {
     const TuneResult& r = m_result;
     const QString fit = tr("Fit frames (%1)").arg(r.fit_frames.size());
@@ -245,7 +245,7 @@ void FitResultDialog::fillScores()
         m_scores->setItem(row, kClass, item(title));
         return row;
     };
-    for (const PerceptKind* kind : scoredKinds()) {
+    for (const PerceptKind* kind : scoredKinds(pipeline.perceptKinds())) {
         const std::string name = scoredClassName(*kind);
         if (std::none_of(by_column + 1, by_column + kColumns,
                          [&name](const TuneScore* s) { return s->classes.count(name) != 0; }))
@@ -323,6 +323,7 @@ void FitResultDialog::fillScores()
 
 void FitResultDialog::fillChanges(const Pipeline& pipeline)
 {
+    const std::vector<const PerceptKind*> kinds = scoredKinds(pipeline.perceptKinds());
     m_changes->setRowCount(int(m_result.changes.size()));
     int row = 0;
     for (const TuneChange& change : m_result.changes) {
@@ -350,7 +351,7 @@ void FitResultDialog::fillChanges(const Pipeline& pipeline)
         QStringList terms;
         for (const auto& [term, g] : change.term_gain)
             if (std::abs(g) >= 0.0005)
-                terms << termTitle(term) + ' ' + signedScore(g);
+                terms << termTitle(term, kinds) + ' ' + signedScore(g);
         // One class a line: the column stays narrow enough for a small screen.
         m_changes->setItem(row, 4,
                            item(terms.isEmpty() ? tr("no class moved alone") : terms.join('\n')));

@@ -44,7 +44,7 @@ signals:
     void applyRequested();
 
 private:
-    void fillScores();
+    void fillScores(const Pipeline& pipeline);
     void fillChanges(const Pipeline& pipeline);
     /// Sized to show both tables whole, within the screen.
     void fitSize();

@@ -24,7 +24,6 @@ public:
 
     /// The navigation actions, in menu order (separators included).
     const QList<QAction*>& navigationActions() const { return m_actions; }
-    QAction* playAction() const { return m_play; }
     QAction* loopAction() const { return m_loop; }
 
     /// Moves `delta` frames (clamped to the stream).
@@ -41,8 +40,6 @@ public:
     QSlider* slider() const { return m_slider; }
     /// Puts `strip` just above the slider, the same width, so its frames line up with it.
     void addTimelineStrip(QWidget* strip);
-    /// Frames shown per second over the last second of play (0 when not playing).
-    double measuredFps() const { return m_measured_fps; }
 
 signals:
     void playingChanged(bool playing);
@@ -66,7 +63,7 @@ private:
     int m_fps = 30;
     QElapsedTimer m_fps_clock;
     int m_fps_frames = 0;
-    double m_measured_fps = 0;
+    double m_measured_fps = 0; ///< frames shown per second over the last second of play
 };
 
 } // namespace fieldsight::ui

@@ -1,5 +1,6 @@
 #include "ui/tools/annotate_tool.h"
 
+#include "ui/adapters/text.h"
 #include "ui/document/editing_session.h"
 #include "ui/tools/annotation_selection.h"
 #include "ui/tools/shape_geometry.h"
@@ -53,11 +54,6 @@ QString formName(ShapeForm form)
     return {};
 }
 
-QString text(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), qsizetype(s.size()));
-}
-
 } // namespace
 
 AnnotateTool::AnnotateTool(ToolContext& context, const PerceptKind& kind, int ordinal)
@@ -87,7 +83,7 @@ AnnotateTool::AnnotateTool(ToolContext& context, const PerceptKind& kind, int or
 
 ToolInfo AnnotateTool::info() const
 {
-    const QString title = text(m_kind.title);
+    const QString title = toQString(m_kind.title);
     const QString edit = tr("Click one to select it, drag it to move it, drag a handle to resize "
                             "it; Delete removes it");
     QString how;
@@ -109,7 +105,7 @@ ToolInfo AnnotateTool::info() const
     case ShapeForm::None:
         break;
     }
-    ToolInfo info{QStringLiteral("annotate.%1").arg(text(m_kind.truth_key)),
+    ToolInfo info{QStringLiteral("annotate.%1").arg(toQString(m_kind.truth_key)),
                   title,
                   tr("Annotate %1: %2").arg(title, how),
                   QKeySequence(),
@@ -207,7 +203,7 @@ void AnnotateTool::press(const ToolEvent& event)
                       p,
                       shapes[i],
                       touched(frame->flagsOf(m_kind.truth_key, i)),
-                      what.arg(text(m_kind.title)),
+                      what.arg(toQString(m_kind.title)),
                       doc.newMerge()};
         select(i);
         if (polyline)
@@ -287,7 +283,8 @@ void AnnotateTool::release(const ToolEvent& event)
             ObjectFlags flags;
             flags.track = freshTrack(doc.annotations()); // a track of its own
             const std::size_t index = addObject(after, m_kind, {*shape, flags});
-            if (doc.editFrame(m_frame, std::move(after), tr("%1: add").arg(text(m_kind.title))))
+            if (doc.editFrame(m_frame, std::move(after),
+                              tr("%1: add").arg(toQString(m_kind.title))))
                 select(index);
         }
     } else if (m_drag) {
@@ -330,7 +327,7 @@ void AnnotateTool::finishDraft()
         setShape(after, m_kind, 0, shape);
     else // one a frame: no track to follow
         addObject(after, m_kind, {shape, {}});
-    if (doc.editFrame(m_frame, std::move(after), tr("%1: draw").arg(text(m_kind.title))))
+    if (doc.editFrame(m_frame, std::move(after), tr("%1: draw").arg(toQString(m_kind.title))))
         select(0);
 }
 
@@ -404,7 +401,7 @@ bool AnnotateTool::deleteSelection()
             shapes[*index].points.erase(shapes[*index].points.begin() + std::ptrdiff_t(*point));
             setShape(after, m_kind, *index, shapes[*index]);
             doc.editFrame(m_frame, std::move(after),
-                          tr("%1: delete a point").arg(text(m_kind.title)));
+                          tr("%1: delete a point").arg(toQString(m_kind.title)));
             return true;
         }
     }
@@ -416,7 +413,7 @@ bool AnnotateTool::deleteSelection()
         return false;
     removeFromTrack(changes, frames, std::size_t(at - frames.begin()), m_kind, *index);
     m_context.selection.clear();
-    doc.edit(tr("%1: delete").arg(text(m_kind.title)), changes.frames());
+    doc.edit(tr("%1: delete").arg(toQString(m_kind.title)), changes.frames());
     return true;
 }
 

@@ -4,6 +4,7 @@
 #include "ui/tools/annotate_tool.h"
 
 #include "ui/adapters/image_adapter.h"
+#include "ui/adapters/text.h"
 #include "ui/document/editing_session.h"
 #include "ui/tools/annotation_selection.h"
 #include "ui/tools/shape_geometry.h"
@@ -17,11 +18,6 @@
 namespace fieldsight::ui {
 
 namespace {
-
-QString text(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), qsizetype(s.size()));
-}
 
 QString number(double v)
 {
@@ -89,7 +85,7 @@ ToolOutline AnnotateTool::outline() const
 ToolPreview AnnotateTool::preview(std::optional<QPoint>) const
 {
     ToolPreview p;
-    const QString title = text(m_kind.title);
+    const QString title = toQString(m_kind.title);
     const auto describe = [this](const EditShape& s) -> QString {
         if (s.points.empty())
             return {};

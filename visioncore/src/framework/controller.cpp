@@ -2,7 +2,7 @@
 // exceptions as diagnostics.
 #include "visioncore/framework/controller.h"
 
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 #include "visioncore/percepts/percept_set.h"
 
 #include <algorithm>

@@ -14,7 +14,7 @@ bool isQuarterTurn(Orientation o)
     return o == Orientation::Clockwise90 || o == Orientation::Clockwise270;
 }
 
-class OrientedReader final : public StreamReader
+class OrientedReader final : public InPlaceReader
 {
 public:
     OrientedReader(std::unique_ptr<StreamReader> stored, Orientation orientation)
@@ -27,14 +27,6 @@ public:
 
     const StreamInfo& info() const override { return m_info; }
     std::string frameName(std::size_t index) const override { return m_stored->frameName(index); }
-
-    Result<Frame> read(std::size_t index) override
-    {
-        Frame frame;
-        if (Status s = readInto(index, frame); !s)
-            return s.error();
-        return frame;
-    }
 
     Status readInto(std::size_t index, Frame& frame) override
     {

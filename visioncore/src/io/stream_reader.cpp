@@ -43,6 +43,14 @@ Result<std::unique_ptr<StreamReader>> StreamReader::reopen() const
 
 namespace io {
 
+Result<Frame> InPlaceReader::read(std::size_t index)
+{
+    Frame frame;
+    if (Status s = readInto(index, frame); !s)
+        return s.error();
+    return frame;
+}
+
 std::string indexedFrameName(std::size_t index)
 {
     // "frame_%06zu" by hand: it is named once per frame read, and snprintf costs more than the

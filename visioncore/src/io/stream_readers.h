@@ -10,6 +10,14 @@ namespace fieldsight::io {
 
 using ReaderResult = Result<std::unique_ptr<StreamReader>>;
 
+/// A reader that decodes into the caller's frame: read() is readInto() into a new one.
+class InPlaceReader : public StreamReader
+{
+public:
+    Result<Frame> read(std::size_t index) final;
+    Status readInto(std::size_t index, Frame& frame) override = 0;
+};
+
 /// A folder of .png/.jpg/.jpeg/.bmp frames with an optional stream.json manifest.
 ReaderResult openImageFolder(const std::string& folder, const std::string& spec);
 /// An original NUbots image stream (.strm), indexed on open; pixels are read on demand.

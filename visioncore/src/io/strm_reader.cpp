@@ -44,7 +44,7 @@ bool preadAll(int fd, void* buffer, std::size_t size, std::uint64_t offset)
     return true;
 }
 
-class StrmReader final : public StreamReader
+class StrmReader final : public InPlaceReader
 {
 public:
     StrmReader(StreamInfo info, int fd, std::vector<StrmRecord> records,
@@ -59,14 +59,6 @@ public:
 
     const StreamInfo& info() const override { return m_info; }
     std::string frameName(std::size_t index) const override { return indexedFrameName(index); }
-
-    Result<Frame> read(std::size_t index) override
-    {
-        Frame frame;
-        if (Status s = readInto(index, frame); !s)
-            return s.error();
-        return frame;
-    }
 
     Status readInto(std::size_t index, Frame& frame) override
     {

@@ -3,6 +3,9 @@
 
 #include "percepts/percept_json.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace fieldsight {
 
 using namespace percept_json;
@@ -43,6 +46,15 @@ Ball PerceptTraits<Ball>::fromShape(const EditShape& s)
 {
     const PointF c = s.points.empty() ? PointF{} : s.points.front();
     return {c.x, c.y, std::max(0.0, s.radius)};
+}
+
+std::optional<double> PerceptTraits<Ball>::matchCost(const Ball& detected, const Ball& truth,
+                                                     int /*width*/, int /*height*/)
+{
+    const double distance = std::hypot(detected.x - truth.x, detected.y - truth.y);
+    if (distance <= std::max(3.0, 0.5 * truth.radius))
+        return distance;
+    return std::nullopt;
 }
 
 } // namespace fieldsight

@@ -3,6 +3,9 @@
 
 #include "percepts/percept_json.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace fieldsight {
 
 using namespace percept_json;
@@ -68,6 +71,22 @@ Goalpost PerceptTraits<Goalpost>::fromShape(const EditShape& s)
     post.base_x = (post.left + post.right) / 2.0;
     post.base_y = post.bottom;
     return post;
+}
+
+std::optional<double> PerceptTraits<Goalpost>::matchCost(const Goalpost& detected,
+                                                         const Goalpost& truth, int /*width*/,
+                                                         int height)
+{
+    const double centre_x = 0.5 * (truth.left + truth.right);
+    const double base_distance = std::abs(detected.base_x - centre_x);
+    if (base_distance > std::max(4.0, double(truth.right - truth.left + 1)))
+        return std::nullopt;
+    const double post_height = double(truth.bottom - truth.top + 1);
+    const bool touches_bottom = truth.bottom >= height - 1;
+    if (!touches_bottom &&
+        std::abs(detected.bottom - truth.bottom) > std::max(6.0, 0.1 * post_height))
+        return std::nullopt;
+    return base_distance;
 }
 
 } // namespace fieldsight

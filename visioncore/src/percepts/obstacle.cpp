@@ -3,6 +3,9 @@
 
 #include "percepts/percept_json.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace fieldsight {
 
 using namespace percept_json;
@@ -50,6 +53,23 @@ Obstacle PerceptTraits<Obstacle>::fromShape(const EditShape& s)
 {
     const Box box = boxOfShape(s);
     return {box.left, box.right, box.top, box.bottom};
+}
+
+double horizontalIou(const Obstacle& a, const Obstacle& b)
+{
+    const int overlap = std::max(0, std::min(a.right, b.right) - std::max(a.left, b.left) + 1);
+    const int union_width = (a.right - a.left + 1) + (b.right - b.left + 1) - overlap;
+    return union_width <= 0 ? 0.0 : double(overlap) / double(union_width);
+}
+
+std::optional<double> PerceptTraits<Obstacle>::matchCost(const Obstacle& detected,
+                                                         const Obstacle& truth, int /*width*/,
+                                                         int /*height*/)
+{
+    const double iou = horizontalIou(detected, truth);
+    if (iou >= 0.3)
+        return -iou; // the highest overlap is the nearest
+    return std::nullopt;
 }
 
 } // namespace fieldsight

@@ -2,7 +2,7 @@
 // whose messages name the place ("frames[\"f.png\"].balls[0].x must be a number").
 #pragma once
 
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 #include "visioncore/percepts/percept_set.h"
 
 #include <nlohmann/json.hpp>

@@ -117,13 +117,14 @@ Result<AbComparison> compareAb(StreamInput& input, const AbSide& b, const Annota
 
     const int width = input.info().width;
     const int height = input.info().height;
-    for (const PerceptKind* kind : scoredKinds())
+    const std::vector<const PerceptKind*> kinds = scoredKinds(input.pipeline->perceptKinds());
+    for (const PerceptKind* kind : kinds)
         result.classes.push_back({kind, scoredClassName(*kind), 0, {}, {}, {}, {}, 0});
     EvaluationScores boundary_a, boundary_b;
     for (const auto& [index, name] : frames) {
         const FrameAnnotation& annotation = truth.frames.at(name);
-        const FrameMatch a = matchFrame(detected_a.at(index), annotation, width, height);
-        const FrameMatch bm = matchFrame(detected_b.at(index), annotation, width, height);
+        const FrameMatch a = matchFrame(detected_a.at(index), annotation, width, height, kinds);
+        const FrameMatch bm = matchFrame(detected_b.at(index), annotation, width, height, kinds);
         ++result.frames;
         addFrame(index, name, a, bm, result.classes);
         for (auto [match, sum] : {std::pair{&a, &boundary_a}, std::pair{&bm, &boundary_b}})

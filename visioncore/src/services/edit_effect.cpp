@@ -69,6 +69,7 @@ void EditEffectScanner::run(const EditEffectJob& job)
         const std::size_t frames = input.info().frame_count;
         const int width = input.info().width;
         const int height = input.info().height;
+        const std::vector<const PerceptKind*> kinds = scoredKinds(m_pipeline.perceptKinds());
         {
             std::lock_guard lock(m_mutex);
             m_progress.effects.assign(frames, FrameEffect{});
@@ -118,7 +119,7 @@ void EditEffectScanner::run(const EditEffectJob& job)
             DetectionDelta delta;
             std::optional<PerceptSet>& previous = m_previous[index];
             if (job.before && previous)
-                delta = compareDetections(*previous, result.percepts, width, height);
+                delta = compareDetections(*previous, result.percepts, width, height, kinds);
             previous = result.percepts; // one frame per index: no other thread writes it
             m_previous_lut[index] = job.after;
             record(index, tallies[index], delta);

@@ -2,36 +2,31 @@
 // matching, nearest first, and the one path every scorer goes through, matchFrame().
 #include "visioncore/services/evaluation.h"
 
+#include "visioncore/framework/controller.h"
 #include "visioncore/percepts/field_boundary.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <tuple>
 #include <utility>
 
 namespace fieldsight {
 namespace {
 
-/// A pair that satisfies a class's rule; `cost` orders the greedy matching (smaller first).
-struct Candidate
-{
-    double cost = 0;
-    std::size_t detection = 0;
-    std::size_t truth = 0;
-};
-
 /// Accepts candidates nearest first, each detection and each true object at most once. Ties go
 /// to the lower truth index, then the lower detection index, so the result is deterministic.
-MatchResult greedyMatch(std::vector<Candidate> candidates, std::size_t detected_count,
+MatchResult greedyMatch(std::vector<MatchCandidate> candidates, std::size_t detected_count,
                         std::size_t truth_count)
 {
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return std::tie(a.cost, a.truth, a.detection) < std::tie(b.cost, b.truth, b.detection);
-    });
+    std::sort(
+        candidates.begin(), candidates.end(), [](const MatchCandidate& a, const MatchCandidate& b) {
+            return std::tie(a.cost, a.truth, a.detection) < std::tie(b.cost, b.truth, b.detection);
+        });
     std::vector<bool> detection_used(detected_count, false);
     std::vector<bool> truth_used(truth_count, false);
     MatchResult result;
-    for (const Candidate& c : candidates) {
+    for (const MatchCandidate& c : candidates) {
         if (detection_used[c.detection] || truth_used[c.truth])
             continue;
         detection_used[c.detection] = true;
@@ -44,111 +39,36 @@ MatchResult greedyMatch(std::vector<Candidate> candidates, std::size_t detected_
     return result;
 }
 
+/// Kind P's rule (PerceptTraits<P>::matchCost) over two lists of it.
+template <class P>
+MatchResult matchLists(const std::vector<P>& detected, const std::vector<P>& truth, int height)
+{
+    return greedyMatch(matchCandidates(detected, truth, 0, height), detected.size(), truth.size());
+}
+
 } // namespace
 
 MatchResult matchBalls(const std::vector<Ball>& detected, const std::vector<Ball>& truth)
 {
-    std::vector<Candidate> candidates;
-    for (std::size_t t = 0; t < truth.size(); ++t) {
-        const double limit = std::max(3.0, 0.5 * truth[t].radius);
-        for (std::size_t d = 0; d < detected.size(); ++d) {
-            const double distance =
-                std::hypot(detected[d].x - truth[t].x, detected[d].y - truth[t].y);
-            if (distance <= limit)
-                candidates.push_back({distance, d, t});
-        }
-    }
-    return greedyMatch(std::move(candidates), detected.size(), truth.size());
+    return matchLists(detected, truth, 0);
 }
 
 MatchResult matchGoalposts(const std::vector<Goalpost>& detected,
                            const std::vector<Goalpost>& truth, int image_height)
 {
-    std::vector<Candidate> candidates;
-    for (std::size_t t = 0; t < truth.size(); ++t) {
-        const Goalpost& post = truth[t];
-        const double centre_x = 0.5 * (post.left + post.right);
-        const double base_limit = std::max(4.0, double(post.right - post.left + 1));
-        const double height = double(post.bottom - post.top + 1);
-        const double bottom_limit = std::max(6.0, 0.1 * height);
-        const bool touches_bottom = post.bottom >= image_height - 1;
-        for (std::size_t d = 0; d < detected.size(); ++d) {
-            const double base_distance = std::abs(detected[d].base_x - centre_x);
-            if (base_distance > base_limit)
-                continue;
-            if (!touches_bottom && std::abs(detected[d].bottom - post.bottom) > bottom_limit)
-                continue;
-            candidates.push_back({base_distance, d, t});
-        }
-    }
-    return greedyMatch(std::move(candidates), detected.size(), truth.size());
-}
-
-double horizontalIou(const Obstacle& a, const Obstacle& b)
-{
-    const int overlap = std::max(0, std::min(a.right, b.right) - std::max(a.left, b.left) + 1);
-    const int union_width = (a.right - a.left + 1) + (b.right - b.left + 1) - overlap;
-    return union_width <= 0 ? 0.0 : double(overlap) / double(union_width);
+    return matchLists(detected, truth, image_height);
 }
 
 MatchResult matchObstacles(const std::vector<Obstacle>& detected,
                            const std::vector<Obstacle>& truth)
 {
-    std::vector<Candidate> candidates;
-    for (std::size_t t = 0; t < truth.size(); ++t) {
-        for (std::size_t d = 0; d < detected.size(); ++d) {
-            const double iou = horizontalIou(detected[d], truth[t]);
-            if (iou >= 0.3)
-                candidates.push_back({-iou, d, t}); // the highest overlap is the nearest
-        }
-    }
-    return greedyMatch(std::move(candidates), detected.size(), truth.size());
-}
-
-double fieldLineMatchCost(const FieldLine& a, const FieldLine& b)
-{
-    const double length_a = std::hypot(a.x2 - a.x1, a.y2 - a.y1);
-    const double length_b = std::hypot(b.x2 - b.x1, b.y2 - b.y1);
-    // Ties go to the first argument as the longer one: the rule is symmetric all the same.
-    const FieldLine& longer = length_a >= length_b ? a : b;
-    const FieldLine& shorter = length_a >= length_b ? b : a;
-    const double length = std::max(length_a, length_b);
-    const double limit = std::max(4.0, 0.05 * length);
-    if (length < 1e-9) // two points
-        return std::hypot(a.x1 - b.x1, a.y1 - b.y1) <= limit ? std::hypot(a.x1 - b.x1, a.y1 - b.y1)
-                                                             : -1.0;
-    const double ux = (longer.x2 - longer.x1) / length;
-    const double uy = (longer.y2 - longer.y1) / length;
-    // Along and across the longer segment, from its first end.
-    const auto along = [&](double x, double y) {
-        return (x - longer.x1) * ux + (y - longer.y1) * uy;
-    };
-    const auto across = [&](double x, double y) {
-        return std::abs((x - longer.x1) * uy - (y - longer.y1) * ux);
-    };
-    const double d1 = across(shorter.x1, shorter.y1);
-    const double d2 = across(shorter.x2, shorter.y2);
-    if (d1 > limit || d2 > limit)
-        return -1.0;
-    const double t1 = along(shorter.x1, shorter.y1);
-    const double t2 = along(shorter.x2, shorter.y2);
-    const double lo = std::min(t1, t2);
-    const double hi = std::max(t1, t2);
-    const double overlap = std::min(hi, length) - std::max(lo, 0.0);
-    // A point-like shorter segment must lie within the longer one's extent.
-    const bool overlaps = hi - lo < 1e-9 ? lo >= 0 && lo <= length : overlap >= 0.5 * (hi - lo);
-    return overlaps ? 0.5 * (d1 + d2) : -1.0;
+    return matchLists(detected, truth, 0);
 }
 
 MatchResult matchFieldLines(const std::vector<FieldLine>& detected,
                             const std::vector<FieldLine>& truth)
 {
-    std::vector<Candidate> candidates;
-    for (std::size_t t = 0; t < truth.size(); ++t)
-        for (std::size_t d = 0; d < detected.size(); ++d)
-            if (const double cost = fieldLineMatchCost(detected[d], truth[t]); cost >= 0)
-                candidates.push_back({cost, d, t});
-    return greedyMatch(std::move(candidates), detected.size(), truth.size());
+    return matchLists(detected, truth, 0);
 }
 
 double polylineYAt(const std::vector<PointF>& polyline, double x)
@@ -178,22 +98,34 @@ double polylineMeanAbsDifference(const std::vector<PointF>& a, const std::vector
     return sum / double(width);
 }
 
+std::vector<const PerceptKind*> scoredKinds(const std::vector<const PerceptKind*>& kinds)
+{
+    std::vector<const PerceptKind*> scored;
+    std::copy_if(kinds.begin(), kinds.end(), std::back_inserter(scored),
+                 [](const PerceptKind* kind) { return kind->match != nullptr; });
+    std::stable_sort(scored.begin(), scored.end(), [](const PerceptKind* a, const PerceptKind* b) {
+        return a->class_order < b->class_order;
+    });
+    return scored;
+}
+
 const std::vector<const PerceptKind*>& scoredKinds()
 {
-    static const std::vector<const PerceptKind*> kinds{
-        &perceptKind<Ball>(), &perceptKind<Goalpost>(), &perceptKind<Obstacle>(),
-        &perceptKind<FieldLine>()};
+    static const std::vector<const PerceptKind*> kinds =
+        scoredKinds(Pipeline::standard().perceptKinds());
     return kinds;
 }
 
 std::string scoredClassName(const PerceptKind& kind)
 {
-    const char* names[] = {"ball", "goalpost", "obstacle", "field_line"};
-    const std::vector<const PerceptKind*>& kinds = scoredKinds();
-    for (std::size_t k = 0; k < kinds.size(); ++k)
-        if (kinds[k]->key == kind.key)
-            return names[k];
-    return std::string(kind.key);
+    return std::string(kind.match ? kind.class_name : kind.key);
+}
+
+std::string scoredClassText(const PerceptKind& kind)
+{
+    std::string text = scoredClassName(kind);
+    std::replace(text.begin(), text.end(), '_', ' ');
+    return text;
 }
 
 const PerceptKind& boundaryKind()
@@ -203,44 +135,32 @@ const PerceptKind& boundaryKind()
 
 namespace {
 
-/// The rule of scoredKinds()[k] applied to the two sets' lists of that kind.
-MatchResult matchKind(std::size_t k, const PerceptSet& detected, const PerceptSet& truth,
-                      int height)
-{
-    switch (k) {
-    case 0:
-        return matchBalls(detected.list<Ball>(), truth.list<Ball>());
-    case 1:
-        return matchGoalposts(detected.list<Goalpost>(), truth.list<Goalpost>(), height);
-    case 2:
-        return matchObstacles(detected.list<Obstacle>(), truth.list<Obstacle>());
-    default:
-        return matchFieldLines(detected.list<FieldLine>(), truth.list<FieldLine>());
-    }
-}
-
-std::size_t listSize(const PerceptSet& set, const PerceptKind& kind)
+/// The list of `kind` in `set`; null when absent.
+const PerceptEntry* listOf(const PerceptSet& set, const PerceptKind& kind)
 {
     const PerceptEntry* e = set.find(kind);
-    return e && e->present() ? e->size() : 0;
+    return e && e->present() ? e : nullptr;
 }
 
 /// matchFrame() with `marks` (null: every kind complete, no object concealed).
 FrameMatch matchFrameWith(const PerceptSet& detected, const PerceptSet& truth,
-                          const FrameAnnotation* marks, int width, int height)
+                          const FrameAnnotation* marks, int width, int height,
+                          const std::vector<const PerceptKind*>& kinds)
 {
     FrameMatch frame;
-    const std::vector<const PerceptKind*>& kinds = scoredKinds();
-    for (std::size_t k = 0; k < kinds.size(); ++k) {
-        const PerceptKind& kind = *kinds[k];
+    for (const PerceptKind* scored : kinds) {
+        const PerceptKind& kind = *scored;
         if (marks && !marks->complete(kind.truth_key))
             continue;
-        const MatchResult match = matchKind(k, detected, truth, height);
+        const PerceptEntry* detected_list = listOf(detected, kind);
+        const PerceptEntry* truth_list = listOf(truth, kind);
+        const std::size_t detected_count = detected_list ? detected_list->size() : 0;
+        const std::size_t truth_count = truth_list ? truth_list->size() : 0;
+        const MatchResult match = greedyMatch(kind.match(detected_list, truth_list, width, height),
+                                              detected_count, truth_count);
         KindMatch m;
         m.kind = &kind;
         m.pairs = match.pairs;
-        const std::size_t detected_count = listSize(detected, kind);
-        const std::size_t truth_count = listSize(truth, kind);
         std::vector<bool> detection_used(detected_count, false);
         std::vector<bool> truth_used(truth_count, false);
         const auto concealed = [&](std::size_t t) {
@@ -278,38 +198,45 @@ bool FrameMatch::disagrees() const
 }
 
 FrameMatch matchFrame(const PerceptSet& detected, const FrameAnnotation& truth, int width,
-                      int height)
+                      int height, const std::vector<const PerceptKind*>& kinds)
 {
-    return matchFrameWith(detected, truth.truth, &truth, width, height);
+    return matchFrameWith(detected, truth.truth, &truth, width, height, kinds);
 }
 
-ClassScore* EvaluationScores::of(const PerceptKind& kind)
+EvaluationScores::EvaluationScores() : EvaluationScores(scoredKinds()) {}
+
+EvaluationScores::EvaluationScores(const std::vector<const PerceptKind*>& kinds)
 {
-    return const_cast<ClassScore*>(std::as_const(*this).of(kind));
+    for (const PerceptKind* kind : kinds)
+        m_classes.emplace_back(kind, ClassScore{});
 }
 
-const ClassScore* EvaluationScores::of(const PerceptKind& kind) const
+const ClassScore* EvaluationScores::find(const PerceptKind& kind) const
 {
-    const std::vector<const PerceptKind*>& kinds = scoredKinds();
-    const ClassScore* scores[] = {&balls, &goalposts, &obstacles, &field_lines};
-    for (std::size_t k = 0; k < kinds.size(); ++k)
-        if (kinds[k]->key == kind.key)
-            return scores[k];
+    for (const auto& c : m_classes)
+        if (c.first->key == kind.key)
+            return &c.second;
     return nullptr;
 }
 
-std::vector<std::pair<const PerceptKind*, ClassScore>> EvaluationScores::classes() const
+ClassScore& EvaluationScores::operator[](const PerceptKind& kind)
 {
-    std::vector<std::pair<const PerceptKind*, ClassScore>> out;
-    for (const PerceptKind* kind : scoredKinds())
-        out.emplace_back(kind, *of(*kind));
-    return out;
+    if (const ClassScore* c = std::as_const(*this).find(kind))
+        return const_cast<ClassScore&>(*c);
+    return m_classes.emplace_back(&kind, ClassScore{}).second;
+}
+
+const ClassScore& EvaluationScores::of(const PerceptKind& kind) const
+{
+    static const ClassScore none;
+    const ClassScore* c = find(kind);
+    return c ? *c : none;
 }
 
 void EvaluationScores::add(const FrameMatch& frame)
 {
     for (const KindMatch& k : frame.kinds)
-        *of(*k.kind) += k.score;
+        (*this)[*k.kind] += k.score;
     if (frame.boundary_error >= 0) {
         boundary_error_sum += frame.boundary_error;
         ++boundary_frames;
@@ -317,10 +244,10 @@ void EvaluationScores::add(const FrameMatch& frame)
 }
 
 void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, int height,
-                EvaluationScores& scores)
+                EvaluationScores& scores, const std::vector<const PerceptKind*>& kinds)
 {
     ++scores.frames;
-    scores.add(matchFrameWith(detected, truth, nullptr, width, height));
+    scores.add(matchFrameWith(detected, truth, nullptr, width, height, kinds));
 }
 
 KindDelta DetectionDelta::of(std::string_view key) const
@@ -375,44 +302,45 @@ bool operator==(const DetectionDelta& a, const DetectionDelta& b)
 }
 
 DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
-                                 int height)
+                                 int height, const std::vector<const PerceptKind*>& kinds)
 {
     // The run before plays the truth: a detection after the edit that nothing before matches
     // appeared (a false positive); one before that nothing after matches vanished (a miss).
-    const FrameMatch match = matchFrameWith(after, before, nullptr, width, height);
+    const FrameMatch match = matchFrameWith(after, before, nullptr, width, height, kinds);
     DetectionDelta delta;
     for (const KindMatch& k : match.kinds)
         delta.kinds.push_back({k.kind, k.score.fp, k.score.fn});
     return delta;
 }
 
-bool isScored(const FrameAnnotation& annotation)
+bool isScored(const FrameAnnotation& annotation, const std::vector<const PerceptKind*>& kinds)
 {
     if (annotation.done)
         return true;
-    for (const PerceptKind* kind : scoredKinds())
+    for (const PerceptKind* kind : kinds)
         if (annotation.complete(kind->truth_key))
             return true;
     return annotation.complete(boundaryKind().truth_key);
 }
 
 Evaluation evaluateFrames(const std::map<std::string, PerceptSet>& detected,
-                          const Annotations& truth, int width, int height)
+                          const Annotations& truth, int width, int height,
+                          const std::vector<const PerceptKind*>& kinds)
 {
-    Evaluation evaluation;
+    Evaluation evaluation{EvaluationScores(kinds), {}};
     EvaluationScores& scores = evaluation.scores;
     const PerceptSet nothing;
     for (const auto& [name, annotation] : truth.frames) {
         if (!annotation.done)
             ++scores.frames_not_done;
-        if (!isScored(annotation))
+        if (!isScored(annotation, kinds))
             continue;
         ++(annotation.done ? scores.frames : scores.frames_reviewed);
         const auto it = detected.find(name);
         if (it == detected.end())
             ++scores.frames_missing;
-        const FrameMatch match =
-            matchFrame(it == detected.end() ? nothing : it->second, annotation, width, height);
+        const FrameMatch match = matchFrame(it == detected.end() ? nothing : it->second, annotation,
+                                            width, height, kinds);
         scores.add(match);
         for (const KindMatch& k : match.kinds)
             if (!k.false_detections.empty() || !k.missed.empty())
@@ -422,9 +350,10 @@ Evaluation evaluateFrames(const std::map<std::string, PerceptSet>& detected,
 }
 
 EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
-                          const Annotations& truth, int width, int height)
+                          const Annotations& truth, int width, int height,
+                          const std::vector<const PerceptKind*>& kinds)
 {
-    return evaluateFrames(detected, truth, width, height).scores;
+    return evaluateFrames(detected, truth, width, height, kinds).scores;
 }
 
 } // namespace fieldsight

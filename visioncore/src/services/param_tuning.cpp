@@ -425,7 +425,8 @@ Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
                               const std::string& truth_path, const TuneOptions& options)
 {
     const auto started = std::chrono::steady_clock::now();
-    if (Status s = checkTuneWeights(options.weights); !s)
+    if (Status s = checkTuneWeights(options.weights, scoredKinds(input.pipeline->perceptKinds()));
+        !s)
         return s.error();
     if (!(options.holdout >= 0 && options.holdout <= 0.9))
         return Error{"the held-out share must be between 0 and 0.9"};

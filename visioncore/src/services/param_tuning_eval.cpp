@@ -19,15 +19,16 @@ double f1Score(const ClassScore& score)
     return denominator == 0 ? 1.0 : 2.0 * score.tp / double(denominator);
 }
 
-Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights)
+Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights,
+                        const std::vector<const PerceptKind*>& kinds)
 {
     for (const auto& [name, weight] : weights) {
         bool known = name == kBoundaryTerm;
-        for (const PerceptKind* kind : scoredKinds())
+        for (const PerceptKind* kind : kinds)
             known = known || scoredClassName(*kind) == name;
         if (!known) {
             std::string names;
-            for (const PerceptKind* kind : scoredKinds())
+            for (const PerceptKind* kind : kinds)
                 names += scoredClassName(*kind) + ", ";
             return Error{"unknown score term '" + name + "' (known: " + names + kBoundaryTerm +
                          ")"};
@@ -122,7 +123,7 @@ Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annota
 
 Scorer::Scorer(const StreamInput& input, bool reuse)
     : m_data(input.lut), m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline)),
-      m_reuse(reuse)
+      m_kinds(scoredKinds(input.pipeline->perceptKinds())), m_reuse(reuse)
 {
     for (const std::string& id : input.skip)
         if (Status s = m_control->setStageEnabled(id, false); !s)
@@ -188,7 +189,7 @@ std::vector<Tally> Scorer::tallies(const ParamSet& params, const std::vector<Hel
         if (!report)
             throw std::invalid_argument(held.name + ": " + report.error().message);
         const FrameMatch match = matchFrame(m_control->blackboard().percepts, *held.truth,
-                                            held.frame.ycbcr.cols, held.frame.ycbcr.rows);
+                                            held.frame.ycbcr.cols, held.frame.ycbcr.rows, m_kinds);
         for (const KindMatch& kind : match.kinds)
             tally.classes[scoredClassName(*kind.kind)] += kind.score;
         if (match.boundary_error >= 0)

@@ -62,6 +62,7 @@ private:
 
     MemoryDataWrapper m_data;
     std::unique_ptr<ControlWrapper> m_control;
+    std::vector<const PerceptKind*> m_kinds; ///< the pipeline's scored kinds
     bool m_reuse = true;
     std::size_t m_split = 0;                  ///< of the kept blackboards
     std::string m_key;                        ///< prefixKey(m_split) they were made with

@@ -2,6 +2,8 @@
 // detections are not known already) and scored by evaluateFrames().
 #include "visioncore/services/evaluation.h"
 
+#include "visioncore/framework/controller.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -23,9 +25,10 @@ Result<std::map<std::string, std::size_t>> scoredFrameIndices(const StreamInput&
         by_name.emplace(name, i);
         by_stem.emplace(frameStem(name), i);
     }
+    const std::vector<const PerceptKind*> kinds = scoredKinds(input.pipeline->perceptKinds());
     std::map<std::string, std::size_t> indices;
     for (const auto& [name, annotation] : truth.frames) {
-        if (!isScored(annotation))
+        if (!isScored(annotation, kinds))
             continue;
         if (auto it = by_name.find(name); it != by_name.end()) {
             indices.emplace(name, it->second);
@@ -84,7 +87,8 @@ Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
     report.lut_path = input.lut_path;
     report.truth_path = truth_path;
     Evaluation evaluation =
-        evaluateFrames(report.detected, truth, input.info().width, input.info().height);
+        evaluateFrames(report.detected, truth, input.info().width, input.info().height,
+                       scoredKinds(input.pipeline->perceptKinds()));
     report.scores = evaluation.scores;
     report.disagreements = std::move(evaluation.disagreements);
     report.frame_index = std::move(names).value();

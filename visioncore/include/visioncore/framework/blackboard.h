@@ -5,7 +5,7 @@
 #pragma once
 
 #include "visioncore/basics/colour_lut.h"
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 #include "visioncore/basics/geometry.h"
 #include "visioncore/percepts/green_horizon.h"
 #include "visioncore/percepts/percept_set.h"

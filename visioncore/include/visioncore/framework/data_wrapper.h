@@ -2,7 +2,7 @@
 #pragma once
 
 #include "visioncore/basics/colour_lut.h"
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 #include "visioncore/basics/geometry.h"
 
 #include <opencv2/core/mat.hpp>

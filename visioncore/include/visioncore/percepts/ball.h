@@ -25,6 +25,12 @@ template <> struct PerceptTraits<Ball>
     static constexpr ShapeForm form = ShapeForm::Circle;
     static EditShape shapeOf(const Ball& object);
     static Ball fromShape(const EditShape& shape);
+    /// Scored by eval as "ball": they match when the centre distance is <=
+    /// max(3 px, 0.5 x true radius), the nearest (by that distance) first.
+    static constexpr std::string_view class_name = "ball";
+    static constexpr int class_order = 1;
+    static std::optional<double> matchCost(const Ball& detected, const Ball& truth, int width,
+                                           int height);
     static void draw(const std::vector<Ball>& balls, Rgb ink, double width, DebugDrawing& out);
 };
 

@@ -33,6 +33,14 @@ template <> struct PerceptTraits<Goalpost>
     static constexpr ShapeForm form = ShapeForm::Box;
     static EditShape shapeOf(const Goalpost& object);
     static Goalpost fromShape(const EditShape& shape);
+    /// Scored by eval as "goalpost": they match when |detected base_x - true
+    /// (left+right)/2| <= max(4 px, true right-left+1) and the detected bottom is within
+    /// max(6 px, 10% of the true height) of the true bottom, the latter waived when the true post
+    /// touches the image bottom (bottom >= height-1); the nearest (by base_x distance) first.
+    static constexpr std::string_view class_name = "goalpost";
+    static constexpr int class_order = 2;
+    static std::optional<double> matchCost(const Goalpost& detected, const Goalpost& truth,
+                                           int width, int height);
     static void draw(const std::vector<Goalpost>& posts, Rgb ink, double width, DebugDrawing& out);
 };
 

@@ -13,6 +13,9 @@ struct Obstacle
     int bottom = 0; ///< px, inclusive; where it stands on the field
 };
 
+/// Horizontal intersection over union of two obstacles' inclusive column ranges, in [0, 1].
+double horizontalIou(const Obstacle& a, const Obstacle& b);
+
 template <> struct PerceptTraits<Obstacle>
 {
     static constexpr std::string_view key = "obstacles";
@@ -27,6 +30,12 @@ template <> struct PerceptTraits<Obstacle>
     static constexpr ShapeForm form = ShapeForm::Box;
     static EditShape shapeOf(const Obstacle& object);
     static Obstacle fromShape(const EditShape& shape);
+    /// Scored by eval as "obstacle": they match when horizontalIou() >= 0.3, the
+    /// highest first.
+    static constexpr std::string_view class_name = "obstacle";
+    static constexpr int class_order = 3;
+    static std::optional<double> matchCost(const Obstacle& detected, const Obstacle& truth,
+                                           int width, int height);
     static void draw(const std::vector<Obstacle>& obstacles, Rgb ink, double width,
                      DebugDrawing& out);
 };

@@ -3,10 +3,11 @@
 #pragma once
 
 #include "visioncore/basics/colour.h"
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,8 +38,17 @@ enum class PerceptNames {
 ///     static void draw(const std::vector<P>&, Rgb colour, double width, DebugDrawing& out);
 ///
 /// A new kind of percept is its struct, this specialisation, and a stage that declares it in its
-/// StageInfo::percepts; results and annotations JSON and the layers follow. (Scoring is per
-/// class, by the rules of SPEC §5.3, so a new kind is scored only once it has a rule there.)
+/// StageInfo::percepts; results and annotations JSON and the layers follow.
+///
+/// A kind `eval` scores by matching detections to true objects (SPEC §5.3) says so in its traits
+/// (optional), with its class's name and rule; the scores, the eval command, the evaluation
+/// panel and the edit effect follow:
+///
+///     static constexpr std::string_view class_name = "ball"; // eval's name ("_" a space in text)
+///     static constexpr int class_order = 1;                   // scores list classes by it
+///     /// The cost of pairing (smaller pairs first), or nothing when they do not match.
+///     static std::optional<double> matchCost(const P& detected, const P& truth, int width,
+///                                            int height);
 template <class P> struct PerceptTraits;
 
 class PerceptEntry;
@@ -65,7 +75,17 @@ struct EditShape
     friend bool operator==(const EditShape&, const EditShape&) = default;
 };
 
-/// A percept type at run time: its names, its colour, and how to make an empty list of it.
+/// A detection and a true object its kind's rule pairs (indices into the two lists), and how
+/// near they are: the cost orders the greedy matching, smaller first.
+struct MatchCandidate
+{
+    double cost = 0;
+    std::size_t detection = 0;
+    std::size_t truth = 0;
+};
+
+/// A percept type at run time: its names, its colour, how to make an empty list of it, how it is
+/// drawn by hand, and how it is scored.
 struct PerceptKind
 {
     std::string_view key;
@@ -74,6 +94,14 @@ struct PerceptKind
     Rgb colour;
     std::unique_ptr<PerceptEntry> (*make)();
     ShapeForm form = ShapeForm::None;
+    /// How eval names its class (PerceptTraits::class_name); empty: not scored by matching.
+    std::string_view class_name = {};
+    int class_order = 0; ///< scores list the classes by this, then by pipeline order
+    /// Every pair of a detection and a true object (lists of this kind in an image of width x
+    /// height px; null: an absent list) that its rule accepts, with its cost. Null when the kind
+    /// is not scored by matching.
+    std::vector<MatchCandidate> (*match)(const PerceptEntry* detected, const PerceptEntry* truth,
+                                         int width, int height) = nullptr;
 };
 
 template <class P> const PerceptKind& perceptKind();
@@ -151,9 +179,38 @@ public:
     std::vector<P> items;
 };
 
+/// Every pair of `detected` and `truth` that PerceptTraits<P>::matchCost accepts.
+template <class P>
+std::vector<MatchCandidate> matchCandidates(const std::vector<P>& d, const std::vector<P>& t,
+                                            int width, int height)
+{
+    std::vector<MatchCandidate> out;
+    for (std::size_t ti = 0; ti < t.size(); ++ti)
+        for (std::size_t di = 0; di < d.size(); ++di)
+            if (const std::optional<double> cost =
+                    PerceptTraits<P>::matchCost(d[di], t[ti], width, height))
+                out.push_back({*cost, di, ti});
+    return out;
+}
+
+/// PerceptKind::match of a kind whose traits have a matchCost.
+template <class P>
+std::vector<MatchCandidate> matchEntries(const PerceptEntry* detected, const PerceptEntry* truth,
+                                         int width, int height)
+{
+    static const std::vector<P> none;
+    return matchCandidates<P>(detected ? static_cast<const PerceptList<P>*>(detected)->items : none,
+                              truth ? static_cast<const PerceptList<P>*>(truth)->items : none,
+                              width, height);
+}
+
 template <class P> const PerceptKind& perceptKind()
 {
     using T = PerceptTraits<P>;
+    constexpr bool scored = requires
+    {
+        &T::matchCost;
+    };
     static const PerceptKind kind{
         T::key,
         T::truth_key,
@@ -165,6 +222,24 @@ template <class P> const PerceptKind& perceptKind()
                 return T::form;
             else
                 return ShapeForm::None;
+        }(),
+        [] {
+            if constexpr (scored)
+                return std::string_view(T::class_name);
+            else
+                return std::string_view();
+        }(),
+        [] {
+            if constexpr (scored)
+                return int(T::class_order);
+            else
+                return 0;
+        }(),
+        []() -> decltype(PerceptKind::match) {
+            if constexpr (scored)
+                return &matchEntries<P>;
+            else
+                return nullptr;
         }()};
     return kind;
 }

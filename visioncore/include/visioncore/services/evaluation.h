@@ -64,6 +64,9 @@ struct MatchResult
     ClassScore score;
 };
 
+/// Each kind's rule is its PerceptTraits::matchCost (percepts/ball.h and the others); these
+/// match two lists of one kind by it, greedily, nearest first.
+///
 /// Balls match when the centre distance is <= max(3 px, 0.5 x true radius); nearest first.
 MatchResult matchBalls(const std::vector<Ball>& detected, const std::vector<Ball>& truth);
 
@@ -79,16 +82,6 @@ MatchResult matchGoalposts(const std::vector<Goalpost>& detected,
 MatchResult matchObstacles(const std::vector<Obstacle>& detected,
                            const std::vector<Obstacle>& truth);
 
-/// Horizontal intersection over union of two obstacles' inclusive column ranges, in [0, 1].
-double horizontalIou(const Obstacle& a, const Obstacle& b);
-
-/// The field line rule (docs/formats.md, an extension of SPEC §5.3): with S the shorter segment
-/// and L the longer, both ends of S lie within max(4 px, 5% of L's length) of the straight line
-/// through L, and S's projection onto L overlaps L over at least half S's projected length. The
-/// cost (mean distance of S's ends from L's line, px) when they match, else a negative value.
-/// Symmetric in its arguments.
-double fieldLineMatchCost(const FieldLine& a, const FieldLine& b);
-
 /// Field lines match by fieldLineMatchCost(); the smallest cost first.
 MatchResult matchFieldLines(const std::vector<FieldLine>& detected,
                             const std::vector<FieldLine>& truth);
@@ -102,12 +95,17 @@ double polylineYAt(const std::vector<PointF>& polyline, double x);
 double polylineMeanAbsDifference(const std::vector<PointF>& a, const std::vector<PointF>& b,
                                  int width);
 
-/// The kinds with a matching rule, in the order every score lists them: balls, goalposts,
-/// obstacles, field lines.
+/// The kinds of `kinds` (a pipeline's perceptKinds()) with a matching rule (PerceptKind::match),
+/// in the order every score lists them: by PerceptKind::class_order, then as in `kinds`.
+std::vector<const PerceptKind*> scoredKinds(const std::vector<const PerceptKind*>& kinds);
+/// scoredKinds() of the standard pipeline: balls, goalposts, obstacles, field lines.
 const std::vector<const PerceptKind*>& scoredKinds();
-/// The name `eval` and `compare` print a scored kind's class by, and key it with in their JSON
-/// ("ball", "goalpost", "obstacle", "field_line"); another kind's results key.
+/// The name `eval` and `compare` key a scored kind's class with in their JSON
+/// (PerceptKind::class_name: "ball", "goalpost", "obstacle", "field_line"); another kind's
+/// results key.
 std::string scoredClassName(const PerceptKind& kind);
+/// The same name as text tables print it: "_" a space ("field line").
+std::string scoredClassText(const PerceptKind& kind);
 /// The kind scored by its boundary error (SPEC §5.3) instead of matching: the field boundary.
 const PerceptKind& boundaryKind();
 
@@ -122,7 +120,7 @@ struct KindMatch
     std::vector<std::size_t> concealed_missed; ///< concealed true objects nothing matches
 };
 
-/// One frame's matching: a KindMatch for each scored kind (scoredKinds() order) whose truth is
+/// One frame's matching: a KindMatch for each scored kind (`kinds`, in order) whose truth is
 /// complete on the frame, and the boundary error when the boundary's is and both exist.
 struct FrameMatch
 {
@@ -132,25 +130,26 @@ struct FrameMatch
     bool disagrees() const;
 };
 
-/// Matches one frame: only the kinds whose list is complete on it (`truth.complete(key)`: the
-/// frame is done, or the kind reviewed) are scored; the others' detections are ignored. Absent
-/// lists count as empty. THE matching path: evaluate(), scoreFrame() and compareDetections() go
-/// through it.
+/// Matches one frame: only the kinds of `kinds` (scoredKinds() of the pipeline that made the
+/// detections) whose list is complete on it (`truth.complete(key)`: the frame is done, or the
+/// kind reviewed) are scored; the others' detections are ignored. Absent lists count as empty.
+/// THE matching path: evaluate(), scoreFrame() and compareDetections() go through it.
 FrameMatch matchFrame(const PerceptSet& detected, const FrameAnnotation& truth, int width,
-                      int height);
+                      int height, const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
-/// Scores over a set of frames.
+/// Scores over a set of frames, kind by kind.
 struct EvaluationScores
 {
+    /// Lists the standard pipeline's scoredKinds(), nothing counted.
+    EvaluationScores();
+    /// Lists `kinds` (scored kinds, in the order scores list them), nothing counted.
+    explicit EvaluationScores(const std::vector<const PerceptKind*>& kinds);
+
     std::size_t frames = 0;          ///< done frames scored
     std::size_t frames_not_done = 0; ///< annotated frames that are not done
     /// Of frames_not_done, those scored for their reviewed kinds only (FrameAnnotation::reviewed).
     std::size_t frames_reviewed = 0;
-    std::size_t frames_missing = 0; ///< scored frames without detections (scored as finding none)
-    ClassScore balls;
-    ClassScore goalposts;
-    ClassScore obstacles;
-    ClassScore field_lines;
+    std::size_t frames_missing = 0;  ///< scored frames without detections (scored as finding none)
     double boundary_error_sum = 0;   ///< px, sum over boundary_frames of the per-frame mean error
     std::size_t boundary_frames = 0; ///< frames where both boundaries exist
 
@@ -159,19 +158,31 @@ struct EvaluationScores
     {
         return boundary_frames == 0 ? -1.0 : boundary_error_sum / double(boundary_frames);
     }
-    /// The score of `kind` (one of scoredKinds()); null for another kind.
-    ClassScore* of(const PerceptKind& kind);
-    const ClassScore* of(const PerceptKind& kind) const;
-    /// Every scored kind with its score, in scoredKinds() order (for readers that name no kind).
-    std::vector<std::pair<const PerceptKind*, ClassScore>> classes() const;
+    /// The score of `kind`; null when it is not listed.
+    const ClassScore* find(const PerceptKind& kind) const;
+    /// The score of `kind`, listed last (nothing counted) when it was not.
+    ClassScore& operator[](const PerceptKind& kind);
+    /// The score of `kind`; nothing counted when it is not listed.
+    const ClassScore& of(const PerceptKind& kind) const;
+    template <class P> const ClassScore& of() const { return of(perceptKind<P>()); }
+    template <class P> ClassScore& of() { return (*this)[perceptKind<P>()]; }
+    /// Every listed kind with its score, in order (for readers that name no kind).
+    const std::vector<std::pair<const PerceptKind*, ClassScore>>& classes() const
+    {
+        return m_classes;
+    }
     /// Adds one frame's matching (the frame counters are the caller's).
     void add(const FrameMatch& frame);
+
+private:
+    std::vector<std::pair<const PerceptKind*, ClassScore>> m_classes;
 };
 
 /// Scores one frame's detections against its true percepts (whether or not the frame is done:
 /// every kind counts as complete, no object as concealed). Absent lists count as empty.
 void scoreFrame(const PerceptSet& detected, const PerceptSet& truth, int width, int height,
-                EvaluationScores& scores);
+                EvaluationScores& scores,
+                const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
 /// One percept kind's part of a DetectionDelta.
 struct KindDelta
@@ -202,10 +213,10 @@ struct DetectionDelta
     friend bool operator==(const DetectionDelta& a, const DetectionDelta& b);
 };
 
-/// Every kind with a matching rule (scoredKinds(), in that order), the run before playing the
-/// truth.
+/// Every kind of `kinds` (scored kinds, in that order), the run before playing the truth.
 DetectionDelta compareDetections(const PerceptSet& before, const PerceptSet& after, int width,
-                                 int height);
+                                 int height,
+                                 const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
 /// A scored frame where the detections and the truth disagree in one kind: the detections
 /// nothing true matches and the true objects (not concealed) nothing detected matches.
@@ -221,21 +232,26 @@ struct FrameDisagreement
 struct Evaluation
 {
     EvaluationScores scores;
-    /// By frame name (the annotations' order), then kind (scoredKinds() order).
+    /// By frame name (the annotations' order), then kind (in the scores' order).
     std::vector<FrameDisagreement> disagreements;
 };
 
-/// Whether `annotation` has anything to score: it is done, or some kind is reviewed.
-bool isScored(const FrameAnnotation& annotation);
+/// Whether `annotation` has anything to score: it is done, or some kind of `kinds` (scored
+/// kinds) or the boundary is reviewed.
+bool isScored(const FrameAnnotation& annotation,
+              const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
 /// Scores every scored frame of `truth` (isScored) against `detected` (by frame name), each kind
-/// only where its truth is complete; other frames are ignored. A scored frame missing from
-/// `detected` is scored as if nothing was detected.
+/// of `kinds` (scored kinds, all of them listed in the scores) only where its truth is complete;
+/// other frames are ignored. A scored frame missing from `detected` is scored as if nothing was
+/// detected.
 Evaluation evaluateFrames(const std::map<std::string, PerceptSet>& detected,
-                          const Annotations& truth, int width, int height);
+                          const Annotations& truth, int width, int height,
+                          const std::vector<const PerceptKind*>& kinds = scoredKinds());
 /// evaluateFrames(...).scores
 EvaluationScores evaluate(const std::map<std::string, PerceptSet>& detected,
-                          const Annotations& truth, int width, int height);
+                          const Annotations& truth, int width, int height,
+                          const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
 /// annotations.json in the stream's folder (the folder itself, or the one holding the file).
 std::string defaultTruthPath(const std::string& stream);
@@ -258,7 +274,8 @@ Result<std::map<std::string, std::size_t>> scoredFrameIndices(const StreamInput&
                                                               const Annotations& truth,
                                                               const std::string& truth_path);
 
-/// Runs the pipeline over the scored frames of `truth` (scoredFrameIndices) and scores them. A
+/// Runs the pipeline (`input.pipeline`) over the scored frames of `truth` (scoredFrameIndices) and
+/// scores them, every scored kind of that pipeline. A
 /// scored frame the stream lacks is bad input; a cancelled run is an Error.
 Result<EvalReport> evaluateStream(StreamInput& input, const Annotations& truth,
                                   const std::string& truth_path, int threads,

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "visioncore/framework/controller.h"
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 #include "visioncore/percepts/percept_set.h"
 #include "visioncore/basics/result.h"
 

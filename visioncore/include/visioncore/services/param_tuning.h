@@ -121,8 +121,10 @@ struct TuneResult
     bool cancelled = false;
 };
 
-/// Checks `weights` names only scored classes and "boundary", with weights >= 0.
-Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights);
+/// Checks `weights` names only scored classes (of `kinds`, the pipeline's scored kinds) and
+/// "boundary", with weights >= 0.
+Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights,
+                        const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
 /// Reads the scored frames of `truth` from `input` once (into memory), then searches the
 /// parameters of `options.stages` from input.params (the stream's own) to maximise the score

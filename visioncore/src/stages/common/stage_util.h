@@ -2,7 +2,7 @@
 // the legend) and shape builders.
 #pragma once
 
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 #include "visioncore/framework/param.h"
 
 #include <cstdio>

@@ -1,8 +1,9 @@
-// What the venue trial of issue 21 found in the window, each as the user met it: a damaged table
-// beside a stream, a warning that outlived its cause, Save LUT As starting in the wrong folder,
-// classes without keys, the wheel changing a parameter while the panel scrolls, stale previews.
-#include "support/test_suite.h"
+// The colour table in the window, as a user works with it: a damaged table beside a stream, the
+// no-table warning, New LUT, clearing a class and the class keys, the tolerance box, Save LUT As
+// and the stream's table, the sample regions; and around it: the window's outputs never replace
+// its inputs, the wheel scrolls the panel, a reopened stream comes back at its frame.
 #include "support/test_files.h"
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -49,7 +50,7 @@ std::size_t classifiedCells(MainWindow& w)
 
 } // namespace
 
-class TestVenueTrial : public QObject
+class TestLutWorkflows : public QObject
 {
     Q_OBJECT
 
@@ -58,25 +59,15 @@ class TestVenueTrial : public QObject
     /// A copy of the bundled stream's frames (and its table, with `lut`).
     QString copyStream(const QString& name, bool lut = true)
     {
-        const QString to = m_dir.filePath(name);
-        QDir().mkpath(to);
-        for (const QString& file : QDir(sampleStream()).entryList(QDir::Files))
-            if (file.startsWith("frame_") || (lut && file == "default.lut"))
-                QFile::copy(sampleStream() + "/" + file, to + "/" + file);
-        return to;
+        return copyFolderFiles(sampleStream(), m_dir.filePath(name),
+                               lut ? isFrameOrTable : isFrameFile);
     }
 
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("FieldsightTest");
-        QCoreApplication::setApplicationName("test_venue_trial");
+        QCOMPARE(test::startWindowSuite("test_lut_workflows", m_dir), QString());
         QSettings().clear();
-        QVERIFY(m_dir.isValid());
-        // The bundled streams are part of the project: a wrong path must fail, not skip.
-        QVERIFY2(QFileInfo(sampleStream()).isDir(),
-                 qPrintable("the bundled sample stream is missing: " + sampleStream()));
     }
 
     void init() { QSettings().clear(); }
@@ -443,6 +434,6 @@ private slots:
     }
 };
 
-FIELDSIGHT_TEST_SUITE(TestVenueTrial, Widgets)
+FIELDSIGHT_TEST_SUITE(TestLutWorkflows, Widgets)
 
-#include "test_venue_trial.moc"
+#include "test_lut_workflows.moc"

@@ -1,5 +1,6 @@
 // `fieldsight [gui [STREAM] [--lut FILE] [--set ...] [--params FILE]]`: the main window.
-#include "commands/commands.h"
+#include "gui_command.h"
+
 #include "ui/actions/file_commands.h"
 #include "ui/adapters/local_path.h"
 #include "ui/application.h"

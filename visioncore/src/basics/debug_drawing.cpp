@@ -1,5 +1,5 @@
 // Debug layers that exist only when requested.
-#include "visioncore/framework/debug_drawing.h"
+#include "visioncore/basics/debug_drawing.h"
 
 namespace fieldsight {
 
