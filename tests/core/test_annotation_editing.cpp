@@ -1,5 +1,6 @@
 // Frame-level annotation edits (services/annotation_editing): copying a frame, detections made
 // truth, "reviewed, nothing here", and the next frame not done.
+#include "support/test_suite.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/goalpost.h"
@@ -162,5 +163,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAnnotationEditing)
+FIELDSIGHT_TEST_SUITE(TestAnnotationEditing, None)
+
 #include "test_annotation_editing.moc"

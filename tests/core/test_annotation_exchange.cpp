@@ -2,6 +2,7 @@
 // test's own reading of both files (nlohmann::json on the raw annotations and the COCO output,
 // image sizes from the PNGs), and the Dutch Nao Team's hand labels turned into goalpost truth,
 // on a made-up label file with known boxes and on the real files in ../shared.
+#include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/io/annotations.h"
@@ -504,5 +505,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAnnotationExchange)
+FIELDSIGHT_TEST_SUITE(TestAnnotationExchange, None)
+
 #include "test_annotation_exchange.moc"

@@ -1,6 +1,7 @@
 // Tracks of annotated objects: flags that stay with their object, fresh track ids, keyframes with
 // linear interpolation between them (switchable per keyframe), propagation to the next and the
 // previous frames.
+#include "support/test_suite.h"
 #include "visioncore/services/annotation_tracks.h"
 
 #include "visioncore/percepts/ball.h"
@@ -304,5 +305,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAnnotationTracks)
+FIELDSIGHT_TEST_SUITE(TestAnnotationTracks, Core)
+
 #include "test_annotation_tracks.moc"

@@ -1,4 +1,5 @@
 // Ground-truth annotation files (SPEC §5.2): round trip, derived goalpost base, bad input.
+#include "support/test_suite.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/percepts/ball.h"
@@ -425,5 +426,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestAnnotations)
+FIELDSIGHT_TEST_SUITE(TestAnnotations, None)
+
 #include "test_annotations.moc"

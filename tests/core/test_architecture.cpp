@@ -1,6 +1,7 @@
 // The paper's architecture, minus its drawbacks: wrappers as the only doors, a controller that can
 // skip stages and survives a throwing stage, no singletons (two cores side by side), and the
 // core's layers as folders that include only downwards.
+#include "support/test_suite.h"
 #include "support/recording_sink.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
@@ -500,5 +501,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestArchitecture)
+FIELDSIGHT_TEST_SUITE(TestArchitecture, None)
+
 #include "test_architecture.moc"

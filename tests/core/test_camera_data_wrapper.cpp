@@ -2,6 +2,7 @@
 // are dropped, not queued), the core runs through it, and a failing or silent camera is an error,
 // never a hang. A stand-in camera (frames handed over when the test allows them) replaces the
 // device; a real camera:0 is tried when the machine has one.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/control_wrapper.h"
 #include "visioncore/datawrappers/camera_data_wrapper.h"
@@ -240,5 +241,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCameraDataWrapper)
+FIELDSIGHT_TEST_SUITE(TestCameraDataWrapper, None)
+
 #include "test_camera_data_wrapper.moc"

@@ -1,5 +1,6 @@
 // The fieldsight executable's headless commands as a user meets them: exit statuses, one-line
 // errors naming the file, and the JSON of run, bench and eval on a tiny stream.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/percepts/percept_set.h"
@@ -913,5 +914,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCli)
+FIELDSIGHT_TEST_SUITE(TestCli, Core)
+
 #include "test_cli.moc"

@@ -1,4 +1,5 @@
 // Colour class names and display colours (SPEC §1).
+#include "support/test_suite.h"
 #include "visioncore/basics/colour.h"
 
 #include <QtTest>
@@ -57,5 +58,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestColour)
+FIELDSIGHT_TEST_SUITE(TestColour, None)
+
 #include "test_colour.moc"

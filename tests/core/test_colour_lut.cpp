@@ -1,4 +1,5 @@
 // The native .lut format (SPEC §3) and atomic saving.
+#include "support/test_suite.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/colour_lut.h"
 
@@ -391,5 +392,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestColourLut)
+FIELDSIGHT_TEST_SUITE(TestColourLut, None)
+
 #include "test_colour_lut.moc"

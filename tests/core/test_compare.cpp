@@ -3,6 +3,7 @@
 // JSON has its documented fields and side A's scores equal `eval`'s; a class is scored only where
 // its truth is complete (a reviewed class on a frame not done); a concealed ball B misses breaks
 // nothing (the matching of eval, concealed objects apart).
+#include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/basics/colour_lut.h"
@@ -330,5 +331,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCompare)
+FIELDSIGHT_TEST_SUITE(TestCompare, None)
+
 #include "test_compare.moc"

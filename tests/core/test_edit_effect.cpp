@@ -2,6 +2,7 @@
 // sample stream: a first scan records, an edit's counts agree with a pixel-by-pixel count and an
 // independent run, frames the edit does not touch are not run again, a damaged frame is passed,
 // cancel stops a scan; and the detection delta is reported per percept kind.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 
 #include "visioncore/percepts/ball.h"
@@ -294,5 +295,6 @@ private:
     QTemporaryDir m_dir;
 };
 
-QTEST_APPLESS_MAIN(TestEditEffect)
+FIELDSIGHT_TEST_SUITE(TestEditEffect, None)
+
 #include "test_edit_effect.moc"

@@ -1,4 +1,5 @@
 // The eval matching rules of SPEC §5.3 on hand-made detections and truths, so every scorer agrees.
+#include "support/test_suite.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/services/evaluation.h"
 
@@ -266,5 +267,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEvaluation)
+FIELDSIGHT_TEST_SUITE(TestEvaluation, Core)
+
 #include "test_evaluation.moc"

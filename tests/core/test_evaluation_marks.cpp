@@ -1,6 +1,7 @@
 // The evaluation's extensions of SPEC §5.3 (docs/formats.md): concealed objects scored apart,
 // kinds reviewed on a frame that is not done, the field line rule, and the per-frame list of
 // disagreements that the eval command, the window and the edit-effect scan share.
+#include "support/test_suite.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/services/evaluation.h"
 
@@ -218,5 +219,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEvaluationMarks)
+FIELDSIGHT_TEST_SUITE(TestEvaluationMarks, Core)
+
 #include "test_evaluation_marks.moc"

@@ -2,6 +2,7 @@
 // to the pipeline by this test alone, is scored by matchFrame and by `eval` (its table row and
 // its JSON class, the standard classes' bytes unchanged) and exported to COCO, with no change
 // anywhere else.
+#include "support/test_suite.h"
 #include "commands/commands.h"
 #include "support/fake_percept.h"
 #include "support/synthetic_frames.h"
@@ -172,5 +173,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFakePercept)
+FIELDSIGHT_TEST_SUITE(TestFakePercept, Core)
+
 #include "test_fake_percept.moc"

@@ -4,6 +4,7 @@
 //
 // What adding it took: the Stage subclass and its percept type with PerceptTraits (below), and
 // one Pipeline::add call (the line stage_list.cpp would get).
+#include "support/test_suite.h"
 #include "commands/commands.h"
 #include "support/fake_stage.h"
 #include "support/synthetic_frames.h"
@@ -182,5 +183,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFakeStage)
+FIELDSIGHT_TEST_SUITE(TestFakeStage, Core)
+
 #include "test_fake_stage.moc"

@@ -1,5 +1,6 @@
 // Frames of any size (issue 33): lengths given in px follow the frame's width, so the defaults
 // find at 1280x720 what they find at 320x240, and a 320x240 frame runs exactly as before.
+#include "support/test_suite.h"
 #include "synth/synth.h"
 #include "visioncore/framework/stage.h"
 #include "visioncore/services/evaluation.h"
@@ -155,5 +156,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestFrameSize)
+FIELDSIGHT_TEST_SUITE(TestFrameSize, Core)
+
 #include "test_frame_size.moc"

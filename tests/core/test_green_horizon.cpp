@@ -1,6 +1,7 @@
 // The green horizon's rules on small synthetic frames whose field edge is known: a straight
 // edge, a robot hiding it, green walls and seats behind the field, a corner, the camera's own body
 // at the image's side.
+#include "support/test_suite.h"
 #include "support/field_frames.h"
 #include "support/recording_sink.h"
 #include "support/synthetic_frames.h"
@@ -212,5 +213,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestGreenHorizon)
+FIELDSIGHT_TEST_SUITE(TestGreenHorizon, None)
+
 #include "test_green_horizon.moc"

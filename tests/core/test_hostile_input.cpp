@@ -2,6 +2,7 @@
 // link loop, a name past the system's limit), frame entries that are no frame, damaged PNGs that
 // libpng would talk about, JSON past any real file's size, and running out of memory reading one.
 // Each is an answer naming the file, at once; nothing waits, aborts or prints on its own.
+#include "support/test_suite.h"
 #include "support/stderr_capture.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/basics/colour_lut.h"
@@ -416,5 +417,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestHostileInput)
+FIELDSIGHT_TEST_SUITE(TestHostileInput, None)
+
 #include "test_hostile_input.moc"

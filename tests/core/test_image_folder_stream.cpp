@@ -1,4 +1,5 @@
 // Image-folder streams (SPEC §4): pixel formats, manifest, natural order and bad input.
+#include "support/test_suite.h"
 #include "support/stderr_capture.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/datawrappers/stream_data_wrapper.h"
@@ -464,5 +465,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestImageFolderStream)
+FIELDSIGHT_TEST_SUITE(TestImageFolderStream, None)
+
 #include "test_image_folder_stream.moc"

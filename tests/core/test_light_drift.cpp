@@ -1,6 +1,7 @@
 // A generated stream whose light drifts (synth --drift): the first light's table kept static loses
 // the ball as the light moves away, and the same table following the light (--adapt) keeps it,
 // nearly as well as a table made for the later light itself.
+#include "support/test_suite.h"
 #include "synth/synth.h"
 
 #include "visioncore/framework/controller.h"
@@ -149,5 +150,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLightDrift)
+FIELDSIGHT_TEST_SUITE(TestLightDrift, None)
+
 #include "test_light_drift.moc"

@@ -1,5 +1,6 @@
 // The table that follows the light: the input map in front of the LUT, and the tracker that
 // estimates the light frame by frame and is not pulled away by one odd frame.
+#include "support/test_suite.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/basics/lut_input_map.h"
 #include "visioncore/basics/splitmix.h"
@@ -250,5 +251,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLightTracking)
+FIELDSIGHT_TEST_SUITE(TestLightTracking, None)
+
 #include "test_light_tracking.moc"

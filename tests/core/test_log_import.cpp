@@ -4,6 +4,7 @@
 // refused naming them, nothing written. On the real log (reference_data, skipped when absent):
 // 160 frames, 22 without a horizon, each horizon equal to the one the tests' own reader of
 // frames.csv computes.
+#include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/reference_streams.h"
 #include "visioncore/io/bhuman_log.h"
@@ -225,5 +226,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLogImport)
+FIELDSIGHT_TEST_SUITE(TestLogImport, None)
+
 #include "test_log_import.moc"

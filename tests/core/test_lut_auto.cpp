@@ -2,6 +2,7 @@
 // stream's ideal table finds on the bundled generated streams, the same frames give the same
 // table, a cancel keeps what was read, frames without a carpet give a note and an empty table,
 // annotations add their votes, and the goal-colour parameter is found through the registry.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
@@ -182,5 +183,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLutAuto)
+FIELDSIGHT_TEST_SUITE(TestLutAuto, Core)
+
 #include "test_lut_auto.moc"

@@ -1,6 +1,7 @@
 // Building a LUT from samples (visioncore/services/lut_building.h): the samples file, votes into
 // exactly the expected cells, smoothing, majority, soft classes, cancel, and a table built from a
 // bundled stream's annotations that finds what the stream's ideal LUT finds.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
@@ -458,5 +459,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLutBuilding)
+FIELDSIGHT_TEST_SUITE(TestLutBuilding, Core)
+
 #include "test_lut_building.moc"

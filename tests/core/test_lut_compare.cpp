@@ -2,6 +2,7 @@
 // exactly the cells that differ, by class pair; a merge by class copies only those classes and
 // counts conflicts; the pixel tally and mask agree with a pixel-by-pixel count; and the detection
 // delta of two runs follows the eval matching rules.
+#include "support/test_suite.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_compare.h"
@@ -114,5 +115,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLutCompare)
+FIELDSIGHT_TEST_SUITE(TestLutCompare, None)
+
 #include "test_lut_compare.moc"

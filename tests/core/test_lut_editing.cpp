@@ -1,5 +1,6 @@
 // What a LUT edit touches (visioncore/services/lut_editing.h): the tolerance box, the brush, the
 // magic wand, and changes that undo exactly.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/services/lut_editing.h"
 
@@ -231,5 +232,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLutEditing)
+FIELDSIGHT_TEST_SUITE(TestLutEditing, None)
+
 #include "test_lut_editing.moc"

@@ -1,4 +1,5 @@
 // Importing other teams' colour tables: B-Human .c64, rUNSWift .nnmc.bz2, UPenn .raw.
+#include "support/test_suite.h"
 #include "visioncore/io/lut_import.h"
 
 #include "support/synthetic_frames.h"
@@ -343,5 +344,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestLutImport)
+FIELDSIGHT_TEST_SUITE(TestLutImport, None)
+
 #include "test_lut_import.moc"

@@ -3,6 +3,7 @@
 // annotations, the manifest, a frame, the folders themselves): no file of either stream may change,
 // so an output flag added later cannot miss the guard. And `synth --out` replaces only its own
 // earlier output, only what nobody changed since, and never a file of the user's.
+#include "support/test_suite.h"
 #include "support/child_process.h"
 
 #include <QtTest>
@@ -354,5 +355,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestNoOverwrite)
+FIELDSIGHT_TEST_SUITE(TestNoOverwrite, Core)
+
 #include "test_no_overwrite.moc"

@@ -1,5 +1,6 @@
 // The obstacle stage's rules on small synthetic frames whose correct answer is known: robots in
 // the open and at the field's edge, white robots, the edge's own band, a robot in pieces.
+#include "support/test_suite.h"
 #include "support/recording_sink.h"
 #include "support/field_frames.h"
 #include "support/synthetic_frames.h"
@@ -421,5 +422,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestObstacles)
+FIELDSIGHT_TEST_SUITE(TestObstacles, None)
+
 #include "test_obstacles.moc"

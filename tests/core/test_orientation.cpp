@@ -2,6 +2,7 @@
 // --orientation turn the stored pictures upright as they are read, so a stream stored turned gives
 // the same frames, horizons and detections as its upright copy; anything but a quarter turn is
 // refused naming the file and the value; saving the orientation keeps the manifest's other keys.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "support/turned_streams.h"
 #include "visioncore/datawrappers/stream_data_wrapper.h"
@@ -399,5 +400,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestOrientation)
+FIELDSIGHT_TEST_SUITE(TestOrientation, Core)
+
 #include "test_orientation.moc"

@@ -2,6 +2,7 @@
 // the held-out frames confirm, the same seed gives the same result on any number of cores, a
 // cancel keeps the start, the held-out frames are whole contiguous blocks, a seed is never
 // fitted, and bad options are errors naming them.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
@@ -267,5 +268,6 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(TestParamTuning)
+FIELDSIGHT_TEST_SUITE(TestParamTuning, Core)
+
 #include "test_param_tuning.moc"

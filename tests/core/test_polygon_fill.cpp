@@ -1,6 +1,7 @@
 // The rasterising of LUT sample polygons (visioncore/src/services/polygon_fill): the same pixels
 // as cv::fillPoly with cv::polylines, which it replaced (a sample polygon of 200k points took
 // 50 s to many minutes), and the area a polygon stands for. Its speed: bench_polygon_fill.
+#include "support/test_suite.h"
 #include "services/polygon_fill.h"
 
 #include <opencv2/imgproc.hpp>
@@ -118,5 +119,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestPolygonFill)
+FIELDSIGHT_TEST_SUITE(TestPolygonFill, None)
+
 #include "test_polygon_fill.moc"

@@ -1,5 +1,6 @@
 // The core's services a GUI drives: running a stream with progress, cancel and a per-frame hook,
 // the worker pool, and results JSON written and read back.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/obstacle.h"
@@ -246,5 +247,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestServices)
+FIELDSIGHT_TEST_SUITE(TestServices, Core)
+
 #include "test_services.moc"

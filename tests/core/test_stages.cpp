@@ -1,4 +1,5 @@
 // Each stage on small synthetic frames whose correct answer is known.
+#include "support/test_suite.h"
 #include "stages/common/line_fit.h"
 #include "stages/common/ransac.h"
 #include "stages/transitions/transition_filter.h"
@@ -487,5 +488,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestStages)
+FIELDSIGHT_TEST_SUITE(TestStages, None)
+
 #include "test_stages.moc"

@@ -1,4 +1,5 @@
 // Original NUbots image streams (.strm): writer/reader round trip, flips, and damaged files.
+#include "support/test_suite.h"
 #include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 
@@ -395,5 +396,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestStrmStream)
+FIELDSIGHT_TEST_SUITE(TestStrmStream, None)
+
 #include "test_strm_stream.moc"

@@ -1,5 +1,6 @@
 // The scene generator: determinism, camera geometry, ground truth against the rendered pixels,
 // the ideal LUT, and the files it writes.
+#include "support/test_suite.h"
 #include "synth/camera_model.h"
 #include "synth/ground_truth.h"
 #include "synth/ideal_lut.h"
@@ -544,5 +545,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSynth)
+FIELDSIGHT_TEST_SUITE(TestSynth, None)
+
 #include "test_synth.moc"

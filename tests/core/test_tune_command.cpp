@@ -1,5 +1,6 @@
 // `fieldsight tune` as a user runs it: the file it writes gives `eval` the scores it reported,
 // its JSON report is complete, and Ctrl+C ends the search with the best so far written.
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 
 #include "visioncore/framework/param_set.h"
@@ -105,5 +106,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTuneCommand)
+FIELDSIGHT_TEST_SUITE(TestTuneCommand, Core)
+
 #include "test_tune_command.moc"

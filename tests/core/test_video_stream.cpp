@@ -1,4 +1,5 @@
 // Video-file streams through OpenCV videoio: random access and the RGB to YCbCr conversion.
+#include "support/test_suite.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <opencv2/core.hpp>
@@ -93,5 +94,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestVideoStream)
+FIELDSIGHT_TEST_SUITE(TestVideoStream, None)
+
 #include "test_video_stream.moc"

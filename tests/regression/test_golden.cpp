@@ -1,6 +1,7 @@
 // Golden regression: the pipeline's output on every bundled sample stream is compared with the
 // stored output. Regenerate on purpose with FIELDSIGHT_REGENERATE_GOLDEN=1 (the run then fails, so
 // regeneration can never pass CI silently).
+#include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/services/stream_runner.h"
@@ -99,5 +100,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestGolden)
+FIELDSIGHT_TEST_SUITE(TestGolden, None)
+
 #include "test_golden.moc"

@@ -3,6 +3,7 @@
 // The fixtures' shape is checked without reference_data; the scores need its frames and skip
 // cleanly without them. The floors sit a few points under the figures measured when the fixture
 // was made (tests/data/real/README.md), so a detector that gets worse fails here.
+#include "support/test_suite.h"
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
@@ -597,5 +598,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRealTruth)
+FIELDSIGHT_TEST_SUITE(TestRealTruth, Core)
+
 #include "test_real_truth.moc"

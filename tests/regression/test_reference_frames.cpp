@@ -1,6 +1,7 @@
 // Regression on real robot frames from reference_data: B-Human's 2009 Nao log with the colour
 // table that shipped beside it, and NUbots lab frames with the NUbots lab LUT. The expected counts
 // were measured once through the CLI; the margins leave room for tuning but not for a broken stage.
+#include "support/test_suite.h"
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/percepts/ball.h"
@@ -331,5 +332,6 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestReferenceFrames)
+FIELDSIGHT_TEST_SUITE(TestReferenceFrames, Core)
+
 #include "test_reference_frames.moc"

@@ -3,6 +3,7 @@
 // same frames `compare` gives), choosing one shows that frame, a comparison can be cancelled, and
 // File > Export annotations as COCO writes the annotations document's truth (unsaved edits too),
 // never over an input.
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -196,5 +197,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestAbCompareWindow)
+FIELDSIGHT_TEST_SUITE(TestAbCompareWindow, Widgets)
+
 #include "test_ab_compare_window.moc"

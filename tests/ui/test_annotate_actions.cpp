@@ -5,6 +5,7 @@
 // damaged file is never written over, and a recovery is offered only on its own stream. Each
 // checks the document, the file on disk or what the window shows. The test names no percept
 // kind: it takes them from the registry by their form.
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/unsaved_ask.h"
@@ -497,5 +498,6 @@ private:
     }
 };
 
-QTEST_MAIN(TestAnnotateActions)
+FIELDSIGHT_TEST_SUITE(TestAnnotateActions, Widgets)
+
 #include "test_annotate_actions.moc"

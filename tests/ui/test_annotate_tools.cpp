@@ -2,6 +2,7 @@
 // drawn, moved, resized, undone, redone and deleted; a polyline clicked point by point; a circle
 // interpolated between two keyframes; propagation; the concealed flag; saved and read back the
 // same. The test names no percept kind: it takes the tools from the registry by their form.
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -594,5 +595,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestAnnotateTools)
+FIELDSIGHT_TEST_SUITE(TestAnnotateTools, Widgets)
+
 #include "test_annotate_tools.moc"

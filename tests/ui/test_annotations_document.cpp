@@ -1,5 +1,6 @@
 // The annotations document: one undo step per edit (a drag merged into one), saves that reload
 // identically, a damaged file never written over, and recovery only onto the stream it belongs to.
+#include "support/test_suite.h"
 #include "ui/document/editing_session.h"
 
 #include "support/test_files.h"
@@ -253,5 +254,6 @@ private:
     QString m_b;
 };
 
-QTEST_MAIN(TestAnnotationsDocument)
+FIELDSIGHT_TEST_SUITE(TestAnnotationsDocument, Widgets)
+
 #include "test_annotations_document.moc"

@@ -8,6 +8,7 @@
 // quality: the table the window got is byte for byte buildAutoLut's of the same upright frames,
 // one undo step, and the goal colour found is the pipeline's. FIELDSIGHT_TRIAL_STREAM=DIR adds a
 // stream of your own (with its annotations.json), opened without its table.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
@@ -241,5 +242,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestAutoTableTrial)
+FIELDSIGHT_TEST_SUITE(TestAutoTableTrial, Widgets)
+
 #include "test_auto_table_trial.moc"

@@ -3,6 +3,7 @@
 // bad input (1 for an output failure) with exactly one line naming the file and the problem,
 // within seconds and bounded memory; the same inputs opened in the window give a message there,
 // and the window goes on working.
+#include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -561,10 +562,10 @@ private slots:
             fs::create_directories(home);
             fs::permissions(home, fs::perms::owner_all);
             QCOMPARE(::chown(home.c_str(), kNobody, kNobody), 0);
-            const Outcome o =
-                runFieldsight({"theWindowMeetsPermissionBits"}, m_dir, RLIM_INFINITY, true,
-                              QCoreApplication::applicationFilePath().toStdString(), 120,
-                              {"HOME=" + home, "XDG_RUNTIME_DIR=" + home});
+            const Outcome o = runFieldsight(
+                {fieldsight::test::currentSuite(), "theWindowMeetsPermissionBits"}, m_dir,
+                RLIM_INFINITY, true, QCoreApplication::applicationFilePath().toStdString(), 120,
+                {"HOME=" + home, "XDG_RUNTIME_DIR=" + home});
             if (o.status == kCannotBeNobody || o.status == 127)
                 QSKIP(qPrintable(QString("root here cannot run this test as nobody (exit %1), "
                                          "so permission bits cannot be tested in the window")
@@ -633,5 +634,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestBadInput)
+FIELDSIGHT_TEST_SUITE(TestBadInput, Widgets)
+
 #include "test_bad_input.moc"

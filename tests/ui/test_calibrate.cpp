@@ -5,6 +5,7 @@
 // into the pipeline's goal-colour parameter (a step of its own); Cancel and a frame that cannot
 // be read leave the table as it was. Builders given by the test stand in for the method where a
 // test needs a result it controls (a table, a goal colour, a run that waits for Cancel).
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -366,5 +367,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestCalibrate)
+FIELDSIGHT_TEST_SUITE(TestCalibrate, Widgets)
+
 #include "test_calibrate.moc"

@@ -3,6 +3,7 @@
 // nothing is detected is listed on its frame and the next-disagreement key lands there with the
 // ball drawn emphasised, a LUT edit that erases orange drops the ball recall the dock shows, and
 // an edit of the annotations document is scored again with the detections already made.
+#include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -368,5 +369,6 @@ private:
     QTemporaryDir m_dir;
 };
 
-QTEST_MAIN(TestEvaluationPanel)
+FIELDSIGHT_TEST_SUITE(TestEvaluationPanel, Widgets)
+
 #include "test_evaluation_panel.moc"

@@ -1,6 +1,7 @@
 // A percept kind in one place, in the window: the fake kind of support/fake_percept.h, added to the
 // window's pipeline by this test alone, has a row of its own in the evaluation panel with the
 // numbers `eval` gives, and a tool that draws it; what is drawn is scored again.
+#include "support/test_suite.h"
 #include "support/fake_percept.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -155,5 +156,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestFakePerceptWindow)
+FIELDSIGHT_TEST_SUITE(TestFakePerceptWindow, Widgets)
+
 #include "test_fake_percept_window.moc"

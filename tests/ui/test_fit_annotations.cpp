@@ -5,6 +5,7 @@
 // parameter as ONE undo step that one Ctrl+Z takes back whole, and Save parameters to the stream
 // writes them to params.json. Cancel keeps the best so far while the window goes on answering; a
 // stream without done annotations gets a message instead of a run; the budget is remembered.
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -406,5 +407,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestFitAnnotations)
+FIELDSIGHT_TEST_SUITE(TestFitAnnotations, Widgets)
+
 #include "test_fit_annotations.moc"

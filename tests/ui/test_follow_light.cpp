@@ -2,6 +2,7 @@
 // away from its table's, switching it on makes the worker classify the last frame through that
 // frame's light (the carpet green again), the strip under the timeline plots how far the light
 // moved, switching it off gives the table as it is again, and the window remembers the switch.
+#include "support/test_suite.h"
 #include "support/light_ramp.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -113,5 +114,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestFollowLight)
+FIELDSIGHT_TEST_SUITE(TestFollowLight, Widgets)
+
 #include "test_follow_light.moc"

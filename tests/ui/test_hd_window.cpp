@@ -2,6 +2,7 @@
 // frame asked for, at its full size, with the ball and posts its truth has found by the default
 // parameters (lengths in px follow the frame's width), whether the frame came from the frames
 // read ahead or was read on request.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
 #include "synth/synth.h"
@@ -96,5 +97,6 @@ private:
     Annotations m_truth;
 };
 
-QTEST_MAIN(TestHdWindow)
+FIELDSIGHT_TEST_SUITE(TestHdWindow, Widgets)
+
 #include "test_hd_window.moc"

@@ -1,6 +1,7 @@
 // Hostile files and machines in the window (issue 21): a settings file that is a FIFO, an open
 // stuck in the system when the window quits, frame entries that are no frame, and a recovery
 // offer naming a very long path with a time that is not a time.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -229,5 +230,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestHostileWindow)
+FIELDSIGHT_TEST_SUITE(TestHostileWindow, Widgets)
+
 #include "test_hostile_window.moc"

@@ -2,6 +2,7 @@
 // brush stroke change exactly the expected cells, undo restores the bytes and redo re-applies,
 // the frame is reclassified, save then load gives the same bytes, and unsaved edits left by a
 // crashed session are offered and restored.
+#include "support/test_suite.h"
 #include "support/window_waits.h"
 #include "support/test_files.h"
 #include "support/synthetic_frames.h"
@@ -768,5 +769,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestLutEditor)
+FIELDSIGHT_TEST_SUITE(TestLutEditor, Widgets)
+
 #include "test_lut_editor.moc"

@@ -3,6 +3,7 @@
 // and the stream's table, the sample regions; and around it: the window's outputs never replace
 // its inputs, the wheel scrolls the panel, a reopened stream comes back at its frame.
 #include "support/test_files.h"
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
@@ -433,5 +434,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestLutWorkflows)
+FIELDSIGHT_TEST_SUITE(TestLutWorkflows, Widgets)
+
 #include "test_lut_workflows.moc"

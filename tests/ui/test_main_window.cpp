@@ -2,6 +2,7 @@
 // toggle layers, skip a stage, edit a parameter, restart with remembered settings, meet a corrupt
 // frame. The pipeline has an eighth, fake stage added by this test alone: the window shows its
 // layer, its parameter and its timing without any UI change.
+#include "support/test_suite.h"
 #include "commands/commands.h"
 #include "support/test_files.h"
 #include "support/fake_stage.h"
@@ -745,5 +746,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestMainWindow)
+FIELDSIGHT_TEST_SUITE(TestMainWindow, Widgets)
+
 #include "test_main_window.moc"

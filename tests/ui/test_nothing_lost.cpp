@@ -4,6 +4,7 @@
 // cancel) through the dialogs seam. Opening a stream is the bottom of its parameters' history.
 // Ctrl+Z in a parameter box reaches Edit > Undo, and Ctrl+Z walks back into the document edited
 // before when the active one has no step left. Each checks the bytes on disk or the document.
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -470,5 +471,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestNothingLost)
+FIELDSIGHT_TEST_SUITE(TestNothingLost, Widgets)
+
 #include "test_nothing_lost.moc"

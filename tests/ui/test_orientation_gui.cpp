@@ -3,6 +3,7 @@
 // whole-stream scan reads the turned frames, the turn is one undo step that leaves every other
 // document's history alone, and "Save to stream" writes stream.json only when asked and never
 // into a read-only folder.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
 #include "support/synthetic_frames.h"
@@ -322,5 +323,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestOrientationGui)
+FIELDSIGHT_TEST_SUITE(TestOrientationGui, Widgets)
+
 #include "test_orientation_gui.moc"

@@ -1,5 +1,6 @@
 // The overlay painter and image adapters: which pixels a debug drawing colours, at zoom 1 and
 // above.
+#include "support/test_suite.h"
 #include "ui/adapters/image_adapter.h"
 #include "ui/adapters/overlay_painter.h"
 
@@ -538,5 +539,6 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestOverlayPainter)
+FIELDSIGHT_TEST_SUITE(TestOverlayPainter, None)
+
 #include "test_overlay_painter.moc"

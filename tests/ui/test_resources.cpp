@@ -1,6 +1,7 @@
 // What ships with the window (resources/): the application icon and desktop id, every tool's
 // icon found by its id, the default parameters file kept equal to the stage registry's
 // defaults, and the installed sample stream found from the installed executable.
+#include "support/test_suite.h"
 #include "support/fake_tool.h"
 #include "ui/actions/session_files.h"
 #include "ui/application.h"
@@ -186,5 +187,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestResources)
+FIELDSIGHT_TEST_SUITE(TestResources, Widgets)
+
 #include "test_resources.moc"

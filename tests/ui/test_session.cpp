@@ -5,6 +5,7 @@
 // registration line) gets its button, menu item and shortcut and receives the view's mouse events;
 // every question goes through the dialogs seam; a stream's own parameters are saved to it and
 // applied when it opens.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/fake_stage.h"
 #include "support/fake_tool.h"
@@ -538,5 +539,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestSession)
+FIELDSIGHT_TEST_SUITE(TestSession, Widgets)
+
 #include "test_session.moc"

@@ -6,6 +6,7 @@
 // Pixel inspector show everything; Help > Keyboard shortcuts fits an 800 px screen and lists
 // only keys a user can press; annotated frames the stream lacks are named when it opens. The
 // test names no percept kind: it takes them from the registry by their form.
+#include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
@@ -552,5 +553,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestWindowTrial)
+FIELDSIGHT_TEST_SUITE(TestWindowTrial, Widgets)
+
 #include "test_window_trial.moc"

@@ -3,6 +3,7 @@
 // and next bookmark; Ctrl+E saves the view as PNG and Ctrl+Shift+C copies it; Alt+1..4 show the
 // frame raw, classified, side by side and blended. Each checks what the user sees or what lands
 // on disk.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
@@ -241,5 +242,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestWorkflowKeys)
+FIELDSIGHT_TEST_SUITE(TestWorkflowKeys, Widgets)
+
 #include "test_workflow_keys.moc"

@@ -4,6 +4,7 @@
 // the recovery bar's Recover and Discard, Ctrl+S and Save As of a table imported from another
 // team's format, opening a table (good, foreign, damaged), dropping a stream folder or a table on
 // the window, and the recent streams menu.
+#include "support/test_suite.h"
 #include "support/test_files.h"
 #include "support/scripted_dialogs.h"
 #include "support/synthetic_frames.h"
@@ -427,5 +428,6 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestWorkflows)
+FIELDSIGHT_TEST_SUITE(TestWorkflows, Widgets)
+
 #include "test_workflows.moc"
