@@ -26,7 +26,7 @@ set(FIELDSIGHT_UNITY_ALONE
     tests/ui/test_session.cpp
     app/commands/compare_command.cpp
     app/commands/eval_command.cpp
-    ui/panels/fit_result_dialog.cpp
+    ui/dialogs/fit_result_dialog.cpp
     tools/synth/synth.cpp
     visioncore/src/io/stream_reader.cpp
     tools/synth/scenario_script.cpp

@@ -14,7 +14,7 @@ namespace {
 
 /// The evaluation's threads yield to the window and its frame worker, but less than the
 /// whole-stream scan's: its few frames give the scores of an edit before the scan's strip is full.
-constexpr int kNiceness = 5;
+constexpr int kEvaluationNiceness = 5;
 
 /// The frames of `truth` with something to score by `pipeline`'s kinds.
 std::size_t scoredCount(const Annotations* truth, const Pipeline& pipeline)
@@ -108,7 +108,7 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
             job->total = total;
         };
         hooks.prefilter = [](std::size_t, const Frame&) {
-            lowerThreadPriority(kNiceness);
+            lowerThreadPriority(kEvaluationNiceness);
             return true;
         };
         static const Detections none;

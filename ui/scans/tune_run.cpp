@@ -11,7 +11,7 @@ namespace {
 
 /// The search yields to the window and its frame worker (its workers, started from the calling
 /// thread, inherit the priority).
-constexpr int kNiceness = 5;
+constexpr int kSearchNiceness = 5;
 
 } // namespace
 
@@ -53,7 +53,7 @@ bool TuneRun::start(std::shared_ptr<StreamInput> input, Annotations truth, std::
         [input = std::move(input), truth = std::move(truth), truth_path = std::move(truth_path),
          options = std::move(options), tuner = m_tuner]() -> Result<TuneResult> {
             try {
-                lowerThreadPriority(kNiceness);
+                lowerThreadPriority(kSearchNiceness);
                 return tuner(*input, truth, truth_path, options);
             } catch (const std::bad_alloc&) {
                 return Error{input->stream + ": not enough memory to fit the parameters"};
