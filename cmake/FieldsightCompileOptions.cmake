@@ -5,6 +5,12 @@ function(fieldsight_target_options target)
     if(FIELDSIGHT_WERROR)
         target_compile_options(${target} PRIVATE -Werror)
     endif()
+    if(CMAKE_UNITY_BUILD AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+        # A unity batch #includes its .cpp files, and GCC then warns of a class in one of them
+        # using a type from its anonymous namespace as if the file were a header shared by
+        # several translation units; it is not.
+        target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+    endif()
     if(FIELDSIGHT_SANITIZE)
         target_compile_options(${target} PRIVATE -fsanitize=address,undefined
             -fno-omit-frame-pointer -fno-sanitize-recover=undefined)

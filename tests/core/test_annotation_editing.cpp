@@ -1,5 +1,6 @@
 // Frame-level annotation edits (services/annotation_editing): copying a frame, detections made
 // truth, "reviewed, nothing here", and the next frame not done.
+#include "support/percept_kinds.h"
 #include "support/test_suite.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/percepts/ball.h"
@@ -16,11 +17,6 @@
 using namespace fieldsight;
 
 namespace {
-
-std::vector<const PerceptKind*> kinds()
-{
-    return Pipeline::standard().perceptKinds();
-}
 
 /// A frame with a ball (a track's keyframe, concealed) and a goalpost, done, balls reviewed.
 FrameAnnotation sampleFrame()
@@ -96,7 +92,7 @@ private slots:
         detections.output<Ball>() = {{30, 40, 5}, {200, 100, 9}};
         detections.output<Obstacle>(); // ran, found nothing
         const FrameAnnotation before = sampleFrame();
-        const FrameAnnotation after = detectionsAsTruth(before, detections, kinds());
+        const FrameAnnotation after = detectionsAsTruth(before, detections, test::standardKinds());
 
         QVERIFY(!after.done);
         // Exactly the detected balls, with default flags (the old ball's track is gone).
@@ -117,7 +113,7 @@ private slots:
     {
         PerceptSet detections;
         detections.output<test::FakeMark>() = {{1, 2, 3}};
-        std::vector<const PerceptKind*> with_fake = kinds();
+        std::vector<const PerceptKind*> with_fake = test::standardKinds();
         with_fake.push_back(&perceptKind<test::FakeMark>());
         const FrameAnnotation after = detectionsAsTruth({}, detections, with_fake);
         QVERIFY(!after.truth.find<test::FakeMark>());

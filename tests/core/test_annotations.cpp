@@ -1,4 +1,5 @@
 // Ground-truth annotation files (SPEC §5.2): round trip, derived goalpost base, bad input.
+#include "support/percept_kinds.h"
 #include "support/test_suite.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
@@ -29,11 +30,6 @@ const char* kSpecExample = R"({"format": "fieldsight-annotations/1",
    "field_lines": [{"x1": 10, "y1": 200, "x2": 300, "y2": 181}]}}})";
 
 /// The percept kinds the standard pipeline reads and writes.
-std::vector<const PerceptKind*> kinds()
-{
-    return Pipeline::standard().perceptKinds();
-}
-
 } // namespace
 
 class TestAnnotations : public QObject
@@ -43,7 +39,8 @@ class TestAnnotations : public QObject
 private slots:
     void readsTheSpecExample()
     {
-        auto parsed = Annotations::fromJson(kSpecExample, "annotations.json", kinds());
+        auto parsed =
+            Annotations::fromJson(kSpecExample, "annotations.json", test::standardKinds());
         QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
         const Annotations& a = parsed.value();
         QCOMPARE(a.frames.size(), std::size_t(1));
@@ -87,8 +84,8 @@ private slots:
 
         QTemporaryDir dir;
         const std::string path = dir.filePath("annotations.json").toStdString();
-        QVERIFY(a.save(path, kinds()).ok());
-        auto loaded = Annotations::load(path, kinds());
+        QVERIFY(a.save(path, test::standardKinds()).ok());
+        auto loaded = Annotations::load(path, test::standardKinds());
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
         const Annotations& b = loaded.value();
         QCOMPARE(b.frames.size(), std::size_t(2));
@@ -107,8 +104,8 @@ private slots:
         QCOMPARE(boundaryOf(g.truth), boundaryOf(f.truth));
         QCOMPARE(g.truth.list<FieldLine>()[0].x2, 3.0);
         // Saving what was loaded gives the same text.
-        QCOMPARE(b.toJson(kinds()), a.toJson(kinds()));
-        QVERIFY(a.toJson(kinds()).find("\"format\": \"fieldsight-annotations/1\"") !=
+        QCOMPARE(b.toJson(test::standardKinds()), a.toJson(test::standardKinds()));
+        QVERIFY(a.toJson(test::standardKinds()).find("\"format\": \"fieldsight-annotations/1\"") !=
                 std::string::npos);
     }
 
@@ -130,22 +127,22 @@ private slots:
         }
         QTemporaryDir dir;
         const std::string path = dir.filePath("annotations.json").toStdString();
-        const std::string first_bytes = first.toJson(kinds()),
-                          second_bytes = second.toJson(kinds());
+        const std::string first_bytes = first.toJson(test::standardKinds()),
+                          second_bytes = second.toJson(test::standardKinds());
         QVERIFY(first_bytes != second_bytes);
-        QVERIFY(first.save(path, kinds()).ok());
+        QVERIFY(first.save(path, test::standardKinds()).ok());
         QCOMPARE(readWholeFile(path).value(), first_bytes); // a save writes toJson()
 
         const auto result = test::killDuringSaves(
-            path, [&](bool two) { (void)(two ? second : first).save(path, kinds()); }, first_bytes,
-            second_bytes, 100, 60000);
+            path, [&](bool two) { (void)(two ? second : first).save(path, test::standardKinds()); },
+            first_bytes, second_bytes, 100, 60000);
         QCOMPARE(result.rounds, 100);
         QVERIFY2(result.mixes == 0 && result.unreadable == 0, result.first_problem.c_str());
         QVERIFY(result.saw_second > 0);
-        auto loaded = Annotations::load(path, kinds());
+        auto loaded = Annotations::load(path, test::standardKinds());
         QVERIFY2(loaded.ok(), loaded.ok() ? "" : loaded.error().message.c_str());
         QCOMPARE(loaded.value().frames.size(), std::size_t(1000));
-        QVERIFY(first.save(path, kinds()).ok());
+        QVERIFY(first.save(path, test::standardKinds()).ok());
         QCOMPARE(test::temporariesOf(path), 0); // the next save removes a stray temporary
         qInfo("100 kills of a %zu-byte save: the new file %d times, the old %d times, %lld "
               "temporaries left before the next save",
@@ -156,12 +153,12 @@ private slots:
     void rejectsWrongFormatString()
     {
         auto parsed = Annotations::fromJson(R"({"format": "fieldsight-results/1", "frames": {}})",
-                                            "/x/annotations.json", kinds());
+                                            "/x/annotations.json", test::standardKinds());
         QVERIFY(!parsed.ok());
         QCOMPARE(parsed.error().message,
                  std::string("/x/annotations.json: unsupported format \"fieldsight-results/1\" "
                              "(expected \"fieldsight-annotations/1\")"));
-        auto missing = Annotations::fromJson(R"({"frames": {}})", "a.json", kinds());
+        auto missing = Annotations::fromJson(R"({"frames": {}})", "a.json", test::standardKinds());
         QVERIFY(!missing.ok());
         QCOMPARE(missing.error().message,
                  std::string("a.json: missing \"format\": \"fieldsight-annotations/1\""));
@@ -199,11 +196,11 @@ private slots:
         for (const auto& [frames, problem] : cases) {
             const std::string text =
                 std::string(R"({"format": "fieldsight-annotations/1", "frames": )") + frames + "}";
-            auto parsed = Annotations::fromJson(text, "ann.json", kinds());
+            auto parsed = Annotations::fromJson(text, "ann.json", test::standardKinds());
             QVERIFY(!parsed.ok());
             QCOMPARE(parsed.error().message, std::string("ann.json: ") + problem);
         }
-        auto not_json = Annotations::fromJson("{", "ann.json", kinds());
+        auto not_json = Annotations::fromJson("{", "ann.json", test::standardKinds());
         QVERIFY(!not_json.ok());
         // Where the text stops being JSON, and why.
         QVERIFY2(
@@ -221,7 +218,7 @@ private slots:
                                   "keyframe": true, "interpolate": false},
                                  {"x": 40, "y": 50, "radius": 3, "interpolated": true}],
                        "goalposts": []}}})";
-        auto parsed = Annotations::fromJson(text, "a.json", kinds());
+        auto parsed = Annotations::fromJson(text, "a.json", test::standardKinds());
         QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
         const FrameAnnotation& f = parsed.value().frames.at("f1.png");
         QVERIFY(f.complete("goalposts"));
@@ -233,11 +230,11 @@ private slots:
         QVERIFY(f.flagsOf("balls", 1).interpolated);
         QVERIFY(f.flagsOf("balls", 5).isDefault());
 
-        const std::string json = parsed.value().toJson(kinds());
-        auto again = Annotations::fromJson(json, "b.json", kinds());
+        const std::string json = parsed.value().toJson(test::standardKinds());
+        auto again = Annotations::fromJson(json, "b.json", test::standardKinds());
         QVERIFY(again.ok());
         QVERIFY(again.value().frames.at("f1.png") == f);
-        QCOMPARE(again.value().toJson(kinds()), json);
+        QCOMPARE(again.value().toJson(test::standardKinds()), json);
 
         FrameAnnotation changed = f;
         changed.setFlags("balls", 1, {});
@@ -251,13 +248,14 @@ private slots:
         auto bad = Annotations::fromJson(
             R"({"format": "fieldsight-annotations/1", "frames": {"f.png": {"balls":
                 [{"x": 1, "y": 2, "radius": 3, "concealed": "yes"}]}}})",
-            "ann.json", kinds());
+            "ann.json", test::standardKinds());
         QVERIFY(!bad.ok());
         QVERIFY2(bad.error().message.find("ann.json") != std::string::npos &&
                      bad.error().message.find("balls[0].concealed") != std::string::npos,
                  bad.error().message.c_str());
-        auto newer = Annotations::fromJson(
-            R"({"format": "fieldsight-annotations/2", "frames": {}})", "new.json", kinds());
+        auto newer =
+            Annotations::fromJson(R"({"format": "fieldsight-annotations/2", "frames": {}})",
+                                  "new.json", test::standardKinds());
         QVERIFY(!newer.ok());
         QVERIFY2(newer.error().message.find("new.json") != std::string::npos &&
                      newer.error().message.find("newer") != std::string::npos,
@@ -274,9 +272,9 @@ private slots:
                 "goalposts": [{"left": 1, "right": 4, "top": 0, "bottom": 9, "side": "left",
                                "concealed": true}],
                 "balls": [{"x": 10, "y": 20, "radius": 5, "colour": [255, 128, 0]}]}}})";
-        auto parsed = Annotations::fromJson(text, "a.json", kinds());
+        auto parsed = Annotations::fromJson(text, "a.json", test::standardKinds());
         QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
-        const std::string saved = parsed.value().toJson(kinds());
+        const std::string saved = parsed.value().toJson(test::standardKinds());
         const auto out = nlohmann::ordered_json::parse(saved);
         QCOMPARE(out.at("author"), nlohmann::ordered_json::parse(R"({"name": "kim"})"));
         const auto& frame = out.at("frames").at("f1.png");
@@ -297,9 +295,9 @@ private slots:
                  (std::vector<std::string>{"done", "goalposts", "balls", "note", "robots_3d"}));
         QCOMPARE(top, (std::vector<std::string>{"format", "frames", "author"}));
         // Read again, the same file.
-        auto again = Annotations::fromJson(saved, "b.json", kinds());
+        auto again = Annotations::fromJson(saved, "b.json", test::standardKinds());
         QVERIFY(again.ok());
-        QCOMPARE(again.value().toJson(kinds()), saved);
+        QCOMPARE(again.value().toJson(test::standardKinds()), saved);
 
         // An edit of the object keeps its own unknown keys (they go with its flags); removing
         // the object removes them.
@@ -311,7 +309,7 @@ private slots:
             flags.concealed = false;
             return flags;
         }());
-        const auto moved = nlohmann::json::parse(edited.toJson(kinds()));
+        const auto moved = nlohmann::json::parse(edited.toJson(test::standardKinds()));
         const auto& post = moved.at("frames").at("f1.png").at("goalposts").at(0);
         QCOMPARE(post.at("left").get<int>(), 2);
         QCOMPARE(post.at("side").get<std::string>(), std::string("left"));
@@ -326,7 +324,7 @@ private slots:
         const auto problem = [](const std::string& frames) {
             auto parsed = Annotations::fromJson(
                 "{\"format\": \"fieldsight-annotations/1\", \"frames\": " + frames + "}", "a.json",
-                kinds());
+                test::standardKinds());
             return parsed.ok() ? std::string() : parsed.error().message;
         };
         // One frame under two names would be scored twice, and exported once.
@@ -360,7 +358,8 @@ private slots:
 
     void aWrongTypeOfFormatIsNamedNotCalledMissing()
     {
-        auto number = Annotations::fromJson(R"({"format": 1, "frames": {}})", "a.json", kinds());
+        auto number = Annotations::fromJson(R"({"format": 1, "frames": {}})", "a.json",
+                                            test::standardKinds());
         QVERIFY(!number.ok());
         QVERIFY2(number.error().message.starts_with("a.json: \"format\" must be the string "
                                                     "\"fieldsight-annotations/1\", not a number") &&
@@ -377,7 +376,7 @@ private slots:
             text += (i ? "," : "") + std::string("\"f") + std::to_string(i) +
                     ".png\": {\"done\": true, \"balls\": [{\"x\": 1, \"y\": 2, \"radius\": 3}]}";
         text += "}}";
-        auto parsed = Annotations::fromJson(text, "a.json", kinds());
+        auto parsed = Annotations::fromJson(text, "a.json", test::standardKinds());
         QVERIFY(parsed.ok());
         QCOMPARE(parsed.value().frames.size(), std::size_t(kCount));
         QCOMPARE(parsed.value().frames.at("f19999.png").truth.list<Ball>().at(0).radius, 3.0);
@@ -385,7 +384,7 @@ private slots:
 
     void everyDrawnKindRoundTripsThroughItsEditShape()
     {
-        for (const PerceptKind* kind : kinds()) {
+        for (const PerceptKind* kind : test::standardKinds()) {
             if (kind->form == ShapeForm::None)
                 continue;
             EditShape shape;
@@ -418,7 +417,7 @@ private slots:
 
     void loadingAMissingFileNamesIt()
     {
-        auto loaded = Annotations::load("/nonexistent/annotations.json", kinds());
+        auto loaded = Annotations::load("/nonexistent/annotations.json", test::standardKinds());
         QVERIFY(!loaded.ok());
         QCOMPARE(
             loaded.error().message,

@@ -26,11 +26,11 @@
 
 namespace {
 
-constexpr int kWidth = 64;
-constexpr int kHeight = 48;
-constexpr int kFrames = 3;
+constexpr int kCliWidth = 64;
+constexpr int kCliHeight = 48;
+constexpr int kCliFrames = 3;
 
-struct Outcome
+struct CliOutcome
 {
     int status = -1;
     QByteArray out;
@@ -76,11 +76,11 @@ class TestCli : public QObject
 
 private:
     QTemporaryDir m_dir;
-    QString m_stream; ///< kFrames solid-green PNGs and default.lut
+    QString m_stream; ///< kCliFrames solid-green PNGs and default.lut
 
     /// Runs the executable; `without_display` removes DISPLAY, WAYLAND_DISPLAY and
     /// QT_QPA_PLATFORM from its environment.
-    Outcome fieldsight(const QStringList& args, bool without_display = false)
+    CliOutcome fieldsight(const QStringList& args, bool without_display = false)
     {
         QProcess process;
         if (without_display) {
@@ -91,7 +91,7 @@ private:
         }
         process.setWorkingDirectory(m_dir.path());
         process.start(QStringLiteral(FIELDSIGHT_EXE), args);
-        Outcome o;
+        CliOutcome o;
         if (!process.waitForFinished(120000)) {
             process.kill();
             process.waitForFinished();
@@ -105,11 +105,11 @@ private:
 
     QString path(const QString& name) const { return m_dir.filePath(name); }
 
-    void makeStream(const QString& folder, bool with_lut, int frames = kFrames)
+    void makeStream(const QString& folder, bool with_lut, int frames = kCliFrames)
     {
         QVERIFY(QDir().mkpath(folder));
         for (int i = 0; i < frames; ++i) {
-            QImage image(kWidth, kHeight, QImage::Format_RGB888);
+            QImage image(kCliWidth, kCliHeight, QImage::Format_RGB888);
             image.fill(QColor(40, 150 + 10 * i, 40));
             QVERIFY(image.save(folder + "/" + frameName(i), "PNG"));
         }
@@ -118,7 +118,7 @@ private:
     }
 
     /// Checks the one-line error contract: non-empty, one line, "fieldsight: " prefix.
-    static void verifyOneLineError(const Outcome& o, const QString& must_contain)
+    static void verifyOneLineError(const CliOutcome& o, const QString& must_contain)
     {
         const QString err = QString::fromLocal8Bit(o.err).trimmed();
         QVERIFY2(!err.isEmpty(), "no message on stderr");
@@ -146,7 +146,7 @@ private slots:
     void missingStreamExitsTwoNamingIt()
     {
         const QString missing = path("no_such_stream");
-        const Outcome o = fieldsight({"run", missing});
+        const CliOutcome o = fieldsight({"run", missing});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, missing);
         QVERIFY(!QFileInfo::exists(path("fieldsight-results.json")));
@@ -159,7 +159,7 @@ private slots:
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(QByteArray(1000, '\x02'));
         file.close();
-        const Outcome o = fieldsight({"run", m_stream, "--lut", lut, "--out", path("x.json")});
+        const CliOutcome o = fieldsight({"run", m_stream, "--lut", lut, "--out", path("x.json")});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, lut);
         QVERIFY(!QFileInfo::exists(path("x.json")));
@@ -194,7 +194,7 @@ private slots:
             {"lut", "build", s, "--out", s + "/frame_000000.png"},
         };
         for (const QStringList& args : cases) {
-            const Outcome o = fieldsight(args);
+            const CliOutcome o = fieldsight(args);
             QVERIFY2(o.status == 2, qPrintable(args.join(' ') + ": exit " +
                                                QString::number(o.status) + " " + o.err));
             verifyOneLineError(o, "nothing was written");
@@ -203,7 +203,7 @@ private slots:
                 QVERIFY2(bytes(s + "/" + f) == before[f], qPrintable(args.join(' ') + ": " + f));
         }
         // synth writes only into a new, empty or its own earlier folder, and replaces that whole.
-        const Outcome onto = fieldsight({"synth", "--frames", "2", "--out", s});
+        const CliOutcome onto = fieldsight({"synth", "--frames", "2", "--out", s});
         QCOMPARE(onto.status, 2);
         verifyOneLineError(onto, "not an earlier synth output");
         for (const QString& f : files)
@@ -216,7 +216,7 @@ private slots:
         QCOMPARE(QDir(own).entryList({"frame_*.png"}, QDir::Files).size(), 2); // nothing mixed
 
         // A new file beside the frames is still fine.
-        const Outcome ok = fieldsight({"run", s, "--out", s + "/results.json"});
+        const CliOutcome ok = fieldsight({"run", s, "--out", s + "/results.json"});
         QCOMPARE(ok.status, 0);
         QVERIFY(QFileInfo::exists(s + "/results.json"));
     }
@@ -225,21 +225,21 @@ private slots:
     {
         const QString bare = path("bare");
         makeStream(bare, false);
-        const Outcome o = fieldsight({"run", bare, "--out", path("bare.json")});
+        const CliOutcome o = fieldsight({"run", bare, "--out", path("bare.json")});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, "no LUT");
     }
 
     void unknownSkipStageExitsTwo()
     {
-        const Outcome o = fieldsight({"run", m_stream, "--skip", "ball,wormholes"});
+        const CliOutcome o = fieldsight({"run", m_stream, "--skip", "ball,wormholes"});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, "wormholes");
     }
 
     void badNumberExitsTwo()
     {
-        Outcome o = fieldsight({"run", m_stream, "--threads", "many"});
+        CliOutcome o = fieldsight({"run", m_stream, "--threads", "many"});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, "--threads");
         o = fieldsight({"bench", m_stream, "--repeat", "0"});
@@ -249,7 +249,7 @@ private slots:
 
     void unknownCommandAndMissingArgumentExitTwo()
     {
-        Outcome o = fieldsight({"frobnicate"});
+        CliOutcome o = fieldsight({"frobnicate"});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, "frobnicate");
         o = fieldsight({"run"});
@@ -263,7 +263,7 @@ private slots:
     /// The options `--help` of the command `words` lists, and checks its usage line names it.
     QSet<QString> helpOptions(const QStringList& words)
     {
-        const Outcome o = fieldsight(words + QStringList{"--help"});
+        const CliOutcome o = fieldsight(words + QStringList{"--help"});
         const QString help = QString::fromUtf8(o.out);
         const QString command = words.join(' ');
         [&] {
@@ -359,11 +359,11 @@ private slots:
         s.setByteOrder(QDataStream::LittleEndian);
         s.setFloatingPointPrecision(QDataStream::DoublePrecision);
         s.writeRawData("IMAG", 4);
-        s << qint32(1) << qint32(kWidth) << qint32(kHeight) << double(0.0) << quint8(0);
-        const QByteArray pixels(kWidth * kHeight * 4 / 2, '\x80');
+        s << qint32(1) << qint32(kCliWidth) << qint32(kCliHeight) << double(0.0) << quint8(0);
+        const QByteArray pixels(kCliWidth * kCliHeight * 4 / 2, '\x80');
         s.writeRawData(pixels.constData(), int(pixels.size()));
         file.close();
-        const Outcome o = fieldsight(
+        const CliOutcome o = fieldsight(
             {"run", strm, "--lut", m_stream + "/default.lut", "--out", path("cut.json")});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, strm);
@@ -377,7 +377,7 @@ private slots:
         QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
         file.write("this is not a PNG");
         file.close();
-        const Outcome o = fieldsight({"run", broken, "--out", path("broken.json")});
+        const CliOutcome o = fieldsight({"run", broken, "--out", path("broken.json")});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, frameName(1));
     }
@@ -386,7 +386,7 @@ private slots:
     {
         const QString empty = path("empty");
         QVERIFY(QDir().mkpath(empty));
-        const Outcome o = fieldsight({"run", empty, "--lut", m_stream + "/default.lut"});
+        const CliOutcome o = fieldsight({"run", empty, "--lut", m_stream + "/default.lut"});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, empty);
     }
@@ -394,7 +394,7 @@ private slots:
     void runWritesResultsJson()
     {
         const QString out = path("results.json");
-        const Outcome o = fieldsight({"run", m_stream, "--out", out});
+        const CliOutcome o = fieldsight({"run", m_stream, "--out", out});
         QCOMPARE(o.status, 0);
         QVERIFY2(o.err.isEmpty(), o.err.constData());
 
@@ -402,13 +402,13 @@ private slots:
         QCOMPARE(doc.value("format").toString(), QString("fieldsight-results/1"));
         QCOMPARE(doc.value("stream").toString(), m_stream);
         QVERIFY(doc.value("lut").toString().endsWith("default.lut"));
-        QCOMPARE(doc.value("width").toInt(), kWidth);
-        QCOMPARE(doc.value("height").toInt(), kHeight);
+        QCOMPARE(doc.value("width").toInt(), kCliWidth);
+        QCOMPARE(doc.value("height").toInt(), kCliHeight);
 
         const QJsonArray frames = doc.value("frames").toArray();
-        QCOMPARE(frames.size(), kFrames);
+        QCOMPARE(frames.size(), kCliFrames);
         double total_sum = 0;
-        for (int i = 0; i < kFrames; ++i) {
+        for (int i = 0; i < kCliFrames; ++i) {
             const QJsonObject f = frames[i].toObject();
             QCOMPARE(f.value("index").toInt(-1), i);
             QCOMPARE(f.value("name").toString(), frameName(i));
@@ -425,14 +425,14 @@ private slots:
             const QJsonArray hull = f.value("green_horizon").toArray();
             QVERIFY(!hull.isEmpty());
             QCOMPARE(hull.first().toArray().at(0).toDouble(), 0.0);
-            QCOMPARE(hull.last().toArray().at(0).toDouble(), double(kWidth - 1));
+            QCOMPARE(hull.last().toArray().at(0).toDouble(), double(kCliWidth - 1));
             // An all-green frame has no ball, goal or obstacle.
             QCOMPARE(f.value("balls").toArray().size(), 0);
             QCOMPARE(f.value("goalposts").toArray().size(), 0);
         }
         const QJsonObject summary = doc.value("summary").toObject();
-        QCOMPARE(summary.value("frames").toInt(), kFrames);
-        QVERIFY(qAbs(summary.value("mean_ms").toDouble() - total_sum / kFrames) < 1e-3);
+        QCOMPARE(summary.value("frames").toInt(), kCliFrames);
+        QVERIFY(qAbs(summary.value("mean_ms").toDouble() - total_sum / kCliFrames) < 1e-3);
         QVERIFY(summary.value("std_ms").toDouble() >= 0);
         QCOMPARE(summary.value("stage_mean_ms").toObject().size(), 7);
         // The one-line summary names the output.
@@ -442,14 +442,14 @@ private slots:
     void unwritableOutputIsAFailureWhileRunning()
     {
         const QString out = path("no_such_folder/results.json");
-        const Outcome o = fieldsight({"run", m_stream, "--out", out});
+        const CliOutcome o = fieldsight({"run", m_stream, "--out", out});
         QCOMPARE(o.status, 1);
         verifyOneLineError(o, out);
     }
 
     void runWritesToStandardOutputWithDash()
     {
-        const Outcome o = fieldsight({"run", m_stream, "--out", "-", "--limit", "2"});
+        const CliOutcome o = fieldsight({"run", m_stream, "--out", "-", "--limit", "2"});
         QCOMPARE(o.status, 0);
         const QJsonObject doc = parseObject(o.out);
         QCOMPARE(doc.value("format").toString(), QString("fieldsight-results/1"));
@@ -461,11 +461,11 @@ private slots:
     void skippedStageListIsAbsent()
     {
         const QString out = path("skip.json");
-        const Outcome o = fieldsight({"run", m_stream, "--skip", "ball", "--out", out});
+        const CliOutcome o = fieldsight({"run", m_stream, "--skip", "ball", "--out", out});
         QCOMPARE(o.status, 0);
         const QJsonObject doc = readObject(out);
         const QJsonArray frames = doc.value("frames").toArray();
-        QCOMPARE(frames.size(), kFrames);
+        QCOMPARE(frames.size(), kCliFrames);
         for (const QJsonValue& v : frames) {
             const QJsonObject f = v.toObject();
             QVERIFY(!f.contains("balls"));
@@ -484,29 +484,29 @@ private slots:
                  0);
         const QJsonArray one = readObject(path("t1.json")).value("frames").toArray();
         const QJsonArray three = readObject(path("t3.json")).value("frames").toArray();
-        QCOMPARE(one.size(), kFrames);
-        QCOMPARE(three.size(), kFrames);
-        for (int i = 0; i < kFrames; ++i)
+        QCOMPARE(one.size(), kCliFrames);
+        QCOMPARE(three.size(), kCliFrames);
+        for (int i = 0; i < kCliFrames; ++i)
             QCOMPARE(withoutTimes(three[i].toObject()), withoutTimes(one[i].toObject()));
     }
 
     void benchPrintsTableAndJson()
     {
         const QString json = path("bench.json");
-        const Outcome o = fieldsight({"bench", m_stream, "--repeat", "2", "--json", json});
+        const CliOutcome o = fieldsight({"bench", m_stream, "--repeat", "2", "--json", json});
         QCOMPARE(o.status, 0);
         QVERIFY(o.out.contains("pipeline / floor"));
         QVERIFY(o.out.contains("pipeline / baseline"));
         const QJsonObject doc = readObject(json);
         QCOMPARE(doc.value("format").toString(), QString("fieldsight-bench/1"));
-        QCOMPARE(doc.value("frames").toInt(), kFrames);
+        QCOMPARE(doc.value("frames").toInt(), kCliFrames);
         QCOMPARE(doc.value("repeat").toInt(), 2);
         const QJsonObject pipeline = doc.value("pipeline").toObject();
-        QCOMPARE(pipeline.value("samples").toInt(), 2 * kFrames);
+        QCOMPARE(pipeline.value("samples").toInt(), 2 * kCliFrames);
         QVERIFY(pipeline.value("mean_ms").toDouble() > 0);
         QCOMPARE(pipeline.value("stages").toObject().size(), 7);
-        QCOMPARE(doc.value("floor").toObject().value("samples").toInt(), 2 * kFrames);
-        QCOMPARE(doc.value("baseline").toObject().value("samples").toInt(), 2 * kFrames);
+        QCOMPARE(doc.value("floor").toObject().value("samples").toInt(), 2 * kCliFrames);
+        QCOMPARE(doc.value("baseline").toObject().value("samples").toInt(), 2 * kCliFrames);
         QVERIFY(doc.value("baseline").toObject().value("mean_ms").toDouble() > 0);
         QVERIFY(doc.value("ratios").toObject().value("pipeline_over_floor").toDouble() > 0);
         QVERIFY(doc.value("ratios").toObject().value("pipeline_over_baseline").toDouble() > 0);
@@ -519,7 +519,7 @@ private slots:
         makeStream(lab_a, true, 3);
         makeStream(lab_b, true, 2);
         const QString json = path("bench_two.json");
-        const Outcome o = fieldsight({"bench", lab_a, lab_b, "--repeat", "2", "--json", json});
+        const CliOutcome o = fieldsight({"bench", lab_a, lab_b, "--repeat", "2", "--json", json});
         QCOMPARE(o.status, 0);
         QVERIFY2(o.err.isEmpty(), o.err.constData());
 
@@ -579,7 +579,7 @@ private slots:
         const QString good = path("bench_good");
         makeStream(good, true, 2);
         const QString missing = path("bench_missing");
-        Outcome o = fieldsight({"bench", good, missing});
+        CliOutcome o = fieldsight({"bench", good, missing});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, missing);
         QVERIFY2(o.out.isEmpty(), o.out.constData()); // checked before anything is timed
@@ -625,7 +625,7 @@ private slots:
         file.close();
 
         const QString json = path("eval.json");
-        const Outcome o = fieldsight({"eval", m_stream, "--truth", truth_path, "--json", json});
+        const CliOutcome o = fieldsight({"eval", m_stream, "--truth", truth_path, "--json", json});
         QCOMPARE(o.status, 0);
         QVERIFY(o.out.contains("precision = 1 when TP+FP = 0"));
         const QJsonObject doc = readObject(json);
@@ -655,7 +655,7 @@ private slots:
         QVERIFY(o.out.contains("field line "));
 
         // A missing truth file is bad input.
-        const Outcome missing = fieldsight({"eval", m_stream, "--truth", path("nope.json")});
+        const CliOutcome missing = fieldsight({"eval", m_stream, "--truth", path("nope.json")});
         QCOMPARE(missing.status, 2);
         verifyOneLineError(missing, path("nope.json"));
 
@@ -666,7 +666,7 @@ private slots:
         undone.write(R"({"format": "fieldsight-annotations/1", "frames": {
             "frame_000000.png": {"done": false}}})");
         undone.close();
-        const Outcome nothing = fieldsight({"eval", m_stream, "--truth", none_done});
+        const CliOutcome nothing = fieldsight({"eval", m_stream, "--truth", none_done});
         QCOMPARE(nothing.status, 2);
         verifyOneLineError(nothing, none_done);
         QVERIFY(nothing.err.contains("nothing to score"));
@@ -686,7 +686,7 @@ private slots:
             QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
             file.write(R"({"format": "fieldsight-annotations/1", "frames": )" + frames + "}");
             file.close();
-            const Outcome o = fieldsight({"eval", m_stream, "--truth", truth});
+            const CliOutcome o = fieldsight({"eval", m_stream, "--truth", truth});
             QCOMPARE(o.status, 2);
             verifyOneLineError(o, truth);
             QVERIFY2(o.err.contains(reason.toUtf8()) && !o.err.contains('\0'), o.err.constData());
@@ -705,7 +705,7 @@ private slots:
         file.close();
         const QString out = path("built.lut");
         const QString kept = path("kept_samples.json");
-        const Outcome o = fieldsight(
+        const CliOutcome o = fieldsight(
             {"lut", "build", m_stream, "--samples", samples, "--out", out, "--save-samples", kept});
         QCOMPARE(o.status, 0);
         QVERIFY2(o.out.contains("2 samples over 2 frames, 300 pixels"), o.out.constData());
@@ -721,7 +721,7 @@ private slots:
         QCOMPARE(saved.value("samples").toArray().size(), 2);
 
         // `lut convert` still works beside it.
-        const Outcome convert = fieldsight({"lut", "convert", out, path("converted.lut")});
+        const CliOutcome convert = fieldsight({"lut", "convert", out, path("converted.lut")});
         QCOMPARE(convert.status, 0);
     }
 
@@ -734,7 +734,7 @@ private slots:
             {"frame": "frame_000000.png", "colour": "mauve", "polygon": [[0,0],[9,0],[0,9]]}]})");
         file.close();
         const QString out = path("never.lut");
-        Outcome o = fieldsight({"lut", "build", m_stream, "--samples", samples, "--out", out});
+        CliOutcome o = fieldsight({"lut", "build", m_stream, "--samples", samples, "--out", out});
         QCOMPARE(o.status, 2);
         verifyOneLineError(o, samples);
         verifyOneLineError(o, "mauve");
@@ -762,7 +762,7 @@ private slots:
     void lutBuildFromAnnotationsWithoutSamples()
     {
         const QString out = path("lab2.lut");
-        const Outcome o = fieldsight(
+        const CliOutcome o = fieldsight(
             {"lut", "build", QString::fromStdString(fieldsight::test::sampleStreamsDir() + "/lab2"),
              "--out", out});
         QCOMPARE(o.status, 0);
@@ -783,7 +783,7 @@ private slots:
     {
         // The process has no display and no platform plugin set: the painter needs neither.
         const QString dir = path("render");
-        const Outcome o = fieldsight(
+        const CliOutcome o = fieldsight(
             {"run", QString::fromStdString(fieldsight::test::sampleStreamsDir() + "/lab1"),
              "--limit", "3", "--out", path("render.json"), "--render", dir, "--layers", "truth",
              "--scale", "1"},
@@ -807,7 +807,7 @@ private slots:
 
         // --layers without --render is a usage error, an unknown layer bad input.
         QCOMPARE(fieldsight({"run", m_stream, "--layers", "truth"}).status, 2);
-        const Outcome bad = fieldsight({"run", m_stream, "--render", dir, "--layers", "nope"});
+        const CliOutcome bad = fieldsight({"run", m_stream, "--render", dir, "--layers", "nope"});
         QCOMPARE(bad.status, 2);
         verifyOneLineError(bad, "nope");
     }
@@ -819,11 +819,11 @@ private slots:
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(R"({"format": "fieldsight-params/1", "stages": {"ball": {"min_radius": 500}}})");
         file.close();
-        const Outcome bad = fieldsight({"run", m_stream, "--params", params});
+        const CliOutcome bad = fieldsight({"run", m_stream, "--params", params});
         QCOMPARE(bad.status, 2);
         verifyOneLineError(bad, params); // the message names the file
         // --set wins over the file.
-        const Outcome good = fieldsight(
+        const CliOutcome good = fieldsight(
             {"run", m_stream, "--params", params, "--set", "ball.min_radius=3", "--out", "-"});
         QCOMPARE(good.status, 0);
     }
@@ -831,13 +831,13 @@ private slots:
     void numericOptionsOutOfRangeAreRefusedNotTruncated()
     {
         // 4294967312 would become 16 through an int (issue 10).
-        const Outcome wide = fieldsight({"synth", "--width", "4294967312", "--out", path("w")});
+        const CliOutcome wide = fieldsight({"synth", "--width", "4294967312", "--out", path("w")});
         QCOMPARE(wide.status, 2);
         QVERIFY2(wide.err.contains("--width: expected a whole number from 16 to 8192, got "
                                    "'4294967312'"),
                  qPrintable(wide.err));
         QVERIFY(!QFileInfo::exists(path("w")));
-        const Outcome frames = fieldsight({"run", m_stream, "--limit", "99999999999"});
+        const CliOutcome frames = fieldsight({"run", m_stream, "--limit", "99999999999"});
         QCOMPARE(frames.status, 2);
         QVERIFY(frames.err.contains("--limit"));
     }
@@ -852,7 +852,7 @@ private slots:
         for (int i = 0; i < 500; ++i)
             noise.write(QByteArray::number(i * 7919 % 10007).repeated(3));
         noise.close();
-        const Outcome bad_video = fieldsight({"run", video, "--out", path("v.json")});
+        const CliOutcome bad_video = fieldsight({"run", video, "--out", path("v.json")});
         QCOMPARE(bad_video.status, 2);
         verifyOneLineError(bad_video, video);
 
@@ -864,7 +864,7 @@ private slots:
         png.seek(20); // inside the header's height: its checksum no longer matches
         png.write("\x7f", 1);
         png.close();
-        const Outcome bad_png = fieldsight({"run", folder, "--out", path("p.json")});
+        const CliOutcome bad_png = fieldsight({"run", folder, "--out", path("p.json")});
         QCOMPARE(bad_png.status, 2);
         verifyOneLineError(bad_png, frame);
     }
@@ -873,7 +873,7 @@ private slots:
     {
         // Qt used to abort with four lines about platform plugins (and a core dump).
         for (const QStringList& args : {QStringList{"gui", m_stream}, QStringList{}}) {
-            const Outcome o = fieldsight(args, true);
+            const CliOutcome o = fieldsight(args, true);
             QCOMPARE(o.status, 2);
             verifyOneLineError(o, "no display");
             QVERIFY2(o.err.contains("xvfb-run") && o.err.contains("QT_QPA_PLATFORM=offscreen"),
@@ -887,7 +887,7 @@ private slots:
         const QString folder = path("with_broken_entry");
         makeStream(folder, true, 2);
         QVERIFY(QFile::link(folder + "/gone.png", folder + "/frame_000005.png"));
-        const Outcome o = fieldsight({"run", folder, "--out", path("broken.json")});
+        const CliOutcome o = fieldsight({"run", folder, "--out", path("broken.json")});
         QCOMPARE(o.status, 0);
         QCOMPARE(QString::fromLocal8Bit(o.err).trimmed(),
                  "fieldsight: warning: " + folder +
@@ -905,7 +905,7 @@ private slots:
         const std::string to = folder.toStdString() + "/caf\xe9.png";
         std::filesystem::rename(from, to);
         const QString json = path("latin1.json");
-        const Outcome o = fieldsight({"run", folder, "--out", json});
+        const CliOutcome o = fieldsight({"run", folder, "--out", json});
         QCOMPARE(o.status, 0);
         const QJsonObject doc = readObject(json);
         const QJsonArray frames = doc.value("frames").toArray();

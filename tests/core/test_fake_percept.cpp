@@ -2,6 +2,7 @@
 // to the pipeline by this test alone, is scored by matchFrame and by `eval` (its table row and
 // its JSON class, the standard classes' bytes unchanged) and exported to COCO, with no change
 // anywhere else.
+#include "support/in_process_command.h"
 #include "support/test_suite.h"
 #include "commands/commands.h"
 #include "support/fake_percept.h"
@@ -22,25 +23,7 @@ using namespace fieldsight::test;
 
 namespace {
 
-struct Outcome
-{
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-Outcome run(const Pipeline& pipeline, const QStringList& args)
-{
-    std::ostringstream out, err;
-    const cli::Context ctx{pipeline, out, err};
-    Outcome o;
-    o.status = cli::runHeadless(args.value(0), QStringList{"fieldsight"} + args.mid(1), ctx);
-    o.out = out.str();
-    o.err = err.str();
-    return o;
-}
-
-nlohmann::json readJson(const QString& path)
+nlohmann::json jsonOfFile(const QString& path)
 {
     auto text = readWholeFile(path.toStdString());
     return text ? nlohmann::json::parse(text.value()) : nlohmann::json();
@@ -119,12 +102,12 @@ private slots:
     void evalScoresTheKind()
     {
         const QString fake_json = m_dir.filePath("fake_eval.json");
-        const Outcome fake =
-            run(m_pipeline, {"eval", m_stream, "--json", fake_json, "--threads", "1"});
+        const CommandOutcome fake =
+            runInProcess(m_pipeline, {"eval", m_stream, "--json", fake_json, "--threads", "1"});
         QVERIFY2(fake.status == 0, fake.err.c_str());
         const QString standard_json = m_dir.filePath("standard_eval.json");
-        const Outcome standard = run(Pipeline::standard(),
-                                     {"eval", m_stream, "--json", standard_json, "--threads", "1"});
+        const CommandOutcome standard = runInProcess(
+            Pipeline::standard(), {"eval", m_stream, "--json", standard_json, "--threads", "1"});
         QVERIFY2(standard.status == 0, standard.err.c_str());
 
         // The table: the standard rows as they were, and a row of its own after them. The
@@ -136,8 +119,8 @@ private slots:
         QCOMPARE(fake.out.substr(0, at) + fake.out.substr(at + row.size()), standard.out);
 
         // The JSON: its class after the standard ones, which are unchanged.
-        const nlohmann::json f = readJson(fake_json);
-        const nlohmann::json s = readJson(standard_json);
+        const nlohmann::json f = jsonOfFile(fake_json);
+        const nlohmann::json s = jsonOfFile(standard_json);
         const nlohmann::json& spot = f["classes"]["fake_spot"];
         QCOMPARE(spot["tp"].get<int>(), 1);
         QCOMPARE(spot["fp"].get<int>(), 29);
@@ -157,9 +140,10 @@ private slots:
     void cocoExportHasTheKind()
     {
         const QString coco = m_dir.filePath("coco.json");
-        const Outcome o = run(m_pipeline, {"annotations", "export", m_stream, "--coco", coco});
+        const CommandOutcome o =
+            runInProcess(m_pipeline, {"annotations", "export", m_stream, "--coco", coco});
         QVERIFY2(o.status == 0, o.err.c_str());
-        const nlohmann::json doc = readJson(coco);
+        const nlohmann::json doc = jsonOfFile(coco);
         int category = -1;
         for (const auto& c : doc["categories"])
             if (c["name"] == "fake_spots")

@@ -4,6 +4,7 @@
 //
 // What adding it took: the Stage subclass and its percept type with PerceptTraits (below), and
 // one Pipeline::add call (the line stage_list.cpp would get).
+#include "support/in_process_command.h"
 #include "support/test_suite.h"
 #include "commands/commands.h"
 #include "support/fake_stage.h"
@@ -22,17 +23,6 @@
 using namespace fieldsight;
 using namespace fieldsight::test;
 
-namespace {
-
-struct Outcome
-{
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-} // namespace
-
 class TestFakeStage : public QObject
 {
     Q_OBJECT
@@ -41,21 +31,12 @@ class TestFakeStage : public QObject
     QTemporaryDir m_dir;
     std::string m_stream;
 
-    Outcome run(const QStringList& args)
-    {
-        std::ostringstream out, err;
-        const cli::Context ctx{m_pipeline, out, err};
-        Outcome o;
-        o.status = cli::runHeadless(args.value(0), QStringList{"fieldsight"} + args.mid(1), ctx);
-        o.out = out.str();
-        o.err = err.str();
-        return o;
-    }
+    CommandOutcome run(const QStringList& args) { return runInProcess(m_pipeline, args); }
 
     nlohmann::json runJson(const QStringList& extra)
     {
         const QString out = m_dir.filePath("results.json");
-        const Outcome o =
+        const CommandOutcome o =
             run(QStringList{"run", QString::fromStdString(m_stream), "--out", out} + extra);
         if (o.status != 0)
             qWarning() << o.err.c_str();
@@ -91,12 +72,12 @@ private slots:
         const nlohmann::json doc = runJson({"--limit", "1", "--set", "fake.level=3"});
         QCOMPARE(doc["frames"][0]["fake_marks"][0]["value"].get<double>(), 3.0);
 
-        const Outcome bad = run({"run", QString::fromStdString(m_stream), "--set", "fake.level=11",
-                                 "--out", m_dir.filePath("x.json")});
+        const CommandOutcome bad = run({"run", QString::fromStdString(m_stream), "--set",
+                                        "fake.level=11", "--out", m_dir.filePath("x.json")});
         QCOMPARE(bad.status, 2);
         QVERIFY2(QString::fromStdString(bad.err).contains("fake.level"), bad.err.c_str());
-        const Outcome unknown = run({"run", QString::fromStdString(m_stream), "--set",
-                                     "fake.nope=1", "--out", m_dir.filePath("x.json")});
+        const CommandOutcome unknown = run({"run", QString::fromStdString(m_stream), "--set",
+                                            "fake.nope=1", "--out", m_dir.filePath("x.json")});
         QCOMPARE(unknown.status, 2);
         QVERIFY2(QString::fromStdString(unknown.err).contains("nope"), unknown.err.c_str());
     }
@@ -113,9 +94,9 @@ private slots:
     void renderDrawsTheFakeLayerAndPercept()
     {
         const QString dir = m_dir.filePath("render");
-        const Outcome o = run({"run", QString::fromStdString(m_stream), "--limit", "1", "--out",
-                               m_dir.filePath("r.json"), "--render", dir, "--layers",
-                               "fake,percepts.fake_marks", "--scale", "1"});
+        const CommandOutcome o = run({"run", QString::fromStdString(m_stream), "--limit", "1",
+                                      "--out", m_dir.filePath("r.json"), "--render", dir,
+                                      "--layers", "fake,percepts.fake_marks", "--scale", "1"});
         QCOMPARE(o.status, 0);
         const QImage image(dir + "/frame_000000.png");
         QVERIFY(!image.isNull());
@@ -130,8 +111,8 @@ private slots:
         QCOMPARE(image.pixel(42, 32), qRgb(mark.r, mark.g, mark.b)); // 5 px square
         QVERIFY(image.pixel(44, 30) != qRgb(mark.r, mark.g, mark.b));
 
-        const Outcome bad = run({"run", QString::fromStdString(m_stream), "--limit", "1",
-                                 "--render", dir, "--layers", "fake.nothing"});
+        const CommandOutcome bad = run({"run", QString::fromStdString(m_stream), "--limit", "1",
+                                        "--render", dir, "--layers", "fake.nothing"});
         QCOMPARE(bad.status, 2);
         QVERIFY2(QString::fromStdString(bad.err).contains("fake.nothing"), bad.err.c_str());
     }
@@ -177,7 +158,7 @@ private slots:
 
     void usageListsTheFakeStage()
     {
-        const Outcome o = run({"help"});
+        const CommandOutcome o = run({"help"});
         QCOMPARE(o.status, 0);
         QVERIFY2(QString::fromStdString(o.out).contains("obstacles, fake."), o.out.c_str());
     }

@@ -20,7 +20,7 @@ using namespace fieldsight;
 
 namespace {
 
-constexpr int kFrames = 24;
+constexpr int kDriftFrames = 24;
 constexpr int kEnd = 8; ///< frames scored at each end of the stream
 
 /// lab2 at 320 x 240, seed 3, its light drifting by `drift`; default.lut in the light at
@@ -29,7 +29,7 @@ synth::SynthOptions drifting(const std::string& out, double drift, double table_
 {
     synth::SynthOptions options;
     options.scenario = synth::Scenario::Lab2;
-    options.frames = kFrames;
+    options.frames = kDriftFrames;
     options.seed = 3;
     options.out_dir = out;
     options.drift = drift;
@@ -95,13 +95,13 @@ private slots:
             Annotations::load(m_stream + "/annotations.json", Pipeline::standard().perceptKinds());
         QVERIFY(truth.ok());
         m_truth = std::move(truth).value();
-        QCOMPARE(int(m_truth.frames.size()), kFrames);
+        QCOMPARE(int(m_truth.frames.size()), kDriftFrames);
     }
 
     void theFirstLightsTableLosesTheBallAsTheLightDriftsAndFollowingItKeepsIt()
     {
         const Annotations early = framesOf(m_truth, 0, kEnd);
-        const Annotations late = framesOf(m_truth, kFrames - kEnd, kEnd);
+        const Annotations late = framesOf(m_truth, kDriftFrames - kEnd, kEnd);
         const double static_early = ballRecall(early, "", false, 2);
         const double static_late = ballRecall(late, "", false, 2);
         const double adapt_late = ballRecall(late, "", true, 2);
@@ -123,15 +123,15 @@ private slots:
         auto input = openStreamInput(m_stream, "");
         QVERIFY(input.ok());
         input.value().adapt = LightTrackingOptions{};
-        auto one = runStream(input.value(), firstFrames(kFrames), 1);
-        auto two = runStream(input.value(), firstFrames(kFrames), 2);
-        const std::vector<std::size_t> last{kFrames - 1};
+        auto one = runStream(input.value(), firstFrames(kDriftFrames), 1);
+        auto two = runStream(input.value(), firstFrames(kDriftFrames), 2);
+        const std::vector<std::size_t> last{kDriftFrames - 1};
         auto alone = runStream(input.value(), last, 1);
         QVERIFY(one.ok() && two.ok() && alone.ok());
-        QCOMPARE(one.value().light.size(), std::size_t(kFrames));
-        QCOMPARE(two.value().light.size(), std::size_t(kFrames));
-        QCOMPARE(alone.value().light.size(), std::size_t(kFrames));
-        for (std::size_t i = 0; i < std::size_t(kFrames); ++i) {
+        QCOMPARE(one.value().light.size(), std::size_t(kDriftFrames));
+        QCOMPARE(two.value().light.size(), std::size_t(kDriftFrames));
+        QCOMPARE(alone.value().light.size(), std::size_t(kDriftFrames));
+        for (std::size_t i = 0; i < std::size_t(kDriftFrames); ++i) {
             QCOMPARE(one.value().light[i].gain, two.value().light[i].gain);
             QCOMPARE(one.value().light[i].gain, alone.value().light[i].gain);
             QCOMPARE(jsonOf(one.value().frames[i].percepts),

@@ -26,12 +26,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kFrames = 3;
+constexpr int kTurnedFrames = 3;
 
 std::vector<cv::Mat> scenes()
 {
     std::vector<cv::Mat> frames;
-    for (int i = 0; i < kFrames; ++i)
+    for (int i = 0; i < kTurnedFrames; ++i)
         frames.push_back(test::uprightScene(i));
     return frames;
 }
@@ -154,7 +154,7 @@ private slots:
         QCOMPARE(info.stream_orientation, Orientation::Half);
         QCOMPARE(info.width, 320);
         QCOMPARE(info.height, 240);
-        for (int i = 0; i < kFrames; ++i) {
+        for (int i = 0; i < kTurnedFrames; ++i) {
             auto frame = half.value()->read(std::size_t(i));
             QVERIFY(frame);
             QVERIFY2(samePixels(frame.value().ycbcr, test::uprightScene(i)),
@@ -175,8 +175,8 @@ private slots:
     {
         const nlohmann::json upright = detect(m_upright);
         QVERIFY(upright.is_array());
-        QCOMPARE(int(upright.size()), kFrames);
-        for (int i = 0; i < kFrames; ++i) {
+        QCOMPARE(int(upright.size()), kTurnedFrames);
+        for (int i = 0; i < kTurnedFrames; ++i) {
             // Not an empty comparison: the ball is found where it is drawn.
             const nlohmann::json& balls = upright[std::size_t(i)]["balls"];
             QCOMPARE(int(balls.size()), 1);
@@ -212,7 +212,7 @@ private slots:
             QCOMPARE(turned.value()->info().orientation, o);
             QCOMPARE(turned.value()->info().width, 320);
             QCOMPARE(turned.value()->info().height, 240);
-            for (int i = 0; i < kFrames; ++i) {
+            for (int i = 0; i < kTurnedFrames; ++i) {
                 auto frame = turned.value()->read(std::size_t(i));
                 QVERIFY(frame);
                 QVERIFY(samePixels(frame.value().ycbcr, test::uprightScene(i)));
@@ -346,7 +346,7 @@ private slots:
 
         // bench and eval take it too: the annotations are in the upright frame.
         nlohmann::json frames = nlohmann::json::object();
-        for (int i = 0; i < kFrames; ++i) {
+        for (int i = 0; i < kTurnedFrames; ++i) {
             char name[32];
             std::snprintf(name, sizeof name, "frame_%06d.png", i);
             frames[name] = {{"done", true},
@@ -366,8 +366,8 @@ private slots:
             return nlohmann::json::parse(readText(json.toStdString()))["classes"]["ball"]["tp"]
                 .get<int>();
         };
-        QCOMPARE(ballTp({"--orientation", "180"}), kFrames);
-        QVERIFY(ballTp({}) < kFrames);
+        QCOMPARE(ballTp({"--orientation", "180"}), kTurnedFrames);
+        QVERIFY(ballTp({}) < kTurnedFrames);
 
         const QString bench_json = m_dir.filePath("bench.json");
         const Outcome bench = fieldsight({"bench", QString::fromStdString(path("quarter_270")),

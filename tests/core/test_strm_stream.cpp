@@ -35,7 +35,7 @@ bool sameImage(const cv::Mat& a, const cv::Mat& b)
     return a.size() == b.size() && a.type() == b.type() && cv::norm(a, b, cv::NORM_INF) == 0;
 }
 
-std::string fileBytes(const std::string& path)
+std::string strmFileBytes(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -97,7 +97,7 @@ private slots:
         const std::vector<Frame> frames = {randomFrame(7, 5, 0.0, 1), randomFrame(7, 5, 33.25, 2),
                                            randomFrame(7, 5, 1e9 + 0.5, 3)};
         writeStrm(path, frames);
-        QCOMPARE(fileBytes(path).size(), 3 * recordSize(7, 5));
+        QCOMPARE(strmFileBytes(path).size(), 3 * recordSize(7, 5));
 
         auto opened = openStream(path);
         QVERIFY2(opened.ok(), opened.ok() ? "" : opened.error().message.c_str());
@@ -132,7 +132,7 @@ private slots:
         writeStrm(path, {frame});
         const std::string expected =
             header(1, 2, 1, 12.5, false) + std::string("\x0a\x14\x0a\x1e\x28\x32\x28\x3c", 8);
-        QCOMPARE(fileBytes(path), expected);
+        QCOMPARE(strmFileBytes(path), expected);
     }
 
     void flippedRecordIsStoredRotatedAndReadBackUpright()
@@ -142,7 +142,7 @@ private slots:
         const Frame frame = randomFrame(9, 4, 5.0, 7);
         writeStrm(path, {frame}, true);
 
-        const std::string bytes = fileBytes(path);
+        const std::string bytes = strmFileBytes(path);
         QCOMPARE(bytes[24], '\x01'); // the flipped flag
         // The first stored pixel is the frame's bottom-right pixel.
         const cv::Vec3b last = frame.ycbcr.at<cv::Vec3b>(3, 8);
@@ -233,7 +233,7 @@ private slots:
         QTemporaryDir dir;
         const std::string path = dir.filePath("magic.strm").toStdString();
         writeStrm(path, {randomFrame(4, 4, 0, 1), randomFrame(4, 4, 33, 2)});
-        std::string bytes = fileBytes(path);
+        std::string bytes = strmFileBytes(path);
         bytes.replace(recordSize(4, 4), 4, "JUNK");
         writeBytes(path, bytes);
         auto opened = openStream(path);
@@ -332,7 +332,7 @@ private slots:
         if (ref.empty())
             QSKIP("reference data absent");
         const std::string base = ref + "/bhuman2009_log_coltable/";
-        const std::string raw = fileBytes(base + "frames_raw_pixel/f000_320x240_Y0CbY1Cr.yuv");
+        const std::string raw = strmFileBytes(base + "frames_raw_pixel/f000_320x240_Y0CbY1Cr.yuv");
         QCOMPARE(raw.size(), std::size_t(320 * 240 * 4));
         QTemporaryDir dir;
         const std::string path = dir.filePath("bhuman.strm").toStdString();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "support/synthetic_frames.h"
+#include "visioncore/basics/colour_lut.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
@@ -17,6 +18,12 @@
 #include <functional>
 
 namespace fieldsight::test {
+
+/// A colour table's cells as bytes (to compare tables, or a table with a file).
+inline QByteArray tableBytes(const ColourLut& table)
+{
+    return QByteArray(reinterpret_cast<const char*>(table.data()), qsizetype(ColourLut::kCells));
+}
 
 /// Which files of a folder a copy takes, by name.
 using FileFilter = std::function<bool(const QString& name)>;

@@ -5,6 +5,7 @@
 // damaged file is never written over, and a recovery is offered only on its own stream. Each
 // checks the document, the file on disk or what the window shows. The test names no percept
 // kind: it takes them from the registry by their form.
+#include "support/percept_kinds.h"
 #include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
@@ -42,14 +43,6 @@ std::vector<const PerceptKind*> drawnKinds(const AnnotationsDocument& doc)
         if (kind->form != ShapeForm::None)
             kinds.push_back(kind);
     return kinds;
-}
-
-const PerceptKind* kindOfForm(const AnnotationsDocument& doc, ShapeForm form)
-{
-    for (const PerceptKind* kind : doc.kinds())
-        if (kind->form == form)
-            return kind;
-    return nullptr;
 }
 
 /// `frame` with objects of `kind` drawn as `shapes` (its list replaced).
@@ -130,8 +123,8 @@ private slots:
         MainWindow w;
         QVERIFY(showOn(w, copyStream("copy")));
         AnnotationsDocument& doc = w.session().annotations();
-        const PerceptKind* circle = kindOfForm(doc, ShapeForm::Circle);
-        const PerceptKind* box = kindOfForm(doc, ShapeForm::Box);
+        const PerceptKind* circle = test::kindOfForm(doc, ShapeForm::Circle);
+        const PerceptKind* box = test::kindOfForm(doc, ShapeForm::Box);
         QVERIFY(circle && box);
         FrameAnnotation first = withShapes({}, *circle, {{{{120, 90}}, 7}});
         first = withShapes(first, *box, {{{{10, 20}, {30, 80}}, 0}, {{{200, 10}, {220, 70}}, 0}});
@@ -172,7 +165,7 @@ private slots:
         AnnotationsDocument& doc = w.session().annotations();
         QVERIFY(go(w, 2));
         // An object annotated before is replaced, and the frame is no longer done.
-        const PerceptKind* circle = kindOfForm(doc, ShapeForm::Circle);
+        const PerceptKind* circle = test::kindOfForm(doc, ShapeForm::Circle);
         FrameAnnotation before = withShapes({}, *circle, {{{{5, 5}}, 3}});
         before.done = true;
         QVERIFY(doc.editFrame(name(w, 2), before, "Before"));
@@ -222,9 +215,9 @@ private slots:
             QVERIFY(doc.frame(name(w, f)) && doc.frame(name(w, f))->done);
             QVERIFY(done->isChecked());
         }
-        QVERIFY(doc.editFrame(name(w, 4),
-                              withShapes({}, *kindOfForm(doc, ShapeForm::Circle), {{{{9, 9}}, 4}}),
-                              "Frame 4"));
+        QVERIFY(doc.editFrame(
+            name(w, 4), withShapes({}, *test::kindOfForm(doc, ShapeForm::Circle), {{{{9, 9}}, 4}}),
+            "Frame 4"));
         const auto& states = w.annotationStrip().states();
         QCOMPARE(states.done, (std::vector<bool>{true, true, false, true, false, false}));
         QCOMPARE(states.annotated, (std::vector<bool>{true, true, false, true, true, false}));

@@ -1,5 +1,6 @@
 // The annotations document: one undo step per edit (a drag merged into one), saves that reload
 // identically, a damaged file never written over, and recovery only onto the stream it belongs to.
+#include "support/percept_kinds.h"
 #include "support/test_suite.h"
 #include "ui/document/editing_session.h"
 
@@ -19,14 +20,6 @@ using namespace fieldsight::test;
 namespace {
 
 /// The first kind drawn as `form` (the test names no kind: it takes them from the registry).
-const PerceptKind* kindOfForm(const AnnotationsDocument& doc, ShapeForm form)
-{
-    for (const PerceptKind* kind : doc.kinds())
-        if (kind->form == form)
-            return kind;
-    return nullptr;
-}
-
 /// `frame` with one more object of `kind` drawn as `shape`.
 FrameAnnotation withShape(FrameAnnotation frame, const PerceptKind& kind, const EditShape& shape)
 {
@@ -67,7 +60,7 @@ private slots:
         QVERIFY(session.open(m_a).ok());
         AnnotationsDocument& doc = session.annotations();
         QCOMPARE(doc.path(), QDir(m_a).filePath("annotations.json"));
-        const PerceptKind* circle = kindOfForm(doc, ShapeForm::Circle);
+        const PerceptKind* circle = test::kindOfForm(doc, ShapeForm::Circle);
         QVERIFY(circle);
         const std::string frame = session.stream().frameName(0).toStdString();
 
@@ -111,17 +104,17 @@ private slots:
         FrameAnnotation first;
         for (ShapeForm form :
              {ShapeForm::Circle, ShapeForm::Box, ShapeForm::Polyline, ShapeForm::Segment}) {
-            const PerceptKind* kind = kindOfForm(doc, form);
+            const PerceptKind* kind = test::kindOfForm(doc, form);
             QVERIFY(kind);
             const EditShape shape = form == ShapeForm::Circle ? EditShape{{{40, 50}}, 6}
                                                               : EditShape{{{10, 20}, {30, 60}}, 0};
             first = withShape(first, *kind, shape);
         }
         first.done = true;
-        first.setFlags(kindOfForm(doc, ShapeForm::Circle)->truth_key, 0,
+        first.setFlags(test::kindOfForm(doc, ShapeForm::Circle)->truth_key, 0,
                        ObjectFlags{true, 3, true, true, false});
         FrameAnnotation second;
-        second.reviewed.insert(std::string(kindOfForm(doc, ShapeForm::Box)->truth_key));
+        second.reviewed.insert(std::string(test::kindOfForm(doc, ShapeForm::Box)->truth_key));
         AnnotationsDocument::FrameEdits edits;
         edits.emplace(f0, first);
         edits.emplace(f1, second);

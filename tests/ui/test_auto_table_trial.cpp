@@ -114,11 +114,6 @@ QString scoreLine(const char* name, const ClassScore& c)
         .arg(c.recall(), 0, 'f', 3);
 }
 
-QByteArray bytesOf(const ColourLut& lut)
-{
-    return QByteArray(reinterpret_cast<const char*>(lut.data()), qsizetype(ColourLut::kCells));
-}
-
 } // namespace
 
 class TestAutoTableTrial : public QObject
@@ -172,8 +167,8 @@ private slots:
         QVERIFY(waitForEvaluation(w));
         QVERIFY2(w.session().evaluation().report(),
                  qPrintable("no annotated frames to score: " + w.session().evaluation().problem()));
-        const QByteArray empty = bytesOf(ColourLut());
-        QCOMPARE(bytesOf(w.session().lut().table()), empty);
+        const QByteArray empty = test::tableBytes(ColourLut());
+        QCOMPARE(test::tableBytes(w.session().lut().table()), empty);
 
         // The user: one click on the editor's button (the menu's item is the same action).
         auto* dock = w.findChild<QDockWidget*>("lut_dock");
@@ -201,8 +196,8 @@ private slots:
         auto made = buildAutoLut(*reader.value());
         QVERIFY2(made.ok(), made.ok() ? "" : made.error().message.c_str());
         const AutoLut& a = made.value();
-        QCOMPARE(bytesOf(w.session().lut().table()), bytesOf(a.lut));
-        QCOMPARE(w.session().lut().undoStack().count(), bytesOf(a.lut) == empty ? 0 : 1);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), test::tableBytes(a.lut));
+        QCOMPARE(w.session().lut().undoStack().count(), test::tableBytes(a.lut) == empty ? 0 : 1);
         if (a.goal_colour)
             for (const StageDescriptor& s : w.session().pipeline().descriptors())
                 for (const ParamInfo& p : s.params)

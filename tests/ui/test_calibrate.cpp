@@ -39,16 +39,6 @@ using fieldsight::ui::MainWindow;
 
 namespace {
 
-QByteArray bytesOf(const ColourLut& lut)
-{
-    return QByteArray(reinterpret_cast<const char*>(lut.data()), qsizetype(ColourLut::kCells));
-}
-
-QByteArray lutBytes(MainWindow& w)
-{
-    return bytesOf(w.session().lut().table());
-}
-
 QAction* autoAction(MainWindow& w)
 {
     return w.findChild<QAction*>(QStringLiteral("calibrate.auto_lut"));
@@ -146,7 +136,7 @@ private slots:
         const QByteArray on_disk = fileBytes(stream + "/default.lut");
         MainWindow w;
         QVERIFY(showAndOpen(w, stream));
-        const QByteArray before = lutBytes(w);
+        const QByteArray before = test::tableBytes(w.session().lut().table());
         const ColourLut before_table = w.session().lut().table();
         const int steps = w.session().lut().undoStack().count();
         QVERIFY(!w.isWindowModified());
@@ -164,8 +154,8 @@ private slots:
         QVERIFY(reader.ok());
         auto expected = buildAutoLut(*reader.value());
         QVERIFY2(expected.ok(), expected.ok() ? "" : expected.error().message.c_str());
-        const QByteArray made = bytesOf(expected.value().lut);
-        QCOMPARE(lutBytes(w), made);
+        const QByteArray made = test::tableBytes(expected.value().lut);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), made);
         QVERIFY2(made != before, "the sample's table and the automatic one should differ");
         QCOMPARE(w.session().lut().undoStack().count(), steps + 1);
         QVERIFY(w.session().undoGroup().activeStack() == &w.session().lut().undoStack());
@@ -190,7 +180,7 @@ private slots:
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QTest::keyClick(&w, Qt::Key_Z, Qt::ControlModifier);
-        QVERIFY2(lutBytes(w) == before,
+        QVERIFY2(test::tableBytes(w.session().lut().table()) == before,
                  qPrintable(QString("lut steps %1 index %2, focus %3, active %4")
                                 .arg(w.session().lut().undoStack().count())
                                 .arg(w.session().lut().undoStack().index())
@@ -201,7 +191,7 @@ private slots:
                                      &w.session().lut().undoStack())));
         QVERIFY(!w.session().lut().modified());
         QTest::keyClick(&w, Qt::Key_Y, Qt::ControlModifier);
-        QCOMPARE(lutBytes(w), made);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), made);
         QVERIFY(dialogs.unanswered.isEmpty());
     }
 
@@ -215,7 +205,7 @@ private slots:
         QVERIFY(!goals_before.empty());
         for (double g : goals_before)
             QVERIFY(g != double(int(Colour::Blue)));
-        const QByteArray before = lutBytes(w);
+        const QByteArray before = test::tableBytes(w.session().lut().table());
 
         // A table without orange (the ball is lost) and a blue goal.
         AutoLut made;
@@ -234,7 +224,7 @@ private slots:
         QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(true));
-        QCOMPARE(lutBytes(w), bytesOf(made.lut));
+        QCOMPARE(test::tableBytes(w.session().lut().table()), test::tableBytes(made.lut));
         QCOMPARE(w.session().lut().undoStack().count(), lut_steps + 1);
         QCOMPARE(w.session().settings().undoStack().count(), settings_steps + 1);
         for (double g : goalColours(w))
@@ -253,7 +243,7 @@ private slots:
 
         // Undo takes back the table first, then the goal colour.
         w.session().undo();
-        QCOMPARE(lutBytes(w), before);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), before);
         for (double g : goalColours(w))
             QCOMPARE(g, double(int(Colour::Blue)));
         w.session().undo();
@@ -274,7 +264,7 @@ private slots:
         const QString stream = copyStream("cancel");
         MainWindow w;
         QVERIFY(showAndOpen(w, stream));
-        const QByteArray before = lutBytes(w);
+        const QByteArray before = test::tableBytes(w.session().lut().table());
         const int steps = w.session().lut().undoStack().count();
         // A run that goes on until it is cancelled (at most a minute).
         w.calibrate().run().setBuilder(
@@ -310,7 +300,7 @@ private slots:
         QVERIFY(cancel);
         QTest::mouseClick(cancel, Qt::LeftButton);
         QCOMPARE(waitForRun(done, 10000), std::optional<bool>(false));
-        QCOMPARE(lutBytes(w), before);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), before);
         QCOMPARE(w.session().lut().undoStack().count(), steps);
         QVERIFY2(w.lastMessage().contains("cancelled"), qPrintable(w.lastMessage()));
         QVERIFY(autoAction(w)->isEnabled());
@@ -322,7 +312,7 @@ private slots:
         const QString stream = copyStream("damaged");
         MainWindow w;
         QVERIFY(showAndOpen(w, stream));
-        const QByteArray before = lutBytes(w);
+        const QByteArray before = test::tableBytes(w.session().lut().table());
         const int steps = w.session().lut().undoStack().count();
         // Damaged after the stream opened (the window shows frame 0, read before).
         const QString frame = stream + "/frame_000010.png";
@@ -333,7 +323,7 @@ private slots:
         QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(false));
-        QCOMPARE(lutBytes(w), before);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), before);
         QCOMPARE(w.session().lut().undoStack().count(), steps);
         QVERIFY(w.messageBar().isVisible());
         QVERIFY2(w.messageBar().text().contains("frame_000010.png"),

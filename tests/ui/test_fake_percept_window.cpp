@@ -28,11 +28,11 @@ using namespace fieldsight::test;
 namespace {
 
 /// Screen px per image px: image pixel (x, y) is at widget ((x + 0.5) * 2, ...).
-constexpr double kZoom = 2;
+constexpr double kSpotZoom = 2;
 
-QPoint at(PointF p)
+QPoint spotAt(PointF p)
 {
-    return QPoint(int((p.x + 0.5) * kZoom), int((p.y + 0.5) * kZoom));
+    return QPoint(int((p.x + 0.5) * kSpotZoom), int((p.y + 0.5) * kSpotZoom));
 }
 
 QString cell(ui::EvaluationPanel& panel, int row, int column)
@@ -129,17 +129,17 @@ private slots:
         QCOMPARE(tool->info().name, QString("Fake spots"));
         w.session().stream().setCurrentIndex(1);
         QVERIFY(waitForFrame(w, 1));
-        w.view().setZoom(kZoom);
+        w.view().setZoom(kSpotZoom);
         w.view().setImageOrigin({0, 0});
         w.tools().activate(tool->info().id);
         QUndoStack& undo = w.session().annotations().undoStack();
         const int steps = undo.index();
         const PointF from{kFakeSpotSeen.x, kFakeSpotSeen.y};
         const PointF to{from.x + 3, from.y + 4}; // radius 5
-        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(from));
-        QTest::mouseMove(&w.view(), at({from.x + 1, from.y + 2}));
-        QTest::mouseMove(&w.view(), at(to));
-        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(to));
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, spotAt(from));
+        QTest::mouseMove(&w.view(), spotAt({from.x + 1, from.y + 2}));
+        QTest::mouseMove(&w.view(), spotAt(to));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, spotAt(to));
         QCOMPARE(undo.index(), steps + 1);
         const FrameAnnotation* frame =
             w.session().annotations().frame(ui::toLocalPath(w.session().stream().frameName(1)));

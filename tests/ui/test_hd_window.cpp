@@ -23,7 +23,7 @@ using namespace fieldsight;
 using fieldsight::ui::MainWindow;
 
 namespace {
-constexpr int kFrames = 3;
+constexpr int kHdFrames = 3;
 }
 
 class TestHdWindow : public QObject
@@ -37,7 +37,7 @@ private slots:
         QSettings().clear();
         synth::SynthOptions options;
         options.scenario = synth::Scenario::Lab2;
-        options.frames = kFrames;
+        options.frames = kHdFrames;
         options.width = 1280;
         options.height = 720;
         options.out_dir = m_dir.filePath("hd").toStdString();
@@ -54,7 +54,7 @@ private slots:
         w.resize(1280, 800);
         w.show();
         QVERIFY(test::openAndWait(w, m_dir.filePath("hd")));
-        for (int i = 0; i < kFrames; ++i) {
+        for (int i = 0; i < kHdFrames; ++i) {
             if (i > 0) {
                 QTest::keyClick(&w, Qt::Key_Right);
                 QVERIFY(test::waitForFrame(w, std::size_t(i)));

@@ -38,12 +38,6 @@ bool writeAll(const QString& path, const QByteArray& bytes)
     return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
 }
 
-QByteArray lutBytes(MainWindow& w)
-{
-    const ColourLut& t = w.session().lut().table();
-    return QByteArray(reinterpret_cast<const char*>(t.data()), qsizetype(ColourLut::kCells));
-}
-
 /// A frame marked done (an edit of its own, as a user's "D" makes).
 FrameAnnotation doneFrame()
 {
@@ -228,7 +222,7 @@ private slots:
         QVERIFY(showOn(*w, stream));
         ui::LutDocument& lut = w->session().lut();
         QCOMPARE(QFileInfo(lut.path()).canonicalFilePath(), QFileInfo(file).canonicalFilePath());
-        const QByteArray opened = lutBytes(*w);
+        const QByteArray opened = test::tableBytes(w->session().lut().table());
         QVERIFY(lut.edit("Mine", {{0, lut.table().cell(0), Colour(3)}}));
         // Another window saves a table with one other cell changed.
         ColourLut theirs = ColourLut::load(file.toStdString()).value();
@@ -240,10 +234,10 @@ private slots:
         QTest::keyClick(w.get(), Qt::Key_S, Qt::ControlModifier);
         QCOMPARE(dialogs.asked.value(0), QStringLiteral("Changed on disk"));
         QCOMPARE(fileBytes(file), written);
-        QCOMPARE(lutBytes(*w), written);
+        QCOMPARE(test::tableBytes(w->session().lut().table()), written);
         QVERIFY(!lut.modified());
         lut.undoStack().undo();
-        QVERIFY(lutBytes(*w) != written);
+        QVERIFY(test::tableBytes(w->session().lut().table()) != written);
         QCOMPARE(int(lut.table().data()[0]), 3);
         QCOMPARE(int(lut.table().data()[7]), int(std::uint8_t(opened[7])));
 
@@ -454,7 +448,7 @@ private slots:
     {
         MainWindow w;
         QVERIFY(showOn(w, copyStream("walk")));
-        const QByteArray opened = lutBytes(w);
+        const QByteArray opened = test::tableBytes(w.session().lut().table());
         ui::LutDocument& lut = w.session().lut();
         QVERIFY(lut.edit("Classify a cell", {{0, lut.table().cell(0), Colour(3)}}));
         AnnotationsDocument& doc = w.session().annotations();
@@ -466,7 +460,7 @@ private slots:
         QVERIFY2(undo->text().contains("Classify a cell") && undo->text().contains("Colour table"),
                  qPrintable(undo->text()));
         QTest::keySequence(&w, QKeySequence::Undo);
-        QCOMPARE(lutBytes(w), opened);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), opened);
         QVERIFY(!undo->isEnabled());
     }
 };

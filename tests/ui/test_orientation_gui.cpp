@@ -34,12 +34,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kFrames = 3;
+constexpr int kTurnedFrames = 3;
 
 std::vector<cv::Mat> scenes()
 {
     std::vector<cv::Mat> frames;
-    for (int i = 0; i < kFrames; ++i)
+    for (int i = 0; i < kTurnedFrames; ++i)
         frames.push_back(test::uprightScene(i));
     return frames;
 }
@@ -272,7 +272,7 @@ private slots:
             QVERIFY(open(w, m_half, m_no_orange));
             stored = appearedAfterClick(w);
         }
-        QCOMPARE(int(upright.size()), kFrames);
+        QCOMPARE(int(upright.size()), kTurnedFrames);
         for (int appeared : upright)
             QVERIFY(appeared >= 1); // the disc is found in every frame once orange is known
         QCOMPARE(turned, upright);

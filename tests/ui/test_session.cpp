@@ -35,12 +35,6 @@ using fieldsight::ui::MainWindow;
 
 namespace {
 
-QByteArray lutBytes(MainWindow& w)
-{
-    const ColourLut& t = w.session().lut().table();
-    return QByteArray(reinterpret_cast<const char*>(t.data()), qsizetype(ColourLut::kCells));
-}
-
 /// Every detection of a frame with its fields, one per line.
 QString detections(const ui::FrameOutput& out)
 {
@@ -56,7 +50,7 @@ QAction* menuAction(MainWindow& w, const char* name)
 }
 
 /// The widget point of image pixel `p` (the view at zoom 1, image at its top-left corner).
-QPoint at(QPoint p)
+QPoint pointAt(QPoint p)
 {
     return p;
 }
@@ -106,7 +100,7 @@ class TestSession : public QObject
         w.tools().activate(QStringLiteral("click"));
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
-        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(60, 200)));
         if (!QTest::qWaitFor([&] { return w.session().lut().findRecovery().has_value(); }, 5000))
             return {};
         return w.session().lut().table();
@@ -142,16 +136,16 @@ private slots:
         // The colour table: a click with the Click tool.
         QTest::keyClick(&w, Qt::Key_C);
         QCOMPARE(w.tools().active().info().id, QStringLiteral("click"));
-        const QByteArray lut_before = lutBytes(w);
+        const QByteArray lut_before = test::tableBytes(w.session().lut().table());
         const QImage classified_before = w.session().stream().current()->classified;
-        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(60, 200)));
         QVERIFY(waitForFrame(w, 0));
         const QImage classified_after = w.session().stream().current()->classified;
         QVERIFY(classified_after != classified_before);
-        const QByteArray lut_after = lutBytes(w);
+        const QByteArray lut_after = test::tableBytes(w.session().lut().table());
         QVERIFY(lut_after != lut_before);
         QVERIFY(undoRedo(
-            w, [&] { return lutBytes(w); }, lut_before, lut_after));
+            w, [&] { return test::tableBytes(w.session().lut().table()); }, lut_before, lut_after));
         // The frame follows the table both ways (the worker observes the document).
         menuAction(w, "edit.undo")->trigger();
         QVERIFY(waitForFrame(w, 0));
@@ -171,9 +165,9 @@ private slots:
         };
         const QByteArray samples_before =
             QByteArray::fromStdString(lutSamplesToJson(w.session().samples().samples()));
-        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(QPoint(100, 200)));
-        QTest::mouseMove(&w.view(), at(QPoint(130, 220)));
-        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(QPoint(130, 220)));
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(100, 200)));
+        QTest::mouseMove(&w.view(), pointAt(QPoint(130, 220)));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(130, 220)));
         const QByteArray samples_after = samples();
         QVERIFY(samples_after != samples_before);
         QVERIFY(undoRedo(w, samples, samples_before, samples_after));
@@ -265,7 +259,7 @@ private slots:
         w.tools().activate(QStringLiteral("click"));
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
-        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(60, 200)));
         QCOMPARE(w.session().undoGroup().activeStack(), &w.session().lut().undoStack());
         QCOMPARE(documents->currentText(), QStringLiteral("Colour table"));
         QVERIFY(w.session().settings().setParam("fake", "level", 4).ok());
@@ -273,15 +267,15 @@ private slots:
         QCOMPARE(documents->currentText(), QStringLiteral("Pipeline settings"));
         // Undo now takes back the parameter, not the click; choosing the table in the dock
         // makes Undo take back the click.
-        const QByteArray edited = lutBytes(w);
+        const QByteArray edited = test::tableBytes(w.session().lut().table());
         menuAction(w, "edit.undo")->trigger();
         QCOMPARE(w.session().settings().paramValue("fake", "level"),
                  m_pipeline.find("fake")->params.front().default_value);
-        QCOMPARE(lutBytes(w), edited);
+        QCOMPARE(test::tableBytes(w.session().lut().table()), edited);
         documents->setCurrentIndex(0);
         emit documents->activated(0);
         menuAction(w, "edit.undo")->trigger();
-        QVERIFY(lutBytes(w) != edited);
+        QVERIFY(test::tableBytes(w.session().lut().table()) != edited);
         QVERIFY(!w.session().lut().modified());
     }
 
@@ -311,8 +305,8 @@ private slots:
         // Sent to the view itself: QTest::mouseMove without a button moves the cursor and lets
         // the platform deliver the move later, mapped through whatever the layout is by then
         // (on a loaded machine once "Fake at 41,30").
-        QMouseEvent hover(QEvent::MouseMove, QPointF(at(QPoint(40, 30))),
-                          QPointF(w.view().mapToGlobal(at(QPoint(40, 30)))), Qt::NoButton,
+        QMouseEvent hover(QEvent::MouseMove, QPointF(pointAt(QPoint(40, 30))),
+                          QPointF(w.view().mapToGlobal(pointAt(QPoint(40, 30)))), Qt::NoButton,
                           Qt::NoButton, Qt::NoModifier);
         QCoreApplication::sendEvent(&w.view(), &hover);
         QCOMPARE(w.tools().preview().text, QStringLiteral("Fake at 40,30"));
@@ -321,9 +315,9 @@ private slots:
         QVERIFY(!lit.isNull());
         QVERIFY(qAlpha(lit.pixel(40, 30)) > 0);
         QCOMPARE(qAlpha(lit.pixel(44, 30)), 0);
-        QTest::mousePress(&w.view(), Qt::LeftButton, {}, at(QPoint(40, 30)));
-        QTest::mouseMove(&w.view(), at(QPoint(45, 32)));
-        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, at(QPoint(45, 32)));
+        QTest::mousePress(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(40, 30)));
+        QTest::mouseMove(&w.view(), pointAt(QPoint(45, 32)));
+        QTest::mouseRelease(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(45, 32)));
         QCOMPARE(FakeTool::presses, 1);
         QVERIFY(FakeTool::moves >= 1);
         QCOMPARE(FakeTool::releases, 1);
@@ -336,7 +330,7 @@ private slots:
 
         // The pan tool does not reach it.
         w.tools().activate(QStringLiteral("pan"));
-        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(40, 30)));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(40, 30)));
         QCOMPARE(FakeTool::presses, 1);
     }
 
@@ -388,7 +382,7 @@ private slots:
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
         const ColourLut old_table = w.session().lut().table();
-        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(60, 200)));
         QVERIFY(waitForFrame(w, 2));
         w.navigator().step(1);
         QVERIFY(waitForFrame(w, 3));
@@ -445,11 +439,12 @@ private slots:
         MainWindow w(m_pipeline);
         w.show();
         QVERIFY(openAndWait(w, a));
-        const QByteArray a_before = lutBytes(w);
+        const QByteArray a_before = test::tableBytes(w.session().lut().table());
         QVERIFY(!w.files().recoverLut());
         QVERIFY2(w.lastMessage().contains(c) && w.lastMessage().contains("kept"),
                  qPrintable(w.lastMessage()));
-        QCOMPARE(lutBytes(w), a_before); // nothing applied to A's table
+        QCOMPARE(test::tableBytes(w.session().lut().table()),
+                 a_before); // nothing applied to A's table
         QVERIFY(!w.session().lut().modified());
         QVERIFY(w.session().lut().findRecovery().has_value()); // the edits are not lost
         QCOMPARE(QFileInfo(w.session().stream().streamSpec()).canonicalFilePath(),
@@ -521,7 +516,7 @@ private slots:
         w.tools().activate(QStringLiteral("click"));
         w.view().setZoom(1);
         w.view().setImageOrigin({0, 0});
-        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, at(QPoint(60, 200)));
+        QTest::mouseClick(&w.view(), Qt::LeftButton, {}, pointAt(QPoint(60, 200)));
         QVERIFY(w.session().lut().modified());
         const QString before = w.session().stream().streamSpec();
         dialogs.answers.push_back(QMessageBox::Cancel);

@@ -6,6 +6,7 @@
 // Pixel inspector show everything; Help > Keyboard shortcuts fits an 800 px screen and lists
 // only keys a user can press; annotated frames the stream lacks are named when it opens. The
 // test names no percept kind: it takes them from the registry by their form.
+#include "support/percept_kinds.h"
 #include "support/test_suite.h"
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
@@ -44,14 +45,6 @@ using namespace fieldsight;
 using namespace fieldsight::test;
 
 namespace {
-
-const PerceptKind* kindOfForm(const std::vector<const PerceptKind*>& kinds, ShapeForm form)
-{
-    for (const PerceptKind* kind : kinds)
-        if (kind->form == form)
-            return kind;
-    return nullptr;
-}
 
 QString qstr(std::string_view s)
 {
@@ -144,7 +137,7 @@ private slots:
     void truthShowsOverADetectionOnIt()
     {
         const Pipeline& pipeline = Pipeline::standard();
-        const PerceptKind* circle = kindOfForm(pipeline.perceptKinds(), ShapeForm::Circle);
+        const PerceptKind* circle = test::kindOfForm(pipeline.perceptKinds(), ShapeForm::Circle);
         QVERIFY(circle);
         PerceptSet detected;
         PerceptEntry& d = detected.entry(*circle);
