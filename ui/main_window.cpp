@@ -1,8 +1,8 @@
 #include "ui/main_window.h"
 
 #include "ui/actions/annotations_file.h"
-#include "ui/actions/calibrate_commands.h"
-#include "ui/actions/fit_commands.h"
+#include "ui/actions/calibrate_actions.h"
+#include "ui/actions/fit_actions.h"
 #include "ui/actions/disk_watch.h"
 #include "ui/actions/session_files.h"
 #include "ui/actions/menus.h"
@@ -53,8 +53,8 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     buildCentre();
     m_files = new SessionFiles(*this);
     m_annotation_files = new AnnotationsFile(*this);
-    m_calibrate = new CalibrateCommands(*this);
-    m_fit = new FitCommands(*this);
+    m_calibrate = new CalibrateActions(*this);
+    m_fit = new FitActions(*this);
     m_disk_watch = new DiskWatch(*this);
     buildStatusBar();
     buildDocks();

@@ -24,13 +24,13 @@ namespace fieldsight::ui {
 class AnnotationsFile;
 class AnnotationStrip;
 class BookmarksPanel;
-class CalibrateCommands;
+class CalibrateActions;
 class CellHighlights;
 class DetectionsPanel;
 class DiskWatch;
 class EffectStrip;
 class EvaluationPanel;
-class FitCommands;
+class FitActions;
 class FrameMarksStrip;
 class LightStrip;
 class SessionFiles;
@@ -58,8 +58,8 @@ public:
     ToolManager& tools() { return *m_tools; }
     SessionFiles& files() { return *m_files; }
     AnnotationsFile& annotationFiles() { return *m_annotation_files; }
-    CalibrateCommands& calibrate() { return *m_calibrate; }
-    FitCommands& fit() { return *m_fit; }
+    CalibrateActions& calibrate() { return *m_calibrate; }
+    FitActions& fit() { return *m_fit; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -121,8 +121,8 @@ private:
     ToolManager* m_tools = nullptr;
     SessionFiles* m_files = nullptr;
     AnnotationsFile* m_annotation_files = nullptr;
-    CalibrateCommands* m_calibrate = nullptr;
-    FitCommands* m_fit = nullptr;
+    CalibrateActions* m_calibrate = nullptr;
+    FitActions* m_fit = nullptr;
     FrameRecorder* m_recorder = nullptr;
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;

@@ -9,7 +9,7 @@
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/actions/calibrate_commands.h"
+#include "ui/actions/calibrate_actions.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/panels/evaluation_panel.h"
@@ -34,7 +34,7 @@
 using namespace fieldsight;
 using namespace fieldsight::test;
 using fieldsight::ui::AutoLutRun;
-using fieldsight::ui::CalibrateCommands;
+using fieldsight::ui::CalibrateActions;
 using fieldsight::ui::MainWindow;
 
 namespace {
@@ -151,7 +151,7 @@ private slots:
         const int steps = w.session().lut().undoStack().count();
         QVERIFY(!w.isWindowModified());
 
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
         QTest::keyClick(&w, Qt::Key_A, Qt::ControlModifier | Qt::ShiftModifier);
         QVERIFY(w.calibrate().running() || !done.isEmpty());
         const auto applied = waitForRun(done);
@@ -231,7 +231,7 @@ private slots:
         const int lut_steps = w.session().lut().undoStack().count();
         const int settings_steps = w.session().settings().undoStack().count();
 
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(true));
         QCOMPARE(lutBytes(w), bytesOf(made.lut));
@@ -290,7 +290,7 @@ private slots:
                 }
                 return Result<AutoLut>(partial);
             });
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
         // The editor's button, clicked.
         auto* button = w.lutPanel().findChild<QToolButton*>(QStringLiteral("calibrate.auto_lut"));
         QVERIFY(button);
@@ -330,7 +330,7 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
         QVERIFY(f.write("not a picture") > 0);
         f.close();
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(false));
         QCOMPARE(lutBytes(w), before);
@@ -356,7 +356,7 @@ private slots:
                     std::this_thread::sleep_for(std::chrono::milliseconds(10));
                 return Result<AutoLut>(made);
             });
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QVERIFY(w.calibrate().running());
         QVERIFY(openAndWait(w, second));

@@ -39,7 +39,7 @@ void addNavigateMenu(MainWindow& window);
 /// What is set on the annotated object selected (concealed, keyframe, propagation).
 void addObjectMenu(QMenuBar& bar, const MenuTarget& target);
 void addPipelineMenu(MainWindow& window);
-/// The automatic table (CalibrateCommands), with its button in the LUT editor.
+/// The automatic table (CalibrateActions), with its button in the LUT editor.
 void addCalibrateMenu(MainWindow& window);
 void addAnnotateMenu(QMenuBar& bar, const MenuTarget& target);
 void addHelpMenu(MainWindow& window);

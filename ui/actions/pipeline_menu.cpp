@@ -1,8 +1,8 @@
 // Pipeline: run the frame again, reset, parameter files (loading one is an undoable edit),
 // comparing the table and parameters in use with others over the annotated frames, and fitting
-// the parameters to those frames (FitCommands).
+// the parameters to those frames (FitActions).
 #include "ui/actions/disk_conflict.h"
-#include "ui/actions/fit_commands.h"
+#include "ui/actions/fit_actions.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
@@ -143,16 +143,16 @@ void addPipelineMenu(MainWindow& w)
     compare->setObjectName(QStringLiteral("pipeline.compare_ab"));
     compare->setToolTip(QObject::tr("Run the annotated frames with another table or parameter set "
                                     "and list the frames it fixes and breaks"));
-    FitCommands* fit = &w.fit();
+    FitActions* fit = &w.fit();
     QAction* fit_action = addMenuItem(pipe, QObject::tr("Fit to annotations…"),
                                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), fit,
-                                      &FitCommands::fitToAnnotations);
+                                      &FitActions::fitToAnnotations);
     fit_action->setObjectName(QStringLiteral("pipeline.fit_annotations"));
     fit_action->setToolTip(QObject::tr(
         "Search the stages' parameters for the best score on the annotated frames, show the "
         "scores before and after on the fitted and held-out frames, then apply (one undo step)"));
     // Greyed while the search runs: a second click would only wait for the first.
-    QObject::connect(fit, &FitCommands::finished, fit_action,
+    QObject::connect(fit, &FitActions::finished, fit_action,
                      [fit_action] { fit_action->setEnabled(true); });
     QObject::connect(fit_action, &QAction::triggered, fit_action,
                      [fit_action, fit] { fit_action->setEnabled(!fit->running()); });

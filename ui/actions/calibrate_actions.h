@@ -14,11 +14,11 @@ namespace fieldsight::ui {
 
 class MainWindow;
 
-class CalibrateCommands : public QObject
+class CalibrateActions : public QObject
 {
     Q_OBJECT
 public:
-    explicit CalibrateCommands(MainWindow& window);
+    explicit CalibrateActions(MainWindow& window);
 
     /// Calibrate > Automatic table: starts the run over the stream shown (nothing while one
     /// runs; a message when there is no stream of files).

@@ -20,13 +20,13 @@ namespace fieldsight::ui {
 class FitResultDialog;
 class MainWindow;
 
-class FitCommands : public QObject
+class FitActions : public QObject
 {
     Q_OBJECT
 public:
     static constexpr int kDefaultBudget = 300;
 
-    explicit FitCommands(MainWindow& window);
+    explicit FitActions(MainWindow& window);
 
     /// Pipeline > Fit to annotations: asks the budget (starting from the last one), then
     /// start(). Nothing while a search runs.

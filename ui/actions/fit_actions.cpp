@@ -1,4 +1,5 @@
-#include "ui/actions/fit_commands.h"
+// Pipeline > Fit to annotations: the search started, its progress, its result shown and applied.
+#include "ui/actions/fit_actions.h"
 
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
@@ -30,10 +31,10 @@ std::size_t scoredFrames(const Annotations& truth, const Pipeline& pipeline)
 
 } // namespace
 
-FitCommands::FitCommands(MainWindow& window) : QObject(&window), m_window(window)
+FitActions::FitActions(MainWindow& window) : QObject(&window), m_window(window)
 {
     m_run = new TuneRun(this);
-    connect(m_run, &TuneRun::finished, this, &FitCommands::onFinished);
+    connect(m_run, &TuneRun::finished, this, &FitActions::onFinished);
     // Parameters fitted to other frames are not this stream's: a search over a stream closed or
     // turned meanwhile is dropped, and a result shown for another stream closes.
     StreamDocument& stream = window.session().stream();
@@ -49,17 +50,17 @@ FitCommands::FitCommands(MainWindow& window) : QObject(&window), m_window(window
     connect(&stream, &StreamDocument::orientationChanged, this, stale);
 }
 
-FitResultDialog* FitCommands::resultDialog() const
+FitResultDialog* FitActions::resultDialog() const
 {
     return m_dialog;
 }
 
-void FitCommands::setBudget(int budget)
+void FitActions::setBudget(int budget)
 {
     m_budget = std::clamp(budget, kMinBudget, kMaxBudget);
 }
 
-void FitCommands::fitToAnnotations()
+void FitActions::fitToAnnotations()
 {
     if (m_run->running() || !ready())
         return;
@@ -74,7 +75,7 @@ void FitCommands::fitToAnnotations()
     start(m_budget);
 }
 
-bool FitCommands::ready()
+bool FitActions::ready()
 {
     EditingSession& session = m_window.session();
     StreamDocument& stream = session.stream();
@@ -103,7 +104,7 @@ bool FitCommands::ready()
     return true;
 }
 
-bool FitCommands::start(int budget)
+bool FitActions::start(int budget)
 {
     if (m_run->running() || !ready())
         return false;
@@ -157,7 +158,7 @@ bool FitCommands::start(int budget)
     return true;
 }
 
-void FitCommands::onFinished(const Result<TuneResult>& result)
+void FitActions::onFinished(const Result<TuneResult>& result)
 {
     if (m_stale) {
         m_window.showMessage(tr("Fit to annotations dropped: the stream changed while it ran; "
@@ -192,7 +193,7 @@ void FitCommands::onFinished(const Result<TuneResult>& result)
     emit finished(true);
 }
 
-bool FitCommands::apply(const TuneResult& result)
+bool FitActions::apply(const TuneResult& result)
 {
     PipelineSettings& settings = m_window.session().settings();
     const int changed = int(result.changes.size());

@@ -1,4 +1,5 @@
-#include "ui/actions/calibrate_commands.h"
+// Calibrate > Automatic table: the run started, its progress, and its table put in.
+#include "ui/actions/calibrate_actions.h"
 
 #include "ui/adapters/image_adapter.h"
 #include "ui/main_window.h"
@@ -23,8 +24,8 @@ bool isColourChoice(const ParamInfo& p)
 
 QString frameCount(std::size_t n)
 {
-    return n == 1 ? CalibrateCommands::tr("1 frame")
-                  : CalibrateCommands::tr("%1 frames").arg(QLocale().toString(qulonglong(n)));
+    return n == 1 ? CalibrateActions::tr("1 frame")
+                  : CalibrateActions::tr("%1 frames").arg(QLocale().toString(qulonglong(n)));
 }
 
 QString percent(double share)
@@ -34,10 +35,10 @@ QString percent(double share)
 
 } // namespace
 
-CalibrateCommands::CalibrateCommands(MainWindow& window) : QObject(&window), m_window(window)
+CalibrateActions::CalibrateActions(MainWindow& window) : QObject(&window), m_window(window)
 {
     m_run = new AutoLutRun(this);
-    connect(m_run, &AutoLutRun::finished, this, &CalibrateCommands::onFinished);
+    connect(m_run, &AutoLutRun::finished, this, &CalibrateActions::onFinished);
     // A table read from other frames is not this stream's: a run over a stream closed or turned
     // meanwhile is dropped.
     StreamDocument& stream = window.session().stream();
@@ -51,7 +52,7 @@ CalibrateCommands::CalibrateCommands(MainWindow& window) : QObject(&window), m_w
     connect(&stream, &StreamDocument::orientationChanged, this, stale);
 }
 
-void CalibrateCommands::automaticTable()
+void CalibrateActions::automaticTable()
 {
     if (m_run->running())
         return;
@@ -72,7 +73,7 @@ void CalibrateCommands::automaticTable()
                   [this] { m_run->cancel(); }});
 }
 
-void CalibrateCommands::onFinished(const Result<AutoLut>& result)
+void CalibrateActions::onFinished(const Result<AutoLut>& result)
 {
     if (m_stale) {
         m_window.showMessage(tr("Automatic table dropped: the stream changed while it was made; "
@@ -103,7 +104,7 @@ void CalibrateCommands::onFinished(const Result<AutoLut>& result)
     emit finished(true);
 }
 
-bool CalibrateCommands::setGoalColour(Colour goal)
+bool CalibrateActions::setGoalColour(Colour goal)
 {
     PipelineSettings& settings = m_window.session().settings();
     const double value = double(int(goal));
@@ -126,8 +127,8 @@ bool CalibrateCommands::setGoalColour(Colour goal)
     return true;
 }
 
-QString CalibrateCommands::summary(const AutoLut& made, std::size_t cells_changed,
-                                   bool goal_set) const
+QString CalibrateActions::summary(const AutoLut& made, std::size_t cells_changed,
+                                  bool goal_set) const
 {
     QStringList classes;
     for (const AutoLutClass& c : made.classes)
