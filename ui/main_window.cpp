@@ -32,6 +32,7 @@
 #include <QGuiApplication>
 #include <QLabel>
 #include <QMenu>
+#include <QMenuBar>
 #include <QMimeData>
 #include <QScreen>
 #include <QScrollArea>
@@ -51,27 +52,38 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_tools = new ToolManager(*m_session, tools, this);
     m_recorder = new FrameRecorder(m_session->stream(), this);
     buildCentre();
-    m_files = new SessionFiles(*this);
-    m_annotation_files = new AnnotationsFile(*this);
-    m_calibrate = new CalibrateActions(*this);
-    m_fit = new FitActions(*this);
-    m_disk_watch = new DiskWatch(*this);
+    const MenuTarget target{
+        *m_session,
+        *m_tools,
+        this,
+        [this](const QString& m, bool error) { showMessage(m, error); },
+        [this](const QString& m, int ms) { statusBar()->showMessage(m, ms); },
+        [this] { clearMessage(); },
+        [this] { return m_message_bar->isVisible() ? m_message_bar->text() : QString(); }};
+    m_annotation_files = new AnnotationsFile(target, *m_annotations_recovery_bar);
+    m_files = new SessionFiles(target, *m_annotation_files, *m_view, *m_recovery_bar);
+    connect(m_files, &SessionFiles::settingsToSave, this, &MainWindow::saveSettings);
+    m_calibrate = new CalibrateActions(target);
+    m_fit = new FitActions(target);
+    m_disk_watch = new DiskWatch(target, *m_annotation_files, *m_files, *m_disk_bar);
     buildStatusBar();
     buildDocks();
-    const MenuTarget target{*m_session, *m_tools, this,
-                            [this](const QString& m, bool error) { showMessage(m, error); },
-                            [this](const QString& m, int ms) { statusBar()->showMessage(m, ms); }};
     m_highlights =
         new CellHighlights(*m_view, m_session->stream(), m_uv->canvas().selection(), this);
-    addFileMenu(*this);
-    addEditMenu(*this);
-    addViewMenu(*this);
-    addNavigateMenu(*this);
-    addObjectMenu(*menuBar(), target);
-    addPipelineMenu(*this);
-    addCalibrateMenu(*this);
-    addAnnotateMenu(*menuBar(), target);
-    addHelpMenu(*this);
+    connect(m_files, &SessionFiles::compareCellsChosen, this, &MainWindow::showCompareCells);
+    const MenuParts parts{*m_view,      *m_navigator,  *m_files,     *m_annotation_files,
+                          *m_recorder,  *m_calibrate,  *m_fit,       *m_lut_panel,
+                          *m_bookmarks, *m_evaluation, *m_docks_menu};
+    QMenuBar& bar = *menuBar();
+    addFileMenu(bar, target, parts);
+    addEditMenu(bar, target, parts);
+    addViewMenu(bar, target, parts);
+    addNavigateMenu(bar, parts);
+    addObjectMenu(bar, target);
+    addPipelineMenu(bar, target, parts);
+    addCalibrateMenu(bar, parts);
+    addAnnotateMenu(bar, target);
+    addHelpMenu(bar, target);
 
     // The window shows what the documents say; it relays nothing between them.
     StreamDocument& stream = m_session->stream();

@@ -59,7 +59,6 @@ public:
     SessionFiles& files() { return *m_files; }
     AnnotationsFile& annotationFiles() { return *m_annotation_files; }
     CalibrateActions& calibrate() { return *m_calibrate; }
-    FitActions& fit() { return *m_fit; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -82,9 +81,7 @@ public:
     OfferBar& annotationsRecoveryBar() { return *m_annotations_recovery_bar; }
     /// The offer to reload a document's file another window or a program changed (DiskWatch).
     OfferBar& diskBar() { return *m_disk_bar; }
-    DiskWatch& diskWatch() { return *m_disk_watch; }
     AnnotationStrip& annotationStrip() { return m_timeline->annotationStrip(); }
-    QMenu& docksMenu() { return *m_docks_menu; }
 
     /// Shows `text` in the message bar (red for an error, blue for a note) and the status bar.
     void showMessage(const QString& text, bool error = true);
@@ -95,8 +92,6 @@ public:
     void clearMessage();
     /// The frame view as shown.
     QImage snapshot();
-    /// Lights the current frame's pixels in `cells` (the compare dialog's chosen row).
-    void showCompareCells(const std::vector<std::uint32_t>& cells);
 
     /// Remembers the window, the view and the tools (WindowSettings).
     void saveSettings() const;
@@ -116,6 +111,8 @@ private:
     /// The detections and inspector panels show the current frame (after the view painted it).
     void refreshPanels();
     void updateTitle();
+    /// Lights the current frame's pixels in `cells` (the compare dialog's chosen row).
+    void showCompareCells(const std::vector<std::uint32_t>& cells);
 
     EditingSession* m_session = nullptr;
     ToolManager* m_tools = nullptr;

@@ -135,7 +135,7 @@ private slots:
                 pipeline = top->menu();
         QVERIFY(pipeline);
         QVERIFY(pipeline->actions().contains(action));
-        QVERIFY(ui::shortcutsHtml(w).contains("Fit to annotations"));
+        QVERIFY(ui::shortcutsHtml(*w.menuBar()).contains("Fit to annotations"));
         // Without a stream it says what to do, asks nothing and runs nothing.
         action->trigger();
         QVERIFY(!fitActions(w).running());

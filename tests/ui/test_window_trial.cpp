@@ -25,6 +25,7 @@
 
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QMenuBar>
 #include <QDockWidget>
 #include <QHeaderView>
 #include <QJsonArray>
@@ -479,7 +480,7 @@ private slots:
         auto* undo = w.findChild<QAction*>(QStringLiteral("edit.undo"));
         QVERIFY(undo);
         undo->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Z), QKeySequence(Qt::Key_F14)});
-        const QString html = ui::shortcutsHtml(w);
+        const QString html = ui::shortcutsHtml(*w.menuBar());
         QVERIFY(html.contains(QKeySequence(QKeySequence::Undo)
                                   .toString(QKeySequence::NativeText)
                                   .section(QLatin1String(", "), 0, 0)));

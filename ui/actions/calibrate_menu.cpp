@@ -1,17 +1,16 @@
 // Calibrate: the automatic table from the stream's frames (its button is in the LUT editor too).
 #include "ui/actions/calibrate_actions.h"
 #include "ui/actions/menus.h"
-#include "ui/main_window.h"
 #include "ui/panels/lut_panel.h"
 
 #include <QMenuBar>
 
 namespace fieldsight::ui {
 
-void addCalibrateMenu(MainWindow& w)
+void addCalibrateMenu(QMenuBar& bar, const MenuParts& parts)
 {
-    QMenu* calibrate = w.menuBar()->addMenu(QObject::tr("&Calibrate"));
-    CalibrateActions& commands = w.calibrate();
+    QMenu* calibrate = bar.addMenu(QObject::tr("&Calibrate"));
+    CalibrateActions& commands = parts.calibrate;
     QAction* automatic = addMenuItem(calibrate, QObject::tr("Automatic table"),
                                      QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A), &commands,
                                      &CalibrateActions::automaticTable);
@@ -24,7 +23,7 @@ void addCalibrateMenu(MainWindow& w)
                      [automatic] { automatic->setEnabled(true); });
     QObject::connect(automatic, &QAction::triggered, automatic,
                      [automatic, &commands] { automatic->setEnabled(!commands.running()); });
-    w.lutPanel().addTableAction(automatic);
+    parts.lut_panel.addTableAction(automatic);
 }
 
 } // namespace fieldsight::ui
