@@ -18,6 +18,7 @@
 #include "ui/panels/pipeline_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/settings/window_settings.h"
+#include "ui/status_line.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/frame_marks_strip.h"
@@ -30,7 +31,6 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QGuiApplication>
-#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
@@ -66,7 +66,7 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_calibrate = new CalibrateActions(target);
     m_fit = new FitActions(target);
     m_disk_watch = new DiskWatch(target, *m_annotation_files, *m_files, *m_disk_bar);
-    buildStatusBar();
+    new StatusLine(*statusBar(), *m_session, *m_timeline, *m_view, *m_tools);
     buildDocks();
     m_highlights =
         new CellHighlights(*m_view, m_session->stream(), m_uv->canvas().selection(), this);
@@ -118,15 +118,6 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     });
     connect(&m_uv->canvas(), &UvCanvas::selectionChanged, m_highlights, &CellHighlights::refresh);
     connect(m_lut_panel, &LutPanel::cellsToOutline, &m_uv->canvas(), &UvCanvas::setOutlinedCells);
-    // The tool's preview also in the status bar: the editor's own line may be out of sight.
-    connect(m_tools, &ToolManager::previewChanged, this, [this] {
-        const QString text = m_tools->preview().text;
-        if (!text.isEmpty())
-            statusBar()->showMessage(text);
-        else if (!m_preview_shown.isEmpty() && statusBar()->currentMessage() == m_preview_shown)
-            statusBar()->clearMessage();
-        m_preview_shown = text;
-    });
 
     restoreSettings();
     updateTitle();
@@ -165,32 +156,6 @@ void MainWindow::buildCentre()
     column->addWidget(m_navigator);
     setCentralWidget(central);
     m_timeline = std::make_unique<Timeline>(*m_session, *m_navigator);
-}
-
-void MainWindow::buildStatusBar()
-{
-    m_status_zoom = new QLabel(this);
-    m_status_time = new QLabel(this);
-    m_status_effect = new QLabel(this);
-    m_status_effect->setObjectName(QStringLiteral("effect_summary"));
-    // Ignored width: a long summary is cut at the timing field, not pushed into it (the whole
-    // text is the tooltip).
-    m_status_effect->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    statusBar()->addWidget(m_status_effect, 1);
-    m_status_annotation = new QLabel(this);
-    m_status_annotation->setObjectName(QStringLiteral("annotation_status"));
-    statusBar()->addPermanentWidget(m_status_annotation);
-    connect(&m_timeline->annotationStrip(), &AnnotationStrip::statusChanged, m_status_annotation,
-            &QLabel::setText);
-    statusBar()->addPermanentWidget(m_status_time);
-    statusBar()->addPermanentWidget(m_status_zoom);
-    connect(&m_session->effectScan(), &EditEffectScan::updated, this, [this] {
-        m_status_effect->setText(m_timeline->effectStrip().summary());
-        m_status_effect->setToolTip(m_timeline->effectStrip().summary());
-    });
-    connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
-        m_status_zoom->setText(tr("zoom %1%").arg(zoom * 100, 0, 'f', 0));
-    });
 }
 
 void MainWindow::buildDocks()
@@ -316,15 +281,10 @@ void MainWindow::onStreamChanged()
 
 void MainWindow::onFrameReady()
 {
-    const auto& out = m_session->stream().current();
     // The view first (its highlights are found again already); the panels follow once it has
     // painted (at once when it cannot paint).
     if (!m_view->isVisible())
         refreshPanels();
-    if (out)
-        m_status_time->setText(tr("core %1 ms · worker %2 ms")
-                                   .arg(out->result.report.total_ms, 0, 'f', 3)
-                                   .arg(out->worker_ms, 0, 'f', 2));
 }
 
 void MainWindow::refreshPanels()

@@ -16,7 +16,6 @@
 #include <memory>
 #include <optional>
 
-class QLabel;
 class QMenu;
 
 namespace fieldsight::ui {
@@ -104,7 +103,6 @@ protected:
 private:
     void buildCentre();
     void buildDocks();
-    void buildStatusBar();
     void restoreSettings();
     void onStreamChanged();
     void onFrameReady();
@@ -139,15 +137,10 @@ private:
     HistoryPanel* m_history = nullptr;
     EvaluationPanel* m_evaluation = nullptr;
     QMenu* m_docks_menu = nullptr;
-    QLabel* m_status_zoom = nullptr;
-    QLabel* m_status_time = nullptr;
-    QLabel* m_status_effect = nullptr;
-    QLabel* m_status_annotation = nullptr;
     CellHighlights* m_highlights = nullptr;
     std::optional<QPoint> m_hover;
     QString m_last_message;
     QString m_standing_problem; ///< what clearMessage() shows again (settings not read)
-    QString m_preview_shown;    ///< the tool's preview line in the status bar, if any
 };
 
 } // namespace fieldsight::ui
