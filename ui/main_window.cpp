@@ -262,11 +262,6 @@ void MainWindow::clearMessage()
         showMessage(m_standing_problem);
 }
 
-QImage MainWindow::snapshot()
-{
-    return m_view->grab().toImage();
-}
-
 void MainWindow::showCompareCells(const std::vector<std::uint32_t>& cells)
 {
     m_uv->canvas().setOutlinedCells(cells);

@@ -21,17 +21,13 @@ class QMenu;
 namespace fieldsight::ui {
 
 class AnnotationsFile;
-class AnnotationStrip;
 class BookmarksPanel;
 class CalibrateActions;
 class CellHighlights;
 class DetectionsPanel;
 class DiskWatch;
-class EffectStrip;
 class EvaluationPanel;
 class FitActions;
-class FrameMarksStrip;
-class LightStrip;
 class SessionFiles;
 class FrameRecorder;
 class HistoryPanel;
@@ -57,7 +53,6 @@ public:
     ToolManager& tools() { return *m_tools; }
     SessionFiles& files() { return *m_files; }
     AnnotationsFile& annotationFiles() { return *m_annotation_files; }
-    CalibrateActions& calibrate() { return *m_calibrate; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -67,11 +62,9 @@ public:
     LutPanel& lutPanel() { return *m_lut_panel; }
     UvPlanePanel& uvPanel() { return *m_uv; }
     BookmarksPanel& bookmarksPanel() { return *m_bookmarks; }
-    EffectStrip& effectStrip() { return m_timeline->effectStrip(); }
     EvaluationPanel& evaluationPanel() { return *m_evaluation; }
-    /// The timeline's marks of the frames where detections and truth disagree.
-    FrameMarksStrip& disagreementStrip() { return m_timeline->disagreementStrip(); }
-    LightStrip& lightStrip() { return m_timeline->lightStrip(); }
+    /// The strips under the navigator: edit effect, annotations, disagreements, light.
+    const Timeline& timeline() const { return *m_timeline; }
     FrameRecorder& recorder() { return *m_recorder; }
     MessageBar& messageBar() { return *m_message_bar; }
     OfferBar& recoveryBar() { return *m_recovery_bar; }
@@ -80,7 +73,6 @@ public:
     OfferBar& annotationsRecoveryBar() { return *m_annotations_recovery_bar; }
     /// The offer to reload a document's file another window or a program changed (DiskWatch).
     OfferBar& diskBar() { return *m_disk_bar; }
-    AnnotationStrip& annotationStrip() { return m_timeline->annotationStrip(); }
 
     /// Shows `text` in the message bar (red for an error, blue for a note) and the status bar.
     void showMessage(const QString& text, bool error = true);
@@ -89,8 +81,6 @@ public:
     /// Hides the message bar, unless a problem that lasts the session (the settings could not
     /// be read) is to be seen: then that is shown again.
     void clearMessage();
-    /// The frame view as shown.
-    QImage snapshot();
 
     /// Remembers the window, the view and the tools (WindowSettings).
     void saveSettings() const;

@@ -49,6 +49,14 @@ QByteArray lutBytes(MainWindow& w)
     return bytesOf(w.session().lut().table());
 }
 
+/// What Calibrate > Automatic table runs, a child of the window.
+CalibrateActions& calibrateActions(MainWindow& w)
+{
+    auto* calibrate = w.findChild<CalibrateActions*>();
+    Q_ASSERT(calibrate);
+    return *calibrate;
+}
+
 QAction* autoAction(MainWindow& w)
 {
     return w.findChild<QAction*>(QStringLiteral("calibrate.auto_lut"));
@@ -133,7 +141,7 @@ private slots:
         // Without a stream it says what to do, and changes nothing.
         const int steps = w.session().lut().undoStack().count();
         action->trigger();
-        QVERIFY(!w.calibrate().running());
+        QVERIFY(!calibrateActions(w).running());
         QVERIFY2(w.lastMessage().contains("Open a stream"), qPrintable(w.lastMessage()));
         QCOMPARE(w.session().lut().undoStack().count(), steps);
         QVERIFY(action->isEnabled());
@@ -151,9 +159,9 @@ private slots:
         const int steps = w.session().lut().undoStack().count();
         QVERIFY(!w.isWindowModified());
 
-        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         QTest::keyClick(&w, Qt::Key_A, Qt::ControlModifier | Qt::ShiftModifier);
-        QVERIFY(w.calibrate().running() || !done.isEmpty());
+        QVERIFY(calibrateActions(w).running() || !done.isEmpty());
         const auto applied = waitForRun(done);
         QVERIFY(applied.has_value());
         QVERIFY(*applied);
@@ -227,11 +235,11 @@ private slots:
         made.goal_colour = Colour::Blue;
         made.frames = 32;
         made.notes = {"no ball-coloured blob found"};
-        w.calibrate().run().setBuilder(returning(made));
+        calibrateActions(w).run().setBuilder(returning(made));
         const int lut_steps = w.session().lut().undoStack().count();
         const int settings_steps = w.session().settings().undoStack().count();
 
-        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(true));
         QCOMPARE(lutBytes(w), bytesOf(made.lut));
@@ -277,7 +285,7 @@ private slots:
         const QByteArray before = lutBytes(w);
         const int steps = w.session().lut().undoStack().count();
         // A run that goes on until it is cancelled (at most a minute).
-        w.calibrate().run().setBuilder(
+        calibrateActions(w).run().setBuilder(
             [](StreamReader&, const AutoLutOptions&, const AutoLutProgress& progress) {
                 AutoLut partial;
                 partial.lut.setCell(5, Colour::Green);
@@ -290,14 +298,14 @@ private slots:
                 }
                 return Result<AutoLut>(partial);
             });
-        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         // The editor's button, clicked.
         auto* button = w.lutPanel().findChild<QToolButton*>(QStringLiteral("calibrate.auto_lut"));
         QVERIFY(button);
         w.findChild<QDockWidget*>("lut_dock")->raise();
         QTRY_VERIFY(button->isVisible());
         QTest::mouseClick(button, Qt::LeftButton);
-        QVERIFY(w.calibrate().running());
+        QVERIFY(calibrateActions(w).running());
         QVERIFY(!autoAction(w)->isEnabled());
 
         // The window answers meanwhile: another frame is shown.
@@ -330,7 +338,7 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
         QVERIFY(f.write("not a picture") > 0);
         f.close();
-        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(false));
         QCOMPARE(lutBytes(w), before);
@@ -350,15 +358,15 @@ private slots:
         QVERIFY(showAndOpen(w, first));
         AutoLut made;
         made.lut.setCell(7, Colour::White);
-        w.calibrate().run().setBuilder(
+        calibrateActions(w).run().setBuilder(
             [made](StreamReader&, const AutoLutOptions&, const AutoLutProgress& progress) {
                 for (int i = 0; i < 6000 && progress(0, 1); ++i)
                     std::this_thread::sleep_for(std::chrono::milliseconds(10));
                 return Result<AutoLut>(made);
             });
-        QSignalSpy done(&w.calibrate(), &CalibrateActions::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         autoAction(w)->trigger();
-        QVERIFY(w.calibrate().running());
+        QVERIFY(calibrateActions(w).running());
         QVERIFY(openAndWait(w, second));
         QCOMPARE(waitForRun(done, 10000), std::optional<bool>(false));
         QCOMPARE(w.session().lut().undoStack().count(), 0);

@@ -321,7 +321,7 @@ private slots:
         QStringList partial;
         QString last;
         QObject::connect(&scan, &ui::EditEffectScan::updated, &w, [&] {
-            const QString text = w.effectStrip().summary();
+            const QString text = w.timeline().effectStrip().summary();
             if (scan.framesDone() < scan.effects().size()) {
                 partial << text;
                 QVERIFY2(text.contains(QStringLiteral("scanning %1 of %2")
