@@ -1,8 +1,8 @@
 #include "ui/main_window.h"
 
 #include "ui/actions/annotations_file.h"
-#include "ui/actions/calibrate_commands.h"
-#include "ui/actions/fit_commands.h"
+#include "ui/actions/calibrate_actions.h"
+#include "ui/actions/fit_actions.h"
 #include "ui/actions/disk_watch.h"
 #include "ui/actions/session_files.h"
 #include "ui/actions/menus.h"
@@ -18,6 +18,7 @@
 #include "ui/panels/pipeline_panel.h"
 #include "ui/panels/uv_plane_panel.h"
 #include "ui/settings/window_settings.h"
+#include "ui/status_line.h"
 #include "ui/stream_navigator/annotation_strip.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/frame_marks_strip.h"
@@ -30,8 +31,8 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QGuiApplication>
-#include <QLabel>
 #include <QMenu>
+#include <QMenuBar>
 #include <QMimeData>
 #include <QScreen>
 #include <QScrollArea>
@@ -51,27 +52,38 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     m_tools = new ToolManager(*m_session, tools, this);
     m_recorder = new FrameRecorder(m_session->stream(), this);
     buildCentre();
-    m_files = new SessionFiles(*this);
-    m_annotation_files = new AnnotationsFile(*this);
-    m_calibrate = new CalibrateCommands(*this);
-    m_fit = new FitCommands(*this);
-    m_disk_watch = new DiskWatch(*this);
-    buildStatusBar();
+    const MenuTarget target{
+        *m_session,
+        *m_tools,
+        this,
+        [this](const QString& m, bool error) { showMessage(m, error); },
+        [this](const QString& m, int ms) { statusBar()->showMessage(m, ms); },
+        [this] { clearMessage(); },
+        [this] { return m_message_bar->isVisible() ? m_message_bar->text() : QString(); }};
+    m_annotation_files = new AnnotationsFile(target, *m_annotations_recovery_bar);
+    m_files = new SessionFiles(target, *m_annotation_files, *m_view, *m_recovery_bar);
+    connect(m_files, &SessionFiles::settingsToSave, this, &MainWindow::saveSettings);
+    m_calibrate = new CalibrateActions(target);
+    m_fit = new FitActions(target);
+    m_disk_watch = new DiskWatch(target, *m_annotation_files, *m_files, *m_disk_bar);
+    new StatusLine(*statusBar(), *m_session, *m_timeline, *m_view, *m_tools);
     buildDocks();
-    const MenuTarget target{*m_session, *m_tools, this,
-                            [this](const QString& m, bool error) { showMessage(m, error); },
-                            [this](const QString& m, int ms) { statusBar()->showMessage(m, ms); }};
     m_highlights =
         new CellHighlights(*m_view, m_session->stream(), m_uv->canvas().selection(), this);
-    addFileMenu(*this);
-    addEditMenu(*this);
-    addViewMenu(*this);
-    addNavigateMenu(*this);
-    addObjectMenu(*menuBar(), target);
-    addPipelineMenu(*this);
-    addCalibrateMenu(*this);
-    addAnnotateMenu(*menuBar(), target);
-    addHelpMenu(*this);
+    connect(m_files, &SessionFiles::compareCellsChosen, this, &MainWindow::showCompareCells);
+    const MenuParts parts{*m_view,      *m_navigator,  *m_files,     *m_annotation_files,
+                          *m_recorder,  *m_calibrate,  *m_fit,       *m_lut_panel,
+                          *m_bookmarks, *m_evaluation, *m_docks_menu};
+    QMenuBar& bar = *menuBar();
+    addFileMenu(bar, target, parts);
+    addEditMenu(bar, target, parts);
+    addViewMenu(bar, target, parts);
+    addNavigateMenu(bar, parts);
+    addObjectMenu(bar, target);
+    addPipelineMenu(bar, target, parts);
+    addCalibrateMenu(bar, parts);
+    addAnnotateMenu(bar, target);
+    addHelpMenu(bar, target);
 
     // The window shows what the documents say; it relays nothing between them.
     StreamDocument& stream = m_session->stream();
@@ -106,15 +118,6 @@ MainWindow::MainWindow(const Pipeline& pipeline, const std::vector<ToolFactory>&
     });
     connect(&m_uv->canvas(), &UvCanvas::selectionChanged, m_highlights, &CellHighlights::refresh);
     connect(m_lut_panel, &LutPanel::cellsToOutline, &m_uv->canvas(), &UvCanvas::setOutlinedCells);
-    // The tool's preview also in the status bar: the editor's own line may be out of sight.
-    connect(m_tools, &ToolManager::previewChanged, this, [this] {
-        const QString text = m_tools->preview().text;
-        if (!text.isEmpty())
-            statusBar()->showMessage(text);
-        else if (!m_preview_shown.isEmpty() && statusBar()->currentMessage() == m_preview_shown)
-            statusBar()->clearMessage();
-        m_preview_shown = text;
-    });
 
     restoreSettings();
     updateTitle();
@@ -153,32 +156,6 @@ void MainWindow::buildCentre()
     column->addWidget(m_navigator);
     setCentralWidget(central);
     m_timeline = std::make_unique<Timeline>(*m_session, *m_navigator);
-}
-
-void MainWindow::buildStatusBar()
-{
-    m_status_zoom = new QLabel(this);
-    m_status_time = new QLabel(this);
-    m_status_effect = new QLabel(this);
-    m_status_effect->setObjectName(QStringLiteral("effect_summary"));
-    // Ignored width: a long summary is cut at the timing field, not pushed into it (the whole
-    // text is the tooltip).
-    m_status_effect->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    statusBar()->addWidget(m_status_effect, 1);
-    m_status_annotation = new QLabel(this);
-    m_status_annotation->setObjectName(QStringLiteral("annotation_status"));
-    statusBar()->addPermanentWidget(m_status_annotation);
-    connect(&m_timeline->annotationStrip(), &AnnotationStrip::statusChanged, m_status_annotation,
-            &QLabel::setText);
-    statusBar()->addPermanentWidget(m_status_time);
-    statusBar()->addPermanentWidget(m_status_zoom);
-    connect(&m_session->effectScan(), &EditEffectScan::updated, this, [this] {
-        m_status_effect->setText(m_timeline->effectStrip().summary());
-        m_status_effect->setToolTip(m_timeline->effectStrip().summary());
-    });
-    connect(m_view, &FrameView::zoomChanged, this, [this](double zoom) {
-        m_status_zoom->setText(tr("zoom %1%").arg(zoom * 100, 0, 'f', 0));
-    });
 }
 
 void MainWindow::buildDocks()
@@ -285,11 +262,6 @@ void MainWindow::clearMessage()
         showMessage(m_standing_problem);
 }
 
-QImage MainWindow::snapshot()
-{
-    return m_view->grab().toImage();
-}
-
 void MainWindow::showCompareCells(const std::vector<std::uint32_t>& cells)
 {
     m_uv->canvas().setOutlinedCells(cells);
@@ -304,15 +276,10 @@ void MainWindow::onStreamChanged()
 
 void MainWindow::onFrameReady()
 {
-    const auto& out = m_session->stream().current();
     // The view first (its highlights are found again already); the panels follow once it has
     // painted (at once when it cannot paint).
     if (!m_view->isVisible())
         refreshPanels();
-    if (out)
-        m_status_time->setText(tr("core %1 ms · worker %2 ms")
-                                   .arg(out->result.report.total_ms, 0, 'f', 3)
-                                   .arg(out->worker_ms, 0, 'f', 2));
 }
 
 void MainWindow::refreshPanels()

@@ -16,23 +16,18 @@
 #include <memory>
 #include <optional>
 
-class QLabel;
 class QMenu;
 
 namespace fieldsight::ui {
 
 class AnnotationsFile;
-class AnnotationStrip;
 class BookmarksPanel;
-class CalibrateCommands;
+class CalibrateActions;
 class CellHighlights;
 class DetectionsPanel;
 class DiskWatch;
-class EffectStrip;
 class EvaluationPanel;
-class FitCommands;
-class FrameMarksStrip;
-class LightStrip;
+class FitActions;
 class SessionFiles;
 class FrameRecorder;
 class HistoryPanel;
@@ -58,8 +53,6 @@ public:
     ToolManager& tools() { return *m_tools; }
     SessionFiles& files() { return *m_files; }
     AnnotationsFile& annotationFiles() { return *m_annotation_files; }
-    CalibrateCommands& calibrate() { return *m_calibrate; }
-    FitCommands& fit() { return *m_fit; }
     FrameView& view() { return *m_view; }
     StreamNavigator& navigator() { return *m_navigator; }
     LayersPanel& layersPanel() { return *m_layers; }
@@ -69,11 +62,9 @@ public:
     LutPanel& lutPanel() { return *m_lut_panel; }
     UvPlanePanel& uvPanel() { return *m_uv; }
     BookmarksPanel& bookmarksPanel() { return *m_bookmarks; }
-    EffectStrip& effectStrip() { return m_timeline->effectStrip(); }
     EvaluationPanel& evaluationPanel() { return *m_evaluation; }
-    /// The timeline's marks of the frames where detections and truth disagree.
-    FrameMarksStrip& disagreementStrip() { return m_timeline->disagreementStrip(); }
-    LightStrip& lightStrip() { return m_timeline->lightStrip(); }
+    /// The strips under the navigator: edit effect, annotations, disagreements, light.
+    const Timeline& timeline() const { return *m_timeline; }
     FrameRecorder& recorder() { return *m_recorder; }
     MessageBar& messageBar() { return *m_message_bar; }
     OfferBar& recoveryBar() { return *m_recovery_bar; }
@@ -82,9 +73,6 @@ public:
     OfferBar& annotationsRecoveryBar() { return *m_annotations_recovery_bar; }
     /// The offer to reload a document's file another window or a program changed (DiskWatch).
     OfferBar& diskBar() { return *m_disk_bar; }
-    DiskWatch& diskWatch() { return *m_disk_watch; }
-    AnnotationStrip& annotationStrip() { return m_timeline->annotationStrip(); }
-    QMenu& docksMenu() { return *m_docks_menu; }
 
     /// Shows `text` in the message bar (red for an error, blue for a note) and the status bar.
     void showMessage(const QString& text, bool error = true);
@@ -93,10 +81,6 @@ public:
     /// Hides the message bar, unless a problem that lasts the session (the settings could not
     /// be read) is to be seen: then that is shown again.
     void clearMessage();
-    /// The frame view as shown.
-    QImage snapshot();
-    /// Lights the current frame's pixels in `cells` (the compare dialog's chosen row).
-    void showCompareCells(const std::vector<std::uint32_t>& cells);
 
     /// Remembers the window, the view and the tools (WindowSettings).
     void saveSettings() const;
@@ -109,20 +93,21 @@ protected:
 private:
     void buildCentre();
     void buildDocks();
-    void buildStatusBar();
     void restoreSettings();
     void onStreamChanged();
     void onFrameReady();
     /// The detections and inspector panels show the current frame (after the view painted it).
     void refreshPanels();
     void updateTitle();
+    /// Lights the current frame's pixels in `cells` (the compare dialog's chosen row).
+    void showCompareCells(const std::vector<std::uint32_t>& cells);
 
     EditingSession* m_session = nullptr;
     ToolManager* m_tools = nullptr;
     SessionFiles* m_files = nullptr;
     AnnotationsFile* m_annotation_files = nullptr;
-    CalibrateCommands* m_calibrate = nullptr;
-    FitCommands* m_fit = nullptr;
+    CalibrateActions* m_calibrate = nullptr;
+    FitActions* m_fit = nullptr;
     FrameRecorder* m_recorder = nullptr;
     FrameView* m_view = nullptr;
     StreamNavigator* m_navigator = nullptr;
@@ -142,15 +127,10 @@ private:
     HistoryPanel* m_history = nullptr;
     EvaluationPanel* m_evaluation = nullptr;
     QMenu* m_docks_menu = nullptr;
-    QLabel* m_status_zoom = nullptr;
-    QLabel* m_status_time = nullptr;
-    QLabel* m_status_effect = nullptr;
-    QLabel* m_status_annotation = nullptr;
     CellHighlights* m_highlights = nullptr;
     std::optional<QPoint> m_hover;
     QString m_last_message;
     QString m_standing_problem; ///< what clearMessage() shows again (settings not read)
-    QString m_preview_shown;    ///< the tool's preview line in the status bar, if any
 };
 
 } // namespace fieldsight::ui

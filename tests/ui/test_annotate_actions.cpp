@@ -218,7 +218,7 @@ private slots:
         QVERIFY(doc.editFrame(
             name(w, 4), withShapes({}, *test::kindOfForm(doc, ShapeForm::Circle), {{{{9, 9}}, 4}}),
             "Frame 4"));
-        const auto& states = w.annotationStrip().states();
+        const auto& states = w.timeline().annotationStrip().states();
         QCOMPARE(states.done, (std::vector<bool>{true, true, false, true, false, false}));
         QCOMPARE(states.annotated, (std::vector<bool>{true, true, false, true, true, false}));
         auto* status = w.statusBar()->findChild<QLabel*>("annotation_status");

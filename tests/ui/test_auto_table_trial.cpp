@@ -13,7 +13,7 @@
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
-#include "ui/actions/calibrate_commands.h"
+#include "ui/actions/calibrate_actions.h"
 #include "ui/adapters/local_path.h"
 #include "ui/panels/lut_panel.h"
 #include "visioncore/io/dnt_labels.h"
@@ -31,7 +31,7 @@
 
 using namespace fieldsight;
 using namespace fieldsight::test;
-using fieldsight::ui::CalibrateCommands;
+using fieldsight::ui::CalibrateActions;
 using fieldsight::ui::MainWindow;
 
 namespace {
@@ -178,7 +178,7 @@ private slots:
         QVERIFY(button);
         QTRY_VERIFY(button->isVisible());
         int clicks = 0;
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(w.findChild<CalibrateActions*>(), &CalibrateActions::finished);
         QElapsedTimer clock;
         clock.start();
         QTest::mouseClick(button, Qt::LeftButton);

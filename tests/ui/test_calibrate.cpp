@@ -9,7 +9,7 @@
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/actions/calibrate_commands.h"
+#include "ui/actions/calibrate_actions.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/panels/evaluation_panel.h"
@@ -34,10 +34,18 @@
 using namespace fieldsight;
 using namespace fieldsight::test;
 using fieldsight::ui::AutoLutRun;
-using fieldsight::ui::CalibrateCommands;
+using fieldsight::ui::CalibrateActions;
 using fieldsight::ui::MainWindow;
 
 namespace {
+
+/// What Calibrate > Automatic table runs, a child of the window.
+CalibrateActions& calibrateActions(MainWindow& w)
+{
+    auto* calibrate = w.findChild<CalibrateActions*>();
+    Q_ASSERT(calibrate);
+    return *calibrate;
+}
 
 QAction* autoAction(MainWindow& w)
 {
@@ -119,11 +127,11 @@ private slots:
         QVERIFY(button);
         QCOMPARE(button->defaultAction(), action);
         // Help > Keyboard shortcuts lists it.
-        QVERIFY(ui::shortcutsHtml(w).contains("Automatic table"));
+        QVERIFY(ui::shortcutsHtml(*w.menuBar()).contains("Automatic table"));
         // Without a stream it says what to do, and changes nothing.
         const int steps = w.session().lut().undoStack().count();
         action->trigger();
-        QVERIFY(!w.calibrate().running());
+        QVERIFY(!calibrateActions(w).running());
         QVERIFY2(w.lastMessage().contains("Open a stream"), qPrintable(w.lastMessage()));
         QCOMPARE(w.session().lut().undoStack().count(), steps);
         QVERIFY(action->isEnabled());
@@ -141,9 +149,9 @@ private slots:
         const int steps = w.session().lut().undoStack().count();
         QVERIFY(!w.isWindowModified());
 
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         QTest::keyClick(&w, Qt::Key_A, Qt::ControlModifier | Qt::ShiftModifier);
-        QVERIFY(w.calibrate().running() || !done.isEmpty());
+        QVERIFY(calibrateActions(w).running() || !done.isEmpty());
         const auto applied = waitForRun(done);
         QVERIFY(applied.has_value());
         QVERIFY(*applied);
@@ -217,11 +225,11 @@ private slots:
         made.goal_colour = Colour::Blue;
         made.frames = 32;
         made.notes = {"no ball-coloured blob found"};
-        w.calibrate().run().setBuilder(returning(made));
+        calibrateActions(w).run().setBuilder(returning(made));
         const int lut_steps = w.session().lut().undoStack().count();
         const int settings_steps = w.session().settings().undoStack().count();
 
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(true));
         QCOMPARE(test::tableBytes(w.session().lut().table()), test::tableBytes(made.lut));
@@ -267,7 +275,7 @@ private slots:
         const QByteArray before = test::tableBytes(w.session().lut().table());
         const int steps = w.session().lut().undoStack().count();
         // A run that goes on until it is cancelled (at most a minute).
-        w.calibrate().run().setBuilder(
+        calibrateActions(w).run().setBuilder(
             [](StreamReader&, const AutoLutOptions&, const AutoLutProgress& progress) {
                 AutoLut partial;
                 partial.lut.setCell(5, Colour::Green);
@@ -280,14 +288,14 @@ private slots:
                 }
                 return Result<AutoLut>(partial);
             });
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         // The editor's button, clicked.
         auto* button = w.lutPanel().findChild<QToolButton*>(QStringLiteral("calibrate.auto_lut"));
         QVERIFY(button);
         w.findChild<QDockWidget*>("lut_dock")->raise();
         QTRY_VERIFY(button->isVisible());
         QTest::mouseClick(button, Qt::LeftButton);
-        QVERIFY(w.calibrate().running());
+        QVERIFY(calibrateActions(w).running());
         QVERIFY(!autoAction(w)->isEnabled());
 
         // The window answers meanwhile: another frame is shown.
@@ -320,7 +328,7 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
         QVERIFY(f.write("not a picture") > 0);
         f.close();
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         autoAction(w)->trigger();
         QCOMPARE(waitForRun(done), std::optional<bool>(false));
         QCOMPARE(test::tableBytes(w.session().lut().table()), before);
@@ -340,15 +348,15 @@ private slots:
         QVERIFY(showAndOpen(w, first));
         AutoLut made;
         made.lut.setCell(7, Colour::White);
-        w.calibrate().run().setBuilder(
+        calibrateActions(w).run().setBuilder(
             [made](StreamReader&, const AutoLutOptions&, const AutoLutProgress& progress) {
                 for (int i = 0; i < 6000 && progress(0, 1); ++i)
                     std::this_thread::sleep_for(std::chrono::milliseconds(10));
                 return Result<AutoLut>(made);
             });
-        QSignalSpy done(&w.calibrate(), &CalibrateCommands::finished);
+        QSignalSpy done(&calibrateActions(w), &CalibrateActions::finished);
         autoAction(w)->trigger();
-        QVERIFY(w.calibrate().running());
+        QVERIFY(calibrateActions(w).running());
         QVERIFY(openAndWait(w, second));
         QCOMPARE(waitForRun(done, 10000), std::optional<bool>(false));
         QCOMPARE(w.session().lut().undoStack().count(), 0);

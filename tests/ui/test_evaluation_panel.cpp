@@ -201,8 +201,8 @@ private slots:
                            std::size_t(1)) == 1);
         const int row = int(listed - failing.begin());
         QVERIFY(panel.frames().item(row)->text().startsWith("Frame 17 · Ball"));
-        QVERIFY(w.disagreementStrip().marks().count(17));
-        QVERIFY(w.disagreementStrip().isVisible());
+        QVERIFY(w.timeline().disagreementStrip().marks().count(17));
+        QVERIFY(w.timeline().disagreementStrip().isVisible());
 
         // From frame 16 the key (Navigate > Next disagreement, F6) lands on frame 17's ball:
         // balls come first among a frame's kinds.

@@ -9,7 +9,7 @@
 #include "support/scripted_dialogs.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
-#include "ui/actions/fit_commands.h"
+#include "ui/actions/fit_actions.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/fit_result_dialog.h"
@@ -28,7 +28,7 @@
 
 using namespace fieldsight;
 using namespace fieldsight::test;
-using fieldsight::ui::FitCommands;
+using fieldsight::ui::FitActions;
 using fieldsight::ui::FitResultDialog;
 using fieldsight::ui::MainWindow;
 
@@ -39,9 +39,9 @@ QAction* fitAction(MainWindow& w)
     return w.findChild<QAction*>(QStringLiteral("pipeline.fit_annotations"));
 }
 
-FitCommands& fitCommands(MainWindow& w)
+FitActions& fitActions(MainWindow& w)
 {
-    auto* fit = w.findChild<FitCommands*>();
+    auto* fit = w.findChild<FitActions*>();
     Q_ASSERT(fit);
     return *fit;
 }
@@ -135,10 +135,10 @@ private slots:
                 pipeline = top->menu();
         QVERIFY(pipeline);
         QVERIFY(pipeline->actions().contains(action));
-        QVERIFY(ui::shortcutsHtml(w).contains("Fit to annotations"));
+        QVERIFY(ui::shortcutsHtml(*w.menuBar()).contains("Fit to annotations"));
         // Without a stream it says what to do, asks nothing and runs nothing.
         action->trigger();
-        QVERIFY(!fitCommands(w).running());
+        QVERIFY(!fitActions(w).running());
         QVERIFY2(w.lastMessage().contains("Open a stream"), qPrintable(w.lastMessage()));
         QVERIFY(dialogs.asked.isEmpty());
         QVERIFY(dialogs.offered.isEmpty());
@@ -153,7 +153,7 @@ private slots:
         QVERIFY(showAndOpen(w, stream));
         const int steps = w.session().settings().undoStack().count();
         QTest::keyClick(&w, Qt::Key_F, Qt::ControlModifier | Qt::ShiftModifier);
-        QVERIFY(!fitCommands(w).running());
+        QVERIFY(!fitActions(w).running());
         QVERIFY2(w.lastMessage().contains("no annotations"), qPrintable(w.lastMessage()));
         QVERIFY(dialogs.offered.isEmpty()); // no budget asked
 
@@ -170,7 +170,7 @@ private slots:
         }
         QVERIFY(doc.edit("undone", std::move(edits)));
         fitAction(w)->trigger();
-        QVERIFY(!fitCommands(w).running());
+        QVERIFY(!fitActions(w).running());
         QVERIFY2(w.lastMessage().contains("None of the annotated frames is done"),
                  qPrintable(w.lastMessage()));
         QVERIFY(dialogs.offered.isEmpty());
@@ -206,14 +206,14 @@ private slots:
 
         constexpr int kBudget = 120;
         dialogs.numbers.push_back(kBudget);
-        QSignalSpy done(&fitCommands(w), &FitCommands::finished);
+        QSignalSpy done(&fitActions(w), &FitActions::finished);
         QTest::keyClick(&w, Qt::Key_F, Qt::ControlModifier | Qt::ShiftModifier);
-        QCOMPARE(dialogs.offered, QList<int>{FitCommands::kDefaultBudget});
-        QVERIFY(fitCommands(w).running() || !done.isEmpty());
+        QCOMPARE(dialogs.offered, QList<int>{FitActions::kDefaultBudget});
+        QVERIFY(fitActions(w).running() || !done.isEmpty());
         QVERIFY(!fitAction(w)->isEnabled());
         QCOMPARE(waitForFit(done), std::optional<bool>(true));
         QVERIFY(fitAction(w)->isEnabled());
-        FitResultDialog* dialog = fitCommands(w).resultDialog();
+        FitResultDialog* dialog = fitActions(w).resultDialog();
         QVERIFY(dialog);
         QTRY_VERIFY(dialog->isVisible());
         const TuneResult r = dialog->result(); // a copy: the dialog goes once closed
@@ -286,7 +286,7 @@ private slots:
         // Apply: every change in use, as one step of the pipeline settings.
         QVERIFY(dialog->applyButton().isEnabled());
         QTest::mouseClick(&dialog->applyButton(), Qt::LeftButton);
-        QTRY_VERIFY(!fitCommands(w).resultDialog());
+        QTRY_VERIFY(!fitActions(w).resultDialog());
         QCOMPARE(w.session().settings().undoStack().count(), steps + 1);
         // The settings keep what differs from the defaults (a value put back to its default is
         // no change).
@@ -321,7 +321,7 @@ private slots:
         dialogs.numbers.clear();
         fitAction(w)->trigger(); // asked, then cancelled (nothing queued)
         QCOMPARE(dialogs.offered.last(), kBudget);
-        QVERIFY(!fitCommands(w).running());
+        QVERIFY(!fitActions(w).running());
         w.saveSettings();
         QCOMPARE(ui::WindowSettings::load().fit_budget, kBudget);
     }
@@ -335,10 +335,10 @@ private slots:
         const std::map<std::string, double> before = allValues(w);
         const int steps = w.session().settings().undoStack().count();
         dialogs.numbers.push_back(100000); // far more than it is let run
-        QSignalSpy done(&fitCommands(w), &FitCommands::finished);
+        QSignalSpy done(&fitActions(w), &FitActions::finished);
         fitAction(w)->trigger();
-        QVERIFY(fitCommands(w).running());
-        QTRY_VERIFY_WITH_TIMEOUT(fitCommands(w).run().progress().first >= 3, 60000);
+        QVERIFY(fitActions(w).running());
+        QTRY_VERIFY_WITH_TIMEOUT(fitActions(w).run().progress().first >= 3, 60000);
 
         // The window answers while it searches: other frames are shown, each within a second.
         for (std::size_t frame : {3u, 12u, 20u}) {
@@ -348,7 +348,7 @@ private slots:
             QVERIFY(waitForFrame(w, frame));
             QVERIFY2(clock.elapsed() < 3000, qPrintable(QString::number(clock.elapsed())));
         }
-        QVERIFY(fitCommands(w).running());
+        QVERIFY(fitActions(w).running());
 
         auto* progress = w.findChild<QProgressDialog*>(QStringLiteral("fit.progress"));
         QVERIFY(progress);
@@ -362,7 +362,7 @@ private slots:
         QTest::mouseClick(cancel, Qt::LeftButton);
         QCOMPARE(waitForFit(done, 60000), std::optional<bool>(true));
         QTRY_VERIFY(!w.findChild<QProgressDialog*>(QStringLiteral("fit.progress")));
-        FitResultDialog* dialog = fitCommands(w).resultDialog();
+        FitResultDialog* dialog = fitActions(w).resultDialog();
         QVERIFY(dialog);
         const TuneResult r = dialog->result(); // a copy: the dialog goes once closed
         QVERIFY(r.cancelled);
@@ -372,7 +372,7 @@ private slots:
         QCOMPARE(dialog->applyButton().isEnabled(), !r.changes.empty());
         // Closed without Apply: nothing changed.
         dialog->reject();
-        QTRY_VERIFY(!fitCommands(w).resultDialog());
+        QTRY_VERIFY(!fitActions(w).resultDialog());
         QCOMPARE(allValues(w), before);
         QCOMPARE(w.session().settings().undoStack().count(), steps);
 
@@ -381,11 +381,11 @@ private slots:
         QVERIFY(waitForFrame(w, 5));
         done.clear();
         QVERIFY(fitAction(w)->isEnabled());
-        QVERIFY(fitCommands(w).start(12));
+        QVERIFY(fitActions(w).start(12));
         QCOMPARE(waitForFit(done), std::optional<bool>(true));
-        QVERIFY(fitCommands(w).resultDialog());
-        QVERIFY(!fitCommands(w).resultDialog()->result().cancelled);
-        QCOMPARE(fitCommands(w).resultDialog()->result().evaluations, 12);
+        QVERIFY(fitActions(w).resultDialog());
+        QVERIFY(!fitActions(w).resultDialog()->result().cancelled);
+        QCOMPARE(fitActions(w).resultDialog()->result().evaluations, 12);
     }
 
     void aSearchOverAStreamClosedMeanwhileIsDropped()
@@ -396,12 +396,12 @@ private slots:
         MainWindow w;
         QVERIFY(showAndOpen(w, first));
         dialogs.numbers.push_back(100000);
-        QSignalSpy done(&fitCommands(w), &FitCommands::finished);
+        QSignalSpy done(&fitActions(w), &FitActions::finished);
         fitAction(w)->trigger();
-        QVERIFY(fitCommands(w).running());
+        QVERIFY(fitActions(w).running());
         QVERIFY(openAndWait(w, second));
         QCOMPARE(waitForFit(done, 60000), std::optional<bool>(false));
-        QVERIFY(!fitCommands(w).resultDialog());
+        QVERIFY(!fitActions(w).resultDialog());
         QVERIFY2(w.lastMessage().contains("dropped"), qPrintable(w.lastMessage()));
         QCOMPARE(w.session().settings().undoStack().count(), 0);
     }

@@ -71,7 +71,7 @@ private slots:
         const int rows = w.session().stream().current()->classes.rows;
         const int static_green = pixelsOf(w, Colour::Green, rows / 2);
         const cv::Mat static_classes = w.session().stream().current()->classes.clone();
-        QVERIFY(!w.lightStrip().isVisible());
+        QVERIFY(!w.timeline().lightStrip().isVisible());
 
         auto* follow = w.findChild<QAction*>(QStringLiteral("view.follow_light"));
         QVERIFY(follow && follow->isCheckable() && !follow->isChecked());
@@ -88,12 +88,12 @@ private slots:
 
         // The strip plots every frame's distance from the table's light: none at the start,
         // growing to the end.
-        QVERIFY(w.lightStrip().isVisible());
-        const std::vector<double> d = w.lightStrip().distances();
+        QVERIFY(w.timeline().lightStrip().isVisible());
+        const std::vector<double> d = w.timeline().lightStrip().distances();
         QCOMPARE(d.size(), last + 1);
         QCOMPARE(d.front(), 0.0);
         QVERIFY2(d.back() > 0.2 && d.back() > d[last / 2], qPrintable(QString::number(d.back())));
-        QVERIFY(w.lightStrip().frameText(last).contains(QStringLiteral("R ×")));
+        QVERIFY(w.timeline().lightStrip().frameText(last).contains(QStringLiteral("R ×")));
 
         // Off: the table as it is again, the same classes as before.
         follow->trigger();
@@ -102,7 +102,7 @@ private slots:
         QVERIFY(waitForFrame(w, last));
         const cv::Mat again = w.session().stream().current()->classes;
         QCOMPARE(cv::countNonZero(again != static_classes), 0);
-        QVERIFY(!w.lightStrip().isVisible());
+        QVERIFY(!w.timeline().lightStrip().isVisible());
 
         // Remembered: on at the close, on in the next window.
         follow->trigger();

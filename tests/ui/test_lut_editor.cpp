@@ -352,7 +352,7 @@ private slots:
                 QCOMPARE(int(k.appeared), 0);
             }
         QVERIFY(vanished > 0);
-        const QString summary = w.effectStrip().summary();
+        const QString summary = w.timeline().effectStrip().summary();
         QVERIFY2(summary.startsWith("Last parameter change"), qPrintable(summary));
         QVERIFY2(summary.contains(QStringLiteral("\u2212")), qPrintable(summary));
     }
@@ -402,7 +402,7 @@ private slots:
             frames_changed += changed > 0;
         }
         QVERIFY(frames_changed > 0);
-        QVERIFY(w.effectStrip().summary().contains(QString::number(frames_changed)));
+        QVERIFY(w.timeline().effectStrip().summary().contains(QString::number(frames_changed)));
 
         // Erasing every orange cell makes every ball the previous table found vanish.
         auto input = openStreamInput(sampleStream().toStdString(), "");
@@ -426,11 +426,12 @@ private slots:
         }
         QVERIFY(balls > 0);
         // The status line names the kind as before the delta was keyed by kind: "−3 ball".
-        QVERIFY2(w.effectStrip().summary().contains(QStringLiteral("−%1 ball").arg(balls)),
-                 qPrintable(w.effectStrip().summary()));
+        QVERIFY2(
+            w.timeline().effectStrip().summary().contains(QStringLiteral("−%1 ball").arg(balls)),
+            qPrintable(w.timeline().effectStrip().summary()));
 
         // A click on the strip goes to that frame.
-        ui::EffectStrip& strip = w.effectStrip();
+        ui::EffectStrip& strip = w.timeline().effectStrip();
         const int x = strip.width() * 3 / 4;
         const long long target = strip.frameAt(x);
         QVERIFY(target > 0);

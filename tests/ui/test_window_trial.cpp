@@ -26,6 +26,7 @@
 
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QMenuBar>
 #include <QDockWidget>
 #include <QHeaderView>
 #include <QJsonArray>
@@ -313,7 +314,7 @@ private slots:
         QStringList partial;
         QString last;
         QObject::connect(&scan, &ui::EditEffectScan::updated, &w, [&] {
-            const QString text = w.effectStrip().summary();
+            const QString text = w.timeline().effectStrip().summary();
             if (scan.framesDone() < scan.effects().size()) {
                 partial << text;
                 QVERIFY2(text.contains(QStringLiteral("scanning %1 of %2")
@@ -472,7 +473,7 @@ private slots:
         auto* undo = w.findChild<QAction*>(QStringLiteral("edit.undo"));
         QVERIFY(undo);
         undo->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Z), QKeySequence(Qt::Key_F14)});
-        const QString html = ui::shortcutsHtml(w);
+        const QString html = ui::shortcutsHtml(*w.menuBar());
         QVERIFY(html.contains(QKeySequence(QKeySequence::Undo)
                                   .toString(QKeySequence::NativeText)
                                   .section(QLatin1String(", "), 0, 0)));

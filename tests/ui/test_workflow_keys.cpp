@@ -160,7 +160,7 @@ private slots:
         QVERIFY(showOn(w, "snap", 5));
         QVERIFY(key(w, Qt::Key_Right, {}, 1));
         QVERIFY(key(w, Qt::Key_Right, {}, 2));
-        const QImage shown = rgb32(w.snapshot());
+        const QImage shown = rgb32(w.view().grab().toImage());
         QVERIFY(shown.width() > 320 && shown.height() > 240);
 
         // Ctrl+E: the name suggested is the stream's and the frame's; the PNG is the view.
@@ -183,7 +183,7 @@ private slots:
         // Ctrl+Shift+C: the view as it is now (the message bar above it took some height).
         QApplication::clipboard()->clear();
         const QString tool = w.tools().active().info().id;
-        const QImage now = rgb32(w.snapshot());
+        const QImage now = rgb32(w.view().grab().toImage());
         QCOMPARE(now.width(), shown.width());
         QTest::keyClick(&w, Qt::Key_C, Qt::ControlModifier | Qt::ShiftModifier);
         QCOMPARE(rgb32(QApplication::clipboard()->image()), now);

@@ -1,11 +1,9 @@
 #include "ui/actions/annotations_file.h"
 
 #include "ui/actions/disk_conflict.h"
-#include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/document/annotations_document.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "ui/widgets/message_bar.h"
 #include "visioncore/basics/output_guard.h"
 
@@ -19,38 +17,38 @@ namespace fieldsight::ui {
 
 namespace {
 
-QString qs(const std::string& s)
+QString fromStd(const std::string& s)
 {
     return QString::fromStdString(s);
 }
 
 } // namespace
 
-AnnotationsFile::AnnotationsFile(MainWindow& window) : QObject(&window), m_window(window)
+AnnotationsFile::AnnotationsFile(const MenuTarget& target, OfferBar& recovery_bar)
+    : QObject(target.parent), m_target(target), m_recovery_bar(recovery_bar)
 {
     // A recovery is offered only when the stream it belongs to is open.
-    connect(&m_window.session().stream(), &StreamDocument::streamChanged, this,
+    connect(&m_target.session.stream(), &StreamDocument::streamChanged, this,
             &AnnotationsFile::offerRecovery);
-    OfferBar& bar = m_window.annotationsRecoveryBar();
-    connect(&bar, &OfferBar::accepted, this, &AnnotationsFile::recover);
-    connect(&bar, &OfferBar::declined, this, &AnnotationsFile::discardRecovery);
+    connect(&m_recovery_bar, &OfferBar::accepted, this, &AnnotationsFile::recover);
+    connect(&m_recovery_bar, &OfferBar::declined, this, &AnnotationsFile::discardRecovery);
 }
 
 AnnotationsDocument& AnnotationsFile::doc()
 {
-    return m_window.session().annotations();
+    return m_target.session.annotations();
 }
 
 bool AnnotationsFile::save()
 {
     AnnotationsDocument& d = doc();
-    if (!m_window.session().stream().hasStream()) {
-        m_window.showMessage(tr("Open a stream first: annotations belong to a stream"));
+    if (!m_target.session.stream().hasStream()) {
+        m_target.showMessage(tr("Open a stream first: annotations belong to a stream"));
         return false;
     }
     if (!d.loadProblem().isEmpty()) {
         // The damaged file is never written over unasked: another file, or that one chosen.
-        m_window.showMessage(tr("%1 could not be read when the stream opened, so Save does not "
+        m_target.showMessage(tr("%1 could not be read when the stream opened, so Save does not "
                                 "write over it: choose a file for the annotations")
                                  .arg(d.path()));
         return saveAs();
@@ -59,29 +57,29 @@ bool AnnotationsFile::save()
         return saveAs();
     bool overwrite = false; // chosen over another writer's change: saveAs() writes anyway
     if (const auto ended = settleDiskChange(
-            m_window, d.changedOnDisk(), tr("the annotations"), d.path(), overwrite,
+            m_target, d.changedOnDisk(), tr("the annotations"), d.path(), overwrite,
             [this] { return reload(); }, [this] { return saveAs(); }))
         return *ended;
     if (Status s = overwrite ? d.saveAs(d.path()) : d.save(); !s) {
-        m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
-                                 .arg(qs(s.error().message)));
+        m_target.showMessage(tr("The annotations were not saved (the edits are kept): %1")
+                                 .arg(fromStd(s.error().message)));
         return false;
     }
-    m_window.showMessage(tr("Saved the annotations to %1").arg(d.path()), false);
+    m_target.showMessage(tr("Saved the annotations to %1").arg(d.path()), false);
     return true;
 }
 
 bool AnnotationsFile::reload()
 {
     AnnotationsDocument& d = doc();
-    if (Status s = d.reload(m_window.session().stream().frameCount()); !s) {
-        m_window.showMessage(tr("The annotations were not reloaded (the edits are kept): %1")
-                                 .arg(qs(s.error().message)));
+    if (Status s = d.reload(m_target.session.stream().frameCount()); !s) {
+        m_target.showMessage(tr("The annotations were not reloaded (the edits are kept): %1")
+                                 .arg(fromStd(s.error().message)));
         return false;
     }
     // Frames the stream lacks are named as when the stream opened: eval refuses them.
-    const QString missing = m_window.session().missingAnnotatedFrames();
-    m_window.showMessage(tr("Reloaded the annotations from %1 (Edit > Undo brings your edits "
+    const QString missing = m_target.session.missingAnnotatedFrames();
+    m_target.showMessage(tr("Reloaded the annotations from %1 (Edit > Undo brings your edits "
                             "back)")
                                  .arg(d.path()) +
                              (missing.isEmpty() ? QString() : QStringLiteral(". ") + missing),
@@ -92,9 +90,9 @@ bool AnnotationsFile::reload()
 bool AnnotationsFile::saveAs(const QString& given)
 {
     AnnotationsDocument& d = doc();
-    const StreamDocument& stream = m_window.session().stream();
+    const StreamDocument& stream = m_target.session.stream();
     if (!stream.hasStream()) {
-        m_window.showMessage(tr("Open a stream first: annotations belong to a stream"));
+        m_target.showMessage(tr("Open a stream first: annotations belong to a stream"));
         return false;
     }
     const QFileInfo spec(stream.streamSpec());
@@ -106,7 +104,7 @@ bool AnnotationsFile::saveAs(const QString& given)
         if (!d.loadProblem().isEmpty()) // another name than the file that could not be read
             suggestion = QFileInfo(suggestion).absolutePath() + QLatin1Char('/') +
                          QFileInfo(suggestion).completeBaseName() + QStringLiteral(".new.json");
-        path = Dialogs::current().saveFile(&m_window, tr("Save annotations as"), suggestion,
+        path = Dialogs::current().saveFile(m_target.parent, tr("Save annotations as"), suggestion,
                                            tr("Fieldsight annotations (*.json)"));
         if (path.isEmpty())
             return false;
@@ -117,29 +115,18 @@ bool AnnotationsFile::saveAs(const QString& given)
     if (Status s = checkNotAnInput("Save annotations as", toLocalPath(path),
                                    {toLocalPath(spec.isDir() ? QString() : stream.streamSpec()),
                                     toLocalPath(folder + QStringLiteral("/stream.json")),
-                                    toLocalPath(m_window.session().lut().path())});
+                                    toLocalPath(m_target.session.lut().path())});
         !s) {
-        m_window.showMessage(qs(s.error().message));
+        m_target.showMessage(fromStd(s.error().message));
         return false;
     }
     if (Status s = d.saveAs(path); !s) {
-        m_window.showMessage(tr("The annotations were not saved (the edits are kept): %1")
-                                 .arg(qs(s.error().message)));
+        m_target.showMessage(tr("The annotations were not saved (the edits are kept): %1")
+                                 .arg(fromStd(s.error().message)));
         return false;
     }
-    m_window.showMessage(tr("Saved the annotations to %1").arg(path), false);
+    m_target.showMessage(tr("Saved the annotations to %1").arg(path), false);
     return true;
-}
-
-bool AnnotationsFile::saveAll()
-{
-    const bool annotations = doc().modified();
-    bool ok = true;
-    if (annotations)
-        ok = save();
-    if (m_window.session().lut().modified() || !annotations)
-        ok = m_window.files().saveLut() && ok;
-    return ok;
 }
 
 bool AnnotationsFile::confirmChanges()
@@ -148,7 +135,7 @@ bool AnnotationsFile::confirmChanges()
     if (!d.modified())
         return true;
     const auto answer = Dialogs::current().question(
-        &m_window, tr("Unsaved annotations"),
+        m_target.parent, tr("Unsaved annotations"),
         tr("The annotations of %1 have edits that are not saved. Save them first?")
             .arg(QFileInfo(d.stream()).fileName()),
         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
@@ -170,20 +157,20 @@ void AnnotationsFile::revert()
     QString problem;
     if (!d.path().isEmpty() && localPathExists(d.path())) {
         auto loaded = Annotations::load(toLocalPath(d.path()), d.kinds(),
-                                        m_window.session().stream().frameCount());
+                                        m_target.session.stream().frameCount());
         if (loaded)
             annotations = std::move(loaded).value();
         else
-            problem = qs(loaded.error().message);
+            problem = fromStd(loaded.error().message);
     }
     d.adopt(d.stream(), d.path(), std::move(annotations), problem);
 }
 
 void AnnotationsFile::offerRecovery()
 {
-    OfferBar& bar = m_window.annotationsRecoveryBar();
+    OfferBar& bar = m_recovery_bar;
     const std::optional<AnnotationsRecovery> r =
-        m_window.session().stream().hasStream() ? doc().findRecovery() : std::nullopt;
+        m_target.session.stream().hasStream() ? doc().findRecovery() : std::nullopt;
     if (!r) {
         bar.hide();
         return;
@@ -205,21 +192,21 @@ bool AnnotationsFile::recover()
 {
     AnnotationsDocument& d = doc();
     const std::optional<AnnotationsRecovery> r = d.findRecovery();
-    m_window.annotationsRecoveryBar().hide();
+    m_recovery_bar.hide();
     if (!r)
         return false;
     if (d.modified() &&
         Dialogs::current().question(
-            &m_window, tr("Recover annotations"),
+            m_target.parent, tr("Recover annotations"),
             tr("Recovering replaces the annotation edits made since the stream opened. Recover "
                "anyway?"),
             QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes)
         return false;
     if (Status s = d.recover(*r); !s) {
-        m_window.showMessage(qs(s.error().message));
+        m_target.showMessage(fromStd(s.error().message));
         return false;
     }
-    m_window.showMessage(tr("Recovered the annotation edits of %1 (%n annotated frame(s)); save "
+    m_target.showMessage(tr("Recovered the annotation edits of %1 (%n annotated frame(s)); save "
                             "them with Ctrl+Alt+S",
                             nullptr, int(r->frames))
                              .arg(QFileInfo(r->stream).fileName()),
@@ -230,7 +217,7 @@ bool AnnotationsFile::recover()
 void AnnotationsFile::discardRecovery()
 {
     doc().discardRecovery();
-    m_window.annotationsRecoveryBar().hide();
+    m_recovery_bar.hide();
 }
 
 } // namespace fieldsight::ui

@@ -1,9 +1,11 @@
 // What the window does with the annotations document's file: Save Annotations (Save As for a
-// stream without a file, or whose file could not be read), Ctrl+S saving the annotations with the
-// LUT, asking before unsaved annotation edits are dropped (another stream, closing), and offering
-// a crashed session's annotation edits back when their own stream opens. Every question goes
-// through the Dialogs seam and every error to the window's message bar.
+// stream without a file, or whose file could not be read), asking before unsaved annotation edits
+// are dropped (another stream, closing), and offering a crashed session's annotation edits back
+// when their own stream opens. Every question goes through the Dialogs seam and every error to the
+// window's message bar.
 #pragma once
+
+#include "ui/actions/menus.h"
 
 #include <QObject>
 #include <QString>
@@ -11,13 +13,14 @@
 namespace fieldsight::ui {
 
 class AnnotationsDocument;
-class MainWindow;
+class OfferBar;
 
 class AnnotationsFile : public QObject
 {
     Q_OBJECT
 public:
-    explicit AnnotationsFile(MainWindow& window);
+    /// Offers a crashed session's edits in `recovery_bar`.
+    AnnotationsFile(const MenuTarget& target, OfferBar& recovery_bar);
 
     /// Saves the annotations to their file, atomically; asks for another file (Save As) when
     /// they have none or theirs could not be read, and what to do when another window or
@@ -29,9 +32,6 @@ public:
     bool reload();
     /// Saves them to `path` (asks for one when empty); the file becomes theirs.
     bool saveAs(const QString& path = {});
-    /// File > Save (Ctrl+S): the annotations when they have unsaved edits, and the LUT as
-    /// before (when it has unsaved edits, or when the annotations had none).
-    bool saveAll();
     /// Asks what to do with unsaved annotation edits (save, discard, cancel); true to go on.
     /// Discarded edits are reverted to the file (and their recovery file removed).
     bool confirmChanges();
@@ -47,7 +47,8 @@ private:
     /// Back to the annotations as saved: the file read again (empty when it is absent).
     void revert();
 
-    MainWindow& m_window;
+    MenuTarget m_target;
+    OfferBar& m_recovery_bar;
 };
 
 } // namespace fieldsight::ui

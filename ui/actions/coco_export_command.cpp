@@ -1,25 +1,25 @@
 // File > Export annotations as COCO: the annotations document's truth in COCO JSON.
 #include "ui/actions/coco_export_command.h"
 
+#include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
-#include "ui/document/annotations_document.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/output_guard.h"
 #include "visioncore/io/coco_export.h"
 
 namespace fieldsight::ui {
 
-bool exportAnnotationsAsCoco(MainWindow& window, const QString& path)
+bool exportAnnotationsAsCoco(const MenuTarget& target, const QString& path)
 {
-    StreamDocument& stream = window.session().stream();
-    const auto fail = [&window](const std::string& message) {
-        window.showMessage(QString::fromStdString(message));
+    StreamDocument& stream = target.session.stream();
+    const auto fail = [&target](const std::string& message) {
+        target.showMessage(QString::fromStdString(message));
         return false;
     };
     if (!stream.hasStream() || stream.live())
         return fail("Export annotations as COCO: open a stream with annotations first");
-    const AnnotationsDocument& document = window.session().annotations();
+    const AnnotationsDocument& document = target.session.annotations();
     if (!document.loadProblem().isEmpty())
         return fail(document.loadProblem().toStdString());
     if (document.annotations().frames.empty())
@@ -41,7 +41,7 @@ bool exportAnnotationsAsCoco(MainWindow& window, const QString& path)
         return fail(json.error().message);
     if (Status s = writeFileAtomically(out, json.value()); !s)
         return fail(s.error().message);
-    window.showMessage(QObject::tr("Exported the annotations of %1 frames to %2 as COCO")
+    target.showMessage(QObject::tr("Exported the annotations of %1 frames to %2 as COCO")
                            .arg(document.annotations().frames.size())
                            .arg(path),
                        false);

@@ -6,12 +6,12 @@
 
 namespace fieldsight::ui {
 
-class MainWindow;
+struct MenuTarget;
 
 /// Writes the open stream's annotations as the annotations document holds them (unsaved edits
 /// too) as COCO JSON to `path`, in the orientation the window shows the stream; atomically and
 /// never over an input (the stream's files, the annotations file). The outcome is shown in the
 /// window; false when nothing was written.
-bool exportAnnotationsAsCoco(MainWindow& window, const QString& path);
+bool exportAnnotationsAsCoco(const MenuTarget& target, const QString& path);
 
 } // namespace fieldsight::ui

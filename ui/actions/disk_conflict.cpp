@@ -1,7 +1,7 @@
 #include "ui/actions/disk_conflict.h"
 
+#include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/main_window.h"
 
 #include <QCoreApplication>
 
@@ -32,7 +32,7 @@ DiskChoice askAboutDiskChange(QWidget* parent, const QString& what, const QStrin
     }
 }
 
-std::optional<bool> settleDiskChange(MainWindow& window, bool changed, const QString& what,
+std::optional<bool> settleDiskChange(const MenuTarget& target, bool changed, const QString& what,
                                      const QString& path, bool& overwrite,
                                      const std::function<bool()>& reload,
                                      const std::function<bool()>& save_as)
@@ -40,7 +40,7 @@ std::optional<bool> settleDiskChange(MainWindow& window, bool changed, const QSt
     overwrite = false;
     if (!changed)
         return std::nullopt;
-    switch (askAboutDiskChange(&window, what, path)) {
+    switch (askAboutDiskChange(target.parent, what, path)) {
     case DiskChoice::Reload:
         return reload();
     case DiskChoice::SaveAs:
@@ -51,7 +51,7 @@ std::optional<bool> settleDiskChange(MainWindow& window, bool changed, const QSt
     case DiskChoice::Cancel:
         break;
     }
-    window.showMessage(QCoreApplication::translate("DiskConflict",
+    target.showMessage(QCoreApplication::translate("DiskConflict",
                                                    "Not saved: %1 changed on disk (your edits of "
                                                    "%2 are kept)")
                            .arg(path, what));

@@ -12,7 +12,7 @@ class QWidget;
 
 namespace fieldsight::ui {
 
-class MainWindow;
+struct MenuTarget;
 
 enum class DiskChoice { Reload, SaveAs, Overwrite, Cancel };
 
@@ -23,8 +23,8 @@ DiskChoice askAboutDiskChange(QWidget* parent, const QString& what, const QStrin
 /// The start of every save of a file another writer may change: nothing when the file is as
 /// read (`changed` false) or the user chose Overwrite (`overwrite` then set), and the save goes
 /// on writing. Otherwise the save ends here with the result returned: `reload()`'s, `save_as()`'s,
-/// or false for Cancel (said in the window's message bar, the edits kept).
-std::optional<bool> settleDiskChange(MainWindow& window, bool changed, const QString& what,
+/// or false for Cancel (said in `target`'s message bar, the edits kept).
+std::optional<bool> settleDiskChange(const MenuTarget& target, bool changed, const QString& what,
                                      const QString& path, bool& overwrite,
                                      const std::function<bool()>& reload,
                                      const std::function<bool()>& save_as);

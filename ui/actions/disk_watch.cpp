@@ -3,7 +3,7 @@
 #include "ui/actions/annotations_file.h"
 #include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "ui/widgets/message_bar.h"
 
 #include <QEvent>
@@ -12,19 +12,21 @@
 
 namespace fieldsight::ui {
 
-DiskWatch::DiskWatch(MainWindow& window) : QObject(&window), m_window(window)
+DiskWatch::DiskWatch(const MenuTarget& target, AnnotationsFile& annotations, SessionFiles& files,
+                     OfferBar& bar)
+    : QObject(target.parent), m_target(target), m_bar(bar)
 {
-    EditingSession& s = m_window.session();
+    EditingSession& s = m_target.session;
     m_watched.push_back({tr("the annotations"),
                          [&s] { return s.annotations().path(); },
                          [&s] { return s.annotations().changedOnDisk(); },
-                         [this] { m_window.annotationFiles().reload(); },
+                         [a = &annotations] { a->reload(); },
                          [] {},
                          {}});
     m_watched.push_back({tr("the LUT"),
                          [&s] { return s.lut().path(); },
                          [&s] { return s.lut().changedOnDisk(); },
-                         [this] { m_window.files().reloadLut(); },
+                         [f = &files] { f->reloadLut(); },
                          [] {},
                          {}});
     m_watched.push_back({tr("the bookmarks"),
@@ -40,9 +42,8 @@ DiskWatch::DiskWatch(MainWindow& window) : QObject(&window), m_window(window)
                          [&s] { s.samples().overwrite(); },
                          {}});
 
-    OfferBar& bar = m_window.diskBar();
-    connect(&bar, &OfferBar::accepted, this, &DiskWatch::reloadChanged);
-    connect(&bar, &OfferBar::declined, this, &DiskWatch::keepMine);
+    connect(&m_bar, &OfferBar::accepted, this, &DiskWatch::reloadChanged);
+    connect(&m_bar, &OfferBar::declined, this, &DiskWatch::keepMine);
     // Checked after the event that brought it: a save's own rename is remembered by then.
     const auto later = [this] {
         QMetaObject::invokeMethod(this, &DiskWatch::check, Qt::QueuedConnection);
@@ -55,7 +56,7 @@ DiskWatch::DiskWatch(MainWindow& window) : QObject(&window), m_window(window)
                     later();
             });
     // Another window of this process activated and left: no application state change.
-    m_window.installEventFilter(this);
+    m_target.parent->installEventFilter(this);
     connect(&s.stream(), &StreamDocument::streamChanged, this, &DiskWatch::watchPaths);
     connect(&s.lut(), &LutDocument::modifiedChanged, this, &DiskWatch::watchPaths);
     connect(&s.annotations(), &AnnotationsDocument::modifiedChanged, this, &DiskWatch::watchPaths);
@@ -63,7 +64,7 @@ DiskWatch::DiskWatch(MainWindow& window) : QObject(&window), m_window(window)
 
 bool DiskWatch::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched == &m_window && event->type() == QEvent::WindowActivate)
+    if (watched == m_target.parent && event->type() == QEvent::WindowActivate)
         QMetaObject::invokeMethod(this, &DiskWatch::check, Qt::QueuedConnection);
     return false;
 }
@@ -100,7 +101,7 @@ void DiskWatch::watchPaths()
 void DiskWatch::say(const Status& reloaded)
 {
     if (!reloaded)
-        m_window.showMessage(QString::fromStdString(reloaded.error().message));
+        m_target.showMessage(QString::fromStdString(reloaded.error().message));
 }
 
 bool DiskWatch::pending(const Watched& w) const
@@ -120,7 +121,7 @@ QStringList DiskWatch::changed() const
 void DiskWatch::check()
 {
     watchPaths(); // a file made since is watched from now on
-    OfferBar& bar = m_window.diskBar();
+    OfferBar& bar = m_bar;
     QStringList names;
     QStringList files;
     for (const Watched& w : m_watched)

@@ -5,6 +5,7 @@
 // at the next save; the bookmarks and samples (saved at every change) are then written over.
 #pragma once
 
+#include "ui/actions/menus.h"
 #include "visioncore/basics/file_fingerprint.h"
 #include "visioncore/basics/result.h"
 
@@ -17,13 +18,18 @@
 
 namespace fieldsight::ui {
 
-class MainWindow;
+class AnnotationsFile;
+class OfferBar;
+class SessionFiles;
 
 class DiskWatch : public QObject
 {
     Q_OBJECT
 public:
-    explicit DiskWatch(MainWindow& window);
+    /// Reloads through `annotations` and `files` (which ask and report as File > Save does),
+    /// offers in `bar`, and looks again whenever `target`'s window is activated.
+    DiskWatch(const MenuTarget& target, AnnotationsFile& annotations, SessionFiles& files,
+              OfferBar& bar);
 
     /// Looks at every document's file now: offers to reload those changed and not yet declined.
     void check();
@@ -50,7 +56,8 @@ private:
     void keepMine();
     void watchPaths();
 
-    MainWindow& m_window;
+    MenuTarget m_target;
+    OfferBar& m_bar;
     std::vector<Watched> m_watched;
     QFileSystemWatcher m_files;
 };

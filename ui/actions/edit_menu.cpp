@@ -1,7 +1,8 @@
 // Edit: undo and redo of the active document, the colour class and the tools.
 #include "ui/actions/menus.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "ui/panels/lut_panel.h"
+#include "ui/tools/tool_manager.h"
 
 #include <QMenuBar>
 #include <QUndoGroup>
@@ -9,14 +10,14 @@
 
 namespace fieldsight::ui {
 
-void addEditMenu(MainWindow& w)
+void addEditMenu(QMenuBar& bar, const MenuTarget& w, const MenuParts& parts)
 {
-    QMenu* edit = w.menuBar()->addMenu(QObject::tr("&Edit"));
-    QUndoGroup& group = w.session().undoGroup();
+    QMenu* edit = bar.addMenu(QObject::tr("&Edit"));
+    QUndoGroup& group = w.session.undoGroup();
     // Undo takes back the active document's steps, then those of the document edited before it
     // (the text names that document), so Ctrl+Z walks back through every edit left.
-    EditingSession& session = w.session();
-    auto* undo = new QAction(QObject::tr("Undo"), &w);
+    EditingSession& session = w.session;
+    auto* undo = new QAction(QObject::tr("Undo"), w.parent);
     undo->setObjectName(QStringLiteral("edit.undo"));
     undo->setShortcuts(QKeySequence::Undo);
     const auto follow = [&session, undo] {
@@ -34,7 +35,7 @@ void addEditMenu(MainWindow& w)
     QObject::connect(&group, &QUndoGroup::activeStackChanged, undo, follow);
     QObject::connect(undo, &QAction::triggered, &session, &EditingSession::undo);
     follow();
-    QAction* redo = group.createRedoAction(&w, QObject::tr("Redo"));
+    QAction* redo = group.createRedoAction(w.parent, QObject::tr("Redo"));
     redo->setObjectName(QStringLiteral("edit.redo"));
     // Both Ctrl+Shift+Z and Ctrl+Y, whatever the platform's own binding is.
     QList<QKeySequence> redo_keys = QKeySequence::keyBindings(QKeySequence::Redo);
@@ -49,11 +50,12 @@ void addEditMenu(MainWindow& w)
     QAction* remove = edit->addAction(QObject::tr("Delete selected"));
     remove->setObjectName(QStringLiteral("edit.delete"));
     remove->setShortcut(QKeySequence::Delete);
-    QObject::connect(remove, &QAction::triggered, &w, [&w] { w.tools().deleteSelection(); });
+    QObject::connect(remove, &QAction::triggered, w.parent,
+                     [manager = &w.tools] { manager->deleteSelection(); });
     QMenu* classes = edit->addMenu(QObject::tr("Colour class"));
-    classes->addActions(w.lutPanel().colourActions());
+    classes->addActions(parts.lut_panel.colourActions());
     QMenu* tools = edit->addMenu(QObject::tr("Tool"));
-    tools->addActions(w.tools().actions());
+    tools->addActions(w.tools.actions());
 }
 
 } // namespace fieldsight::ui

@@ -5,7 +5,7 @@
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/recording/frame_recorder.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "visioncore/io/lut_import.h"
 
 #include <QFileInfo>
@@ -24,106 +24,109 @@ QString lutFilter()
     return filter + QStringLiteral(");;") + QObject::tr("All files (*)");
 }
 
-void addRecordItem(MainWindow& w, QMenu* file)
+void addRecordItem(const MenuTarget& w, FrameRecorder& recorder, QMenu* file)
 {
     QAction* record = file->addAction(QObject::tr("Record camera to folder…"));
     record->setObjectName(QStringLiteral("record_camera"));
     record->setCheckable(true);
     record->setToolTip(QObject::tr("Write every camera frame shown (play to record "
                                    "continuously) into a stream folder, with the LUT in use"));
-    FrameRecorder& recorder = w.recorder();
-    QObject::connect(record, &QAction::triggered, &w, [&w, &recorder, record](bool on) {
+    QObject::connect(record, &QAction::triggered, w.parent, [w, r = &recorder, record](bool on) {
         if (!on) {
-            if (Status s = recorder.stop(); !s)
+            if (Status s = r->stop(); !s)
                 w.showMessage(QString::fromStdString(s.error().message));
             else
                 w.showMessage(QObject::tr("Recorded %1 frames to %2")
-                                  .arg(qulonglong(recorder.frames()))
-                                  .arg(recorder.path()),
+                                  .arg(qulonglong(r->frames()))
+                                  .arg(r->path()),
                               false);
             return;
         }
         const QString folder =
-            Dialogs::current().folder(&w, QObject::tr("Record camera frames into"), {});
+            Dialogs::current().folder(w.parent, QObject::tr("Record camera frames into"), {});
         Status s = folder.isEmpty() ? Status(Error{"no folder chosen"})
-                                    : recorder.start(folder, w.session().lut().table());
+                                    : r->start(folder, w.session.lut().table());
         if (!s && !folder.isEmpty())
             w.showMessage(QString::fromStdString(s.error().message));
-        record->setChecked(recorder.recording());
+        record->setChecked(r->recording());
     });
     QObject::connect(&recorder, &FrameRecorder::stateChanged, record, &QAction::setChecked);
-    QObject::connect(&w.session().stream(), &StreamDocument::streamChanged, record,
-                     [&w, record] { record->setEnabled(w.session().stream().live()); });
+    StreamDocument& stream = w.session.stream();
+    QObject::connect(&stream, &StreamDocument::streamChanged, record,
+                     [s = &stream, record] { record->setEnabled(s->live()); });
     record->setEnabled(false);
 }
 
 } // namespace
 
-void addFileMenu(MainWindow& w)
+void addFileMenu(QMenuBar& bar, const MenuTarget& w, const MenuParts& parts)
 {
-    SessionFiles& files = w.files();
-    EditingSession& session = w.session();
-    QMenu* file = w.menuBar()->addMenu(QObject::tr("&File"));
-    addMenuItem(file, QObject::tr("Open stream folder…"), QKeySequence::Open, &w, [&] {
+    // Captured by pointer and copy: the lambdas outlive this call and `w`.
+    SessionFiles* files = &parts.files;
+    AnnotationsFile* annotations = &parts.annotation_files;
+    EditingSession* session = &w.session;
+    QWidget* parent = w.parent;
+    QMenu* file = bar.addMenu(QObject::tr("&File"));
+    addMenuItem(file, QObject::tr("Open stream folder…"), QKeySequence::Open, parent, [=] {
         const QString dir =
-            Dialogs::current().folder(&w, QObject::tr("Open stream folder"),
-                                      QFileInfo(session.stream().streamSpec()).absolutePath());
+            Dialogs::current().folder(parent, QObject::tr("Open stream folder"),
+                                      QFileInfo(session->stream().streamSpec()).absolutePath());
         if (!dir.isEmpty())
-            files.openStream(dir);
+            files->openStream(dir);
     });
     addMenuItem(file, QObject::tr("Open stream file (.strm, video)…"),
-                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), &w, [&] {
+                QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), parent, [=] {
                     const QString path = Dialogs::current().openFile(
-                        &w, QObject::tr("Open stream file"),
-                        QFileInfo(session.stream().streamSpec()).absolutePath(),
+                        parent, QObject::tr("Open stream file"),
+                        QFileInfo(session->stream().streamSpec()).absolutePath(),
                         QObject::tr("Streams (*.strm *.avi *.mp4 *.mkv *.mov *.webm);;All "
                                     "files (*)"));
                     if (!path.isEmpty())
-                        files.openStream(path);
+                        files->openStream(path);
                 });
-    file->addAction(QObject::tr("Open camera…"), &w, [&] {
-        if (const auto n = Dialogs::current().number(&w, QObject::tr("Open camera"),
+    file->addAction(QObject::tr("Open camera…"), parent, [=] {
+        if (const auto n = Dialogs::current().number(parent, QObject::tr("Open camera"),
                                                      QObject::tr("Camera number:"), 0, 0, 99))
-            files.openStream(QStringLiteral("camera:%1").arg(*n));
+            files->openStream(QStringLiteral("camera:%1").arg(*n));
     });
-    addRecordItem(w, file);
-    addMenuItem(file, QObject::tr("New LUT"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_N), &w,
-                [&] { (void)files.newLut(); })
+    addRecordItem(w, parts.recorder, file);
+    addMenuItem(file, QObject::tr("New LUT"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_N), parent,
+                [=] { (void)files->newLut(); })
         ->setObjectName(QStringLiteral("file.new_lut"));
-    addMenuItem(file, QObject::tr("Open LUT…"), QKeySequence(Qt::CTRL | Qt::Key_L), &w, [&] {
+    addMenuItem(file, QObject::tr("Open LUT…"), QKeySequence(Qt::CTRL | Qt::Key_L), parent, [=] {
         const QString path = Dialogs::current().openFile(
-            &w, QObject::tr("Open LUT"), QFileInfo(session.lut().path()).absolutePath(),
+            parent, QObject::tr("Open LUT"), QFileInfo(session->lut().path()).absolutePath(),
             lutFilter());
         if (!path.isEmpty())
-            files.openLut(path);
+            files->openLut(path);
     });
-    file->addAction(QObject::tr("Compare with LUT…"), &w, [&] {
+    file->addAction(QObject::tr("Compare with LUT…"), parent, [=] {
         const QString path = Dialogs::current().openFile(
-            &w, QObject::tr("Compare with LUT"), QFileInfo(session.lut().path()).absolutePath(),
-            lutFilter());
+            parent, QObject::tr("Compare with LUT"),
+            QFileInfo(session->lut().path()).absolutePath(), lutFilter());
         if (!path.isEmpty())
-            files.compareLut(path);
+            files->compareLut(path);
     });
     // Ctrl+S saves what has unsaved edits: the annotations, and the table as it always did.
-    QAction* save = addMenuItem(file, QObject::tr("Save"), QKeySequence::Save, &w,
-                                [&] { (void)w.annotationFiles().saveAll(); });
+    QAction* save = addMenuItem(file, QObject::tr("Save"), QKeySequence::Save, parent,
+                                [=] { (void)files->saveAll(); });
     save->setObjectName(QStringLiteral("file.save"));
     save->setToolTip(QObject::tr("Save the LUT, and the annotations when they have unsaved edits"));
     addMenuItem(file, QObject::tr("Save LUT as…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S),
-                &w, [&] { (void)files.saveLutAs(); });
+                parent, [=] { (void)files->saveLutAs(); });
     addMenuItem(file, QObject::tr("Save annotations"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_S),
-                &w, [&] { (void)w.annotationFiles().save(); })
+                parent, [=] { (void)annotations->save(); })
         ->setObjectName(QStringLiteral("file.save_annotations"));
-    file->addAction(QObject::tr("Save annotations as…"), &w,
-                    [&] { (void)w.annotationFiles().saveAs(); })
+    file->addAction(QObject::tr("Save annotations as…"), parent,
+                    [=] { (void)annotations->saveAs(); })
         ->setObjectName(QStringLiteral("file.save_annotations_as"));
-    files.setRecentMenu(file->addMenu(QObject::tr("Recent streams")));
+    files->setRecentMenu(file->addMenu(QObject::tr("Recent streams")));
     file->addSeparator();
-    QAction* coco = file->addAction(QObject::tr("Export annotations as COCO…"), &w, [&] {
-        const QFileInfo spec(session.stream().streamSpec());
+    QAction* coco = file->addAction(QObject::tr("Export annotations as COCO…"), parent, [=] {
+        const QFileInfo spec(session->stream().streamSpec());
         const QString folder = spec.isDir() ? spec.absoluteFilePath() : spec.absolutePath();
         const QString path = Dialogs::current().saveFile(
-            &w, QObject::tr("Export annotations as COCO"),
+            parent, QObject::tr("Export annotations as COCO"),
             folder + QStringLiteral("/%1_coco.json").arg(spec.completeBaseName()),
             QObject::tr("COCO JSON (*.json)"));
         if (!path.isEmpty())
@@ -132,20 +135,20 @@ void addFileMenu(MainWindow& w)
     coco->setObjectName(QStringLiteral("file.export_coco"));
     file->addSeparator();
     addMenuItem(
-        file, QObject::tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), &w, [&] {
+        file, QObject::tr("Save view as PNG…"), QKeySequence(Qt::CTRL | Qt::Key_E), parent, [=] {
             const QString name =
                 QStringLiteral("%1_%2.png")
-                    .arg(QFileInfo(session.stream().streamSpec()).completeBaseName())
-                    .arg(session.stream().currentIndex(), 6, 10, QLatin1Char('0'));
+                    .arg(QFileInfo(session->stream().streamSpec()).completeBaseName())
+                    .arg(session->stream().currentIndex(), 6, 10, QLatin1Char('0'));
             const QString path = Dialogs::current().saveFile(
-                &w, QObject::tr("Save view as PNG"), name, QObject::tr("PNG images (*.png)"));
+                parent, QObject::tr("Save view as PNG"), name, QObject::tr("PNG images (*.png)"));
             if (!path.isEmpty())
-                files.saveSnapshot(path);
+                files->saveSnapshot(path);
         });
     addMenuItem(file, QObject::tr("Copy view"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C),
-                &files, &SessionFiles::copySnapshot);
+                files, &SessionFiles::copySnapshot);
     file->addSeparator();
-    addMenuItem(file, QObject::tr("Quit"), QKeySequence::Quit, &w, &QWidget::close);
+    addMenuItem(file, QObject::tr("Quit"), QKeySequence::Quit, parent, &QWidget::close);
 }
 
 } // namespace fieldsight::ui

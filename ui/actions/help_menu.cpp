@@ -1,7 +1,6 @@
 // Help: every shortcut the menus hold, and about.
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/main_window.h"
 
 #include <QCoreApplication>
 #include <QMenuBar>
@@ -24,10 +23,10 @@ bool pressable(const QKeySequence& sequence)
 
 } // namespace
 
-QString shortcutsHtml(const MainWindow& w)
+QString shortcutsHtml(const QMenuBar& bar)
 {
     QStringList rows;
-    for (QMenu* menu : w.menuBar()->findChildren<QMenu*>()) {
+    for (QMenu* menu : bar.findChildren<QMenu*>()) {
         // An item of a submenu is named with it ("Detections to annotations: All kinds").
         const QString within = qobject_cast<QMenu*>(menu->parentWidget())
                                    ? menu->title().remove('&') + QStringLiteral(": ")
@@ -55,16 +54,19 @@ QString shortcutsHtml(const MainWindow& w)
     return text + QStringLiteral("</table>");
 }
 
-void addHelpMenu(MainWindow& w)
+void addHelpMenu(QMenuBar& bar, const MenuTarget& w)
 {
-    QMenu* help = w.menuBar()->addMenu(QObject::tr("&Help"));
-    QAction* keys = help->addAction(QObject::tr("Keyboard shortcuts"), &w, [&w] {
-        Dialogs::current().document(&w, QObject::tr("Keyboard shortcuts"), shortcutsHtml(w));
-    });
+    QMenu* help = bar.addMenu(QObject::tr("&Help"));
+    QWidget* parent = w.parent;
+    QAction* keys =
+        help->addAction(QObject::tr("Keyboard shortcuts"), parent, [parent, menus = &bar] {
+            Dialogs::current().document(parent, QObject::tr("Keyboard shortcuts"),
+                                        shortcutsHtml(*menus));
+        });
     keys->setObjectName(QStringLiteral("help.shortcuts"));
-    help->addAction(QObject::tr("About Fieldsight"), &w, [&w] {
+    help->addAction(QObject::tr("About Fieldsight"), parent, [parent] {
         Dialogs::current().information(
-            &w, QObject::tr("About Fieldsight"),
+            parent, QObject::tr("About Fieldsight"),
             QObject::tr("Fieldsight %1: a colour-segmentation robot vision debugger.")
                 .arg(QCoreApplication::applicationVersion()));
     });

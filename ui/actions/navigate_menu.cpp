@@ -1,7 +1,6 @@
 // Navigate: stepping and playing (the navigator's actions), the bookmarks and the evaluation's
 // disagreements.
 #include "ui/actions/menus.h"
-#include "ui/main_window.h"
 #include "ui/panels/bookmarks_panel.h"
 #include "ui/panels/evaluation_panel.h"
 #include "ui/stream_navigator/stream_navigator.h"
@@ -10,11 +9,11 @@
 
 namespace fieldsight::ui {
 
-void addNavigateMenu(MainWindow& w)
+void addNavigateMenu(QMenuBar& bar, const MenuParts& parts)
 {
-    BookmarksPanel& marks = w.bookmarksPanel();
-    QMenu* nav = w.menuBar()->addMenu(QObject::tr("&Navigate"));
-    nav->addActions(w.navigator().navigationActions());
+    BookmarksPanel& marks = parts.bookmarks;
+    QMenu* nav = bar.addMenu(QObject::tr("&Navigate"));
+    nav->addActions(parts.navigator.navigationActions());
     nav->addSeparator();
     addMenuItem(nav, QObject::tr("Bookmark this frame…"), QKeySequence(Qt::CTRL | Qt::Key_B),
                 &marks, &BookmarksPanel::markCurrentFrame);
@@ -23,7 +22,7 @@ void addNavigateMenu(MainWindow& w)
     addMenuItem(nav, QObject::tr("Previous bookmark"), QKeySequence(Qt::Key_BracketLeft), &marks,
                 [&marks] { marks.jump(-1); });
     nav->addSeparator();
-    EvaluationPanel& evaluation = w.evaluationPanel();
+    EvaluationPanel& evaluation = parts.evaluation;
     QAction* next = addMenuItem(nav, QObject::tr("Next disagreement"), QKeySequence(Qt::Key_F6),
                                 &evaluation, [&evaluation] { evaluation.jump(1); });
     next->setObjectName(QStringLiteral("navigate.next_disagreement"));

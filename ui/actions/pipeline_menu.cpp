@@ -1,13 +1,13 @@
 // Pipeline: run the frame again, reset, parameter files (loading one is an undoable edit),
 // comparing the table and parameters in use with others over the annotated frames, and fitting
-// the parameters to those frames (FitCommands).
+// the parameters to those frames (FitActions).
 #include "ui/actions/disk_conflict.h"
-#include "ui/actions/fit_commands.h"
+#include "ui/actions/fit_actions.h"
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/main_window.h"
 #include "ui/dialogs/ab_compare_dialog.h"
+#include "ui/document/editing_session.h"
 
 #include "visioncore/basics/output_guard.h"
 #include "visioncore/io/orientation.h"
@@ -23,18 +23,18 @@ namespace {
 /// Saves the parameters in use as the stream's own: to the file its manifest names, or to a new
 /// params.json in its folder, which the manifest then names (so the stream opens with them, in
 /// the window and on the command line). Never over a file the stream does not name.
-void saveParams(MainWindow& w);
+void saveParams(const MenuTarget& w);
 
 /// The stream names `file` as its own parameters, which hold what the settings hold.
-void markSaved(MainWindow& w, const std::string& file)
+void markSaved(const MenuTarget& w, const std::string& file)
 {
-    w.session().stream().setParamsFile(file);
-    w.session().settings().setFile(fromLocalPath(file));
+    w.session.stream().setParamsFile(file);
+    w.session.settings().setFile(fromLocalPath(file));
 }
 
-void saveParamsToStream(MainWindow& w)
+void saveParamsToStream(const MenuTarget& w)
 {
-    StreamDocument& stream = w.session().stream();
+    StreamDocument& stream = w.session.stream();
     const StreamInfo& info = stream.info();
     if (!stream.hasStream() || info.kind != StreamKind::ImageFolder) {
         w.showMessage(QObject::tr("Only a folder of images keeps its own parameters (in its "
@@ -55,7 +55,7 @@ void saveParamsToStream(MainWindow& w)
     // silently.
     const auto reload = [&] {
         auto read = ParamSet::load(file);
-        Status s = read ? w.session().settings().setParamChanges(
+        Status s = read ? w.session.settings().setParamChanges(
                               read.value(), QObject::tr("Reload parameters from disk"))
                         : Status(read.error());
         if (!s)
@@ -65,7 +65,7 @@ void saveParamsToStream(MainWindow& w)
         return s.ok();
     };
     bool overwrite = false; // the stream's own file is written either way
-    if (settleDiskChange(w, named && w.session().settings().changedOnDisk(),
+    if (settleDiskChange(w, named && w.session.settings().changedOnDisk(),
                          QObject::tr("the parameters"), fromLocalPath(file), overwrite, reload,
                          [&w] {
                              saveParams(w);
@@ -73,7 +73,7 @@ void saveParamsToStream(MainWindow& w)
                          })
             .has_value())
         return; // reloaded, saved elsewhere or cancelled
-    Status s = w.session().settings().paramChanges().save(file);
+    Status s = w.session.settings().paramChanges().save(file);
     if (s && !named)
         s = writeStreamParams(info.path, file);
     if (!s) {
@@ -88,9 +88,9 @@ void saveParamsToStream(MainWindow& w)
 
 /// Pipeline > Save parameters…: the parameters in use to a file the user names, through the
 /// output guard (never over a frame, a table or another command's file).
-void saveParams(MainWindow& w)
+void saveParams(const MenuTarget& w)
 {
-    const QString path = Dialogs::current().saveFile(&w, QObject::tr("Save parameters"),
+    const QString path = Dialogs::current().saveFile(w.parent, QObject::tr("Save parameters"),
                                                      QStringLiteral("params.json"),
                                                      QObject::tr("Parameter sets (*.json)"));
     if (path.isEmpty())
@@ -98,7 +98,7 @@ void saveParams(MainWindow& w)
     const OutputFileKind params{"fieldsight-params/1", {}, false, true};
     Status s = checkOutputFile("Save parameters", toLocalPath(path), {}, params);
     if (s)
-        s = w.session().settings().paramChanges().save(toLocalPath(path));
+        s = w.session.settings().paramChanges().save(toLocalPath(path));
     if (!s)
         w.showMessage(QString::fromStdString(s.error().message));
     else
@@ -107,24 +107,24 @@ void saveParams(MainWindow& w)
 
 } // namespace
 
-void addPipelineMenu(MainWindow& w)
+void addPipelineMenu(QMenuBar& bar, const MenuTarget& w, const MenuParts& parts)
 {
-    EditingSession& session = w.session();
-    QMenu* pipe = w.menuBar()->addMenu(QObject::tr("&Pipeline"));
+    EditingSession& session = w.session;
+    QMenu* pipe = bar.addMenu(QObject::tr("&Pipeline"));
     addMenuItem(pipe, QObject::tr("Run this frame again"), QKeySequence(Qt::Key_F5),
                 &session.stream(), &StreamDocument::rerun);
-    pipe->addAction(QObject::tr("Reset every parameter"), &w, [&session] {
+    pipe->addAction(QObject::tr("Reset every parameter"), w.parent, [&session] {
         (void)session.settings().setParamChanges({}, QObject::tr("Reset every parameter"));
     });
     pipe->addAction(QObject::tr("Reset the running means"), &session.stream(),
                     &StreamDocument::resetMeans);
-    pipe->addAction(QObject::tr("Save parameters…"), &w, [&w] { saveParams(w); });
-    pipe->addAction(QObject::tr("Save parameters to the stream"), &w,
-                    [&w] { saveParamsToStream(w); })
+    pipe->addAction(QObject::tr("Save parameters…"), w.parent, [w] { saveParams(w); });
+    pipe->addAction(QObject::tr("Save parameters to the stream"), w.parent,
+                    [w] { saveParamsToStream(w); })
         ->setObjectName(QStringLiteral("pipeline.save_params_to_stream"));
-    pipe->addAction(QObject::tr("Load parameters…"), &w, [&w, &session] {
-        const QString path = Dialogs::current().openFile(&w, QObject::tr("Load parameters"), {},
-                                                         QObject::tr("Parameter sets (*.json)"));
+    pipe->addAction(QObject::tr("Load parameters…"), w.parent, [w, &session] {
+        const QString path = Dialogs::current().openFile(
+            w.parent, QObject::tr("Load parameters"), {}, QObject::tr("Parameter sets (*.json)"));
         if (path.isEmpty())
             return;
         auto params = ParamSet::load(toLocalPath(path));
@@ -135,24 +135,24 @@ void addPipelineMenu(MainWindow& w)
             w.showMessage(QString::fromStdString(s.error().message));
     });
     pipe->addSeparator();
-    QAction* compare = pipe->addAction(QObject::tr("Compare A/B…"), &w, [&w, &session] {
-        auto* dialog = new AbCompareDialog(session, &w);
+    QAction* compare = pipe->addAction(QObject::tr("Compare A/B…"), w.parent, [w, &session] {
+        auto* dialog = new AbCompareDialog(session, w.parent);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->show();
     });
     compare->setObjectName(QStringLiteral("pipeline.compare_ab"));
     compare->setToolTip(QObject::tr("Run the annotated frames with another table or parameter set "
                                     "and list the frames it fixes and breaks"));
-    FitCommands* fit = &w.fit();
+    FitActions* fit = &parts.fit;
     QAction* fit_action = addMenuItem(pipe, QObject::tr("Fit to annotations…"),
                                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), fit,
-                                      &FitCommands::fitToAnnotations);
+                                      &FitActions::fitToAnnotations);
     fit_action->setObjectName(QStringLiteral("pipeline.fit_annotations"));
     fit_action->setToolTip(QObject::tr(
         "Search the stages' parameters for the best score on the annotated frames, show the "
         "scores before and after on the fitted and held-out frames, then apply (one undo step)"));
     // Greyed while the search runs: a second click would only wait for the first.
-    QObject::connect(fit, &FitCommands::finished, fit_action,
+    QObject::connect(fit, &FitActions::finished, fit_action,
                      [fit_action] { fit_action->setEnabled(true); });
     QObject::connect(fit_action, &QAction::triggered, fit_action,
                      [fit_action, fit] { fit_action->setEnabled(!fit->running()); });

@@ -5,28 +5,36 @@
 // question goes through the Dialogs seam and every error to the window's message bar.
 #pragma once
 
+#include "ui/actions/menus.h"
 #include "ui/document/lut_document.h"
 
 #include <QHash>
 #include <QObject>
 #include <QStringList>
 
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 class QMenu;
 class QProgressDialog;
 
 namespace fieldsight::ui {
 
+class AnnotationsFile;
+class FrameView;
 class LutCompareDialog;
-class MainWindow;
+class OfferBar;
 struct WindowSettings;
 
 class SessionFiles : public QObject
 {
     Q_OBJECT
 public:
-    explicit SessionFiles(MainWindow& window);
+    /// Asks about `annotations`' unsaved edits before another stream opens, snapshots `view`
+    /// and offers a crashed session's table edits in `recovery_bar`.
+    SessionFiles(const MenuTarget& target, AnnotationsFile& annotations, FrameView& view,
+                 OfferBar& recovery_bar);
 
     /// Opens a stream in the background with a progress dialog (cancel keeps the stream open
     /// before); streamOpened() tells how it went. An error shows in the window.
@@ -55,6 +63,9 @@ public:
     /// Starts an empty, untitled table (after asking about unsaved edits); false when the user
     /// kept them.
     bool newLut();
+    /// File > Save (Ctrl+S): the annotations when they have unsaved edits, and the LUT as
+    /// before (when it has unsaved edits, or when the annotations had none).
+    bool saveAll();
     /// Saves the edited LUT to its file (Save As when it has no .lut file yet; a question when
     /// another window or program changed the file since: reload, Save As, overwrite, cancel);
     /// false with a message in the window when edits are left unsaved.
@@ -91,6 +102,11 @@ public:
 
 signals:
     void streamOpened(bool ok);
+    /// A stream opened: the window's settings are to be saved now, not only on a clean quit, so
+    /// that after a crash the next start reopens it.
+    void settingsToSave();
+    /// The compare dialog's chosen row: the cells to light in the frame and the UV plane.
+    void compareCellsChosen(const std::vector<std::uint32_t>& cells);
 
 private:
     /// The open stream's folder (a file stream's: the folder it is in).
@@ -108,7 +124,10 @@ private:
     bool applyRecovery(const LutRecovery& recovery);
     void rebuildRecentMenu();
 
-    MainWindow& m_window;
+    MenuTarget m_target;
+    AnnotationsFile& m_annotations;
+    FrameView& m_view;
+    OfferBar& m_recovery_bar;
     QProgressDialog* m_progress = nullptr;
     QHash<QString, int> m_frames; ///< the frame a stream was last on, by its absolute path
     /// Hides the "no table" warning once the table has a classified cell.

@@ -3,7 +3,7 @@
 #include "ui/actions/session_files.h"
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "visioncore/io/orientation.h"
 
 #include <QFileInfo>
@@ -14,7 +14,7 @@ void SessionFiles::offerAsStreamTable(const QString& path)
 {
     // A table saved under another name is not what the stream opens with next time, unless
     // its manifest names it: offer that.
-    StreamDocument& stream = m_window.session().stream();
+    StreamDocument& stream = m_target.session.stream();
     if (!stream.hasStream() || !QFileInfo(stream.streamSpec()).isDir())
         return;
     const QString own = fromLocalPath(stream.info().default_lut);
@@ -32,7 +32,7 @@ void SessionFiles::offerAsStreamTable(const QString& path)
     if (turned) {
         const int deg = degrees(stream.orientation());
         const int choice = Dialogs::current().choice(
-            &m_window, title,
+            m_target.parent, title,
             text + QStringLiteral("\n\n") +
                 tr("The frames are shown turned %1°, which its stream.json does not say. Save "
                    "the orientation with the table, so fieldsight run reads the frames as the "
@@ -42,28 +42,28 @@ void SessionFiles::offerAsStreamTable(const QString& path)
         if (choice < 0) // Cancel: neither
             return;
         with_orientation = choice == 0;
-    } else if (Dialogs::current().question(&m_window, title, text,
+    } else if (Dialogs::current().question(m_target.parent, title, text,
                                            QMessageBox::Yes | QMessageBox::No,
                                            QMessageBox::Yes) != QMessageBox::Yes) {
         return;
     }
     if (Status s = writeStreamLut(toLocalPath(streamFolder()), toLocalPath(path)); !s) {
-        m_window.showMessage(QString::fromStdString(s.error().message));
+        m_target.showMessage(QString::fromStdString(s.error().message));
         return;
     }
     if (with_orientation) {
         if (Status s = stream.saveOrientation(); !s) {
-            m_window.showMessage(tr("Saved %1 as the stream's table, but not its orientation: %2")
+            m_target.showMessage(tr("Saved %1 as the stream's table, but not its orientation: %2")
                                      .arg(path, QString::fromStdString(s.error().message)));
             return;
         }
-        m_window.showMessage(tr("Saved %1; the stream %2 now opens with it, turned %3°")
+        m_target.showMessage(tr("Saved %1; the stream %2 now opens with it, turned %3°")
                                  .arg(path, stream.streamSpec())
                                  .arg(degrees(stream.orientation())),
                              false);
         return;
     }
-    m_window.showMessage(
+    m_target.showMessage(
         tr("Saved %1; the stream %2 now opens with it").arg(path, stream.streamSpec()), false);
 }
 

@@ -1,6 +1,7 @@
 // View: the view mode, zoom, detection labels, the stream's orientation and the panels.
 #include "ui/actions/menus.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
+#include "ui/frame_view/frame_view.h"
 
 #include <QActionGroup>
 #include <QDir>
@@ -12,18 +13,18 @@ namespace {
 
 /// Which way the open stream's pictures are turned upright (an undoable edit of the stream), and
 /// keeping that in its stream.json, only when asked.
-void addOrientationMenu(MainWindow& w, QMenu& menu)
+void addOrientationMenu(const MenuTarget& w, QMenu& menu)
 {
-    StreamDocument& stream = w.session().stream();
+    StreamDocument& stream = w.session.stream();
     menu.setObjectName(QStringLiteral("view.orientation"));
-    auto* turns = new QActionGroup(&w);
+    auto* turns = new QActionGroup(w.parent);
     const std::pair<QString, Orientation> turn_list[] = {
         {QObject::tr("As stored"), Orientation::Upright},
         {QObject::tr("Turn 90° clockwise"), Orientation::Clockwise90},
         {QObject::tr("Turn 180°"), Orientation::Half},
         {QObject::tr("Turn 90° anticlockwise"), Orientation::Clockwise270}};
     for (const auto& [text, o] : turn_list) {
-        QAction* a = menu.addAction(text, &w, [&w, &stream, o = o] {
+        QAction* a = menu.addAction(text, w.parent, [w, &stream, o = o] {
             if (Status s = stream.setOrientation(o); !s) {
                 w.showMessage(QString::fromStdString(s.error().message));
                 return;
@@ -39,7 +40,7 @@ void addOrientationMenu(MainWindow& w, QMenu& menu)
         turns->addAction(a);
     }
     menu.addSeparator();
-    QAction* save = menu.addAction(QObject::tr("Save to stream"), &w, [&w, &stream] {
+    QAction* save = menu.addAction(QObject::tr("Save to stream"), w.parent, [w, &stream] {
         if (Status s = stream.saveOrientation(); !s)
             w.showMessage(QString::fromStdString(s.error().message));
         else
@@ -59,18 +60,18 @@ void addOrientationMenu(MainWindow& w, QMenu& menu)
             a->setEnabled(stream.hasStream() && !stream.live());
         save->setEnabled(stream.orientationUnsaved() && stream.canSaveOrientation());
     };
-    QObject::connect(&stream, &StreamDocument::orientationChanged, &w, follow);
-    QObject::connect(&stream, &StreamDocument::streamChanged, &w, follow);
+    QObject::connect(&stream, &StreamDocument::orientationChanged, w.parent, follow);
+    QObject::connect(&stream, &StreamDocument::streamChanged, w.parent, follow);
     follow();
 }
 
 } // namespace
 
-void addViewMenu(MainWindow& w)
+void addViewMenu(QMenuBar& bar, const MenuTarget& w, const MenuParts& parts)
 {
-    FrameView& v = w.view();
-    QMenu* view = w.menuBar()->addMenu(QObject::tr("&View"));
-    auto* modes = new QActionGroup(&w);
+    FrameView& v = parts.view;
+    QMenu* view = bar.addMenu(QObject::tr("&View"));
+    auto* modes = new QActionGroup(w.parent);
     const std::pair<QString, ViewMode> mode_list[] = {
         {QObject::tr("Raw"), ViewMode::Raw},
         {QObject::tr("Classified"), ViewMode::Classified},
@@ -108,8 +109,8 @@ void addViewMenu(MainWindow& w)
     addOrientationMenu(w, *view->addMenu(QObject::tr("&Orientation")));
     // The table follows slow changes of the light over the stream (fieldsight --adapt); the
     // strip under the timeline shows how far it has moved.
-    LightScan& light = w.session().lightScan();
-    QAction* follow = view->addAction(QObject::tr("Follow the light"), &w,
+    LightScan& light = w.session.lightScan();
+    QAction* follow = view->addAction(QObject::tr("Follow the light"), w.parent,
                                       [&light](bool on) { light.setEnabled(on); });
     follow->setObjectName(QStringLiteral("view.follow_light"));
     follow->setCheckable(true);
@@ -118,7 +119,7 @@ void addViewMenu(MainWindow& w)
     follow->setToolTip(QObject::tr("From the stream's table, follow slow changes of the light's "
                                    "colour and level over the frames, as --adapt does"));
     view->addSeparator();
-    view->addMenu(&w.docksMenu());
+    view->addMenu(&parts.panels);
 }
 
 } // namespace fieldsight::ui

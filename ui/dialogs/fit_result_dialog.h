@@ -2,7 +2,7 @@
 // parameters it started from and of the tuned ones, on the frames the search fitted and on the
 // frames it held out (so a fit that does not hold shows), then every parameter it changed with
 // its old and new value and what that change bought. Apply asks the caller to put them in use
-// (FitCommands: one undo step of the pipeline settings). Every class, stage and parameter is
+// (FitActions: one undo step of the pipeline settings). Every class, stage and parameter is
 // named by the registries and the result: the dialog names none.
 #pragma once
 

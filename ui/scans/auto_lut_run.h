@@ -1,6 +1,6 @@
 // The automatic table (lut_auto.h) run for the window on a thread of its own: it reads the frames
 // of the stream shown (another reader of it, turned as shown) with progress and cancel, and hands
-// the result back on the GUI thread; what becomes of it is the caller's (CalibrateCommands).
+// the result back on the GUI thread; what becomes of it is the caller's (CalibrateActions).
 #pragma once
 
 #include "visioncore/services/lut_auto.h"

@@ -2,7 +2,7 @@
 // of its own: it fits the pipeline's parameters to a copy of the annotations over another reader
 // of the stream shown, with progress (evaluations done, the best fit score so far) and a cancel
 // that keeps the best found so far, and hands the result back on the GUI thread; what becomes of
-// it is the caller's (FitCommands).
+// it is the caller's (FitActions).
 #pragma once
 
 #include "visioncore/services/param_tuning.h"

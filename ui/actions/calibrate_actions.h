@@ -5,6 +5,7 @@
 // table as it was.
 #pragma once
 
+#include "ui/actions/menus.h"
 #include "ui/scans/auto_lut_run.h"
 
 #include <QObject>
@@ -12,13 +13,11 @@
 
 namespace fieldsight::ui {
 
-class MainWindow;
-
-class CalibrateCommands : public QObject
+class CalibrateActions : public QObject
 {
     Q_OBJECT
 public:
-    explicit CalibrateCommands(MainWindow& window);
+    explicit CalibrateActions(const MenuTarget& target);
 
     /// Calibrate > Automatic table: starts the run over the stream shown (nothing while one
     /// runs; a message when there is no stream of files).
@@ -40,7 +39,7 @@ private:
     /// The message bar's line for a table put in.
     QString summary(const AutoLut& result, std::size_t cells_changed, bool goal_set) const;
 
-    MainWindow& m_window;
+    MenuTarget m_target;
     AutoLutRun* m_run = nullptr;
     bool m_stale = false; ///< the stream changed while the run read it
 };

@@ -7,6 +7,7 @@
 // to the stream then writes. A stream without done annotations gets a message instead of a run.
 #pragma once
 
+#include "ui/actions/menus.h"
 #include "ui/scans/tune_run.h"
 
 #include <QObject>
@@ -18,15 +19,14 @@
 namespace fieldsight::ui {
 
 class FitResultDialog;
-class MainWindow;
 
-class FitCommands : public QObject
+class FitActions : public QObject
 {
     Q_OBJECT
 public:
     static constexpr int kDefaultBudget = 300;
 
-    explicit FitCommands(MainWindow& window);
+    explicit FitActions(const MenuTarget& target);
 
     /// Pipeline > Fit to annotations: asks the budget (starting from the last one), then
     /// start(). Nothing while a search runs.
@@ -58,7 +58,7 @@ private:
     bool ready();
     void onFinished(const Result<TuneResult>& result);
 
-    MainWindow& m_window;
+    MenuTarget m_target;
     TuneRun* m_run = nullptr;
     int m_budget = kDefaultBudget;
     bool m_stale = false; ///< the stream changed while the search read it

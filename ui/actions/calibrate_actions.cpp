@@ -1,7 +1,8 @@
-#include "ui/actions/calibrate_commands.h"
+// Calibrate > Automatic table: the run started, its progress, and its table put in.
+#include "ui/actions/calibrate_actions.h"
 
 #include "ui/adapters/image_adapter.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "ui/widgets/progress_poll.h"
 
 #include "visioncore/services/lut_compare.h"
@@ -23,8 +24,8 @@ bool isColourChoice(const ParamInfo& p)
 
 QString frameCount(std::size_t n)
 {
-    return n == 1 ? CalibrateCommands::tr("1 frame")
-                  : CalibrateCommands::tr("%1 frames").arg(QLocale().toString(qulonglong(n)));
+    return n == 1 ? CalibrateActions::tr("1 frame")
+                  : CalibrateActions::tr("%1 frames").arg(QLocale().toString(qulonglong(n)));
 }
 
 QString percent(double share)
@@ -34,13 +35,14 @@ QString percent(double share)
 
 } // namespace
 
-CalibrateCommands::CalibrateCommands(MainWindow& window) : QObject(&window), m_window(window)
+CalibrateActions::CalibrateActions(const MenuTarget& target)
+    : QObject(target.parent), m_target(target)
 {
     m_run = new AutoLutRun(this);
-    connect(m_run, &AutoLutRun::finished, this, &CalibrateCommands::onFinished);
+    connect(m_run, &AutoLutRun::finished, this, &CalibrateActions::onFinished);
     // A table read from other frames is not this stream's: a run over a stream closed or turned
     // meanwhile is dropped.
-    StreamDocument& stream = window.session().stream();
+    StreamDocument& stream = m_target.session.stream();
     const auto stale = [this] {
         if (m_run->running()) {
             m_stale = true;
@@ -51,13 +53,13 @@ CalibrateCommands::CalibrateCommands(MainWindow& window) : QObject(&window), m_w
     connect(&stream, &StreamDocument::orientationChanged, this, stale);
 }
 
-void CalibrateCommands::automaticTable()
+void CalibrateActions::automaticTable()
 {
     if (m_run->running())
         return;
-    StreamDocument& stream = m_window.session().stream();
+    StreamDocument& stream = m_target.session.stream();
     if (!stream.hasStream() || stream.live() || !stream.reopener()) {
-        m_window.showMessage(stream.live()
+        m_target.showMessage(stream.live()
                                  ? tr("The automatic table reads a stream's frames: record the "
                                       "camera to a folder first (File > Record camera to folder…)")
                                  : tr("Open a stream first: the automatic table is made from its "
@@ -66,46 +68,46 @@ void CalibrateCommands::automaticTable()
     }
     m_stale = false;
     m_run->start(stream.reopener());
-    showProgress(&m_window, tr("Making the automatic table from the stream's frames…"),
+    showProgress(m_target.parent, tr("Making the automatic table from the stream's frames…"),
                  QStringLiteral("calibrate.progress"),
                  {[this] { return m_run->progress(); }, [this] { return m_run->running(); },
                   [this] { m_run->cancel(); }});
 }
 
-void CalibrateCommands::onFinished(const Result<AutoLut>& result)
+void CalibrateActions::onFinished(const Result<AutoLut>& result)
 {
     if (m_stale) {
-        m_window.showMessage(tr("Automatic table dropped: the stream changed while it was made; "
+        m_target.showMessage(tr("Automatic table dropped: the stream changed while it was made; "
                                 "the LUT is unchanged"),
                              false);
         emit finished(false);
         return;
     }
     if (!result) {
-        m_window.showMessage(tr("No automatic table: %1; the LUT is unchanged")
+        m_target.showMessage(tr("No automatic table: %1; the LUT is unchanged")
                                  .arg(QString::fromStdString(result.error().message)));
         emit finished(false);
         return;
     }
     const AutoLut& made = result.value();
     if (made.cancelled) {
-        m_window.showMessage(tr("Automatic table cancelled; the LUT is unchanged"), false);
+        m_target.showMessage(tr("Automatic table cancelled; the LUT is unchanged"), false);
         emit finished(false);
         return;
     }
     // The goal colour first, so the first Ctrl+Z takes back the table and the next the colour.
     const bool goal_set = made.goal_colour && setGoalColour(*made.goal_colour);
-    LutDocument& lut = m_window.session().lut();
+    LutDocument& lut = m_target.session.lut();
     std::vector<CellChange> changes = diffLuts(lut.table(), made.lut).cells;
     const std::size_t cells = changes.size();
     lut.edit(tr("Automatic table from %1").arg(frameCount(made.frames)), std::move(changes));
-    m_window.showMessage(summary(made, cells, goal_set), false);
+    m_target.showMessage(summary(made, cells, goal_set), false);
     emit finished(true);
 }
 
-bool CalibrateCommands::setGoalColour(Colour goal)
+bool CalibrateActions::setGoalColour(Colour goal)
 {
-    PipelineSettings& settings = m_window.session().settings();
+    PipelineSettings& settings = m_target.session.settings();
     const double value = double(int(goal));
     std::vector<std::pair<std::string, std::string>> targets;
     for (const StageDescriptor& stage : settings.pipeline().descriptors())
@@ -120,14 +122,14 @@ bool CalibrateCommands::setGoalColour(Colour goal)
         stack.beginMacro(tr("Goal colour %1").arg(colourLabel(goal)));
     for (const auto& [stage, name] : targets)
         if (Status s = settings.setParam(stage, name, value); !s)
-            m_window.showMessage(QString::fromStdString(s.error().message));
+            m_target.showMessage(QString::fromStdString(s.error().message));
     if (targets.size() > 1)
         stack.endMacro();
     return true;
 }
 
-QString CalibrateCommands::summary(const AutoLut& made, std::size_t cells_changed,
-                                   bool goal_set) const
+QString CalibrateActions::summary(const AutoLut& made, std::size_t cells_changed,
+                                  bool goal_set) const
 {
     QStringList classes;
     for (const AutoLutClass& c : made.classes)

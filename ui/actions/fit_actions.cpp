@@ -1,8 +1,9 @@
-#include "ui/actions/fit_commands.h"
+// Pipeline > Fit to annotations: the search started, its progress, its result shown and applied.
+#include "ui/actions/fit_actions.h"
 
 #include "ui/adapters/local_path.h"
 #include "ui/dialogs/dialogs.h"
-#include "ui/main_window.h"
+#include "ui/document/editing_session.h"
 #include "ui/dialogs/fit_result_dialog.h"
 #include "ui/widgets/progress_poll.h"
 
@@ -30,13 +31,13 @@ std::size_t scoredFrames(const Annotations& truth, const Pipeline& pipeline)
 
 } // namespace
 
-FitCommands::FitCommands(MainWindow& window) : QObject(&window), m_window(window)
+FitActions::FitActions(const MenuTarget& target) : QObject(target.parent), m_target(target)
 {
     m_run = new TuneRun(this);
-    connect(m_run, &TuneRun::finished, this, &FitCommands::onFinished);
+    connect(m_run, &TuneRun::finished, this, &FitActions::onFinished);
     // Parameters fitted to other frames are not this stream's: a search over a stream closed or
     // turned meanwhile is dropped, and a result shown for another stream closes.
-    StreamDocument& stream = window.session().stream();
+    StreamDocument& stream = m_target.session.stream();
     const auto stale = [this] {
         if (m_run->running()) {
             m_stale = true;
@@ -49,22 +50,22 @@ FitCommands::FitCommands(MainWindow& window) : QObject(&window), m_window(window
     connect(&stream, &StreamDocument::orientationChanged, this, stale);
 }
 
-FitResultDialog* FitCommands::resultDialog() const
+FitResultDialog* FitActions::resultDialog() const
 {
     return m_dialog;
 }
 
-void FitCommands::setBudget(int budget)
+void FitActions::setBudget(int budget)
 {
     m_budget = std::clamp(budget, kMinBudget, kMaxBudget);
 }
 
-void FitCommands::fitToAnnotations()
+void FitActions::fitToAnnotations()
 {
     if (m_run->running() || !ready())
         return;
     const std::optional<int> budget = Dialogs::current().number(
-        &m_window, tr("Fit to annotations"),
+        m_target.parent, tr("Fit to annotations"),
         tr("Search the pipeline's parameters for the best score on the annotated frames.\nHow many "
            "evaluations (each runs the fit frames once)? Cancel keeps the best found so far."),
         m_budget, kMinBudget, kMaxBudget);
@@ -74,12 +75,12 @@ void FitCommands::fitToAnnotations()
     start(m_budget);
 }
 
-bool FitCommands::ready()
+bool FitActions::ready()
 {
-    EditingSession& session = m_window.session();
+    EditingSession& session = m_target.session;
     StreamDocument& stream = session.stream();
     if (!stream.hasStream() || stream.live()) {
-        m_window.showMessage(stream.live()
+        m_target.showMessage(stream.live()
                                  ? tr("Fit to annotations reads a stream's annotated frames: "
                                       "record the camera to a folder and annotate it first")
                                  : tr("Open a stream with annotations first: the parameters are "
@@ -88,11 +89,11 @@ bool FitCommands::ready()
     }
     const AnnotationsDocument& annotations = session.annotations();
     if (!annotations.loadProblem().isEmpty()) {
-        m_window.showMessage(tr("Fit to annotations: %1").arg(annotations.loadProblem()));
+        m_target.showMessage(tr("Fit to annotations: %1").arg(annotations.loadProblem()));
         return false;
     }
     if (scoredFrames(annotations.annotations(), session.pipeline()) == 0) {
-        m_window.showMessage(
+        m_target.showMessage(
             annotations.annotations().frames.empty()
                 ? tr("This stream has no annotations yet: annotate some frames and mark them done "
                      "(D), then fit the parameters to them")
@@ -103,11 +104,11 @@ bool FitCommands::ready()
     return true;
 }
 
-bool FitCommands::start(int budget)
+bool FitActions::start(int budget)
 {
     if (m_run->running() || !ready())
         return false;
-    EditingSession& session = m_window.session();
+    EditingSession& session = m_target.session;
     StreamDocument& stream = session.stream();
     // The annotations as the document holds them, unsaved edits too.
     const AnnotationsDocument& annotations = session.annotations();
@@ -118,7 +119,7 @@ bool FitCommands::start(int budget)
     options.orientation = stream.orientation();
     auto reader = openStream(spec, options);
     if (!reader) {
-        m_window.showMessage(QString::fromStdString(reader.error().message));
+        m_target.showMessage(QString::fromStdString(reader.error().message));
         return false;
     }
     auto input = std::make_shared<StreamInput>();
@@ -142,7 +143,7 @@ bool FitCommands::start(int budget)
                                       : tr("Fitting the parameters to %1 annotated frames…")
                                             .arg(QLocale().toString(qulonglong(scored)));
     QProgressDialog* progress =
-        showProgress(&m_window, label, QStringLiteral("fit.progress"),
+        showProgress(m_target.parent, label, QStringLiteral("fit.progress"),
                      {[this] { return m_run->progress(); }, [this] { return m_run->running(); },
                       [this] { m_run->cancel(); }});
     // The best score so far under the count, so a user sees when more is not buying anything.
@@ -157,23 +158,23 @@ bool FitCommands::start(int budget)
     return true;
 }
 
-void FitCommands::onFinished(const Result<TuneResult>& result)
+void FitActions::onFinished(const Result<TuneResult>& result)
 {
     if (m_stale) {
-        m_window.showMessage(tr("Fit to annotations dropped: the stream changed while it ran; "
+        m_target.showMessage(tr("Fit to annotations dropped: the stream changed while it ran; "
                                 "the parameters are unchanged"),
                              false);
         emit finished(false);
         return;
     }
     if (!result) {
-        m_window.showMessage(tr("Fit to annotations: %1; the parameters are unchanged")
+        m_target.showMessage(tr("Fit to annotations: %1; the parameters are unchanged")
                                  .arg(QString::fromStdString(result.error().message)));
         emit finished(false);
         return;
     }
-    EditingSession& session = m_window.session();
-    auto* dialog = new FitResultDialog(result.value(), session.pipeline(), &m_window);
+    EditingSession& session = m_target.session;
+    auto* dialog = new FitResultDialog(result.value(), session.pipeline(), m_target.parent);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     QStringList notes;
     if (session.settings().paramVersion() != m_start_params)
@@ -192,9 +193,9 @@ void FitCommands::onFinished(const Result<TuneResult>& result)
     emit finished(true);
 }
 
-bool FitCommands::apply(const TuneResult& result)
+bool FitActions::apply(const TuneResult& result)
 {
-    PipelineSettings& settings = m_window.session().settings();
+    PipelineSettings& settings = m_target.session.settings();
     const int changed = int(result.changes.size());
     // The settings hold the values that differ from the defaults (the stream's own are in
     // them already): a value the search put back to its default is dropped, as the pipeline
@@ -204,11 +205,11 @@ bool FitCommands::apply(const TuneResult& result)
             changed == 1 ? tr("Fit to annotations (1 parameter)")
                          : tr("Fit to annotations (%1 parameters)").arg(changed));
         !s) {
-        m_window.showMessage(tr("The fitted parameters were not applied: %1")
+        m_target.showMessage(tr("The fitted parameters were not applied: %1")
                                  .arg(QString::fromStdString(s.error().message)));
         return false;
     }
-    m_window.showMessage(tr("Fitted parameters in use: %n changed (Ctrl+Z takes them back); "
+    m_target.showMessage(tr("Fitted parameters in use: %n changed (Ctrl+Z takes them back); "
                             "Pipeline > Save parameters to the stream writes them to its "
                             "params.json",
                             nullptr, changed),

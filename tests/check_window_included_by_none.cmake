@@ -1,0 +1,18 @@
+# Fails when a file under DIR (ui/) other than the window's own includes ui/main_window.h: the
+# menus, panels and documents are given what they act on, and only the window includes them.
+file(GLOB_RECURSE files "${DIR}/*.h" "${DIR}/*.cpp")
+set(offenders "")
+foreach(f ${files})
+    get_filename_component(name "${f}" NAME_WE)
+    if(name STREQUAL "main_window")
+        continue()
+    endif()
+    file(STRINGS "${f}" hits REGEX "#[ \t]*include[ \t]*\"ui/main_window\\.h\"")
+    if(hits)
+        list(APPEND offenders "${f}")
+    endif()
+endforeach()
+if(offenders)
+    message(FATAL_ERROR "only the window includes ui/main_window.h; these do too: ${offenders}")
+endif()
+message(STATUS "nothing in ${DIR} includes the window")
