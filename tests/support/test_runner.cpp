@@ -45,6 +45,9 @@ template <typename Application> int runUnder(int argc, char** argv, SuiteMain ma
 {
     Application app(argc, argv);
     app.setAttribute(Qt::AA_Use96Dpi, true);
+    // Named for the suite, as its own program was: its settings, recovery files and test-mode
+    // folders stay apart from another suite's running beside it (ctest -j).
+    QCoreApplication::setApplicationName(QString::fromStdString(current()));
     return main(argc, argv);
 }
 
