@@ -95,6 +95,16 @@ Result<std::unique_ptr<StreamReader>> openStream(const std::string& spec,
 }
 
 namespace io {
+namespace {
+
+/// The pixel ceiling is set before main, while the program has one thread: setenv while another
+/// thread reads the environment (Qt does, painting text) can crash it.
+[[maybe_unused]] const bool kPixelCeilingSet = [] {
+    ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(8192LL * 8192LL).c_str(), 0);
+    return true;
+}();
+
+} // namespace
 
 ReaderResult openStored(const std::string& spec)
 {
@@ -104,7 +114,6 @@ ReaderResult openStored(const std::string& spec)
     // OpenCV's own log lines (GStreamer and FFmpeg warnings, "raised OpenCV exception" while
     // probing back ends) are silenced: the user sees Fieldsight's one line naming the file.
     static const bool capped = [] {
-        ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(8192LL * 8192LL).c_str(), 0);
         cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
         return true;
     }();
