@@ -246,17 +246,26 @@ void benchEdits(const QString& label, const QString& stream, int scans)
     }
 }
 
-void benchStepping(const QString& label, const QString& stream)
+/// `w` shown at 1280x800 with `stream` open and the bench's layers on; false (said) if the
+/// stream cannot be opened.
+bool showWithStream(MainWindow& w, const QString& label, const QString& stream)
 {
-    MainWindow w;
     w.resize(1280, 800);
     w.show();
     (void)QTest::qWaitForWindowActive(&w);
     if (!open(w, stream)) {
         std::cout << label.toStdString() << ": cannot open\n";
-        return;
+        return false;
     }
     showLayers(w);
+    return true;
+}
+
+void benchStepping(const QString& label, const QString& stream)
+{
+    MainWindow w;
+    if (!showWithStream(w, label, stream))
+        return;
     // Two rounds over the stream: steps 30 ms apart (a held key repeats at 25-40 per second, and
     // a single press comes later still), then back to back (each key as soon as the last frame
     // is painted, so the next frame's prefetch is often still running).
@@ -331,14 +340,8 @@ void benchStepping(const QString& label, const QString& stream)
 void benchDrag(const QString& label, const QString& stream)
 {
     MainWindow w;
-    w.resize(1280, 800);
-    w.show();
-    (void)QTest::qWaitForWindowActive(&w);
-    if (!open(w, stream)) {
-        std::cout << label.toStdString() << ": cannot open\n";
+    if (!showWithStream(w, label, stream))
         return;
-    }
-    showLayers(w);
     (void)waitPainted(w);
     for (const auto& tool : w.tools().tools())
         if (auto* a = qobject_cast<ui::AnnotateTool*>(tool.get());
