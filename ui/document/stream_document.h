@@ -120,6 +120,8 @@ public:
     /// What the whole-stream scans pass before each frame: held while the user steps, so the
     /// frames stepped to are read and run without the scans' decoding beside them.
     const std::shared_ptr<ScanGate>& scanGate() const { return m_scan_gate; }
+    /// Where the frames made current came from (decoded, read ahead, or kept from lately).
+    const FrameWorker::LoadCounts& frameLoads() const { return m_worker->loadCounts(); }
     /// Runs the current frame again (after a change of settings).
     void rerun();
     /// "Follow the light": every frame's light (null: none), used from the next run on.
