@@ -232,6 +232,37 @@ private slots:
         QCOMPARE(again.done, kFrames);
     }
 
+    /// The frame gate (the window pausing the scan while the user steps) is passed before each
+    /// frame is read and again before it runs; a cancel given while a thread is at the gate
+    /// stops the scan before that frame is read.
+    void theFrameGateIsPassedBeforeEachFrameIsReadAndRun()
+    {
+        const Pipeline pipeline = countingPipeline();
+        EditEffectScanner scanner(pipeline);
+        scanner.setThreads(1);
+        scanner.setStream(path());
+        int passes = 0;
+        int runs_at_pass = -1;
+        scanner.setFrameGate([&] {
+            ++passes;
+            runs_at_pass = CountingStage::runs;
+        });
+        const EditEffectProgress p = scan(scanner, {nullptr, lab1Lut()});
+        QVERIFY(p.finished);
+        QCOMPARE(passes, 2 * int(kFrames));
+        QCOMPARE(runs_at_pass, int(kFrames) - 1); // the last pass came before the last run
+
+        passes = 0;
+        scanner.setFrameGate([&] {
+            if (++passes == 5) // the third frame's read
+                scanner.cancel();
+        });
+        const EditEffectProgress cut = scan(scanner, {nullptr, lab1Lut()});
+        QVERIFY(!cut.finished);
+        QCOMPARE(cut.done, std::size_t(2));
+        QCOMPARE(passes, 5);
+    }
+
     void aStreamThatCannotBeOpenedIsTheScansError()
     {
         EditEffectScanner scanner;

@@ -38,6 +38,10 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     m_effect = new EditEffectScan(pipeline, this);
     m_evaluation = new EvaluationScan(pipeline, this);
     m_light = new LightScan(this);
+    // The scans give way while the user steps through the stream.
+    m_effect->setGate(m_stream->scanGate());
+    m_evaluation->setGate(m_stream->scanGate());
+    m_light->setGate(m_stream->scanGate());
 
     addDocument(tr("Colour table"), *m_lut);
     addDocument(tr("LUT samples"), *m_samples);

@@ -300,6 +300,8 @@ void StreamDocument::setCurrentIndex(std::size_t index)
         index = std::min(index, frameCount() - 1);
     const bool moved = index != m_index;
     m_index = index;
+    if (moved && !live())
+        m_scan_gate->hold(); // the scans wait: this frame and the next ones decode first
     if (moved)
         emit currentIndexChanged(m_index);
     submit();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ui/document/document.h"
+#include "ui/scans/scan_gate.h"
 #include "ui/worker/frame_worker.h"
 #include "visioncore/basics/file_fingerprint.h"
 #include "visioncore/io/annotations.h"
@@ -114,7 +115,13 @@ public:
 
     std::size_t currentIndex() const { return m_index; }
     /// Shows frame `index` (clamped to the stream); the newest request supersedes older ones.
+    /// A step to another frame holds scanGate() for its quiet time.
     void setCurrentIndex(std::size_t index);
+    /// What the whole-stream scans pass before each frame: held while the user steps, so the
+    /// frames stepped to are read and run without the scans' decoding beside them.
+    const std::shared_ptr<ScanGate>& scanGate() const { return m_scan_gate; }
+    /// Where the frames made current came from (decoded, read ahead, or kept from lately).
+    const FrameWorker::LoadCounts& frameLoads() const { return m_worker->loadCounts(); }
     /// Runs the current frame again (after a change of settings).
     void rerun();
     /// "Follow the light": every frame's light (null: none), used from the next run on.
@@ -176,6 +183,7 @@ private:
     PipelineSettings& m_settings;
     QThread m_thread;
     FrameWorker* m_worker = nullptr;
+    std::shared_ptr<ScanGate> m_scan_gate = std::make_shared<ScanGate>();
 
     std::shared_ptr<OpenedStream> m_stream;
     std::size_t m_index = 0;

@@ -18,6 +18,7 @@ EditEffectScan::EditEffectScan(const Pipeline& pipeline, QObject* parent)
 
 EditEffectScan::~EditEffectScan()
 {
+    m_stopping = true;
     m_scanner.cancel();
     if (m_thread.joinable())
         m_thread.join();
@@ -81,11 +82,24 @@ void EditEffectScan::edited(std::shared_ptr<const ColourLut> before,
     m_delay.start();
 }
 
+void EditEffectScan::setGate(std::shared_ptr<ScanGate> gate)
+{
+    stop(); // the scanner's gate is set only while no scan runs
+    m_gate = std::move(gate);
+    if (!m_gate) {
+        m_scanner.setFrameGate({});
+        return;
+    }
+    m_scanner.setFrameGate([gate = m_gate.get(), stopping = &m_stopping] { gate->pass(stopping); });
+}
+
 void EditEffectScan::stop()
 {
+    m_stopping = true;
     m_scanner.cancel();
     if (m_thread.joinable())
         m_thread.join();
+    m_stopping = false;
     m_poll.stop();
     collect();
 }

@@ -3,6 +3,7 @@
 // its per-frame counts come back to the GUI thread as they are made.
 #pragma once
 
+#include "ui/scans/scan_gate.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
 #include "visioncore/services/edit_effect.h"
@@ -11,6 +12,7 @@
 #include <QString>
 #include <QTimer>
 
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -37,6 +39,9 @@ public:
     void setThreads(int threads) { m_scanner.setThreads(threads); }
     /// Quiet time after an edit before the scan starts, so a brush stroke scans once it pauses.
     void setDelay(int ms) { m_delay.setInterval(ms); }
+    /// The gate each frame of a scan passes (null: none): the scan pauses while it is held. Set
+    /// before the first stream (a scan running is stopped).
+    void setGate(std::shared_ptr<ScanGate> gate);
 
     /// The stream to scan: a file stream (a camera or an empty spec clears it), opened with
     /// `options` (turned as the window shows it). Starts a first scan that records every frame's
@@ -90,6 +95,8 @@ private:
     QTimer m_delay;
     QTimer m_poll;
     std::thread m_thread; ///< runs m_scanner.run(); joined before the scanner is touched else
+    std::shared_ptr<ScanGate> m_gate;
+    std::atomic<bool> m_stopping{false}; ///< a scan waiting at the gate stops waiting
     QString m_spec;
     StreamOptions m_options;
 

@@ -37,6 +37,7 @@ struct EvaluationScan::Job
     std::shared_ptr<const ParamSet> params;
     std::vector<std::string> skip;
     int threads = 0;
+    std::shared_ptr<ScanGate> gate; ///< passed before each frame (null: none)
     std::shared_ptr<const Annotations> truth;
     std::string truth_path;
     int truth_serial = 0;
@@ -107,8 +108,12 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
             job->done = done;
             job->total = total;
         };
-        hooks.prefilter = [](std::size_t, const Frame&) {
+        if (job->gate)
+            hooks.before_read = [&job] { job->gate->pass(&job->cancel); };
+        hooks.prefilter = [&job](std::size_t, const Frame&) {
             lowerThreadPriority(kEvaluationNiceness);
+            if (job->gate)
+                job->gate->pass(&job->cancel); // the frame is read: wait before running it
             return true;
         };
         static const Detections none;
@@ -283,6 +288,7 @@ void EvaluationScan::start()
     job->params = m_params;
     job->skip.assign(m_skip.begin(), m_skip.end());
     job->threads = m_threads;
+    job->gate = m_gate;
     job->truth = m_truth;
     job->truth_path = toLocalPath(m_truth_path);
     job->truth_serial = m_truth_serial;

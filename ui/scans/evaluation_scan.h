@@ -6,6 +6,7 @@
 // detections already made, running only frames scored for the first time.
 #pragma once
 
+#include "ui/scans/scan_gate.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
 #include "visioncore/services/evaluation.h"
@@ -52,6 +53,8 @@ public:
     void setThreads(int threads) { m_threads = threads; }
     /// Quiet time after a change before the run starts, so a brush stroke is scored once.
     void setDelay(int ms) { m_delay.setInterval(ms); }
+    /// The gate each frame of a run passes (null: none): the run pauses while it is held.
+    void setGate(std::shared_ptr<ScanGate> gate) { m_gate = std::move(gate); }
 
     /// The stream (a file stream; a camera or an empty spec clears it) turned by `options` as
     /// the window shows it, run with `lut` and the settings given last, against the annotations
@@ -124,6 +127,7 @@ private:
 
     const Pipeline& m_pipeline;
     int m_threads = 0;
+    std::shared_ptr<ScanGate> m_gate;
     QThreadPool m_pool;
     QTimer m_delay;
     QTimer m_poll;

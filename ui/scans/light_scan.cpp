@@ -85,14 +85,19 @@ void LightScan::start()
     if (reader.value()->info().kind == StreamKind::Camera)
         return; // a live camera has no frames to follow in advance
     m_total = reader.value()->info().frame_count;
-    m_thread = std::thread([this, reader = std::move(reader).value(), lut = m_lut] {
+    m_thread = std::thread([this, reader = std::move(reader).value(), lut = m_lut, gate = m_gate] {
         lowerThreadPriority();
         std::string error;
         std::shared_ptr<const LightTrack> track;
         try {
             auto done = trackLight(
                 *reader, lut, reader->info().frame_count, {},
-                [this](std::size_t n, std::size_t) { m_done = n; }, &m_cancel);
+                [this, &gate](std::size_t n, std::size_t) {
+                    m_done = n;
+                    if (gate)
+                        gate->pass(&m_cancel); // before the next frame
+                },
+                &m_cancel);
             if (!done.cancelled)
                 track = std::make_shared<const LightTrack>(std::move(done));
         } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 // browsed; started again when the table changes.
 #pragma once
 
+#include "ui/scans/scan_gate.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/light_tracking.h"
@@ -31,6 +32,9 @@ public:
     bool enabled() const { return m_enabled; }
     /// Quiet time after a change of the table before the scan starts again.
     void setDelay(int ms) { m_delay.setInterval(ms); }
+    /// The gate each frame of a scan passes (null: none): the scan pauses while it is held. Set
+    /// before the first stream.
+    void setGate(std::shared_ptr<ScanGate> gate) { m_gate = std::move(gate); }
     /// The stream to follow (a camera or an empty spec clears it), turned by `options`, with
     /// the table `lut`.
     void setStream(const QString& spec, std::shared_ptr<const ColourLut> lut,
@@ -68,6 +72,7 @@ private:
     QString m_error;
     QTimer m_delay;
     QTimer m_poll;
+    std::shared_ptr<ScanGate> m_gate;
 
     std::thread m_thread;
     std::atomic<bool> m_cancel{false};

@@ -250,6 +250,10 @@ void FrameWorker::release(std::shared_ptr<FrameSource> source)
                 m_live_source.reset();
             }
             m_read_ahead.drop(source);
+            m_recent.erase(
+                std::remove_if(m_recent.begin(), m_recent.end(),
+                               [&source](const RecentFrame& r) { return r.source == source; }),
+                m_recent.end());
             {
                 std::lock_guard lock(m_mutex);
                 if (m_ahead_for.source == source) { // a step on the new stream never finds it
@@ -266,26 +270,60 @@ Status FrameWorker::load(const std::shared_ptr<FrameSource>& source, std::size_t
 {
     if (m_frame_valid && source == m_frame_source && index == m_frame_index)
         return {}; // the same frame again: settings changed
+    keepRecent();
     m_frame_valid = false;
     if (source == m_prefetch_source && index == m_prefetch_index) {
         std::swap(m_data.frame(), m_prefetch);
         std::swap(m_display, m_prefetch_display);
         m_prefetch_source.reset();
+        ++m_load_counts.read_ahead;
+    } else if (takeRecent(source, index, m_data.frame(), m_display)) {
+        ++m_load_counts.recent;
     } else if (ReadAhead::Decoded ahead;
                m_read_ahead.take(source, index, ahead, kWaitForReadAhead) ==
                ReadAhead::State::Taken) {
         // (Waits while the read-ahead's thread is reading it: reading it here too takes as long.)
         m_data.frame() = std::move(ahead.frame);
         m_display = std::move(ahead.display);
+        ++m_load_counts.read_ahead;
     } else if (Status s = source->reader->readInto(index, m_data.frame()); !s) {
         return s;
     } else {
         m_display = {};
+        ++m_load_counts.read;
     }
     m_frame_source = source;
     m_frame_index = index;
     m_frame_valid = true;
     return {};
+}
+
+void FrameWorker::keepRecent()
+{
+    if (!m_frame_valid || !m_frame_source || !m_frame_source->reader || kRecentFrames == 0)
+        return;
+    if (m_recent.size() >= kRecentFrames)
+        m_recent.erase(m_recent.begin());
+    // Moved out: the next frame is read into a fresh buffer, never over one kept here.
+    m_recent.push_back(
+        {m_frame_source, m_frame_index, std::move(m_data.frame()), std::move(m_display)});
+    m_data.frame() = {};
+    m_display = {};
+    m_frame_valid = false;
+}
+
+bool FrameWorker::takeRecent(const std::shared_ptr<FrameSource>& source, std::size_t index,
+                             Frame& frame, Display& display)
+{
+    const auto it = std::find_if(m_recent.begin(), m_recent.end(), [&](const RecentFrame& r) {
+        return r.source == source && r.index == index;
+    });
+    if (it == m_recent.end())
+        return false;
+    frame = std::move(it->frame);
+    display = std::move(it->display);
+    m_recent.erase(it);
+    return true;
 }
 
 void FrameWorker::prefetch()
@@ -299,10 +337,17 @@ void FrameWorker::prefetch()
         return;
     const StreamInfo& info = m_frame_source->reader->info();
     const std::size_t next = m_frame_index + 1;
-    // The next frames are read on the read-ahead's thread, while this one runs the core.
-    m_read_ahead.want(m_frame_source, next, m_last_lut);
-    if (next >= info.frame_count ||
-        (m_prefetch_source == m_frame_source && m_prefetch_index == next))
+    bool ready = m_prefetch_source == m_frame_source && m_prefetch_index == next;
+    if (!ready && next < info.frame_count &&
+        takeRecent(m_frame_source, next, m_prefetch, m_prefetch_display)) {
+        m_prefetch_source = m_frame_source; // shown lately (a step back): not decoded again
+        m_prefetch_index = next;
+        ready = true;
+    }
+    // The next frames are read on the read-ahead's thread, while this one runs the core; one
+    // prefetched already is not read again.
+    m_read_ahead.want(m_frame_source, ready ? next + 1 : next, m_last_lut);
+    if (next >= info.frame_count || ready)
         return;
     m_prefetch_source.reset();
     ReadAhead::Decoded ahead;

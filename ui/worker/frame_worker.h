@@ -16,6 +16,7 @@
 #include <QRectF>
 #include <QString>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -105,6 +106,19 @@ public:
     /// waits for its capture thread; a reader may close files), after any run still using it.
     void release(std::shared_ptr<FrameSource> source);
 
+    /// Where the frames of file streams came from when a request made them current (counted
+    /// since the worker was made; thread-safe to read).
+    struct LoadCounts
+    {
+        std::atomic<std::uint64_t> read{0};       ///< read and decoded for the request
+        std::atomic<std::uint64_t> read_ahead{0}; ///< from the read-ahead or the prefetch
+        std::atomic<std::uint64_t> recent{0};     ///< shown lately: kept, not decoded again
+    };
+    const LoadCounts& loadCounts() const { return m_load_counts; }
+    /// Frames shown lately kept decoded with their display, so stepping back finds them (a
+    /// 1280x720 frame with its display is about 11 MB).
+    static constexpr std::size_t kRecentFrames = 3;
+
 signals:
     void frameDone(std::shared_ptr<const FrameOutput> output);
 
@@ -127,6 +141,12 @@ private:
     /// While idle, reads the frame after the current one and converts it for display with the
     /// last LUT, so the next step finds it ready.
     void prefetch();
+    /// Keeps the current frame among the recent ones (it is no longer current after this).
+    void keepRecent();
+    /// Moves frame `index` of `source` out of the recent ones into `frame` and `display`; false
+    /// when it is not there.
+    bool takeRecent(const std::shared_ptr<FrameSource>& source, std::size_t index, Frame& frame,
+                    FrameDisplay& display);
 
     using Display = FrameDisplay;
     /// The request's table, or a copy of it reading frame `index` through its light's map.
@@ -161,6 +181,15 @@ private:
     /// 55 MB at that size).
     static constexpr std::size_t kReadAheadDepth = 4;
     ReadAhead m_read_ahead{kReadAheadDepth, 2};
+    struct RecentFrame
+    {
+        std::shared_ptr<FrameSource> source;
+        std::size_t index = 0;
+        Frame frame;
+        Display display;
+    };
+    std::vector<RecentFrame> m_recent; ///< the newest last; worker thread only
+    LoadCounts m_load_counts;
 
     std::mutex m_mutex;
     std::optional<FrameRequest> m_pending;

@@ -266,6 +266,11 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                 const std::size_t end = std::min(indices.size(), begin + chunk);
                 for (std::size_t pos = begin; pos < end && !problem.stopped() && !cancelled();
                      ++pos) {
+                    if (hooks.before_read) {
+                        hooks.before_read();
+                        if (cancelled())
+                            break;
+                    }
                     if (Status s = data.seek(indices[pos]); !s) {
                         if (tracker)
                             light[pos] = tracker->skip();

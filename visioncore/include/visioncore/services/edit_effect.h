@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -67,6 +68,9 @@ public:
 
     /// Worker threads of a scan (0: one per core).
     void setThreads(int threads) { m_threads = threads; }
+    /// Called by each scan thread before it reads a frame and again before it runs one; it may
+    /// block (the window pausing the scan while the user steps). Set only while no run() goes.
+    void setFrameGate(std::function<void()> gate) { m_gate = std::move(gate); }
     /// The stream to scan (a local path; empty: none), opened with `options` (its orientation,
     /// as the window shows it). Forgets every frame's result, so the next job only records.
     void setStream(std::string path, StreamOptions options = {});
@@ -90,6 +94,7 @@ private:
 
     const Pipeline& m_pipeline;
     int m_threads = 0;
+    std::function<void()> m_gate;
     std::atomic<bool> m_cancel{false};
 
     std::mutex m_mutex; ///< guards m_progress
