@@ -3,6 +3,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QTimer>
 #include <QToolButton>
 
 namespace fieldsight::ui {
@@ -35,6 +36,15 @@ MessageBar::MessageBar(QWidget* parent) : QWidget(parent)
     close->setToolTip(tr("Close"));
     connect(close, &QToolButton::clicked, this, &QWidget::hide);
     row->addWidget(close);
+    m_fade = new QTimer(this);
+    m_fade->setSingleShot(true);
+    m_fade->setInterval(kInfoShownMs);
+    connect(m_fade, &QTimer::timeout, this, [this] {
+        if (underMouse())
+            m_fade->start(); // being read or copied
+        else
+            hide();
+    });
     hide();
 }
 
@@ -44,6 +54,10 @@ void MessageBar::show(const QString& text, bool error)
     m_text->setPalette(palette());
     m_text->setText(text);
     QWidget::show();
+    if (error)
+        m_fade->stop();
+    else
+        m_fade->start();
 }
 
 QString MessageBar::text() const

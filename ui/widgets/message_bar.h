@@ -1,11 +1,14 @@
-// The bar above the frame where the window says what went wrong (red) or what it did (blue); it
-// stays until closed or replaced, and its text can be selected and copied.
+// The bar above the frame where the window says what went wrong (red) or what it did (blue). A
+// problem stays until closed or replaced; a report of what was done goes after kInfoShownMs (not
+// while the mouse is on it), as it floats over the frame's top. Its text can be selected and
+// copied, and the status bar and History keep it.
 #pragma once
 
 #include <QWidget>
 
 class QLabel;
 class QPushButton;
+class QTimer;
 
 namespace fieldsight::ui {
 
@@ -13,12 +16,15 @@ class MessageBar : public QWidget
 {
     Q_OBJECT
 public:
+    static constexpr int kInfoShownMs = 8000;
+
     explicit MessageBar(QWidget* parent = nullptr);
     void show(const QString& text, bool error);
     QString text() const;
 
 private:
     QLabel* m_text = nullptr;
+    QTimer* m_fade = nullptr; ///< hides a report of what was done
 };
 
 /// The bar offering what a session that ended without saving left (unsaved edits): a question
