@@ -1,7 +1,8 @@
 // Object: what is set on the one annotated object an annotation tool selected: concealed, a
 // keyframe of its track and whether the frames since the previous keyframe are interpolated, and
 // the object propagated to the next or previous frames. Each is one undoable edit of the
-// annotations document; the Qt-free rules are in visioncore/services/annotation_tracks.h.
+// annotations document (AnnotationsDocument; the Qt-free rules are in
+// visioncore/services/annotation_tracks.h).
 #include "ui/actions/menus.h"
 #include "ui/dialogs/dialogs.h"
 #include "ui/document/editing_session.h"
@@ -21,7 +22,6 @@ namespace {
 /// The selected object, on the frame shown.
 struct Target
 {
-    std::string key;    ///< its frame, as the annotations key it
     std::size_t at = 0; ///< the frame's index in the stream
     const PerceptKind* kind = nullptr;
     std::size_t index = 0; ///< in the frame's list of `kind`
@@ -39,10 +39,7 @@ std::optional<Target> target(const MenuTarget& w)
     if (!frame || object->index >= shapesOf(*frame, *object->kind).size())
         return std::nullopt;
     return Target{
-        session.annotations().keyOf(object->frame),
-        session.stream().currentIndex(),
-        object->kind,
-        object->index,
+        session.stream().currentIndex(), object->kind, object->index,
         frame->flagsOf(object->kind->truth_key, object->index),
         QString::fromUtf8(object->kind->title.data(), qsizetype(object->kind->title.size()))};
 }
@@ -57,60 +54,31 @@ std::optional<Target> targetOrHint(const MenuTarget& w)
     return t;
 }
 
-void commit(const MenuTarget& w, const AnnotationChanges& changes, const QString& text)
-{
-    w.session.annotations().edit(text, changes.frames());
-}
-
 void toggleConcealed(const MenuTarget& w)
 {
-    const auto t = targetOrHint(w);
-    if (!t)
-        return;
-    AnnotationChanges changes(w.session.annotations().annotations());
-    ObjectFlags flags = t->flags;
-    flags.concealed = !flags.concealed;
-    changes.edit(t->key).setFlags(t->kind->truth_key, t->index, flags);
-    commit(w, changes,
-           (flags.concealed ? QObject::tr("%1: concealed") : QObject::tr("%1: not concealed"))
-               .arg(t->title));
+    if (const auto t = targetOrHint(w))
+        w.session.annotations().setConcealed(annotationFrameKeys(w.session), t->at, *t->kind,
+                                             t->index, !t->flags.concealed);
 }
 
 void toggleKeyframe(const MenuTarget& w)
 {
     const auto t = targetOrHint(w);
-    if (!t)
-        return;
-    AnnotationChanges changes(w.session.annotations().annotations());
-    const bool keyframe = !t->flags.keyframe;
-    if (!setKeyframe(changes, annotationFrameKeys(w.session), t->at, *t->kind, t->index,
-                     keyframe)) {
+    if (t && !w.session.annotations().setKeyframe(annotationFrameKeys(w.session), t->at, *t->kind,
+                                                  t->index, !t->flags.keyframe))
         w.showStatus(
             QObject::tr("%1: this kind has no keyframes (propagate it instead)").arg(t->title),
             5000);
-        return;
-    }
-    commit(w, changes,
-           (keyframe ? QObject::tr("%1: keyframe") : QObject::tr("%1: no keyframe")).arg(t->title));
 }
 
 void toggleInterpolation(const MenuTarget& w)
 {
     const auto t = targetOrHint(w);
-    if (!t)
-        return;
-    AnnotationChanges changes(w.session.annotations().annotations());
-    const bool interpolate = !t->flags.interpolate;
-    if (!setInterpolate(changes, annotationFrameKeys(w.session), t->at, *t->kind, t->index,
-                        interpolate)) {
+    if (t && !w.session.annotations().setInterpolate(annotationFrameKeys(w.session), t->at,
+                                                     *t->kind, t->index, !t->flags.interpolate))
         w.showStatus(
             QObject::tr("Only a keyframe is interpolated from the one before: mark it first (K)"),
             5000);
-        return;
-    }
-    commit(w, changes,
-           (interpolate ? QObject::tr("%1: interpolate") : QObject::tr("%1: do not interpolate"))
-               .arg(t->title));
 }
 
 /// Asks how many frames (starting from the last answer, which the selection keeps and the

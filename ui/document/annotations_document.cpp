@@ -191,14 +191,65 @@ std::optional<std::size_t> AnnotationsDocument::takeDetections(
     return objectCount(after);
 }
 
+namespace {
+
+/// A kind's title, for an undo step's name.
+QString annotatedKindTitle(const PerceptKind& kind)
+{
+    return QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size()));
+}
+
+} // namespace
+
 std::size_t AnnotationsDocument::propagate(const std::vector<std::string>& frames, std::size_t at,
                                            const PerceptKind& kind, std::size_t object, int count)
 {
     AnnotationChanges changes(m_annotations);
     const std::size_t made = fieldsight::propagate(changes, frames, at, kind, object, count);
-    const QString title = QString::fromUtf8(kind.title.data(), qsizetype(kind.title.size()));
+    const QString title = annotatedKindTitle(kind);
     edit(tr("%1: propagated to %n frame(s)", nullptr, int(made)).arg(title), changes.frames());
     return made;
+}
+
+void AnnotationsDocument::setConcealed(const std::vector<std::string>& frames, std::size_t at,
+                                       const PerceptKind& kind, std::size_t object, bool concealed)
+{
+    if (at >= frames.size())
+        return;
+    const std::string key = keyOf(frames[at]);
+    const FrameAnnotation* frame = this->frame(key);
+    if (!frame || object >= shapesOf(*frame, kind).size())
+        return;
+    AnnotationChanges changes(m_annotations);
+    ObjectFlags flags = frame->flagsOf(kind.truth_key, object);
+    flags.concealed = concealed;
+    changes.edit(key).setFlags(kind.truth_key, object, flags);
+    edit((concealed ? tr("%1: concealed") : tr("%1: not concealed")).arg(annotatedKindTitle(kind)),
+         changes.frames());
+}
+
+bool AnnotationsDocument::setKeyframe(const std::vector<std::string>& frames, std::size_t at,
+                                      const PerceptKind& kind, std::size_t object, bool keyframe)
+{
+    AnnotationChanges changes(m_annotations);
+    if (!fieldsight::setKeyframe(changes, frames, at, kind, object, keyframe))
+        return false;
+    edit((keyframe ? tr("%1: keyframe") : tr("%1: no keyframe")).arg(annotatedKindTitle(kind)),
+         changes.frames());
+    return true;
+}
+
+bool AnnotationsDocument::setInterpolate(const std::vector<std::string>& frames, std::size_t at,
+                                         const PerceptKind& kind, std::size_t object,
+                                         bool interpolate)
+{
+    AnnotationChanges changes(m_annotations);
+    if (!fieldsight::setInterpolate(changes, frames, at, kind, object, interpolate))
+        return false;
+    edit((interpolate ? tr("%1: interpolate") : tr("%1: do not interpolate"))
+             .arg(annotatedKindTitle(kind)),
+         changes.frames());
+    return true;
 }
 
 void AnnotationsDocument::apply(const FrameEdits& edits)

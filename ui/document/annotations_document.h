@@ -101,6 +101,17 @@ public:
     /// -`count` when negative) as objects of its track; the frames that got it.
     std::size_t propagate(const std::vector<std::string>& frames, std::size_t at,
                           const PerceptKind& kind, std::size_t object, int count);
+    /// Object `object` of `kind` on frame `at` concealed (partly hidden) or not.
+    void setConcealed(const std::vector<std::string>& frames, std::size_t at,
+                      const PerceptKind& kind, std::size_t object, bool concealed);
+    /// Object `object` of `kind` on frame `at` a keyframe of its track or not; false (nothing
+    /// changed) when the kind has no keyframes.
+    bool setKeyframe(const std::vector<std::string>& frames, std::size_t at,
+                     const PerceptKind& kind, std::size_t object, bool keyframe);
+    /// Whether the frames since the previous keyframe are interpolated up to this keyframe; false
+    /// (nothing changed) when the object is no keyframe.
+    bool setInterpolate(const std::vector<std::string>& frames, std::size_t at,
+                        const PerceptKind& kind, std::size_t object, bool interpolate);
 
     // Saved with Document::save() and saveAs(); a file that could not be read when the stream
     // opened is not written over by save().
