@@ -1,5 +1,5 @@
 // File: streams, tables, the camera recording and snapshots of the view.
-#include "ui/actions/coco_export_command.h"
+#include "ui/actions/coco_export_action.h"
 #include "ui/actions/annotations_file.h"
 #include "ui/actions/session_files.h"
 #include "ui/actions/menus.h"

@@ -1,5 +1,5 @@
 // File > Export annotations as COCO: the annotations document's truth in COCO JSON.
-#include "ui/actions/coco_export_command.h"
+#include "ui/actions/coco_export_action.h"
 
 #include "ui/actions/menus.h"
 #include "ui/adapters/local_path.h"
