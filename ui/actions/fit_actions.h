@@ -24,7 +24,8 @@ class FitActions : public QObject
 {
     Q_OBJECT
 public:
-    static constexpr int kDefaultBudget = 300;
+    /// The command line's default (`tune --budget`), so both search alike.
+    static constexpr int kDefaultBudget = kDefaultTuneBudget;
 
     explicit FitActions(const MenuTarget& target);
 

@@ -94,8 +94,8 @@ WindowSettings WindowSettings::load()
     w.keep_others = s.value(QStringLiteral("tools/keep_others"), false).toBool();
     w.propagate_frames =
         std::clamp(s.value(QStringLiteral("tools/propagate_frames"), 10).toInt(), 1, 100000);
-    w.fit_budget =
-        std::clamp(s.value(QStringLiteral("pipeline/fit_budget"), 300).toInt(), 10, 100000);
+    w.fit_budget = std::clamp(
+        s.value(QStringLiteral("pipeline/fit_budget"), kDefaultTuneBudget).toInt(), 10, 100000);
     w.soft_classes = s.value(QStringLiteral("tools/soft_classes"), false).toBool();
     w.preview = s.value(QStringLiteral("tools/preview"), true).toBool();
     return w;

@@ -5,6 +5,7 @@
 
 #include "visioncore/services/layers.h"
 #include "visioncore/services/lut_editing.h"
+#include "visioncore/services/param_tuning.h"
 
 #include <QByteArray>
 #include <QString>
@@ -35,7 +36,8 @@ struct WindowSettings
     bool soft_classes = false;
     bool preview = true;
     int propagate_frames = 10; ///< how far the last propagation of an object went
-    int fit_budget = 300;      ///< the evaluations Pipeline > Fit to annotations was given last
+    int fit_budget =
+        kDefaultTuneBudget; ///< the evaluations Pipeline > Fit to annotations was given last
     /// Why the settings were not read (the window then starts with its defaults), or empty.
     QString problem;
 
