@@ -33,8 +33,8 @@ QImage ycbcrToZoomedQImage(const cv::Mat& ycbcr, int scale)
         return image;
     cv::Mat target(image.height(), image.width(), CV_8UC4, image.bits(),
                    std::size_t(image.bytesPerLine()));
-    cv::Mat bgra = scale == 1 ? target : cv::Mat();
-    cv::cvtColor(ycbcrToBgr(ycbcr), bgra, cv::COLOR_BGR2BGRA);
+    cv::Mat bgra = scale == 1 ? target : cv::Mat(ycbcr.size(), CV_8UC4);
+    ycbcrToBgra(ycbcr, bgra); // one pass, straight into the image at scale 1
     if (scale > 1)
         cv::resize(bgra, target, target.size(), 0, 0, cv::INTER_NEAREST);
     return image;

@@ -286,11 +286,14 @@ Status FrameWorker::load(const std::shared_ptr<FrameSource>& source, std::size_t
         m_data.frame() = std::move(ahead.frame);
         m_display = std::move(ahead.display);
         ++m_load_counts.read_ahead;
-    } else if (Status s = source->reader->readInto(index, m_data.frame()); !s) {
-        return s;
-    } else {
+    } else if (Frame fresh; Status s = source->reader->readInto(index, fresh)) {
+        // Into a Frame of its own, never read into again: its display shares the pixels (the
+        // buffer there may be one an output still shows).
+        m_data.frame() = std::move(fresh);
         m_display = {};
         ++m_load_counts.read;
+    } else {
+        return s;
     }
     m_frame_source = source;
     m_frame_index = index;
@@ -362,10 +365,12 @@ void FrameWorker::prefetch()
     if (state == ReadAhead::State::Taken) {
         m_prefetch = std::move(ahead.frame);
         m_prefetch_display = std::move(ahead.display);
-        makeFrameDisplay(m_prefetch, m_last_lut, m_prefetch_display); // a newer table
-    } else if (m_frame_source->reader->readInto(next, m_prefetch)) {
+        // A newer table (the pixels are the display's already).
+        makeFrameDisplay(m_prefetch, m_last_lut, m_prefetch_display, FramePixels::Share);
+    } else if (Frame fresh; m_frame_source->reader->readInto(next, fresh)) {
+        m_prefetch = std::move(fresh); // never read into again: the display shares it
         m_prefetch_display = {};
-        makeFrameDisplay(m_prefetch, m_last_lut, m_prefetch_display);
+        makeFrameDisplay(m_prefetch, m_last_lut, m_prefetch_display, FramePixels::Share);
     } else {
         return;
     }
@@ -398,7 +403,10 @@ void FrameWorker::runCore(const FrameRequest& request, ControlWrapper& control,
     out.frame.name = frame.name;
     out.frame.timestamp_ms = frame.timestamp_ms;
     out.frame.horizon = frame.horizon;
-    makeFrameDisplay(frame, lut, m_display); // through the frame's light map, when following
+    // Through the frame's light map, when following. A file's frame was read into a Frame of its
+    // own (load); a camera writes its frame again.
+    makeFrameDisplay(frame, lut, m_display,
+                     request.source->reader ? FramePixels::Share : FramePixels::Copy);
     out.frame.ycbcr = m_display.ycbcr;
     out.raw = m_display.raw;
     out.classified = m_display.classified;

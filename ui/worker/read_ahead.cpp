@@ -31,11 +31,11 @@ QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classe
 }
 
 void makeFrameDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
-                      FrameDisplay& display)
+                      FrameDisplay& display, FramePixels pixels)
 {
     // Fresh buffers every time: the old ones may still be shown by the GUI.
     if (display.ycbcr.empty()) {
-        display.ycbcr = frame.ycbcr.clone();
+        display.ycbcr = pixels == FramePixels::Share ? frame.ycbcr : frame.ycbcr.clone();
         display.raw = ycbcrToZoomedQImage(display.ycbcr, 1);
     }
     if (lut && display.lut != lut) {
@@ -162,9 +162,10 @@ void ReadAhead::loop(std::size_t thread)
         Decoded decoded;
         bool ok = false;
         try {
+            // A Frame of its own, never read into again: the display shares its pixels.
             ok = reader->readInto(*next, decoded.frame).ok();
             if (ok)
-                makeFrameDisplay(decoded.frame, lut, decoded.display);
+                makeFrameDisplay(decoded.frame, lut, decoded.display, FramePixels::Share);
         } catch (const std::exception&) {
             ok = false; // the worker's own read of that frame reports it
         }

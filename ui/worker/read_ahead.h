@@ -29,17 +29,24 @@ struct FrameSource;
 /// view), shared read-only with every output of that frame, never written again.
 struct FrameDisplay
 {
-    cv::Mat ycbcr; ///< its own copy
+    cv::Mat ycbcr; ///< a copy, or the frame's own buffer when it is never written again
     QImage raw;
     std::shared_ptr<const ColourLut> lut; ///< what `classified` and `classes` were made with
     QImage classified;
     cv::Mat classes;
 };
 
-/// Makes what is missing of `display` for `frame`: the copy and the raw image once, the classified
-/// image and class ids again when `lut` (may be null) is not the one they were made with.
+/// Whether a display may keep its frame's pixel buffer instead of a copy of it.
+enum class FramePixels {
+    Copy,  ///< the buffer may be written again (a camera's, or one a reader reads into again)
+    Share, ///< read into a Frame of its own and never written again: kept, not copied
+};
+
+/// Makes what is missing of `display` for `frame`: its pixels (a copy unless `pixels` says they
+/// may be shared) and the raw image once, the classified image and class ids again when `lut`
+/// (may be null) is not the one they were made with.
 void makeFrameDisplay(const Frame& frame, const std::shared_ptr<const ColourLut>& lut,
-                      FrameDisplay& display);
+                      FrameDisplay& display, FramePixels pixels);
 
 /// The frame in colour-class colours (Format_RGB32, SPEC §1), and the class ids in `classes`.
 QImage classifyFrame(const cv::Mat& ycbcr, const ColourLut& lut, cv::Mat& classes);

@@ -10,5 +10,8 @@ namespace fieldsight {
 cv::Mat bgrToYcbcr(const cv::Mat& bgr);
 /// The inverse of bgrToYcbcr (exact up to rounding): CV_8UC3 Y, Cb, Cr to CV_8UC3 B, G, R.
 cv::Mat ycbcrToBgr(const cv::Mat& ycbcr);
+/// As ycbcrToBgr, with alpha 255, written into `bgra` (CV_8UC4, the size of `ycbcr`, kept):
+/// one pass, without a frame-sized buffer in between.
+void ycbcrToBgra(const cv::Mat& ycbcr, cv::Mat& bgra);
 
 } // namespace fieldsight
