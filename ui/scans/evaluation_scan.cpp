@@ -109,11 +109,9 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
             job->total = total;
         };
         if (job->gate)
-            hooks.before_read = [&job] { job->gate->pass(&job->cancel); };
-        hooks.prefilter = [&job](std::size_t, const Frame&) {
+            hooks.pause = [&job] { job->gate->pass(&job->cancel); };
+        hooks.prefilter = [](std::size_t, const Frame&) {
             lowerThreadPriority(kEvaluationNiceness);
-            if (job->gate)
-                job->gate->pass(&job->cancel); // the frame is read: wait before running it
             return true;
         };
         static const Detections none;

@@ -90,13 +90,11 @@ void EditEffectScanner::run(const EditEffectJob& job)
         std::vector<PixelTally> tallies(frames);
         RunHooks hooks;
         hooks.cancel = &m_cancel;
-        hooks.before_read = m_gate;
+        hooks.pause = m_gate; // before each frame's read and its run
         // A frame none of whose pixels changed class keeps its result: the pipeline runs only
         // where the edit shows (or everywhere when the settings changed).
         hooks.prefilter = [&](std::size_t index, const Frame& frame) {
             lowerThreadPriority(); // the scan yields to the window and its frame worker
-            if (m_gate)
-                m_gate(); // and waits while the user steps, its frame read
             tallies[index] = tally_pixels(frame.ycbcr);
             const bool unchanged = job.before && !job.rerun_all && tallies[index].in_mask == 0 &&
                                    m_previous[index] && m_previous_lut[index] == job.before;

@@ -193,6 +193,12 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
     std::size_t done_count = 0;
     FirstProblem problem;
     const auto cancelled = [&] { return hooks.cancel && hooks.cancel->load(); };
+    // The caller's pause (before a frame's read and before its run); false: cancelled meanwhile.
+    const auto pausedThenGoOn = [&] {
+        if (hooks.pause)
+            hooks.pause();
+        return !cancelled();
+    };
 
     // Following the light: one worker running every frame from 0 in order tracks as it goes;
     // otherwise a first pass tracks frames 0 .. the last one asked for, and each worker reads
@@ -266,11 +272,8 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                 const std::size_t end = std::min(indices.size(), begin + chunk);
                 for (std::size_t pos = begin; pos < end && !problem.stopped() && !cancelled();
                      ++pos) {
-                    if (hooks.before_read) {
-                        hooks.before_read();
-                        if (cancelled())
-                            break;
-                    }
+                    if (!pausedThenGoOn())
+                        break;
                     if (Status s = data.seek(indices[pos]); !s) {
                         if (tracker)
                             light[pos] = tracker->skip();
@@ -286,6 +289,8 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                         light[pos] = tracker->observe(data.frame().ycbcr, data.kinematicHorizon());
                     if (adapted)
                         adapted->setInputMap(maps.mapFor(light[indices[pos]]));
+                    if (!pausedThenGoOn())
+                        break;
                     if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame())) {
                         leaveOut(pos, data.frame().name);
                         continue;

@@ -90,9 +90,10 @@ struct RunHooks
     std::function<void(std::size_t done, std::size_t total)> progress;
     /// When it becomes true the workers stop after their current frame.
     const std::atomic<bool>* cancel = nullptr;
-    /// Called by a worker before it reads each frame; it may block (a background run pausing
-    /// while the user steps through the stream). `cancel` is checked after it returns.
-    std::function<void()> before_read;
+    /// Called by a worker before it reads each frame and again before it runs it (prefilter
+    /// included); it may block (a background run pausing while the user steps through the
+    /// stream). `cancel` is checked after each return.
+    std::function<void()> pause;
 };
 
 struct StreamRun
