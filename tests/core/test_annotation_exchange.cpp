@@ -11,7 +11,7 @@
 #include "visioncore/percepts/goalpost.h"
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <QtTest>
 
@@ -108,8 +108,8 @@ void makeFrames(const std::string& folder, int count, int width, int height,
 {
     std::filesystem::create_directories(folder);
     for (int i = 0; i < count; ++i)
-        QVERIFY(cv::imwrite(folder + "/" + name(i),
-                            cv::Mat(height, width, CV_8UC3, cv::Scalar(0, 90, 0))));
+        QVERIFY(fieldsight::test::imwrite(folder + "/" + name(i),
+                                          cv::Mat(height, width, CV_8UC3, cv::Scalar(0, 90, 0))));
 }
 
 std::string numbered(int i)
@@ -172,7 +172,7 @@ private slots:
         for (const Json& image : coco.at("images")) {
             const std::string file = image.at("file_name");
             QVERIFY(image_files.emplace(image.at("id").get<int>(), file).second);
-            const cv::Mat pixels = cv::imread(lab1() + "/" + file);
+            const cv::Mat pixels = fieldsight::test::imread(lab1() + "/" + file);
             QVERIFY2(!pixels.empty(), file.c_str());
             QCOMPARE(image.at("width").get<int>(), pixels.cols);
             QCOMPARE(image.at("height").get<int>(), pixels.rows);
@@ -481,7 +481,7 @@ private slots:
             std::size_t posts = 0, on_yellow = 0;
             for (const auto& [name, frame] : read.value().frames) {
                 QCOMPARE(frame.reviewed.count("goalposts"), std::size_t(1));
-                const cv::Mat bgr = cv::imread(stream + "/" + name);
+                const cv::Mat bgr = fieldsight::test::imread(stream + "/" + name);
                 QVERIFY(!bgr.empty());
                 for (const Goalpost& p : frame.truth.list<Goalpost>()) {
                     ++posts;

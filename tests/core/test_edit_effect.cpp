@@ -11,7 +11,7 @@
 #include "visioncore/services/edit_effect.h"
 #include "visioncore/services/evaluation.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <QtTest>
 
@@ -96,8 +96,8 @@ private slots:
                 QStringLiteral("frame_%1.png").arg(i, 6, 10, QLatin1Char('0')).toStdString();
             fs::copy_file(test::sampleStreamsDir() + "/lab1/" + name, path() + "/" + name);
         }
-        QVERIFY(cv::imwrite(path() + "/frame_000008.png",
-                            cv::Mat(240, 320, CV_8UC3, cv::Scalar(0, 0, 0))));
+        QVERIFY(fieldsight::test::imwrite(path() + "/frame_000008.png",
+                                          cv::Mat(240, 320, CV_8UC3, cv::Scalar(0, 0, 0))));
     }
 
     void aFirstScanRecordsEveryFrameAndReportsNoDelta()

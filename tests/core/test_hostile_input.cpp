@@ -13,7 +13,7 @@
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/lut_building.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QByteArray>
@@ -136,8 +136,8 @@ class TestHostileInput : public QObject
     {
         fs::create_directories(at(name));
         for (int i = 0; i < frames; ++i)
-            cv::imwrite(at(name + "/frame_" + std::to_string(i) + ".png"),
-                        cv::Mat(24, 32, CV_8UC3, cv::Scalar(40, 160 + i, 60)));
+            fieldsight::test::imwrite(at(name + "/frame_" + std::to_string(i) + ".png"),
+                                      cv::Mat(24, 32, CV_8UC3, cv::Scalar(40, 160 + i, 60)));
         return at(name);
     }
 
@@ -283,12 +283,12 @@ private slots:
         for (const auto& [image, flags] : kinds) {
             QTemporaryDir dir;
             const std::string file = dir.filePath("f.png").toStdString();
-            QVERIFY(cv::imwrite(file, image, flags));
+            QVERIFY(fieldsight::test::imwrite(file, image, flags));
             auto reader = openStream(dir.path().toStdString());
             QVERIFY(reader);
             auto frame = reader.value()->read(0);
             QVERIFY(frame);
-            const cv::Mat expected = bgrToYcbcr(cv::imread(file, cv::IMREAD_COLOR));
+            const cv::Mat expected = bgrToYcbcr(fieldsight::test::imread(file, cv::IMREAD_COLOR));
             QCOMPARE(frame.value().ycbcr.size(), expected.size());
             QVERIFY2(cv::norm(frame.value().ycbcr, expected, cv::NORM_INF) == 0,
                      qPrintable(QString("image type %1").arg(image.type())));

@@ -7,7 +7,7 @@
 #include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QtTest>
@@ -41,7 +41,7 @@ void writePngRgb(const QTemporaryDir& dir, const char* name, int width, int heig
         const cv::Vec3b p = rgb_pixels[std::size_t(i) % rgb_pixels.size()];
         bgr.at<cv::Vec3b>(i / width, i % width) = {p[2], p[1], p[0]};
     }
-    QVERIFY(cv::imwrite(dir.filePath(name).toStdString(), bgr));
+    QVERIFY(fieldsight::test::imwrite(dir.filePath(name).toStdString(), bgr));
 }
 
 std::unique_ptr<StreamReader> openOk(const QTemporaryDir& dir)
@@ -64,7 +64,7 @@ std::string encodedFrame(const char* ext)
     cv::Mat bgr(24, 32, CV_8UC3, cv::Scalar(40, 160, 60));
     cv::circle(bgr, {16, 12}, 5, cv::Scalar(0, 128, 255), -1);
     std::vector<unsigned char> bytes;
-    cv::imencode(ext, bgr, bytes);
+    fieldsight::test::imencode(ext, bgr, bytes);
     return std::string(bytes.begin(), bytes.end());
 }
 
@@ -250,7 +250,8 @@ private slots:
         // compared first and nothing is decoded (issue 10: limits before allocating).
         QTemporaryDir dir;
         std::vector<unsigned char> jpeg;
-        QVERIFY(cv::imencode(".jpg", cv::Mat(24, 32, CV_8UC3, cv::Scalar(40, 160, 60)), jpeg));
+        QVERIFY(fieldsight::test::imencode(
+            ".jpg", cv::Mat(24, 32, CV_8UC3, cv::Scalar(40, 160, 60)), jpeg));
         writeText(dir, "f1.jpg", std::string(jpeg.begin(), jpeg.end()));
         std::size_t sof = 2;
         while (sof + 9 < jpeg.size() && jpeg[sof + 1] != 0xC0)
@@ -383,13 +384,13 @@ private slots:
         cv::randu(colour, 0, 255);
         cv::GaussianBlur(colour, colour, {5, 5}, 2);
         files.push_back(made.filePath("colour.jpg").toStdString());
-        QVERIFY(cv::imwrite(files.back(), colour));
+        QVERIFY(fieldsight::test::imwrite(files.back(), colour));
         files.push_back(made.filePath("grey.jpg").toStdString());
         cv::Mat grey;
         cv::cvtColor(colour, grey, cv::COLOR_BGR2GRAY);
-        QVERIFY(cv::imwrite(files.back(), grey));
+        QVERIFY(fieldsight::test::imwrite(files.back(), grey));
         files.push_back(made.filePath("progressive.jpg").toStdString());
-        QVERIFY(cv::imwrite(files.back(), colour, {cv::IMWRITE_JPEG_PROGRESSIVE, 1}));
+        QVERIFY(fieldsight::test::imwrite(files.back(), colour, {cv::IMWRITE_JPEG_PROGRESSIVE, 1}));
         if (const std::string ref = test::referenceDataDir(); !ref.empty())
             for (const auto& entry :
                  std::filesystem::directory_iterator(ref + "/nubots_nusight_frames"))
@@ -403,7 +404,7 @@ private slots:
             QVERIFY2(reader, file.c_str());
             auto frame = reader->read(0);
             QVERIFY2(frame.ok(), file.c_str());
-            const cv::Mat expected = bgrToYcbcr(cv::imread(file, cv::IMREAD_COLOR));
+            const cv::Mat expected = bgrToYcbcr(fieldsight::test::imread(file, cv::IMREAD_COLOR));
             QCOMPARE(frame.value().ycbcr.size(), expected.size());
             QVERIFY2(cv::norm(frame.value().ycbcr, expected, cv::NORM_INF) == 0, file.c_str());
         }

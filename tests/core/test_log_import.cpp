@@ -11,7 +11,7 @@
 #include "visioncore/services/stream_runner.h"
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <QtTest>
 
@@ -54,8 +54,8 @@ class TestLogImport : public QObject
         const std::string log = path(name);
         std::filesystem::create_directories(log + "/frames_ycbcr");
         for (int i = 0; i < 3; ++i)
-            cv::imwrite(log + "/frames_ycbcr/f00" + std::to_string(i) + ".png",
-                        cv::Mat(24, 32, CV_8UC3, cv::Scalar(90, 100, 110 + i)));
+            fieldsight::test::imwrite(log + "/frames_ycbcr/f00" + std::to_string(i) + ".png",
+                                      cv::Mat(24, 32, CV_8UC3, cv::Scalar(90, 100, 110 + i)));
         test::writeBytes(log + "/frames.csv",
                          kHeader + (rows.empty() ? "0,1000,5,1,15.5,10.0,1.0,0.0\n"
                                                    "1,1040,5,0,15.5,0,1,0\n"
@@ -180,7 +180,7 @@ private slots:
 
         // Each frame decodes, at the first one's size: checked here, not found by `eval` later.
         const std::string small_log = makeLog("small");
-        cv::imwrite(small_log + "/frames_ycbcr/f002.png", cv::Mat(12, 16, CV_8UC3));
+        fieldsight::test::imwrite(small_log + "/frames_ycbcr/f002.png", cv::Mat(12, 16, CV_8UC3));
         const std::string small = refused(small_log, "from_small");
         QVERIFY2(small.find("line 4") != std::string::npos &&
                      small.find("f002.png: frame size 16x12 differs from the stream's 32x24") !=

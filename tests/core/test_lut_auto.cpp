@@ -9,7 +9,7 @@
 #include "visioncore/services/lut_auto.h"
 #include "visioncore/services/stream_runner.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <QtTest>
 
@@ -141,7 +141,8 @@ private slots:
         QVERIFY(dir.isValid());
         for (int i = 0; i < 2; ++i) {
             cv::Mat grey(120, 160, CV_8UC3, cv::Scalar(4, 4, 4)); // too dark for any class
-            QVERIFY(cv::imwrite(dir.filePath(QString("frame_%1.png").arg(i)).toStdString(), grey));
+            QVERIFY(fieldsight::test::imwrite(
+                dir.filePath(QString("frame_%1.png").arg(i)).toStdString(), grey));
         }
         auto reader = openStream(dir.path().toStdString());
         QVERIFY(reader.ok());

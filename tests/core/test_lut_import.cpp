@@ -4,7 +4,7 @@
 
 #include "support/synthetic_frames.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <QtTest>
 
@@ -171,7 +171,8 @@ private slots:
         QCOMPARE(counts[std::size_t(Colour::Green)], std::size_t(1059 * 8));
 
         // f000 shows carpet below the far goal area and an orange ball near (170, 148).
-        const cv::Mat png = cv::imread(base + "frames_ycbcr/f000.png", cv::IMREAD_COLOR);
+        const cv::Mat png =
+            fieldsight::test::imread(base + "frames_ycbcr/f000.png", cv::IMREAD_COLOR);
         QVERIFY(!png.empty());
         auto classify = [&](int x, int y) {
             const cv::Vec3b bgr = png.at<cv::Vec3b>(y, x); // B, G, R = Cr, Cb, Y

@@ -6,7 +6,7 @@
 #include "support/synthetic_frames.h"
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QtTest>
@@ -343,7 +343,7 @@ private slots:
         auto frame = opened.value()->read(0);
         QVERIFY(frame.ok());
         // The PNG's R, G, B are Y, Cb, Cr; imread returns B, G, R.
-        cv::Mat png = cv::imread(base + "frames_ycbcr/f000.png", cv::IMREAD_COLOR);
+        cv::Mat png = fieldsight::test::imread(base + "frames_ycbcr/f000.png", cv::IMREAD_COLOR);
         QVERIFY(!png.empty());
         cv::Mat expected;
         cv::cvtColor(png, expected, cv::COLOR_BGR2RGB);

@@ -15,7 +15,7 @@
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -314,8 +314,8 @@ private slots:
     {
         // Lab 2 has no sensor noise, so any difference is the camera or the scene moving.
         const fs::path& dir = stream(Scenario::Lab2);
-        const cv::Mat first = cv::imread((dir / "frame_000000.png").string());
-        const cv::Mat last = cv::imread((dir / "frame_000007.png").string());
+        const cv::Mat first = fieldsight::test::imread((dir / "frame_000000.png").string());
+        const cv::Mat last = fieldsight::test::imread((dir / "frame_000007.png").string());
         QCOMPARE(first.size(), last.size());
         cv::Mat diff;
         cv::absdiff(first, last, diff);
@@ -335,7 +335,7 @@ private slots:
                 continue;
             ++with_ball;
             QCOMPARE(int(frame["balls"].size()), 1);
-            const cv::Mat image = cv::imread((dir / name).string());
+            const cv::Mat image = fieldsight::test::imread((dir / name).string());
             QCOMPARE(image.cols, 320);
             const double x = frame["balls"][0]["x"];
             const double y = frame["balls"][0]["y"];
@@ -410,7 +410,8 @@ private slots:
             const StreamFrame frame = renderStreamFrame(script, i);
             // The PNG on disk is what a user gets: classify that, not the in-memory copy.
             cv::Mat ycrcb;
-            cv::cvtColor(cv::imread((dir / frame.name).string()), ycrcb, cv::COLOR_BGR2YCrCb);
+            cv::cvtColor(fieldsight::test::imread((dir / frame.name).string()), ycrcb,
+                         cv::COLOR_BGR2YCrCb);
             const cv::Mat core = IdealLutBuilder::coreMask(frame.image.labels);
             for (int y = 0; y < ycrcb.rows; ++y) {
                 for (int x = 0; x < ycrcb.cols; ++x) {
@@ -453,7 +454,8 @@ private slots:
             char name[32];
             std::snprintf(name, sizeof name, "frame_%06d.png", i);
             cv::Mat ycrcb;
-            cv::cvtColor(cv::imread((dir / name).string()), ycrcb, cv::COLOR_BGR2YCrCb);
+            cv::cvtColor(fieldsight::test::imread((dir / name).string()), ycrcb,
+                         cv::COLOR_BGR2YCrCb);
             const auto* pixels =
                 reinterpret_cast<const unsigned char*>(strm.data() + record * std::size_t(i) + 25);
             int mismatches = 0;
@@ -528,7 +530,7 @@ private slots:
         const nlohmann::json truth = readJson(dir / "annotations.json");
         int posts = 0;
         for (const auto& [name, frame] : truth["frames"].items()) {
-            const cv::Mat image = cv::imread((dir / name).string());
+            const cv::Mat image = fieldsight::test::imread((dir / name).string());
             for (const auto& post : frame["goalposts"]) {
                 ++posts;
                 const int left = post["left"];

@@ -1,10 +1,10 @@
 // Video-file streams through OpenCV videoio: random access and the RGB to YCbCr conversion.
 #include "support/test_suite.h"
+#include "visioncore/io/image_files.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <QtTest>
 
@@ -48,12 +48,12 @@ private slots:
         QTemporaryDir dir;
         const std::string path = dir.filePath("clip.avi").toStdString();
         {
-            cv::VideoWriter writer(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10,
-                                   cv::Size(64, 48));
-            if (!writer.isOpened())
-                QSKIP("no OpenCV video writer backend for MJPG/AVI");
+            std::vector<cv::Mat> frames;
             for (int i = 0; i < 6; ++i)
-                writer.write(cv::Mat(48, 64, CV_8UC3, bgrOf(i)));
+                frames.emplace_back(48, 64, CV_8UC3, bgrOf(i));
+            if (Status s = writeVideo(path, "MJPG", 10, frames); !s)
+                QSKIP(
+                    ("no OpenCV video writer backend for MJPG/AVI: " + s.error().message).c_str());
         }
         auto opened = openStream(path);
         QVERIFY2(opened.ok(), opened.ok() ? "" : opened.error().message.c_str());

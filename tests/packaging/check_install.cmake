@@ -38,5 +38,18 @@ if(NOT status EQUAL 0 OR NOT out MATCHES "ball")
     message(FATAL_ERROR "the installed fieldsight could not evaluate the installed sample "
                         "stream (exit ${status}): ${err}${out}")
 endif()
+# The media module (OpenCV's codecs, loaded on demand) is installed where the executable finds
+# it: the installed synth writes its PNG frames through it.
+file(GLOB_RECURSE module "${PREFIX}/lib*/libfieldsight_media.so")
+if(NOT module)
+    message(FATAL_ERROR "cmake --install did not put libfieldsight_media.so under ${PREFIX}/lib")
+endif()
+execute_process(COMMAND "${PREFIX}/bin/fieldsight" synth --scenario lab1 --frames 1
+                        --out "${PREFIX}/synth-check"
+    RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT status EQUAL 0 OR NOT EXISTS "${PREFIX}/synth-check/frame_000000.png")
+    message(FATAL_ERROR "the installed fieldsight could not write a PNG through its media "
+                        "module (exit ${status}): ${err}")
+endif()
 message(STATUS "installed into ${PREFIX}; the installed executable evaluates lab1:\n${out}")
 file(REMOVE_RECURSE "${PREFIX}")

@@ -19,7 +19,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <algorithm>
 #include <cmath>
@@ -297,7 +297,8 @@ private slots:
         bgr.at<cv::Vec3b>(1, 1) = {40, 200, 240};
         for (const char* folder : {"plain", "flipped"}) {
             QVERIFY(QDir(dir.path()).mkdir(folder));
-            QVERIFY(cv::imwrite(dir.filePath(QString(folder) + "/f0.png").toStdString(), bgr));
+            QVERIFY(fieldsight::test::imwrite(
+                dir.filePath(QString(folder) + "/f0.png").toStdString(), bgr));
         }
         QVERIFY(writeJson(dir.filePath("flipped/stream.json"),
                           {{"format", "fieldsight-stream/1"}, {"flipped", true}}));
@@ -321,7 +322,8 @@ private slots:
     {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        QVERIFY(cv::imwrite(dir.filePath("f0.png").toStdString(), cv::Mat::zeros(2, 2, CV_8UC3)));
+        QVERIFY(fieldsight::test::imwrite(dir.filePath("f0.png").toStdString(),
+                                          cv::Mat::zeros(2, 2, CV_8UC3)));
         QVERIFY(writeJson(dir.filePath("stream.json"),
                           {{"format", "fieldsight-stream/1"}, {"flipped", "yes"}}));
         auto opened = openStream(dir.path().toStdString());

@@ -11,7 +11,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 namespace fieldsight::test {
 
@@ -40,7 +40,7 @@ QString writeLightRamp(const QString& stream, const QString& out,
         const QString name =
             QFileInfo(QString::fromStdString(frame.value().name)).completeBaseName() +
             QStringLiteral(".png");
-        if (!cv::imwrite(QDir(out).filePath(name).toStdString(), lit))
+        if (!fieldsight::test::imwrite(QDir(out).filePath(name).toStdString(), lit))
             return out + "/" + name + ": cannot write";
         QJsonObject entry{{"file", name}, {"timestamp_ms", frame.value().timestamp_ms}};
         if (const auto& h = frame.value().horizon)

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QtGlobal>
@@ -51,7 +51,7 @@ bool writeTurnedStream(const std::string& dir, const std::vector<cv::Mat>& uprig
         // The PNG's R, G, B hold Y, Cb, Cr; imwrite takes B, G, R.
         cv::Mat bgr;
         cv::cvtColor(stored, bgr, cv::COLOR_RGB2BGR);
-        if (!cv::imwrite((fs::path(dir) / name).string(), bgr)) {
+        if (!fieldsight::test::imwrite((fs::path(dir) / name).string(), bgr)) {
             qWarning("cannot write %s in %s", name, dir.c_str());
             return false;
         }

@@ -15,7 +15,7 @@
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/test_images.h"
 
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -111,7 +111,8 @@ class TestBadInput : public QObject
         for (int i = 0; i < 3; ++i) {
             const std::string frame = "frame_00000" + std::to_string(i);
             QVERIFY(
-                cv::imwrite(at(name + "/" + frame + ext), cv::imread(from + "/" + frame + ".png")));
+                fieldsight::test::imwrite(at(name + "/" + frame + ext),
+                                          fieldsight::test::imread(from + "/" + frame + ".png")));
         }
         fs::copy_file(from + "/default.lut", at(name + "/default.lut"));
     }

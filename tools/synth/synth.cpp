@@ -9,12 +9,12 @@
 
 #include "visioncore/framework/controller.h"
 #include "visioncore/io/annotations.h"
+#include "visioncore/io/image_files.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -216,15 +216,9 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
             lut.addFrame(lit.image.ycbcr, lit.image.labels);
         }
         if (options.write_png) {
-            std::vector<unsigned char> png;
-            try {
-                cv::imencode(".png", frame.image.bgr, png,
-                             {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
-                              cv::IMWRITE_PNG_STRATEGY_FILTERED});
-            } catch (const cv::Exception& e) {
-                return Error{(dir / frame.name).string() + ": cannot encode PNG: " + e.what()};
-            }
-            if (Status s = writeFileAtomically((dir / frame.name).string(), png.data(), png.size());
+            if (Status s = writeImage((dir / frame.name).string(), frame.image.bgr,
+                                      {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
+                                       cv::IMWRITE_PNG_STRATEGY_FILTERED});
                 !s)
                 return s;
         }

@@ -7,7 +7,7 @@
 #include "io/stream_readers.h"
 #include "visioncore/basics/atomic_file.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include "visioncore/io/image_files.h"
 
 #include <algorithm>
 #include <array>
@@ -229,14 +229,8 @@ Result<cv::Mat> decodeImageFile(const std::string& path, std::optional<HeaderSiz
         return decodeJpeg(path, h, n, checkSize);
     if (png) // libpng's own lines on a damaged header or image data become this one
         return decodePng(path, h, n, checkSize);
-    cv::Mat bgr;
-    try {
-        bgr = cv::imdecode(cv::Mat(1, int(n), CV_8U, const_cast<unsigned char*>(h)),
-                           cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
-    } catch (const cv::Exception& e) {
-        return Error{"cannot read " + path + ": the decoder failed (" + e.err + ")"};
-    }
-    if (bgr.empty())
+    auto bgr = decodeImage(h, n, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION, path);
+    if (bgr && bgr.value().empty())
         return Error{"cannot read " + path + ": not a decodable image"};
     return bgr;
 }
