@@ -235,6 +235,35 @@ private slots:
                                                                    .arg(tracker.state().gain[2])));
     }
 
+    void aViewThatTintsTheCarpetAloneDoesNotMoveTheColour()
+    {
+        // As on the B-Human log: the far carpet redder-less than the near, the white a shade
+        // redder, frame after frame. A light would tint both alike; the colour stays, so a ball's
+        // narrow cells keep reading its orange. (Their weighted mean moved red by 3%.)
+        // Wide enough a tolerance that the frames count (the carpet's red is about 50 levels, a
+        // few percent of it lost in the conversion to Y, Cb, Cr and back).
+        LightTrackingOptions options = denseSampling();
+        options.max_disagreement = 0.1;
+        LightTracker tracker(referenceTable(), options);
+        for (int i = 0; i < 5; ++i)
+            tracker.observe(fieldFrame({1, 1, 1}, std::uint64_t(i)), Horizon{});
+        for (int i = 5; i < 30; ++i) {
+            cv::Mat bgr = ycbcrToBgr(fieldFrame({1, 1, 1}, std::uint64_t(i)));
+            for (int y = 0; y < bgr.rows; ++y)
+                for (int x = 0; x < bgr.cols; ++x) {
+                    cv::Vec3b& p = bgr.at<cv::Vec3b>(y, x);
+                    p[2] = cv::saturate_cast<std::uint8_t>(p[2] * (x % 20 < 5 ? 1.02 : 0.96));
+                }
+            const LightState& s = tracker.observe(bgrToYcbcr(bgr), Horizon{});
+            QCOMPARE(s.verdict, LightState::Verdict::Followed);
+        }
+        QVERIFY2(tracker.state().distance() < 0.01, qPrintable(QString("%1 %2 %3")
+                                                                   .arg(tracker.state().gain[0])
+                                                                   .arg(tracker.state().gain[1])
+                                                                   .arg(tracker.state().gain[2])));
+        QCOMPARE(tracker.state().makeMap(), nullptr);
+    }
+
     void onlyPixelsBelowTheHorizonAreSampled()
     {
         LightTracker tracker(referenceTable(), denseSampling());
