@@ -5,13 +5,13 @@
 #include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/dnt_labels.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/percepts/goalpost.h"
 
 #include <nlohmann/json.hpp>
-#include "support/test_images.h"
 
 #include <QtTest>
 

@@ -4,14 +4,13 @@
 // cancel stops a scan; and the detection delta is reported per percept kind.
 #include "support/test_suite.h"
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/goalpost.h"
 #include "visioncore/percepts/obstacle.h"
 #include "visioncore/services/edit_effect.h"
 #include "visioncore/services/evaluation.h"
-
-#include "support/test_images.h"
 
 #include <QtTest>
 

@@ -5,6 +5,7 @@
 #include "support/test_suite.h"
 #include "support/stderr_capture.h"
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/basics/ycbcr.h"
 #include "visioncore/framework/controller.h"
@@ -13,7 +14,6 @@
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/services/lut_building.h"
 
-#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QByteArray>

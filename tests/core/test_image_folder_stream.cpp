@@ -2,12 +2,12 @@
 #include "support/test_suite.h"
 #include "support/stderr_capture.h"
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 #include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 #include "visioncore/basics/ycbcr.h"
 
 #include <opencv2/core.hpp>
-#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QtTest>

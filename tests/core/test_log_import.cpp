@@ -7,11 +7,11 @@
 #include "support/test_suite.h"
 #include "support/child_process.h"
 #include "support/reference_streams.h"
+#include "support/test_images.h"
 #include "visioncore/io/bhuman_log.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <nlohmann/json.hpp>
-#include "support/test_images.h"
 
 #include <QtTest>
 

@@ -4,12 +4,11 @@
 // annotations add their votes, and the goal-colour parameter is found through the registry.
 #include "support/test_suite.h"
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_auto.h"
 #include "visioncore/services/stream_runner.h"
-
-#include "support/test_images.h"
 
 #include <QtTest>
 

@@ -1,9 +1,9 @@
 // Importing other teams' colour tables: B-Human .c64, rUNSWift .nnmc.bz2, UPenn .raw.
+#include "support/child_process.h"
 #include "support/test_suite.h"
 #include "visioncore/io/lut_import.h"
 
 #include "support/synthetic_frames.h"
-
 #include "support/test_images.h"
 
 #include <QtTest>
@@ -17,12 +17,6 @@
 using namespace fieldsight;
 
 namespace {
-
-void writeBytes(const std::string& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-}
 
 void putRun(std::string& out, std::uint32_t length, std::uint8_t value)
 {
@@ -80,7 +74,7 @@ private slots:
         putRun(rle, 0, 0);
         QTemporaryDir dir;
         const std::string path = dir.filePath("table.c64").toStdString();
-        writeBytes(path, rle);
+        test::writeBytes(path, rle);
 
         auto lut = importLut(path);
         QVERIFY2(lut.ok(), errorOf(lut).c_str());
@@ -107,7 +101,7 @@ private slots:
         putRun(rle, 0, 0);
         QTemporaryDir dir;
         const std::string path = dir.filePath("classes.c64").toStdString();
-        writeBytes(path, rle);
+        test::writeBytes(path, rle);
         auto lut = importLut(path);
         QVERIFY2(lut.ok(), errorOf(lut).c_str());
         const Colour expected[] = {Colour::Unclassified, Colour::Orange, Colour::Yellow,
@@ -125,7 +119,7 @@ private slots:
         putRun(rle, 0, 0);
         QTemporaryDir dir;
         const std::string path = dir.filePath("over.c64").toStdString();
-        writeBytes(path, rle);
+        test::writeBytes(path, rle);
         QCOMPARE(errorOf(importLut(path)),
                  path + ": run-length data overruns the 64x64x64 table at byte offset 5 "
                         "(run of 2 after 262143 cells)");
@@ -138,18 +132,18 @@ private slots:
         std::string rle;
         putRun(rle, 1000, 0);
         putRun(rle, 0, 0);
-        writeBytes(path, rle);
+        test::writeBytes(path, rle);
         QCOMPARE(errorOf(importLut(path)),
                  path + ": run-length data ends after 1000 of 262144 cells");
 
-        writeBytes(path, rle.substr(0, 7)); // no end marker
+        test::writeBytes(path, rle.substr(0, 7)); // no end marker
         QCOMPARE(errorOf(importLut(path)),
                  path + ": truncated at byte offset 5 (expected a run length or the end marker)");
 
         std::string bad_class;
         putRun(bad_class, 64 * 64 * 64, 9);
         putRun(bad_class, 0, 0);
-        writeBytes(path, bad_class);
+        test::writeBytes(path, bad_class);
         QCOMPARE(errorOf(importLut(path)), path + ": unknown colour class 9 at byte offset 4");
     }
 
@@ -206,7 +200,7 @@ private slots:
         table[0] = char(4);                            // red robot
         QTemporaryDir dir;
         const std::string path = dir.filePath("t.nnmc.bz2").toStdString();
-        writeBytes(path, bzip2(table));
+        test::writeBytes(path, bzip2(table));
         auto lut = importLut(path);
         QVERIFY2(lut.ok(), errorOf(lut).c_str());
         QCOMPARE(lut.value().classify(14, 10, 6), Colour::Orange); // Y = 2*7, Cb = 2*5, Cr = 2*3
@@ -220,20 +214,20 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("bad.nnmc.bz2").toStdString();
-        writeBytes(path, "definitely not bzip2");
+        test::writeBytes(path, "definitely not bzip2");
         QCOMPARE(errorOf(importLut(path)), path + ": not bzip2 data");
 
-        writeBytes(path, bzip2(std::string(1000, char(9))));
+        test::writeBytes(path, bzip2(std::string(1000, char(9))));
         QCOMPARE(errorOf(importLut(path)),
                  path + ": wrong size: 1000 bytes unpacked, expected 2097152 (128x128x128)");
 
         const std::string packed = bzip2(std::string(ColourLut::kCells, char(9)));
-        writeBytes(path, packed.substr(0, packed.size() / 2));
+        test::writeBytes(path, packed.substr(0, packed.size() / 2));
         QCOMPARE(errorOf(importLut(path)), path + ": truncated bzip2 data");
 
         std::string bad_value(ColourLut::kCells, char(9));
         bad_value[777] = char(42);
-        writeBytes(path, bzip2(bad_value));
+        test::writeBytes(path, bzip2(bad_value));
         QCOMPARE(errorOf(importLut(path)), path + ": unknown colour class 42 at offset 777");
     }
 
@@ -273,7 +267,7 @@ private slots:
         table[5u << 12] = char(4); // Y>>2 = 5: cyan
         QTemporaryDir dir;
         const std::string path = dir.filePath("t.raw").toStdString();
-        writeBytes(path, table);
+        test::writeBytes(path, table);
         auto lut = importLut(path);
         QVERIFY2(lut.ok(), errorOf(lut).c_str());
         const ColourLut& t = lut.value();
@@ -291,7 +285,7 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("t.raw").toStdString();
-        writeBytes(path, std::string(1234, '\0'));
+        test::writeBytes(path, std::string(1234, '\0'));
         QCOMPARE(errorOf(importLut(path)),
                  path + ": wrong size: 1234 bytes, expected 262144 (64x64x64)");
     }
@@ -324,7 +318,7 @@ private slots:
         QVERIFY(imported.value() == lut);
 
         const std::string other = dir.filePath("table.txt").toStdString();
-        writeBytes(other, "x");
+        test::writeBytes(other, "x");
         QCOMPARE(
             errorOf(importLut(other)),
             other +

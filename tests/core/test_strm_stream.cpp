@@ -1,12 +1,13 @@
 // Original NUbots image streams (.strm): writer/reader round trip, flips, and damaged files.
+#include "support/child_process.h"
 #include "support/test_suite.h"
 #include "visioncore/datawrappers/stream_data_wrapper.h"
 #include "visioncore/io/stream_reader.h"
 
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 
 #include <opencv2/core.hpp>
-#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QtTest>
@@ -39,12 +40,6 @@ std::string strmFileBytes(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeBytes(const std::string& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
 }
 
 template <class T> void put(std::string& out, T value)
@@ -172,7 +167,7 @@ private slots:
             bytes += char(v);     // Y
             bytes += char(v + 2); // Cr
         }
-        writeBytes(path, bytes);
+        test::writeBytes(path, bytes);
         auto opened = openStream(path);
         QVERIFY(opened.ok());
         auto frame = opened.value()->read(0);
@@ -192,7 +187,7 @@ private slots:
             bytes += header(0, 2, 1, 100.0 * r, false);
             bytes += std::string("\x00\x05\x07\x09\x00\x06\x08\x0a", 8);
         }
-        writeBytes(path, bytes);
+        test::writeBytes(path, bytes);
         auto opened = openStream(path);
         QVERIFY2(opened.ok(), opened.ok() ? "" : opened.error().message.c_str());
         QCOMPARE(opened.value()->info().frame_count, std::size_t(2));
@@ -235,7 +230,7 @@ private slots:
         writeStrm(path, {randomFrame(4, 4, 0, 1), randomFrame(4, 4, 33, 2)});
         std::string bytes = strmFileBytes(path);
         bytes.replace(recordSize(4, 4), 4, "JUNK");
-        writeBytes(path, bytes);
+        test::writeBytes(path, bytes);
         auto opened = openStream(path);
         QVERIFY(!opened.ok());
         QCOMPARE(opened.error().message, path + ": record 1 at byte offset " +
@@ -247,7 +242,7 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("huge.strm").toStdString();
-        writeBytes(path, header(1, 100000, 240, 0, false) + std::string(64, '\0'));
+        test::writeBytes(path, header(1, 100000, 240, 0, false) + std::string(64, '\0'));
         auto opened = openStream(path);
         QVERIFY(!opened.ok());
         QCOMPARE(opened.error().message,
@@ -258,7 +253,7 @@ private slots:
     {
         QTemporaryDir dir;
         const std::string path = dir.filePath("empty.strm").toStdString();
-        writeBytes(path, "");
+        test::writeBytes(path, "");
         auto opened = openStream(path);
         QVERIFY(!opened.ok());
         QCOMPARE(opened.error().message, path + ": empty stream (no records)");
@@ -309,7 +304,7 @@ private slots:
         record2.replace(record2.find("[0.5, 1, 20]"), 12, "[0.5, 1e-8, 20]");
         writeStrm(path,
                   {randomFrame(11, 4, 0, 1), randomFrame(11, 4, 33, 2), randomFrame(11, 4, 66, 3)});
-        writeBytes(dir.filePath("sensor.strm").toStdString(), record0 + record1 + record2);
+        test::writeBytes(dir.filePath("sensor.strm").toStdString(), record0 + record1 + record2);
 
         auto opened = openStream(path);
         QVERIFY(opened.ok());
@@ -336,7 +331,7 @@ private slots:
         QCOMPARE(raw.size(), std::size_t(320 * 240 * 4));
         QTemporaryDir dir;
         const std::string path = dir.filePath("bhuman.strm").toStdString();
-        writeBytes(path, header(1, 320, 240, 486749, false) + raw);
+        test::writeBytes(path, header(1, 320, 240, 486749, false) + raw);
 
         auto opened = openStream(path);
         QVERIFY(opened.ok());
@@ -378,16 +373,16 @@ private slots:
         QTemporaryDir dir;
         const std::string path = dir.filePath("odd.strm").toStdString();
         const std::string pixels(8, '\0');
-        writeBytes(path, header(7, 2, 1, 0, false) + pixels);
+        test::writeBytes(path, header(7, 2, 1, 0, false) + pixels);
         auto opened = openStream(path);
         QVERIFY(!opened.ok());
         QCOMPARE(opened.error().message,
                  path + ": record 0 at byte offset 0: unsupported version 7 (this reader knows "
                         "versions 0 and 1)");
         const std::size_t record = header(1, 2, 1, 0, false).size() + pixels.size();
-        writeBytes(path, header(1, 2, 1, 0, false) + pixels +
-                             header(1, 2, 1, std::numeric_limits<double>::quiet_NaN(), false) +
-                             pixels);
+        test::writeBytes(
+            path, header(1, 2, 1, 0, false) + pixels +
+                      header(1, 2, 1, std::numeric_limits<double>::quiet_NaN(), false) + pixels);
         opened = openStream(path);
         QVERIFY(!opened.ok());
         QCOMPARE(opened.error().message, path + ": record 1 at byte offset " +

@@ -1,6 +1,7 @@
 // The scene generator: determinism, camera geometry, ground truth against the rendered pixels,
 // the ideal LUT, and the files it writes.
 #include "support/test_suite.h"
+#include "support/test_images.h"
 #include "synth/camera_model.h"
 #include "synth/ground_truth.h"
 #include "synth/ideal_lut.h"
@@ -15,7 +16,6 @@
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
-#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>

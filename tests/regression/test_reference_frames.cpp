@@ -4,6 +4,7 @@
 #include "support/test_suite.h"
 #include "support/reference_streams.h"
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 #include "visioncore/percepts/ball.h"
 #include "visioncore/percepts/field_boundary.h"
 #include "visioncore/percepts/field_line.h"
@@ -19,7 +20,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
-#include "support/test_images.h"
 
 #include <algorithm>
 #include <cmath>

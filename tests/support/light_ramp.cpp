@@ -1,5 +1,6 @@
 // Copies a stream under a ramping light, frame by frame through the core's reader.
 #include "support/light_ramp.h"
+#include "support/test_images.h"
 
 #include "visioncore/basics/ycbcr.h"
 #include "visioncore/io/stream_reader.h"
@@ -10,8 +11,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-
-#include "support/test_images.h"
 
 namespace fieldsight::test {
 

@@ -2,11 +2,11 @@
 #include "support/turned_streams.h"
 
 #include "support/synthetic_frames.h"
+#include "support/test_images.h"
 #include "visioncore/basics/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
-#include "support/test_images.h"
 #include <opencv2/imgproc.hpp>
 
 #include <QtGlobal>

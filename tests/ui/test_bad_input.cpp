@@ -7,6 +7,7 @@
 #include "support/child_process.h"
 #include "support/synthetic_frames.h"
 #include "support/window_waits.h"
+#include "support/test_images.h"
 #include "ui/adapters/local_path.h"
 #include "ui/document/lut_document.h"
 #include "ui/actions/session_files.h"
@@ -14,8 +15,6 @@
 #include "ui/settings/window_settings.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
-
-#include "support/test_images.h"
 
 #include <QSignalSpy>
 #include <QStandardPaths>

@@ -330,13 +330,22 @@ double lineCoverage(double x, double y, const Eigen::Vector2d& step_x,
         const double hi = std::min(s + e / 2, hw);
         return std::clamp((hi - lo) / e, 0.0, 1.0);
     };
+    // No band reaches a point further across it than hw plus half the footprint's extent (at
+    // most half the steps' lengths): most of the carpet is, and skips the band's arithmetic.
+    const double reach = hw + 0.5 * (step_x.norm() + step_y.norm()) + 1e-9;
     double coverage = 0;
     for (const Feature& f : paintedFeatures()) {
-        const Eigen::Vector2d ap(x - f.a.x(), y - f.a.y());
-        const double along = ap.dot(f.direction);
+        // In plain doubles: an Eigen vector here went through the stack on every feature (a
+        // stalled load that took half of a frame's rendering in -O1 builds).
+        const double ax = x - f.a.x();
+        const double ay = y - f.a.y();
+        const double across = ax * f.normal.x() + ay * f.normal.y();
+        if (std::abs(across) > reach)
+            continue;
+        const double along = ax * f.direction.x() + ay * f.direction.y();
         if (along < -hw || along > f.length + hw)
             continue;
-        coverage = std::max(coverage, band(ap.dot(f.normal), f.normal));
+        coverage = std::max(coverage, band(across, f.normal));
         if (coverage >= 1)
             return 1;
     }
