@@ -79,6 +79,12 @@ ColourLut IdealLutBuilder::build() const
                     std::size_t(y) << 14 | std::size_t(b) << 7 | std::size_t(r);
                 if (decided[cell])
                     continue;
+                // Most cells have no coloured neighbour: a quick look before counting them.
+                const std::uint8_t* v = voted.data();
+                if ((y == 0 || !v[cell - (1u << 14)]) && (y == 127 || !v[cell + (1u << 14)]) &&
+                    (b == 0 || !v[cell - (1u << 7)]) && (b == 127 || !v[cell + (1u << 7)]) &&
+                    (r == 0 || !v[cell - 1]) && (r == 127 || !v[cell + 1]))
+                    continue;
                 std::array<int, kColourCount> count{};
                 auto look = [&](int yy, int bb, int rr) {
                     if (yy < 0 || bb < 0 || rr < 0 || yy > 127 || bb > 127 || rr > 127)
