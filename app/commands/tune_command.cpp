@@ -136,8 +136,8 @@ std::string tuneTable(const std::string& stream, const TuneResult& r, const Tune
     return text;
 }
 
-std::string tuneJson(const std::string& stream, const std::string& out, const TuneResult& r,
-                     const TuneOptions& o)
+std::string tuneJson(const std::vector<std::string>& streams, const std::string& out,
+                     const TuneResult& r, const TuneOptions& o)
 {
     using Json = nlohmann::ordered_json;
     auto score = [](const TuneScore& s) {
@@ -156,7 +156,9 @@ std::string tuneJson(const std::string& stream, const std::string& out, const Tu
     };
     Json j;
     j["format"] = "fieldsight-tune/1";
-    j["stream"] = stream;
+    j["stream"] = streams.front();
+    if (streams.size() > 1)
+        j["streams"] = streams; // every stream fitted, the first as "stream"
     j["params"] = out;
     j["seed"] = o.seed;
     j["budget"] = o.budget;
@@ -194,7 +196,12 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         "ranges to maximise the score on some annotated frames, scores the others (held out) "
         "too, and writes the parameters that differ from the defaults. Ctrl+C stops the search "
         "and keeps the best so far.");
-    parser.addPositionalArgument("STREAM", "Image folder or .strm file.");
+    parser.addPositionalArgument(
+        "STREAM",
+        "Image folder or .strm file; several streams of one venue are fitted together "
+        "(each with its own annotations.json and table, the same share of each held "
+        "out).",
+        "STREAM...");
     parser.addOption({"out", "The fitted parameters (fieldsight-params/1).", "PARAMS"});
     parser.addOption({"annotations",
                       "Annotations to fit (default: annotations.json in the stream folder).",
@@ -229,12 +236,18 @@ int tuneCommand(const QStringList& args, const Context& ctx)
     parser.addOption(paramsOption());
     parser.addOption(orientationOption());
     parser.addOption(threadsOption("0"));
-    if (auto done = parseCommand(parser, "tune", args, 1, 1, ctx))
+    if (auto done = parseCommand(parser, "tune", args, 1, 64, ctx))
         return *done;
 
     const InterruptGuard interrupt;
     try {
-        const std::string stream = toLocalPath(parser.positionalArguments().first());
+        std::vector<std::string> streams;
+        for (const QString& s : parser.positionalArguments())
+            streams.push_back(toLocalPath(s));
+        const std::string& stream = streams.front();
+        if (streams.size() > 1 && parser.isSet("annotations"))
+            return badInput(ctx, "tune: --annotations names one stream's file; with several "
+                                 "streams each is fitted to its own annotations.json");
         if (!parser.isSet("out"))
             return badInput(ctx, "tune: --out PARAMS is required");
         const std::string out = toLocalPath(parser.value("out"));
@@ -242,8 +255,12 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         const std::string truth_path = parser.isSet("annotations")
                                            ? toLocalPath(parser.value("annotations"))
                                            : defaultTruthPath(stream);
-        const std::vector<std::string> inputs{stream, truth_path, toLocalPath(parser.value("lut")),
-                                              toLocalPath(parser.value("params"))};
+        std::vector<std::string> inputs{truth_path, toLocalPath(parser.value("lut")),
+                                        toLocalPath(parser.value("params"))};
+        for (const std::string& s : streams) {
+            inputs.push_back(s);
+            inputs.push_back(defaultTruthPath(s));
+        }
         if (Status s = checkOutputFile("tune --out", out, inputs, kParamsFile); !s)
             return badInput(ctx, s.error().message);
         if (Status s = checkOutputFile("tune --json", json, inputs, kTuneFile); !s)
@@ -297,6 +314,25 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                                        input.value().info().frame_count);
         if (!truth)
             return badInput(ctx, truth.error().message);
+        // The other streams, each with its own annotations (and table, unless --lut names one).
+        std::vector<StreamInput> more_inputs;
+        std::vector<Annotations> more_truth;
+        more_inputs.reserve(streams.size());
+        more_truth.reserve(streams.size());
+        std::vector<TuneStream> more;
+        for (std::size_t k = 1; k < streams.size(); ++k) {
+            auto other = openInput(parser, streams[k], ctx);
+            if (!other)
+                return badInput(ctx, other.error().message);
+            const std::string other_truth = defaultTruthPath(streams[k]);
+            auto annotations = Annotations::load(other_truth, ctx.pipeline.perceptKinds(),
+                                                 other.value().info().frame_count);
+            if (!annotations)
+                return badInput(ctx, annotations.error().message);
+            more_inputs.push_back(std::move(other).value());
+            more_truth.push_back(std::move(annotations).value());
+            more.push_back({&more_inputs.back(), &more_truth.back(), other_truth});
+        }
 
         const bool terminal = &ctx.err == &std::cerr && isatty(STDERR_FILENO);
         options.progress = [&](const TuneProgress& p) {
@@ -305,7 +341,7 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                         << " evaluations, best fit score " << rounded(p.best_fit, 4) << std::flush;
         };
         options.cancel = &g_interrupted;
-        auto result = tuneParams(input.value(), truth.value(), truth_path, options);
+        auto result = tuneStreams(input.value(), truth.value(), truth_path, options, more);
         if (terminal)
             ctx.err << "\r\033[K" << std::flush;
         if (!result)
@@ -314,10 +350,13 @@ int tuneCommand(const QStringList& args, const Context& ctx)
             printError(ctx.err, s.error().message);
             return kExitFailure;
         }
+        std::string names;
+        for (const std::string& s : streams)
+            names += (names.empty() ? "" : ", ") + s;
         std::string table =
-            tuneTable(stream, result.value(), options, scoredKinds(ctx.pipeline.perceptKinds()));
+            tuneTable(names, result.value(), options, scoredKinds(ctx.pipeline.perceptKinds()));
         table += "wrote " + out + "\n";
-        return finishReport(ctx, table, json, tuneJson(stream, out, result.value(), options));
+        return finishReport(ctx, table, json, tuneJson(streams, out, result.value(), options));
     } catch (const std::exception& e) {
         return failure(ctx, "tune", e);
     }

@@ -163,6 +163,53 @@ private slots:
         QVERIFY(reused.history.size() > 2); // the search moved
     }
 
+    void severalStreamsAreScoredEachWithItsOwnTable()
+    {
+        // lab1 and lab2 have tables of their own (lab2's field lines score 87/2/63 with its own,
+        // 85/3/65 with lab1's): fitted together, the counts are each stream's own, added.
+        Fixture a = open("lab1");
+        Fixture b = open("lab2");
+        TuneOptions options;
+        options.budget = 1;
+        options.holdout = 0;
+        const TuneResult alone_a = tune(a, options);
+        const TuneResult alone_b = tune(b, options);
+        auto both = tuneStreams(a.input, a.truth, a.truth_path, options,
+                                {{&b.input, &b.truth, b.truth_path}});
+        QVERIFY2(both.ok(), both.ok() ? "" : both.error().message.c_str());
+        const TuneResult& r = both.value();
+        QCOMPARE(r.fit_frames.size(), alone_a.fit_frames.size() + alone_b.fit_frames.size());
+        QCOMPARE(r.fit_frames.front(), alone_a.fit_frames.front());
+        QCOMPARE(r.fit_frames.back(), b.input.stream + "/" + alone_b.fit_frames.back());
+        for (const auto& [name, score] : r.start_fit.classes) {
+            const ClassScore& x = alone_a.start_fit.classes.at(name);
+            const ClassScore& y = alone_b.start_fit.classes.at(name);
+            QCOMPARE(score.tp, x.tp + y.tp);
+            QCOMPARE(score.fp, x.fp + y.fp);
+            QCOMPARE(score.fn, x.fn + y.fn);
+        }
+
+        // The same share of each stream held out.
+        options.holdout = 1.0 / 3.0;
+        auto held = tuneStreams(a.input, a.truth, a.truth_path, options,
+                                {{&b.input, &b.truth, b.truth_path}});
+        QVERIFY(held.ok());
+        const auto& out = held.value().holdout_frames;
+        const auto of_b = std::count_if(out.begin(), out.end(), [&](const std::string& name) {
+            return name.rfind(b.input.stream + "/", 0) == 0;
+        });
+        QCOMPARE(of_b, 10);
+        QCOMPARE(out.size(), std::size_t(20));
+
+        // One set is fitted to both, so they must start alike.
+        Fixture wrong = open("lab2", wrongGoal());
+        auto refused = tuneStreams(a.input, a.truth, a.truth_path, options,
+                                   {{&wrong.input, &wrong.truth, wrong.truth_path}});
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.find("must start alike") != std::string::npos,
+                 refused.error().message.c_str());
+    }
+
     void aSeedIsNeverFitted()
     {
         Fixture f = open("lab1");

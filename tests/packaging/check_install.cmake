@@ -44,8 +44,8 @@ file(GLOB_RECURSE module "${PREFIX}/lib*/libfieldsight_media.so")
 if(NOT module)
     message(FATAL_ERROR "cmake --install did not put libfieldsight_media.so under ${PREFIX}/lib")
 endif()
-execute_process(COMMAND "${PREFIX}/bin/fieldsight" synth --scenario lab1 --frames 1
-                        --out "${PREFIX}/synth-check"
+execute_process(COMMAND "${PREFIX}/bin/fieldsight" synth --scenario lab1 --frames 1 --width 64
+                        --height 48 --out "${PREFIX}/synth-check"
     RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE err)
 if(NOT status EQUAL 0 OR NOT EXISTS "${PREFIX}/synth-check/frame_000000.png")
     message(FATAL_ERROR "the installed fieldsight could not write a PNG through its media "

@@ -498,8 +498,65 @@ Fitted fitOn(const StreamInput& input, const std::vector<HeldFrame>& frames,
 
 } // namespace
 
+namespace {
+
+/// The scored frames of every stream, the first's first, and which of them are held out (the
+/// same share of each stream).
+Result<std::pair<std::vector<HeldFrame>, std::vector<bool>>>
+readAllStreams(StreamInput& input, const Annotations& truth, const std::string& truth_path,
+               const TuneOptions& options, const std::vector<TuneStream>& more, bool cross)
+{
+    auto read = tuning::readScoredFrames(input, truth, truth_path, options.threads);
+    if (!read)
+        return read.error();
+    std::vector<HeldFrame> frames = std::move(read).value();
+    std::vector<bool> held = cross ? std::vector<bool>(frames.size(), false)
+                                   : holdoutFrames(frames.size(), options.holdout, options.seed);
+    for (std::size_t k = 0; k < more.size(); ++k) {
+        const TuneStream& s = more[k];
+        if (!s.input || !s.truth)
+            return Error{"tune: a stream without its input or annotations"};
+        StreamInput& other = *s.input;
+        if (other.pipeline != input.pipeline)
+            return Error{other.stream + ": another pipeline than " + input.stream + "'s"};
+        if (other.adapt)
+            return Error{"the parameters are fitted with the stream's table as it is (no --adapt)"};
+        if (Status st = other.checkSettings(); !st)
+            return st.error();
+        // One parameter set is fitted to every stream, so each must start from it.
+        if (other.params.toJson() != input.params.toJson() || other.skip != input.skip)
+            return Error{other.stream +
+                         ": its parameters or skipped stages (its own params.json, "
+                         "--params, --set, --skip) differ from " +
+                         input.stream +
+                         "'s; the streams are fitted together, so they must start alike"};
+        auto frames_of = tuning::readScoredFrames(other, *s.truth, s.truth_path, options.threads);
+        if (!frames_of)
+            return frames_of.error();
+        const std::vector<bool> held_of =
+            cross ? std::vector<bool>(frames_of.value().size(), false)
+                  : holdoutFrames(frames_of.value().size(), options.holdout, options.seed + 1 + k);
+        for (HeldFrame& f : frames_of.value()) {
+            f.lut = other.lut;
+            f.name = other.stream + "/" + f.name;
+            frames.push_back(std::move(f));
+        }
+        held.insert(held.end(), held_of.begin(), held_of.end());
+    }
+    return std::make_pair(std::move(frames), std::move(held));
+}
+
+} // namespace
+
 Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
                               const std::string& truth_path, const TuneOptions& options)
+{
+    return tuneStreams(input, truth, truth_path, options, {});
+}
+
+Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
+                               const std::string& truth_path, const TuneOptions& options,
+                               const std::vector<TuneStream>& more)
 {
     const auto started = std::chrono::steady_clock::now();
     if (Status s = checkTuneWeights(options.weights, scoredKinds(input.pipeline->perceptKinds()));
@@ -518,20 +575,20 @@ Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
     auto params = searchedParams(input, options);
     if (!params)
         return params.error();
-    auto read = tuning::readScoredFrames(input, truth, truth_path, options.threads);
+    const bool want_folds = options.folds >= 2;
+    auto read = readAllStreams(input, truth, truth_path, options, more, want_folds);
     if (!read)
         return read.error();
-    const std::vector<HeldFrame>& frames = read.value();
+    const std::vector<HeldFrame>& frames = read.value().first;
     const std::size_t n = frames.size();
-    const bool cross = options.folds >= 2 && n >= 2;
+    const bool cross = want_folds && n >= 2;
     const std::size_t folds = cross ? std::min<std::size_t>(std::size_t(options.folds), n) : 0;
 
     TuneResult result;
     result.parameters = int(params.value().size());
     result.start = input.params;
     result.folds = int(folds);
-    const std::vector<bool> held =
-        cross ? std::vector<bool>(n, false) : holdoutFrames(n, options.holdout, options.seed);
+    const std::vector<bool> held = cross ? std::vector<bool>(n, false) : read.value().second;
     std::vector<std::size_t> fit;
     std::vector<std::size_t> holdout;
     for (std::size_t i = 0; i < n; ++i) {

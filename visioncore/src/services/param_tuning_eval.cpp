@@ -122,7 +122,8 @@ Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annota
 }
 
 Scorer::Scorer(const StreamInput& input, bool reuse)
-    : m_data(input.lut), m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline)),
+    : m_lut(input.lut), m_data(input.lut),
+      m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline)),
       m_kinds(scoredKinds(input.pipeline->perceptKinds())), m_reuse(reuse)
 {
     for (const std::string& id : input.skip)
@@ -173,6 +174,7 @@ std::vector<Tally> Scorer::tallies(const ParamSet& params, const std::vector<Hel
     for (std::size_t position : positions) {
         Tally& tally = out.emplace_back();
         const HeldFrame& held = frames[position];
+        m_data.setLut(held.lut ? held.lut : m_lut);
         m_data.setFrame(held.frame);
         Result<FrameReport> report = Error{""};
         if (split > 0) {

@@ -19,6 +19,8 @@ struct HeldFrame
     std::string name;      ///< in the annotations
     Frame frame;
     const FrameAnnotation* truth = nullptr; ///< into the annotations the search was given
+    /// The table of the frame's stream (tuneParams' `more`); null: the first stream's.
+    std::shared_ptr<const ColourLut> lut;
 };
 
 /// Reads every scored frame of `truth` from `input` (on the input's workers) in stream order.
@@ -60,6 +62,7 @@ private:
     /// The values of every parameter of the stages before `split`, as text.
     std::string prefixKey(std::size_t split) const;
 
+    std::shared_ptr<const ColourLut> m_lut; ///< the first stream's
     MemoryDataWrapper m_data;
     std::unique_ptr<ControlWrapper> m_control;
     std::vector<const PerceptKind*> m_kinds; ///< the pipeline's scored kinds

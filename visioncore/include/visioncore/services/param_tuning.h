@@ -131,12 +131,28 @@ struct TuneResult
 Status checkTuneWeights(const std::map<std::string, double, std::less<>>& weights,
                         const std::vector<const PerceptKind*>& kinds = scoredKinds());
 
+/// Another annotated stream fitted together with the first (tuneParams' `more`): more frames of
+/// the same venue, each read and classified with its own stream's table.
+struct TuneStream
+{
+    StreamInput* input = nullptr;
+    const Annotations* truth = nullptr;
+    std::string truth_path;
+};
+
 /// Reads the scored frames of `truth` from `input` once (into memory), then searches the
 /// parameters of `options.stages` from input.params (the stream's own) to maximise the score
 /// on the fit frames, scoring the held-out frames only for the report. Bad input (an unknown
 /// stage, a bad weight, a frame the stream lacks, no scored frame) is an Error naming it.
 Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
                               const std::string& truth_path, const TuneOptions& options);
+/// tuneParams with `more` streams fitted together with the first: their scored frames are
+/// fitted and held out with the first's (the same share of each stream, its blocks drawn with
+/// seed + its place), named "STREAM/NAME" in the result's lists. They must start from the same
+/// parameters and skip the same stages.
+Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
+                               const std::string& truth_path, const TuneOptions& options,
+                               const std::vector<TuneStream>& more);
 
 /// Which of `frames` scored frames (in stream order) are held out: `share` of them, rounded to
 /// whole contiguous blocks (six blocks, or one per frame when fewer; at least one block held out
