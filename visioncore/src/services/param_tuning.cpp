@@ -1,13 +1,13 @@
-// The parameter search (docs/formats.md, "fieldsight tune"): coordinate rounds over every
-// searched parameter (a coarse grid over its range first, then ever finer steps around the best
+// The parameter search (docs/formats.md, "fieldsight tune"): a best-first sweep of every
+// searched parameter's coarse candidates, coordinate rounds (ever finer steps around the best
 // value, switches and choices tried again each round), then random moves of a few parameters at
 // once until the budget is spent; the changes that buy nothing are put back. Candidates are
-// scored in batches whose make-up depends only on the seed, so the result is the same on any
-// number of cores.
+// scored in batches whose make-up depends only on the seed (param_search.h), so the result is
+// the same on any number of cores.
+#include "param_search.h"
 #include "param_tuning_eval.h"
 
 #include "visioncore/basics/splitmix.h"
-#include "visioncore/services/worker_pool.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +19,7 @@ namespace fieldsight {
 namespace {
 
 using tuning::HeldFrame;
-using tuning::Scorer;
+using tuning::Search;
 
 /// A searched parameter, with where it started.
 struct Searched
@@ -110,165 +110,6 @@ double randomMove(const ParamInfo& p, double current, SplitMix64& random)
         return legal(p, std::max(p.min, current) * std::pow(p.max / p.min, t));
     return legal(p, current + t * (p.max - p.min));
 }
-
-/// The search's state shared by its steps.
-class Search
-{
-public:
-    Search(const StreamInput& input, const std::vector<HeldFrame>& frames,
-           std::vector<std::size_t> fit, const TuneOptions& options, int progress_offset = 0,
-           int progress_total = 0)
-        : m_frames(frames), m_fit(std::move(fit)), m_options(options),
-          m_progress_offset(progress_offset),
-          m_progress_total(progress_total > 0 ? progress_total : options.budget)
-    {
-        const int workers = workerCount(options.threads, 64);
-        for (int w = 0; w < workers; ++w)
-            m_scorers.push_back(std::make_unique<Scorer>(input, options.reuse_stages));
-        const std::size_t groups = std::clamp<std::size_t>(
-            std::size_t(std::max(options.agree, 1)), 1, std::max<std::size_t>(m_fit.size(), 1));
-        m_group_count = groups;
-        for (std::size_t j = 0; j < m_fit.size(); ++j)
-            m_group_of.push_back(j * groups / m_fit.size());
-    }
-
-    /// The best set's score on each of the fit frames' blocks, which a move must keep.
-    void setBestGroups(std::vector<double> groups) { m_best_groups = std::move(groups); }
-
-    /// Scores every set in `sets` on `positions`; counts them against the budget when `count`.
-    /// `splits[i]` (when given): set i moves no parameter of the stages before that position
-    /// from the best set's (Scorer::tally reuses what they made).
-    /// `groups` (when given, and `positions` are the fit frames): each set's score on each block.
-    std::vector<TuneScore> scoreAll(const std::vector<ParamSet>& sets,
-                                    const std::vector<std::size_t>& positions, bool count,
-                                    const std::vector<std::size_t>& splits = {},
-                                    std::vector<std::vector<double>>* groups = nullptr)
-    {
-        std::vector<TuneScore> scores(sets.size());
-        if (groups)
-            groups->assign(sets.size(), std::vector<double>(m_group_count, 0.0));
-        const int workers = int(std::min(m_scorers.size(), std::max<std::size_t>(sets.size(), 1)));
-        std::vector<std::string> problems(static_cast<std::size_t>(workers));
-        runOnWorkers(workers, [&](int w) {
-            try {
-                for (std::size_t i = std::size_t(w); i < sets.size(); i += std::size_t(workers)) {
-                    const std::vector<tuning::Tally> each = m_scorers[std::size_t(w)]->tallies(
-                        sets[i], m_frames, positions, splits.empty() ? 0 : splits[i]);
-                    tuning::Tally sum;
-                    std::vector<tuning::Tally> by_group(m_group_count);
-                    for (std::size_t j = 0; j < each.size(); ++j) {
-                        sum += each[j];
-                        if (groups)
-                            by_group[m_group_of[j]] += each[j];
-                    }
-                    scores[i] = tuning::scoreOf(sum, m_options.weights);
-                    if (groups)
-                        for (std::size_t g = 0; g < m_group_count; ++g)
-                            (*groups)[i][g] = tuning::scoreOf(by_group[g], m_options.weights).total;
-                }
-            } catch (const std::exception& e) {
-                problems[std::size_t(w)] = e.what();
-            }
-        });
-        for (const std::string& p : problems)
-            if (!p.empty())
-                throw std::invalid_argument(p);
-        if (count)
-            m_evaluations += int(sets.size());
-        return scores;
-    }
-
-    /// Each set's gain over `best_score` on the fit frames, or -1 where a block of the fit
-    /// frames would lose (as tryBatch judges); counted against the budget, and only as many sets
-    /// as it has room for are scored (the rest -1).
-    std::vector<double> gains(const std::vector<ParamSet>& sets,
-                              const std::vector<std::size_t>& splits, const TuneScore& best_score)
-    {
-        std::vector<double> out(sets.size(), -1.0);
-        if (exhausted())
-            return out;
-        const std::size_t room = std::size_t(std::max(0, m_options.budget - m_evaluations));
-        const std::size_t n = std::min(room, sets.size());
-        if (n == 0)
-            return out;
-        std::vector<std::vector<double>> groups;
-        const std::vector<TuneScore> scores =
-            scoreAll({sets.begin(), sets.begin() + std::ptrdiff_t(n)}, m_fit, true,
-                     {splits.begin(), splits.begin() + std::ptrdiff_t(n)}, &groups);
-        for (std::size_t i = 0; i < n; ++i) {
-            bool agreed = m_best_groups.size() == groups[i].size();
-            for (std::size_t g = 0; agreed && g < groups[i].size(); ++g)
-                agreed = groups[i][g] >= m_best_groups[g] - 1e-9;
-            if (agreed)
-                out[i] = scores[i].total - best_score.total;
-        }
-        return out;
-    }
-
-    /// The counts of `params` on `positions` (not counted against the budget).
-    tuning::Tally tallyOf(const ParamSet& params, const std::vector<std::size_t>& positions)
-    {
-        return m_scorers.front()->tally(params, m_frames, positions);
-    }
-
-    int evaluations() const { return m_evaluations; }
-    int room() const { return m_options.budget - m_evaluations; }
-    bool exhausted() const
-    {
-        return m_evaluations >= m_options.budget || (m_options.cancel && m_options.cancel->load());
-    }
-    const std::vector<std::size_t>& fit() const { return m_fit; }
-
-    /// Tries `sets` (moves from `best`); keeps the best if it beats `best_score`. True if so.
-    bool tryBatch(std::vector<ParamSet> sets, std::vector<std::size_t> splits, ParamSet& best,
-                  TuneScore& best_score, TuneResult& result)
-    {
-        const int room = m_options.budget - m_evaluations;
-        if (room <= 0 || sets.empty())
-            return false;
-        if (int(sets.size()) > room) {
-            sets.resize(std::size_t(room));
-            splits.resize(std::size_t(room));
-        }
-        std::vector<std::vector<double>> groups;
-        const std::vector<TuneScore> scores = scoreAll(sets, m_fit, true, splits, &groups);
-        std::size_t winner = sets.size();
-        double top = best_score.total + 1e-9;
-        for (std::size_t i = 0; i < scores.size(); ++i) {
-            // A move that costs one block of the fit frames what it buys on another fits
-            // those frames, not the scene: every block must keep its score.
-            bool agreed = m_best_groups.size() == groups[i].size();
-            for (std::size_t g = 0; agreed && g < groups[i].size(); ++g)
-                agreed = groups[i][g] >= m_best_groups[g] - 1e-9;
-            if (agreed && scores[i].total > top) {
-                top = scores[i].total;
-                winner = i;
-            }
-        }
-        if (m_options.progress)
-            m_options.progress({m_progress_offset + m_evaluations, m_progress_total,
-                                std::max(top, best_score.total)});
-        if (winner == sets.size())
-            return false;
-        best = sets[winner];
-        best_score = scores[winner];
-        m_best_groups = groups[winner];
-        result.history.emplace_back(m_evaluations, best_score.total);
-        return true;
-    }
-
-private:
-    const std::vector<HeldFrame>& m_frames;
-    std::vector<std::size_t> m_fit;
-    const TuneOptions& m_options;
-    std::vector<std::unique_ptr<Scorer>> m_scorers;
-    std::size_t m_group_count = 1;
-    std::vector<std::size_t> m_group_of; ///< each fit frame's block
-    std::vector<double> m_best_groups;   ///< the best set's score on each block
-    int m_progress_offset = 0;
-    int m_progress_total = 0;
-    int m_evaluations = 0;
-};
 
 /// The parameters searched: those of `options.stages` (every stage when empty) not skipped.
 Result<std::vector<Searched>> searchedParams(const StreamInput& input, const TuneOptions& options)
@@ -498,56 +339,6 @@ Fitted fitOn(const StreamInput& input, const std::vector<HeldFrame>& frames,
 
 } // namespace
 
-namespace {
-
-/// The scored frames of every stream, the first's first, and which of them are held out (the
-/// same share of each stream).
-Result<std::pair<std::vector<HeldFrame>, std::vector<bool>>>
-readAllStreams(StreamInput& input, const Annotations& truth, const std::string& truth_path,
-               const TuneOptions& options, const std::vector<TuneStream>& more, bool cross)
-{
-    auto read = tuning::readScoredFrames(input, truth, truth_path, options.threads);
-    if (!read)
-        return read.error();
-    std::vector<HeldFrame> frames = std::move(read).value();
-    std::vector<bool> held = cross ? std::vector<bool>(frames.size(), false)
-                                   : holdoutFrames(frames.size(), options.holdout, options.seed);
-    for (std::size_t k = 0; k < more.size(); ++k) {
-        const TuneStream& s = more[k];
-        if (!s.input || !s.truth)
-            return Error{"tune: a stream without its input or annotations"};
-        StreamInput& other = *s.input;
-        if (other.pipeline != input.pipeline)
-            return Error{other.stream + ": another pipeline than " + input.stream + "'s"};
-        if (other.adapt)
-            return Error{"the parameters are fitted with the stream's table as it is (no --adapt)"};
-        if (Status st = other.checkSettings(); !st)
-            return st.error();
-        // One parameter set is fitted to every stream, so each must start from it.
-        if (other.params.toJson() != input.params.toJson() || other.skip != input.skip)
-            return Error{other.stream +
-                         ": its parameters or skipped stages (its own params.json, "
-                         "--params, --set, --skip) differ from " +
-                         input.stream +
-                         "'s; the streams are fitted together, so they must start alike"};
-        auto frames_of = tuning::readScoredFrames(other, *s.truth, s.truth_path, options.threads);
-        if (!frames_of)
-            return frames_of.error();
-        const std::vector<bool> held_of =
-            cross ? std::vector<bool>(frames_of.value().size(), false)
-                  : holdoutFrames(frames_of.value().size(), options.holdout, options.seed + 1 + k);
-        for (HeldFrame& f : frames_of.value()) {
-            f.lut = other.lut;
-            f.name = other.stream + "/" + f.name;
-            frames.push_back(std::move(f));
-        }
-        held.insert(held.end(), held_of.begin(), held_of.end());
-    }
-    return std::make_pair(std::move(frames), std::move(held));
-}
-
-} // namespace
-
 Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
                               const std::string& truth_path, const TuneOptions& options)
 {
@@ -576,7 +367,7 @@ Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
     if (!params)
         return params.error();
     const bool want_folds = options.folds >= 2;
-    auto read = readAllStreams(input, truth, truth_path, options, more, want_folds);
+    auto read = tuning::readStreams(input, truth, truth_path, options, more, want_folds);
     if (!read)
         return read.error();
     const std::vector<HeldFrame>& frames = read.value().first;

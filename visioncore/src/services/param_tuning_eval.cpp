@@ -121,6 +121,50 @@ Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annota
     return frames;
 }
 
+Result<std::pair<std::vector<HeldFrame>, std::vector<bool>>>
+readStreams(StreamInput& input, const Annotations& truth, const std::string& truth_path,
+            const TuneOptions& options, const std::vector<TuneStream>& more, bool folds)
+{
+    auto read = readScoredFrames(input, truth, truth_path, options.threads);
+    if (!read)
+        return read.error();
+    std::vector<HeldFrame> frames = std::move(read).value();
+    std::vector<bool> held = folds ? std::vector<bool>(frames.size(), false)
+                                   : holdoutFrames(frames.size(), options.holdout, options.seed);
+    for (std::size_t k = 0; k < more.size(); ++k) {
+        const TuneStream& s = more[k];
+        if (!s.input || !s.truth)
+            return Error{"tune: a stream without its input or annotations"};
+        StreamInput& other = *s.input;
+        if (other.pipeline != input.pipeline)
+            return Error{other.stream + ": another pipeline than " + input.stream + "'s"};
+        if (other.adapt)
+            return Error{"the parameters are fitted with the stream's table as it is (no --adapt)"};
+        if (Status st = other.checkSettings(); !st)
+            return st.error();
+        // One parameter set is fitted to every stream, so each must start from it.
+        if (other.params.toJson() != input.params.toJson() || other.skip != input.skip)
+            return Error{other.stream +
+                         ": its parameters or skipped stages (its own params.json, "
+                         "--params, --set, --skip) differ from " +
+                         input.stream +
+                         "'s; the streams are fitted together, so they must start alike"};
+        auto frames_of = readScoredFrames(other, *s.truth, s.truth_path, options.threads);
+        if (!frames_of)
+            return frames_of.error();
+        const std::vector<bool> held_of =
+            folds ? std::vector<bool>(frames_of.value().size(), false)
+                  : holdoutFrames(frames_of.value().size(), options.holdout, options.seed + 1 + k);
+        for (HeldFrame& f : frames_of.value()) {
+            f.lut = other.lut;
+            f.name = other.stream + "/" + f.name;
+            frames.push_back(std::move(f));
+        }
+        held.insert(held.end(), held_of.begin(), held_of.end());
+    }
+    return std::make_pair(std::move(frames), std::move(held));
+}
+
 Scorer::Scorer(const StreamInput& input, bool reuse)
     : m_lut(input.lut), m_data(input.lut),
       m_control(std::make_unique<ControlWrapper>(m_data, *input.pipeline)),

@@ -27,6 +27,14 @@ struct HeldFrame
 Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annotations& truth,
                                                 const std::string& truth_path, int threads);
 
+/// The scored frames of `input` and of each of `more` streams, the first's first, and which of
+/// them are held out (none with `folds`; else the same share of each stream, its blocks drawn
+/// with options.seed + its place). Another stream's frames keep its table and are named
+/// "STREAM/NAME"; every stream must start from the first's parameters and skip its stages.
+Result<std::pair<std::vector<HeldFrame>, std::vector<bool>>>
+readStreams(StreamInput& input, const Annotations& truth, const std::string& truth_path,
+            const TuneOptions& options, const std::vector<TuneStream>& more, bool folds);
+
 /// The raw counts behind a TuneScore, which add up over frames.
 struct Tally
 {
