@@ -8,8 +8,6 @@
 #include <dlfcn.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <mutex>
 
 #ifndef FIELDSIGHT_MEDIA_RELDIR
@@ -96,14 +94,13 @@ Result<std::vector<unsigned char>> encodeImage(const std::string& extension, con
 
 Result<cv::Mat> readImage(const std::string& path, int flags)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return Error{"cannot open " + path};
-    const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in),
-                                           std::istreambuf_iterator<char>()};
-    if (bytes.empty())
+    auto bytes = readWholeFile(path); // a FIFO or a device is refused, not read
+    if (!bytes)
+        return bytes.error();
+    if (bytes.value().empty())
         return Error{"cannot read " + path + ": the file is empty"};
-    auto image = decodeImage(bytes.data(), bytes.size(), flags, path);
+    auto image = decodeImage(reinterpret_cast<const unsigned char*>(bytes.value().data()),
+                             bytes.value().size(), flags, path);
     if (image && image.value().empty())
         return Error{"cannot read " + path + ": not a decodable image"};
     return image;
