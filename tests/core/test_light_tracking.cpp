@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <thread>
+#include <vector>
 
 using namespace fieldsight;
 
@@ -173,6 +175,91 @@ private slots:
         lut.setInputMap(nullptr);
         lut.classifyRun(pixels.data(), 3, 4000, mapped.data());
         QVERIFY(mapped == plain);
+    }
+
+    void whatACellReadThroughAMapIsRememberedOnlyForItsOwnCells()
+    {
+        ColourLut first;
+        SplitMix64 rng(11);
+        for (std::size_t i = 0; i < ColourLut::kCells; i += 1 + rng() % 3)
+            first.setCell(i, Colour(rng() % kColourCount));
+        const auto map = std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(1.2, 1, 0.8));
+        std::vector<std::uint8_t> pixels(3 * 3000);
+        for (auto& p : pixels)
+            p = std::uint8_t(rng());
+        const auto run = [&pixels](const ColourLut& lut) {
+            std::vector<std::uint8_t> out(3000);
+            lut.classifyRun(pixels.data(), 3, 3000, out.data());
+            return out;
+        };
+        // Each pixel's answer, worked out without any memo.
+        const auto expected = [&pixels, &map](const ColourLut& lut) {
+            std::vector<std::uint8_t> out(3000);
+            for (std::size_t i = 0; i < 3000; ++i)
+                out[i] = std::uint8_t(
+                    lut.cell(map->index(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2])));
+            return out;
+        };
+
+        ColourLut second = first; // the same cells: the same memo
+        first.setInputMap(map);
+        const std::vector<std::uint8_t> before = run(first);
+        QVERIFY(before == expected(first));
+        QVERIFY(run(first) == before); // the second time from the memo
+
+        // A copy with other cells under the same map reads its own cells, not the first's memo.
+        for (std::size_t i = 0; i < 3000; i += 2) {
+            const std::uint8_t* p = &pixels[3 * i];
+            const std::size_t cell = map->index(p[0], p[1], p[2]);
+            second.setCell(cell, Colour((std::uint8_t(second.cell(cell)) + 1) % kColourCount));
+        }
+        second.setInputMap(map);
+        const std::vector<std::uint8_t> changed = run(second);
+        QVERIFY(changed == expected(second));
+        QVERIFY(changed != before);
+        QVERIFY(run(first) == before);
+
+        // A cell set while the map is in place is read at once, memo or not.
+        const std::uint8_t* p = &pixels[0];
+        const std::size_t cell = map->index(p[0], p[1], p[2]);
+        const Colour other = Colour((std::uint8_t(first.cell(cell)) + 1) % kColourCount);
+        first.setCell(cell, other);
+        QCOMPARE(first.classify(p[0], p[1], p[2]), other);
+        QVERIFY(run(first) == expected(first));
+        first.setInputMap(map); // a memo again, of the new cells
+        QVERIFY(run(first) == expected(first));
+        QCOMPARE(first.classify(p[0], p[1], p[2]), other);
+    }
+
+    void tablesSharingAMemoOnSeveralThreadsReadWhatOneThreadReads()
+    {
+        ColourLut base;
+        SplitMix64 rng(5);
+        for (std::size_t i = 0; i < ColourLut::kCells; i += 1 + rng() % 4)
+            base.setCell(i, Colour(rng() % kColourCount));
+        const auto map =
+            std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(0.8, 0.9, 1.25));
+        std::vector<std::uint8_t> pixels(3 * 20000);
+        for (auto& p : pixels)
+            p = std::uint8_t(rng() % 64 + 96); // a narrow range: threads fill the same cells
+        ColourLut alone = base;
+        alone.setInputMap(std::make_shared<const LutInputMap>(*map)); // another map: its own memo
+        std::vector<std::uint8_t> want(20000);
+        alone.classifyRun(pixels.data(), 3, 20000, want.data());
+
+        std::vector<ColourLut> tables(4, base);
+        std::vector<std::vector<std::uint8_t>> got(4, std::vector<std::uint8_t>(20000));
+        std::vector<std::thread> threads;
+        for (std::size_t t = 0; t < 4; ++t)
+            threads.emplace_back([&, t] {
+                tables[t].setInputMap(map);
+                for (int chunk = 0; chunk < 20000; chunk += 500)
+                    tables[t].classifyRun(pixels.data() + 3 * chunk, 3, 500, got[t].data() + chunk);
+            });
+        for (std::thread& thread : threads)
+            thread.join();
+        for (std::size_t t = 0; t < 4; ++t)
+            QVERIFY(got[t] == want);
     }
 
     void theTrackerFollowsASlowDriftOfColourAndLevel()

@@ -3,16 +3,32 @@
 
 #include "visioncore/basics/atomic_file.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__unix__)
+#include <sys/mman.h>
+#endif
+
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
+#include <new>
 #include <system_error>
 
 namespace fieldsight {
 
-ColourLut::ColourLut() : m_cells(kCells, std::uint8_t(Colour::Unclassified)) {}
-
 namespace {
+
+std::uint64_t newContent()
+{
+    static std::atomic<std::uint64_t> next{1};
+    return next.fetch_add(1, std::memory_order_relaxed);
+}
 
 /// `__restrict`: the class bytes written never alias the pixels or the table, so the compiler need
 /// not reload them after every store (uint8_t pointers may alias anything).
@@ -24,24 +40,141 @@ void lookupRun(const std::uint8_t* __restrict cells, const std::uint8_t* __restr
         out[i] = cells[ColourLut::index(px[0], px[1], px[2])];
 }
 
-/// lookupRun through an input map: three small tables in front of the big one.
-void mappedRun(const std::uint8_t* __restrict cells, const LutInputMap& map,
-               const std::uint8_t* __restrict px, std::ptrdiff_t stride, int count,
-               std::uint8_t* __restrict out)
+/// lookupRun through an input map's memo: the same loop over a table of class | kKnown bytes, 0
+/// where the cell has not been read through the map yet. Relaxed loads: other threads may be
+/// filling the memo (with the same values).
+void memoRun(const std::uint8_t* __restrict memo, const std::uint8_t* __restrict px,
+             std::ptrdiff_t stride, int count, std::uint8_t* __restrict out)
 {
+#pragma GCC unroll 4
     for (int i = 0; i < count; ++i, px += stride)
-        out[i] = cells[map.index(px[0], px[1], px[2])];
+        out[i] = __atomic_load_n(memo + ColourLut::index(px[0], px[1], px[2]), __ATOMIC_RELAXED);
 }
 
 } // namespace
 
+ColourLut::ColourLut()
+    : m_cells(kCells, std::uint8_t(Colour::Unclassified)), m_content(newContent())
+{
+}
+
+/// The memo of a table through a map: one byte per cell, in zeroed pages mapped from the system
+/// (not calloc, which clears 2 MiB by hand once the allocator has pages to reuse): a page costs
+/// time and memory only once a pixel reads one of its cells.
+struct ColourLut::MapMemo
+{
+    MapMemo()
+    {
+#if defined(__unix__)
+        void* p = mmap(nullptr, kCells, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        bytes = p == MAP_FAILED ? nullptr : static_cast<std::uint8_t*>(p);
+#else
+        bytes = static_cast<std::uint8_t*>(std::calloc(kCells, 1));
+#endif
+        if (!bytes)
+            throw std::bad_alloc();
+    }
+    ~MapMemo()
+    {
+#if defined(__unix__)
+        munmap(bytes, kCells);
+#else
+        std::free(bytes);
+#endif
+    }
+    MapMemo(const MapMemo&) = delete;
+    MapMemo& operator=(const MapMemo&) = delete;
+
+    /// The memo of `content` through `map`: one made lately for them, or a new one. The tracker
+    /// classifying its samples and every worker running the frame read the same cells.
+    static std::shared_ptr<MapMemo> of(std::uint64_t content,
+                                       const std::shared_ptr<const LutInputMap>& map)
+    {
+        static std::mutex mutex;
+        static std::array<std::weak_ptr<MapMemo>, 8> recent;
+        static std::size_t next = 0;
+        std::lock_guard lock(mutex);
+        for (const std::weak_ptr<MapMemo>& made : recent)
+            if (auto memo = made.lock(); memo && memo->content == content && memo->map == map)
+                return memo;
+        auto memo = std::make_shared<MapMemo>();
+        memo->content = content;
+        memo->map = map; // kept alive, so that no other map is made at its address meanwhile
+        recent[next++ % recent.size()] = memo;
+        return memo;
+    }
+
+    std::uint8_t* bytes;
+    std::uint64_t content = 0;
+    std::shared_ptr<const LutInputMap> map;
+};
+
+void ColourLut::setInputMap(std::shared_ptr<const LutInputMap> map)
+{
+    if (map == m_map && (m_memo || !map))
+        return;
+    if (!m_content)
+        m_content = newContent();
+    m_map = std::move(map);
+    m_memo = m_map ? MapMemo::of(m_content, m_map) : nullptr;
+    m_memo_cells = m_memo ? m_memo->bytes : nullptr;
+}
+
+void ColourLut::setCell(std::size_t i, Colour colour)
+{
+    m_cells[i] = std::uint8_t(colour);
+    m_content = 0;
+    if (m_memo) {
+        m_memo.reset();
+        m_memo_cells = nullptr;
+    }
+}
+
+std::uint8_t ColourLut::fillMemo(std::size_t i) const
+{
+    const std::uint8_t c = m_cells[m_map->cellOf(i)];
+    __atomic_store_n(m_memo_cells + i, std::uint8_t(c | kKnown), __ATOMIC_RELAXED);
+    return c;
+}
+
 void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int count,
                             std::uint8_t* out) const
 {
-    if (m_map)
-        mappedRun(m_cells.data(), *m_map, px, stride, count, out);
-    else
+    if (!m_map) {
         lookupRun(m_cells.data(), px, stride, count, out);
+        return;
+    }
+    if (!m_memo_cells) { // a cell was set since the map was: no memo until it is set again
+        for (int i = 0; i < count; ++i, px += stride)
+            out[i] = m_cells[m_map->index(px[0], px[1], px[2])];
+        return;
+    }
+    memoRun(m_memo_cells, px, stride, count, out);
+    // Then the cells read for the first time (16 bytes at a time: most runs have none), and the
+    // kKnown bit off.
+    int i = 0;
+#if defined(__SSE2__)
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i low = _mm_set1_epi8(char(~kKnown));
+    for (; i + 16 <= count; i += 16) {
+        __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + i));
+        unsigned unknown = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero)));
+        if (unknown) {
+            do {
+                const int k = i + __builtin_ctz(unknown);
+                const std::uint8_t* p = px + k * stride;
+                out[k] = std::uint8_t(fillMemo(index(p[0], p[1], p[2])) | kKnown);
+                unknown &= unknown - 1;
+            } while (unknown);
+            v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + i));
+        }
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_and_si128(v, low));
+    }
+#endif
+    for (; i < count; ++i) {
+        const std::uint8_t* p = px + i * stride;
+        out[i] = out[i] ? std::uint8_t(out[i] & ~kKnown) : fillMemo(index(p[0], p[1], p[2]));
+    }
 }
 
 void ColourLut::classifyImage(const cv::Mat& ycbcr, cv::Mat& classes) const

@@ -1,6 +1,8 @@
 // The input map of a von Kries light change, in BT.601 full range as the core's pixels are.
 #include "visioncore/basics/lut_input_map.h"
 
+#include "visioncore/basics/colour_lut.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,72 +10,57 @@ namespace fieldsight {
 
 namespace {
 
-/// Rounds to the nearest whole 8-bit level, clamped (no library call: a map is made often).
-std::uint32_t toByte(double v)
+using Matrix = std::array<double, 9>;
+
+Matrix times(const Matrix& a, const Matrix& b)
 {
-    return v <= 0 ? 0u : v >= 255 ? 255u : std::uint32_t(v + 0.5);
+    Matrix p{};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k)
+                p[std::size_t(3 * r + c)] += a[std::size_t(3 * r + k)] * b[std::size_t(3 * k + c)];
+    return p;
 }
 
 } // namespace
 
 LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain)
 {
-    const double ir = 1.0 / r_gain;
-    const double ig = 1.0 / g_gain;
-    const double ib = 1.0 / b_gain;
-    LutInputMap m;
-    // Y' = level * Y + a * (Cb - 128) + b * (Cr - 128), exactly, for R, G, B divided by the gains;
-    // the chroma terms become offsets of the observed Y, in whole levels.
-    const double level = 0.299 * ir + 0.587 * ig + 0.114 * ib;
-    const double a = -0.587 * 0.344136 * ig + 0.114 * 1.772 * ib;
-    const double b = 0.299 * 1.402 * ir - 0.587 * 0.714136 * ig;
-    for (std::size_t i = 0; i < m.m_y.size(); ++i)
-        m.m_y[i] = (toByte((double(i) - 2 * kOffsetBias) * level) >> 1) << 14;
-    // The Y offsets and the band tables are indexed by the chroma read, v = index - kCrossBias.
-    constexpr int kWidth = 256 + 2 * kCrossBias;
-    std::array<std::uint32_t, kWidth> cb_offset{};
-    std::array<std::uint32_t, kWidth> cr_offset{};
-    for (int i = 0; i < kWidth; ++i) {
-        const int v = i - kCrossBias;
-        const auto offset = [&](double coefficient) {
-            const double dy = std::clamp(coefficient * (v - 128.0) / level, -double(kOffsetBias),
-                                         double(kOffsetBias - 1));
-            return std::uint32_t(int(std::floor(dy + 0.5)) + kOffsetBias) << 16;
-        };
-        cb_offset[std::size_t(i)] = offset(a);
-        cr_offset[std::size_t(i)] = offset(b);
-    }
-    // Cb' and Cr' are linear in the observed Cb and Cr within a band: observed (yc, Cb, Cr) back
-    // to R, G, B, divided by the gains, and Cb', Cr' of that. Each channel's own term is in its
-    // table; the other's (Cr on Cb', Cb on Cr') shifts the read, in units of the channel read.
-    const double cb_slope = 0.331264 * 0.344136 * ig + 0.5 * 1.772 * ib;
-    const double cr_slope = 0.5 * 1.402 * ir + 0.418688 * 0.714136 * ig;
-    const double cb_per_cr = (-0.168736 * 1.402 * ir + 0.331264 * 0.714136 * ig) / cb_slope;
-    const double cr_per_cb = (0.418688 * 0.344136 * ig - 0.081312 * 1.772 * ib) / cr_slope;
-    for (int c = 0; c < 256; ++c) {
-        const auto shift = [&](double per) {
-            const double d =
-                std::clamp(per * (c - 128.0), -double(kCrossBias), double(kCrossBias - 1));
-            return std::uint32_t(int(std::floor(d + 0.5)) + kCrossBias);
-        };
-        m.m_cross[std::size_t(c)] = shift(cb_per_cr) | (shift(cr_per_cb) << 16);
-    }
-    const double cb_per_y = -0.168736 * ir - 0.331264 * ig + 0.5 * ib;
-    const double cr_per_y = 0.5 * ir - 0.418688 * ig - 0.081312 * ib;
-    for (int band = 0; band < kBands; ++band) {
-        const double yc = band * (1 << kBandShift) + ((1 << kBandShift) - 1) / 2.0;
-        const double cb0 = 128.0 + cb_per_y * yc - 128.0 * cb_slope;
-        const double cr0 = 128.0 + cr_per_y * yc - 128.0 * cr_slope;
-        auto& cbs = m.m_cb[std::size_t(band)];
-        auto& crs = m.m_cr[std::size_t(band)];
-        for (int i = 0; i < kWidth; ++i) {
-            const double v = i - kCrossBias;
-            cbs[std::size_t(i)] =
-                cb_offset[std::size_t(i)] | ((toByte(cb0 + cb_slope * v) >> 1) << 7);
-            crs[std::size_t(i)] = cr_offset[std::size_t(i)] | (toByte(cr0 + cr_slope * v) >> 1);
+    // R, G, B from Y, Cb - 128, Cr - 128 and back (BT.601 full range, as ycbcr.h): the map is
+    // to_ycbcr * diag(1 / gain) * to_rgb.
+    // clang-format off
+    constexpr Matrix kToRgb{1, 0,         1.402,
+                            1, -0.344136, -0.714136,
+                            1, 1.772,     0};
+    constexpr Matrix kToYcbcr{0.299,     0.587,     0.114,
+                              -0.168736, -0.331264, 0.5,
+                              0.5,       -0.418688, -0.081312};
+    // clang-format on
+    const Matrix divide{1 / r_gain, 0, 0, 0, 1 / g_gain, 0, 0, 0, 1 / b_gain};
+    const Matrix m = times(kToYcbcr, times(divide, kToRgb));
+    LutInputMap map;
+    constexpr double kOne = double(1 << kFraction);
+    for (std::size_t in = 0; in < 3; ++in)
+        for (std::size_t cell = 0; cell < 128; ++cell) {
+            // The centre of the cell's two levels, Cb and Cr about 128.
+            const double v = double(cell) * 2 + 0.5 - (in == 0 ? 0.0 : 128.0);
+            std::uint64_t word = 0;
+            for (std::size_t out = 0; out < 3; ++out) {
+                const double offset = in == 0 && out > 0 ? 128.0 : 0.0;
+                const double term = std::clamp(m[3 * out + in] * v + offset, -double(kTermBias),
+                                               2.0 * kTermBias - 1) +
+                                    kTermBias;
+                // Non-negative, so rounding is adding a half; Y' in the top field.
+                word |= std::uint64_t(term * kOne + 0.5) << ((2 - out) * kFieldBits);
+            }
+            map.m_terms[in][cell] = word;
         }
-    }
-    return m;
+    return map;
+}
+
+std::size_t LutInputMap::index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const
+{
+    return cellOf(ColourLut::index(y, cb, cr));
 }
 
 } // namespace fieldsight

@@ -30,7 +30,8 @@ public:
     /// The class of an observed pixel: its cell, or with an input map the cell the map sends it to.
     Colour classify(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const
     {
-        return Colour(m_cells[m_map ? m_map->index(y, cb, cr) : index(y, cb, cr)]);
+        const std::size_t i = index(y, cb, cr);
+        return Colour(m_map ? mappedClass(i) : m_cells[i]);
     }
     /// Classifies `count` pixels (Y, Cb, Cr bytes) starting at `px`, `stride` bytes apart, into
     /// `out`. The one lookup loop of the scan lines, the bench floor and its full-frame baseline,
@@ -41,12 +42,16 @@ public:
     /// CV_8UC1 of the same size, one colour id a pixel. The one whole-image classification.
     void classifyImage(const cv::Mat& ycbcr, cv::Mat& classes) const;
     Colour cell(std::size_t i) const { return Colour(m_cells[i]); }
-    void setCell(std::size_t i, Colour colour) { m_cells[i] = std::uint8_t(colour); }
+    void setCell(std::size_t i, Colour colour);
     const std::uint8_t* data() const { return m_cells.data(); }
 
     /// Puts `map` in front of every lookup (classify, classifyRun, classifyImage; not cell()):
-    /// the table then follows a light other than its own. nullptr: the cells as they are.
-    void setInputMap(std::shared_ptr<const LutInputMap> map) { m_map = std::move(map); }
+    /// the table then follows a light other than its own. nullptr: the cells as they are. What
+    /// each observed cell reads through the map is worked out on its first lookup and remembered,
+    /// shared by every table with these cells and this map (copies, other threads), so a lookup
+    /// through a map costs about what one without does. setCell() forgets it until the map is set
+    /// again (lookups meanwhile work the map out each time).
+    void setInputMap(std::shared_ptr<const LutInputMap> map);
     const std::shared_ptr<const LutInputMap>& inputMap() const { return m_map; }
 
     /// Validates size and values; `source` names the origin in error messages.
@@ -56,11 +61,33 @@ public:
     Status save(const std::string& path) const;
 
     /// The same cells and the same input map (or none).
-    friend bool operator==(const ColourLut&, const ColourLut&) = default;
+    friend bool operator==(const ColourLut& a, const ColourLut& b)
+    {
+        return a.m_cells == b.m_cells && a.m_map == b.m_map;
+    }
 
 private:
+    /// What each observed cell reads through the input map: its class | kKnown, 0 until asked.
+    struct MapMemo;
+    static constexpr std::uint8_t kKnown = 0x80;
+
+    /// The class observed cell `i` reads through the map (the memo, filled on a first lookup).
+    std::uint8_t mappedClass(std::size_t i) const
+    {
+        if (!m_memo_cells)
+            return m_cells[m_map->cellOf(i)];
+        const std::uint8_t v = __atomic_load_n(m_memo_cells + i, __ATOMIC_RELAXED);
+        return v ? std::uint8_t(v & ~kKnown) : fillMemo(i);
+    }
+    std::uint8_t fillMemo(std::size_t i) const;
+
     std::vector<std::uint8_t> m_cells;
+    /// Names these cells, so that tables with the same cells share a memo: new for a new table,
+    /// kept by copies, 0 once a cell is set (named again by the next setInputMap).
+    std::uint64_t m_content;
     std::shared_ptr<const LutInputMap> m_map;
+    std::shared_ptr<MapMemo> m_memo;      ///< of m_cells through m_map, or null
+    std::uint8_t* m_memo_cells = nullptr; ///< m_memo's bytes
 };
 
 } // namespace fieldsight

@@ -1,52 +1,62 @@
-// What a pixel seen under one light reads in a table made under another: per-channel index tables
-// in front of the colour LUT, so a table follows the light without being rebuilt.
+// What a pixel seen under one light reads in a table made under another: the table's cell that
+// each observed cell's colour falls in under the table's light, so a table follows the light
+// without being rebuilt.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 
 namespace fieldsight {
 
-/// Maps an observed Y, Cb, Cr to the LUT cell it reads. Y' is exact for a change of R, G, B gains
-/// (Y plus an offset from Cb and one from Cr, scaled); Cb' and Cr' come from their own channel,
-/// shifted by the other's cross term, within one of kBands bands of Y, so a chroma shift can grow
-/// with brightness as a white-balance change does. Immutable once made; shared between tables
-/// through std::shared_ptr<const LutInputMap>.
+/// Maps an observed LUT cell (7-bit Y, Cb, Cr, as ColourLut::index) to the cell its colour had
+/// under the table's light: the cell's centre through the 3x3 linear map of Y, Cb - 128, Cr - 128
+/// that a von Kries change is, in 1/65536 level steps, clamped and rounded down to a cell.
+/// Immutable once made. A cell costs about twenty operations, so a table remembers what each
+/// cell read (ColourLut::setInputMap) instead of asking twice.
 class LutInputMap
 {
 public:
-    static constexpr int kBandShift = 4;             ///< Y >> kBandShift is the band
-    static constexpr int kBands = 256 >> kBandShift; ///< 16 bands of 16 Y levels
-
     /// The map of a light whose R, G, B are `gain` times those of the table's light (von Kries):
     /// each observed pixel is divided by the gains, in BT.601 full range as ycbcr.h converts.
     static LutInputMap forRgbGain(double r_gain, double g_gain, double b_gain);
 
-    /// The LUT cell index (as ColourLut::index) that an observed pixel reads.
-    std::size_t index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const
+    /// The table's cell (as ColourLut::index) that an observed cell reads.
+    std::size_t cellOf(std::size_t observed) const
     {
-        const std::size_t band = std::size_t(y >> kBandShift);
-        // Each chroma read shifted by the other's cross term, so a saturated colour (a ball) lands
-        // where the table's light put it.
-        const std::uint32_t c = m_cb[band][cb + (m_cross[cr] & 0xFFFF)];
-        const std::uint32_t r = m_cr[band][cr + (m_cross[cb] >> 16)];
-        return m_y[std::size_t(y) + (c >> 16) + (r >> 16)] | (c & 0xFFFF) | (r & 0xFFFF);
+        // Y', Cb' and Cr' side by side in one word: three terms, two additions.
+        const std::uint64_t sum = m_terms[0][(observed >> 14) & 127] +
+                                  m_terms[1][(observed >> 7) & 127] + m_terms[2][observed & 127];
+        const auto cell = [sum](int field) {
+            // (V + kBias) / 2 levels, to one of the 128 cells.
+            return std::size_t(
+                kCellOfHalf[(sum >> (field * kFieldBits + kFraction + 1)) & kHalfMask]);
+        };
+        return (cell(2) << 14) | (cell(1) << 7) | cell(0);
     }
+    /// The table's cell that an observed pixel reads: the cell of the pixel's own cell.
+    std::size_t index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const;
 
 private:
-    static constexpr int kOffsetBias = 64; ///< a chroma's Y offset is stored plus this
-    static constexpr int kCrossBias = 32;  ///< a chroma's shift of the other is stored plus this
+    static constexpr int kFraction = 8;   ///< fixed point: levels times 2^kFraction
+    static constexpr int kFieldBits = 21; ///< per output channel in a term
+    static constexpr int kTermBias = 512; ///< levels added to each term (clamped to +-512..1023)
+    static constexpr int kBias = 3 * kTermBias;
+    static constexpr std::uint64_t kHalfMask =
+        (std::uint64_t(1) << (kFieldBits - kFraction - 1)) - 1;
+    /// (V + kBias) / 2 levels to V's cell, clamped to 0..127.
+    static constexpr std::array<std::uint8_t, kHalfMask + 1> kCellOfHalf = [] {
+        std::array<std::uint8_t, kHalfMask + 1> cells{};
+        for (std::size_t half = 0; half < cells.size(); ++half)
+            cells[half] = std::uint8_t(std::clamp(int(half) - kBias / 2, 0, 127));
+        return cells;
+    }();
 
-    /// (Y' >> 1) << 14 of the observed Y + the two offsets (each biased by kOffsetBias).
-    std::array<std::uint32_t, 256 + 4 * kOffsetBias> m_y{};
-    /// Low 16 bits: the shift of the Cb read by this Cr; high: of the Cr read by this Cb (each
-    /// plus kCrossBias).
-    std::array<std::uint32_t, 256> m_cross{};
-    /// By band and Cb + shift: low 16 bits (Cb' >> 1) << 7, high bits Cb's Y offset + kOffsetBias.
-    std::array<std::array<std::uint32_t, 256 + 2 * kCrossBias>, kBands> m_cb{};
-    /// By band and Cr + shift: low 16 bits Cr' >> 1, high bits Cr's Y offset + kOffsetBias.
-    std::array<std::array<std::uint32_t, 256 + 2 * kCrossBias>, kBands> m_cr{};
+    /// By input channel (Y, Cb, Cr) and its 7-bit cell: what the cell's centre adds to Cr' (bits
+    /// 0-20), Cb' (21-41) and Y' (42-62), each in fixed point plus kTermBias levels (Cb' and Cr'
+    /// with their 128 in the Y term), so a cell's map is the sum of three words.
+    std::array<std::array<std::uint64_t, 128>, 3> m_terms{};
 };
 
 } // namespace fieldsight

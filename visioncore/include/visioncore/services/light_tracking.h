@@ -54,8 +54,8 @@ struct LightState
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
     /// The map that reads this light's pixels in the table's cells: the colour in full, the level
-    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.01 in ln gain; nullptr
-    /// within 2% of the table's light (a lookup through a map costs about twice one without).
+    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.02 in ln gain; nullptr when
+    /// they round to the table's light (within 1%).
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
 
@@ -94,15 +94,16 @@ private:
     void sample(const cv::Mat& ycbcr, const Horizon& horizon, std::array<ClassSums, 2>& sums) const;
     void follow(const std::array<ClassSums, 2>& sums, std::size_t samples);
 
-    std::shared_ptr<const ColourLut> m_lut;
     LightTrackingOptions m_options;
     LightState m_state;
     LightMapCache m_maps;
-    std::shared_ptr<const LutInputMap> m_map; ///< of m_state, used to classify the samples
-    std::array<ClassSums, 2> m_reference;     ///< carpet and white under the table's light
+    ColourLut m_seen; ///< the table through m_state's map, that classifies the samples
+    std::array<ClassSums, 2> m_reference; ///< carpet and white under the table's light
     int m_reference_frames = 0;
     int m_outliers_in_a_row = 0;
     std::deque<std::array<double, 3>> m_recent; ///< ln of the latest accepted estimates
+    std::vector<double> m_scratch;              ///< the course's slopes and intercepts
+    mutable std::vector<int> m_first_row;       ///< sample(): each sampled column's first row
 };
 
 struct LightTrack
