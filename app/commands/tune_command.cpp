@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -82,28 +83,50 @@ std::string tuneTable(const std::string& stream, const TuneResult& r, const Tune
                   r.parameters, r.evaluations, r.seconds,
                   r.cancelled ? " (interrupted: the best so far)" : "");
     text += line;
-    std::snprintf(line, sizeof line, "%-11s %-23s %-23s\n", "", "fit frames",
-                  r.folds > 0 ? "held out, by fold" : "held-out frames");
+    const bool aside = !r.validation_frames.empty();
+    if (aside) {
+        std::snprintf(line, sizeof line, "%zu frames of the validation streams, never fitted\n",
+                      r.validation_frames.size());
+        text += line;
+    }
+    std::snprintf(line, sizeof line, "%-11s %-23s %-23s%s\n", "", "fit frames",
+                  r.folds > 0 ? "held out, by fold" : "held-out frames",
+                  aside ? " validation streams" : "");
     text += line;
-    std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s\n", "class", "start", "tuned",
-                  "start", "tuned");
+    std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s%s\n", "class", "start", "tuned",
+                  "start", "tuned", aside ? " start       tuned" : "");
     text += line;
+    const auto validationCells = [&](const std::string& start, const std::string& tuned) {
+        if (!aside)
+            return std::string();
+        char cells[64];
+        std::snprintf(cells, sizeof cells, " %-11s %s", start.c_str(), tuned.c_str());
+        return std::string(cells);
+    };
     std::vector<std::string> terms;
     for (const PerceptKind* kind : kinds)
         terms.push_back(scoredClassName(*kind));
     terms.push_back(kBoundaryTerm);
     for (const std::string& term : terms) {
-        std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s\n", term.c_str(),
+        std::snprintf(line, sizeof line, "%-11s %-11s %-11s %-11s %-11s%s\n", term.c_str(),
                       scoreCell(r.start_fit, term).c_str(), scoreCell(r.tuned_fit, term).c_str(),
                       scoreCell(r.start_holdout, term).c_str(),
-                      scoreCell(r.tuned_holdout, term).c_str());
+                      scoreCell(r.tuned_holdout, term).c_str(),
+                      validationCells(scoreCell(r.start_validation, term),
+                                      scoreCell(r.tuned_validation, term))
+                          .c_str());
         text += line;
     }
     const bool held = !r.holdout_frames.empty();
-    std::snprintf(line, sizeof line, "%-11s %-11.3f %-11.3f %-11s %-11s\n", "score",
-                  r.start_fit.total, r.tuned_fit.total,
-                  held ? std::to_string(r.start_holdout.total).substr(0, 5).c_str() : "-",
-                  held ? std::to_string(r.tuned_holdout.total).substr(0, 5).c_str() : "-");
+    const auto total = [](bool scored, const TuneScore& s) {
+        return scored ? std::to_string(s.total).substr(0, 5) : std::string("-");
+    };
+    std::snprintf(
+        line, sizeof line, "%-11s %-11.3f %-11.3f %-11s %-11s%s\n", "score", r.start_fit.total,
+        r.tuned_fit.total, total(held, r.start_holdout).c_str(),
+        total(held, r.tuned_holdout).c_str(),
+        validationCells(total(aside, r.start_validation), total(aside, r.tuned_validation))
+            .c_str());
     text += line;
     if (r.start_fit.ms_per_frame >= 0 && r.tuned_fit.ms_per_frame >= 0) {
         std::snprintf(line, sizeof line, "%-11s %-11s %-11s\n", "core time",
@@ -136,7 +159,8 @@ std::string tuneTable(const std::string& stream, const TuneResult& r, const Tune
     return text;
 }
 
-std::string tuneJson(const std::vector<std::string>& streams, const std::string& out,
+std::string tuneJson(const std::vector<std::string>& streams,
+                     const std::vector<std::string>& validation_streams, const std::string& out,
                      const TuneResult& r, const TuneOptions& o)
 {
     using Json = nlohmann::ordered_json;
@@ -171,6 +195,12 @@ std::string tuneJson(const std::vector<std::string>& streams, const std::string&
     j["holdout_frames"] = r.holdout_frames;
     j["start"] = {{"fit", score(r.start_fit)}, {"holdout", score(r.start_holdout)}};
     j["tuned"] = {{"fit", score(r.tuned_fit)}, {"holdout", score(r.tuned_holdout)}};
+    if (!validation_streams.empty()) { // only then: older readers see the same keys as before
+        j["validation_streams"] = validation_streams;
+        j["validation_frames"] = r.validation_frames;
+        j["start"]["validation"] = score(r.start_validation);
+        j["tuned"]["validation"] = score(r.tuned_validation);
+    }
     Json changes = Json::array();
     for (const TuneChange& c : r.changes)
         changes.push_back({{"stage", c.stage},
@@ -210,6 +240,11 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         {"stages", "Only these stages' parameters (default: every stage).", "STAGE,..."});
     parser.addOption({"budget", "Evaluations of a parameter set, at most (default 1500).", "N"});
     parser.addOption({"seed", "Seed of the search and of the held-out frames (default 1).", "S"});
+    parser.addOption({"validate",
+                      "An annotated stream of the venue kept aside: scored with the start and "
+                      "the result, never fitted (repeatable; its own annotations.json and "
+                      "table).",
+                      "STREAM"});
     parser.addOption({"holdout",
                       "Share of the annotated frames held out, in contiguous blocks (default "
                       "0.33; 0 fits them all).",
@@ -257,7 +292,18 @@ int tuneCommand(const QStringList& args, const Context& ctx)
                                            : defaultTruthPath(stream);
         std::vector<std::string> inputs{truth_path, toLocalPath(parser.value("lut")),
                                         toLocalPath(parser.value("params"))};
+        std::vector<std::string> validation_streams;
+        for (const QString& s : parser.values("validate"))
+            validation_streams.push_back(toLocalPath(s));
         for (const std::string& s : streams) {
+            inputs.push_back(s);
+            inputs.push_back(defaultTruthPath(s));
+        }
+        for (const std::string& s : validation_streams) {
+            if (std::find(streams.begin(), streams.end(), s) != streams.end())
+                return badInput(ctx, "tune: " + s +
+                                         " is both fitted and a --validate stream; a stream "
+                                         "kept aside must be another one");
             inputs.push_back(s);
             inputs.push_back(defaultTruthPath(s));
         }
@@ -315,23 +361,30 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         if (!truth)
             return badInput(ctx, truth.error().message);
         // The other streams, each with its own annotations (and table, unless --lut names one).
+        // The other streams (fitted, then kept aside), each with its own annotations (and table,
+        // unless --lut names one).
         std::vector<StreamInput> more_inputs;
         std::vector<Annotations> more_truth;
-        more_inputs.reserve(streams.size());
-        more_truth.reserve(streams.size());
+        more_inputs.reserve(streams.size() + validation_streams.size());
+        more_truth.reserve(streams.size() + validation_streams.size());
         std::vector<TuneStream> more;
-        for (std::size_t k = 1; k < streams.size(); ++k) {
-            auto other = openInput(parser, streams[k], ctx);
+        std::vector<std::pair<std::string, bool>> others;
+        for (std::size_t k = 1; k < streams.size(); ++k)
+            others.emplace_back(streams[k], false);
+        for (const std::string& s : validation_streams)
+            others.emplace_back(s, true);
+        for (const auto& [path, aside] : others) {
+            auto other = openInput(parser, path, ctx);
             if (!other)
                 return badInput(ctx, other.error().message);
-            const std::string other_truth = defaultTruthPath(streams[k]);
+            const std::string other_truth = defaultTruthPath(path);
             auto annotations = Annotations::load(other_truth, ctx.pipeline.perceptKinds(),
                                                  other.value().info().frame_count);
             if (!annotations)
                 return badInput(ctx, annotations.error().message);
             more_inputs.push_back(std::move(other).value());
             more_truth.push_back(std::move(annotations).value());
-            more.push_back({&more_inputs.back(), &more_truth.back(), other_truth});
+            more.push_back({&more_inputs.back(), &more_truth.back(), other_truth, aside});
         }
 
         const bool terminal = &ctx.err == &std::cerr && isatty(STDERR_FILENO);
@@ -356,7 +409,8 @@ int tuneCommand(const QStringList& args, const Context& ctx)
         std::string table =
             tuneTable(names, result.value(), options, scoredKinds(ctx.pipeline.perceptKinds()));
         table += "wrote " + out + "\n";
-        return finishReport(ctx, table, json, tuneJson(streams, out, result.value(), options));
+        return finishReport(ctx, table, json,
+                            tuneJson(streams, validation_streams, out, result.value(), options));
     } catch (const std::exception& e) {
         return failure(ctx, "tune", e);
     }

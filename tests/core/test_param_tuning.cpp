@@ -210,6 +210,54 @@ private slots:
                  refused.error().message.c_str());
     }
 
+    void aValidationStreamIsScoredButNeverFitted()
+    {
+        // lab2 kept aside from a search on lab1: the search and its result are exactly those
+        // without it (were its frames fitted, or did it move a seed, they would differ), and
+        // lab2 is only scored, with the start and the result.
+        Fixture a = open("lab1");
+        Fixture b = open("lab2");
+        TuneOptions options;
+        options.stages = {"field_lines", "transitions"};
+        options.budget = 40;
+        const TuneResult alone = tune(a, options);
+        auto with = tuneStreams(a.input, a.truth, a.truth_path, options,
+                                {{&b.input, &b.truth, b.truth_path, true}});
+        QVERIFY2(with.ok(), with.ok() ? "" : with.error().message.c_str());
+        const TuneResult& r = with.value();
+        QCOMPARE(r.fit_frames, alone.fit_frames);
+        QCOMPARE(r.holdout_frames, alone.holdout_frames);
+        QCOMPARE(r.params.toJson(), alone.params.toJson());
+        QCOMPARE(r.tuned_fit.total, alone.tuned_fit.total);
+        QCOMPARE(r.tuned_holdout.total, alone.tuned_holdout.total);
+        const TuneResult only_b = tune(b, [] {
+            TuneOptions o;
+            o.budget = 1;
+            o.holdout = 0;
+            return o;
+        }());
+        QCOMPARE(r.validation_frames.size(), only_b.fit_frames.size());
+        QCOMPARE(r.validation_frames.front(), b.input.stream + "/" + only_b.fit_frames.front());
+        // Scored with the start: the counts lab2 has alone.
+        for (const auto& [name, score] : only_b.start_fit.classes) {
+            const ClassScore& v = r.start_validation.classes.at(name);
+            QCOMPARE(v.tp, score.tp);
+            QCOMPARE(v.fp, score.fp);
+            QCOMPARE(v.fn, score.fn);
+        }
+        QVERIFY(r.tuned_validation.frames == r.start_validation.frames);
+        QCOMPARE(r.start_validation.frames, only_b.start_fit.frames);
+
+        // With folds too, the validation frames stay out of every fold.
+        options.folds = 3;
+        auto folded = tuneStreams(a.input, a.truth, a.truth_path, options,
+                                  {{&b.input, &b.truth, b.truth_path, true}});
+        QVERIFY(folded.ok());
+        QCOMPARE(folded.value().holdout_frames.size(),
+                 alone.fit_frames.size() + alone.holdout_frames.size());
+        QCOMPARE(folded.value().validation_frames, r.validation_frames);
+    }
+
     void aSeedIsNeverFitted()
     {
         Fixture f = open("lab1");

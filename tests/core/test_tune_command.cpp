@@ -87,6 +87,46 @@ private slots:
         QCOMPARE(saved.value().values.at("transitions").at("goal_colour"), 8.0); // yellow
     }
 
+    void aValidationStreamIsScoredAsEvalScoresIt()
+    {
+        const QString params = m_dir.filePath("lab2v.json");
+        const QString report = m_dir.filePath("lab2v.tune.json");
+        QProcess* tune =
+            start({"tune", stream("lab2"), "--validate", stream("lab1"), "--stages",
+                   "transitions,field_lines", "--budget", "30", "--out", params, "--json", report});
+        QVERIFY(tune->waitForFinished(120000));
+        QCOMPARE(tune->exitCode(), 0);
+        const QString text = QString::fromUtf8(tune->readAllStandardOutput());
+        QVERIFY2(text.contains("validation streams"), qPrintable(text));
+        const QJsonObject r = readJson(report);
+        QCOMPARE(r["validation_streams"].toArray().size(), 1);
+        const QJsonArray frames = r["validation_frames"].toArray();
+        QVERIFY(!frames.isEmpty());
+        QVERIFY(frames[0].toString().startsWith(stream("lab1") + "/"));
+        // The result on lab1 is what eval scores there with the file written.
+        const QString eval_json = m_dir.filePath("lab1v.eval.json");
+        QProcess* eval = start({"eval", stream("lab1"), "--params", params, "--json", eval_json});
+        QVERIFY(eval->waitForFinished(120000));
+        QCOMPARE(eval->exitCode(), 0);
+        const QJsonObject scores = readJson(eval_json)["classes"].toObject();
+        const QJsonObject tuned = r["tuned"].toObject()["validation"].toObject();
+        for (const char* name : {"ball", "goalpost", "obstacle", "field_line"}) {
+            const QJsonObject want = tuned["classes"].toObject()[name].toObject();
+            const QJsonObject got = scores[name].toObject();
+            for (const char* count : {"tp", "fp", "fn"})
+                QCOMPARE(got[count].toInt(), want[count].toInt());
+        }
+
+        // A stream cannot be fitted and kept aside at once.
+        QProcess* both = start({"tune", stream("lab2"), "--validate", stream("lab2"), "--out",
+                                m_dir.filePath("both.json")});
+        QVERIFY(both->waitForFinished(120000));
+        QVERIFY(both->exitCode() != 0);
+        const QString error = QString::fromUtf8(both->readAllStandardError());
+        QVERIFY2(error.contains("both fitted and a --validate stream"), qPrintable(error));
+        QVERIFY(!QFile::exists(m_dir.filePath("both.json")));
+    }
+
     void ctrlCKeepsTheBestSoFar()
     {
         const QString params = m_dir.filePath("interrupted.json");

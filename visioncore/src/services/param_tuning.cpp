@@ -371,21 +371,30 @@ Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
     if (!read)
         return read.error();
     const std::vector<HeldFrame>& frames = read.value().first;
-    const std::size_t n = frames.size();
+    const std::vector<tuning::FrameRole>& roles = read.value().second;
+    std::vector<std::size_t> fit;
+    std::vector<std::size_t> holdout;
+    std::vector<std::size_t> validation;
+    TuneResult result;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const bool aside = roles[i] == tuning::FrameRole::Validation;
+        const bool held = roles[i] == tuning::FrameRole::Held;
+        (aside ? validation : held ? holdout : fit).push_back(i);
+        (aside  ? result.validation_frames
+         : held ? result.holdout_frames
+                : result.fit_frames)
+            .push_back(frames[i].name);
+    }
+    // The folds cut the fitted streams' frames (the validation streams' stay aside).
+    const std::size_t n = fit.size() + holdout.size();
     const bool cross = want_folds && n >= 2;
     const std::size_t folds = cross ? std::min<std::size_t>(std::size_t(options.folds), n) : 0;
+    if (fit.empty())
+        return Error{input.stream + ": no frame to fit (every scored frame is held out)"};
 
-    TuneResult result;
     result.parameters = int(params.value().size());
     result.start = input.params;
     result.folds = int(folds);
-    const std::vector<bool> held = cross ? std::vector<bool>(n, false) : read.value().second;
-    std::vector<std::size_t> fit;
-    std::vector<std::size_t> holdout;
-    for (std::size_t i = 0; i < n; ++i) {
-        (held[i] ? holdout : fit).push_back(i);
-        (held[i] ? result.holdout_frames : result.fit_frames).push_back(frames[i].name);
-    }
     const int total = options.budget * int(1 + folds);
     ParamSet best;
     try {
@@ -411,8 +420,8 @@ Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
         for (std::size_t k = 0; k < folds && !result.cancelled; ++k) {
             std::vector<std::size_t> others;
             std::vector<std::size_t> fold;
-            for (std::size_t i = 0; i < n; ++i)
-                (i * folds / n == k ? fold : others).push_back(i);
+            for (std::size_t j = 0; j < n; ++j)
+                (j * folds / n == k ? fold : others).push_back(fit[j]);
             const Fitted f = fitOn(input, frames, others, params.value(), options,
                                    options.seed + 1 + k, options.budget * int(1 + k), total);
             result.evaluations += f.evaluations;
@@ -427,6 +436,12 @@ Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
         }
         result.start_holdout = tuning::scoreOf(start_held, options.weights);
         result.tuned_holdout = tuning::scoreOf(tuned_held, options.weights);
+        if (!validation.empty() && !result.cancelled) {
+            result.start_validation =
+                tuning::scoreOf(scorer.tallyOf(input.params, validation), options.weights);
+            result.tuned_validation =
+                tuning::scoreOf(scorer.tallyOf(best, validation), options.weights);
+        }
     } catch (const std::invalid_argument& e) {
         return Error{input.stream + ": " + e.what()};
     }

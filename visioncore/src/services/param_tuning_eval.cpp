@@ -121,7 +121,7 @@ Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annota
     return frames;
 }
 
-Result<std::pair<std::vector<HeldFrame>, std::vector<bool>>>
+Result<std::pair<std::vector<HeldFrame>, std::vector<FrameRole>>>
 readStreams(StreamInput& input, const Annotations& truth, const std::string& truth_path,
             const TuneOptions& options, const std::vector<TuneStream>& more, bool folds)
 {
@@ -129,8 +129,18 @@ readStreams(StreamInput& input, const Annotations& truth, const std::string& tru
     if (!read)
         return read.error();
     std::vector<HeldFrame> frames = std::move(read).value();
-    std::vector<bool> held = folds ? std::vector<bool>(frames.size(), false)
-                                   : holdoutFrames(frames.size(), options.holdout, options.seed);
+    // Of a fitted stream: held out or fitted.
+    const auto roles = [&](std::size_t count, std::uint64_t seed) {
+        std::vector<FrameRole> r(count, FrameRole::Fit);
+        if (!folds) {
+            const std::vector<bool> held = holdoutFrames(count, options.holdout, seed);
+            for (std::size_t i = 0; i < count; ++i)
+                r[i] = held[i] ? FrameRole::Held : FrameRole::Fit;
+        }
+        return r;
+    };
+    std::vector<FrameRole> held = roles(frames.size(), options.seed);
+    std::size_t fitted = 0; // streams fitted before this one (the seed of its held-out blocks)
     for (std::size_t k = 0; k < more.size(); ++k) {
         const TuneStream& s = more[k];
         if (!s.input || !s.truth)
@@ -152,9 +162,9 @@ readStreams(StreamInput& input, const Annotations& truth, const std::string& tru
         auto frames_of = readScoredFrames(other, *s.truth, s.truth_path, options.threads);
         if (!frames_of)
             return frames_of.error();
-        const std::vector<bool> held_of =
-            folds ? std::vector<bool>(frames_of.value().size(), false)
-                  : holdoutFrames(frames_of.value().size(), options.holdout, options.seed + 1 + k);
+        const std::vector<FrameRole> held_of =
+            s.validation ? std::vector<FrameRole>(frames_of.value().size(), FrameRole::Validation)
+                         : roles(frames_of.value().size(), options.seed + 1 + fitted++);
         for (HeldFrame& f : frames_of.value()) {
             f.lut = other.lut;
             f.name = other.stream + "/" + f.name;

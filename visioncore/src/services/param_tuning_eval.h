@@ -27,11 +27,19 @@ struct HeldFrame
 Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annotations& truth,
                                                 const std::string& truth_path, int threads);
 
-/// The scored frames of `input` and of each of `more` streams, the first's first, and which of
-/// them are held out (none with `folds`; else the same share of each stream, its blocks drawn
-/// with options.seed + its place). Another stream's frames keep its table and are named
-/// "STREAM/NAME"; every stream must start from the first's parameters and skip its stages.
-Result<std::pair<std::vector<HeldFrame>, std::vector<bool>>>
+/// What a scored frame is for in a search.
+enum class FrameRole {
+    Fit,        ///< the search maximises the score on it
+    Held,       ///< held out of a fitted stream: scored for the report
+    Validation, ///< a stream kept aside (TuneStream::validation): scored for the report
+};
+
+/// The scored frames of `input` and of each of `more` streams, the first's first, and what each
+/// is for: of a fitted stream, held out or not (none held with `folds`; else the same share of
+/// each stream, its blocks drawn with options.seed + its place); of a validation stream, every
+/// frame Validation. Another stream's frames keep its table and are named "STREAM/NAME"; every
+/// stream must start from the first's parameters and skip its stages.
+Result<std::pair<std::vector<HeldFrame>, std::vector<FrameRole>>>
 readStreams(StreamInput& input, const Annotations& truth, const std::string& truth_path,
             const TuneOptions& options, const std::vector<TuneStream>& more, bool folds);
 

@@ -116,9 +116,14 @@ struct TuneResult
     /// parameters fitted without them (what the search's result is expected to reach).
     TuneScore tuned_holdout;
     int folds = 0; ///< the folds of the cross-validation (0: one held-out share)
-    std::vector<std::string> fit_frames;     ///< by name, in stream order
-    std::vector<std::string> holdout_frames; ///< by name, in stream order (fold by fold)
-    int evaluations = 0;                     ///< of every search (the folds' too)
+    /// The start and the result on the validation streams' frames (TuneStream::validation):
+    /// never fitted, never in a fold.
+    TuneScore start_validation;
+    TuneScore tuned_validation;
+    std::vector<std::string> fit_frames;        ///< by name, in stream order
+    std::vector<std::string> holdout_frames;    ///< by name, in stream order (fold by fold)
+    std::vector<std::string> validation_frames; ///< "STREAM/NAME", in stream order
+    int evaluations = 0;                        ///< of every search (the folds' too)
     /// The best fit score after each evaluation that improved it: (evaluations, score).
     std::vector<std::pair<int, double>> history;
     int parameters = 0; ///< parameters searched
@@ -138,6 +143,9 @@ struct TuneStream
     StreamInput* input = nullptr;
     const Annotations* truth = nullptr;
     std::string truth_path;
+    /// Kept aside: every frame scored with the start and the result, none fitted (another game
+    /// of the venue, to see whether what was fitted holds there).
+    bool validation = false;
 };
 
 /// Reads the scored frames of `truth` from `input` once (into memory), then searches the
@@ -148,8 +156,9 @@ Result<TuneResult> tuneParams(StreamInput& input, const Annotations& truth,
                               const std::string& truth_path, const TuneOptions& options);
 /// tuneParams with `more` streams fitted together with the first: their scored frames are
 /// fitted and held out with the first's (the same share of each stream, its blocks drawn with
-/// seed + its place), named "STREAM/NAME" in the result's lists. They must start from the same
-/// parameters and skip the same stages.
+/// seed + its place among the fitted streams), named "STREAM/NAME" in the result's lists; a
+/// validation stream's frames are only scored (TuneResult's validation scores). They must start
+/// from the same parameters and skip the same stages.
 Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
                                const std::string& truth_path, const TuneOptions& options,
                                const std::vector<TuneStream>& more);
