@@ -9,6 +9,7 @@ set(FIELDSIGHT_UNITY_ALONE
     tools/synth/synth.cpp
     visioncore/src/io/stream_reader.cpp
     tools/synth/scenario_script.cpp
+    tools/synth/scenario_cast.cpp
     visioncore/src/io/coco_export.cpp
 )
 function(fieldsight_unity_alone)
