@@ -54,8 +54,8 @@ struct LightState
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
     /// The map that reads this light's pixels in the table's cells: the colour in full, the level
-    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.02 in ln gain; nullptr when
-    /// they round to the table's light (within 1%).
+    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.02 in ln gain; nullptr
+    /// within 2% of the table's light.
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
 
