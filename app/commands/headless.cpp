@@ -46,9 +46,9 @@ const std::vector<Synopsis>& synopses()
          "LABELS --stream STREAM [--out FILE] [--post-width PX] [--orientation DEG]",
          "the Dutch Nao Team's goal-post labels"},
         {"tune",
-         "STREAM --out PARAMS [--annotations FILE] [--stages STAGE,...] [--budget N] [--seed S] "
-         "[--holdout SHARE] [--folds K] [--agree N] [--allow-costly] [--weight TERM=W] [--json "
-         "FILE] [--lut FILE] [--set STAGE.PARAM=VALUE] "
+         "STREAM... --out PARAMS [--annotations FILE] [--stages STAGE,...] [--budget N] [--seed "
+         "S] [--holdout SHARE] [--folds K] [--validate STREAM] [--agree N] [--allow-costly] "
+         "[--weight TERM=W] [--json FILE] [--lut FILE] [--set STAGE.PARAM=VALUE] "
          "[--params FILE] [--orientation DEG] [--threads N]",
          "parameters fitted to the annotations"},
         {"import", "LOG --out DIR [--params FILE] [--set STAGE.PARAM=VALUE]",
