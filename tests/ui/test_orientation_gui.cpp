@@ -321,6 +321,45 @@ private slots:
         QVERIFY(w.findChild<QAction*>("view.orientation.180")->isChecked());
         QVERIFY(samePixels(w.session().stream().current()->frame.ycbcr, test::uprightScene(0)));
     }
+
+    void aManifestAnotherWriterChangedIsNotWrittenOverButTheWindowsOwnWritesAre()
+    {
+        const std::string dir = path("manifest_writers");
+        QVERIFY(test::writeTurnedStream(dir, scenes(), {Orientation::Half, {}, {}}));
+        const std::string manifest = dir + "/stream.json";
+        MainWindow w;
+        w.show();
+        QVERIFY(open(w, dir));
+        // The window's own write of another key (the stream's parameters) is no other writer's.
+        auto* params = w.findChild<QAction*>("pipeline.save_params_to_stream");
+        QVERIFY(params && params->isEnabled());
+        params->trigger();
+        QVERIFY2(nlohmann::json::parse(readText(manifest)).contains("params"),
+                 readText(manifest).c_str());
+        QVERIFY(trigger(w, "180"));
+        const Status saved = w.session().stream().saveOrientation();
+        QVERIFY2(saved.ok(), saved.ok() ? "" : saved.error().message.c_str());
+        QCOMPARE(nlohmann::json::parse(readText(manifest))["orientation"].get<int>(), 180);
+        QVERIFY(!w.session().stream().orientationUnsaved());
+
+        // Another program turns it in the file since: not written over, its file as it wrote it.
+        QVERIFY(trigger(w, "90"));
+        nlohmann::ordered_json other = nlohmann::ordered_json::parse(readText(manifest));
+        other["orientation"] = 270;
+        {
+            std::ofstream out(manifest, std::ios::binary | std::ios::trunc);
+            out << other.dump(1);
+        }
+        const std::string theirs = readText(manifest);
+        const Status refused = w.session().stream().saveOrientation();
+        QVERIFY(!refused.ok());
+        QVERIFY2(refused.error().message.find("changed on disk") != std::string::npos,
+                 refused.error().message.c_str());
+        QVERIFY2(refused.error().message.find("stream.json") != std::string::npos,
+                 refused.error().message.c_str());
+        QCOMPARE(readText(manifest), theirs);
+        QVERIFY(w.session().stream().orientationUnsaved());
+    }
 };
 
 FIELDSIGHT_TEST_SUITE(TestOrientationGui, Widgets)

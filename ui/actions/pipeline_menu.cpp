@@ -74,8 +74,11 @@ void saveParamsToStream(const MenuTarget& w)
             .has_value())
         return; // reloaded, saved elsewhere or cancelled
     Status s = w.session.settings().paramChanges().save(file);
-    if (s && !named)
+    if (s && !named) {
         s = writeStreamParams(info.path, file);
+        if (s)
+            stream.manifestWritten(); // the window's own write: no other writer's change
+    }
     if (!s) {
         w.showMessage(QString::fromStdString(s.error().message));
         return;

@@ -51,6 +51,7 @@ void SessionFiles::offerAsStreamTable(const QString& path)
         m_target.showMessage(QString::fromStdString(s.error().message));
         return;
     }
+    stream.manifestWritten(); // the window's own write: no other writer's change
     if (with_orientation) {
         if (Status s = stream.saveOrientation(); !s) {
             m_target.showMessage(tr("Saved %1 as the stream's table, but not its orientation: %2")

@@ -8,6 +8,7 @@
 #include "visioncore/io/lut_import.h"
 #include "visioncore/services/evaluation.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QTimer>
 
@@ -26,6 +27,12 @@ constexpr int kLookAheadDelayMs = 12;
 std::string local(const QString& s)
 {
     return toLocalPath(s);
+}
+
+/// An image folder's manifest, where its orientation is kept.
+QString manifestPath(const QString& folder)
+{
+    return QDir(folder).filePath(QStringLiteral("stream.json"));
 }
 
 QString orientationName(Orientation o)
@@ -105,10 +112,16 @@ Result<std::shared_ptr<OpenedStream>> StreamDocument::openSource(const QString& 
                                                                  const Pipeline& pipeline,
                                                                  const StreamOptions& options)
 {
+    // An image folder's manifest as it was before it is read (the orientation's file).
+    std::error_code folder_error;
+    const bool folder = std::filesystem::is_directory(local(spec), folder_error);
+    const FileFingerprint manifest_read =
+        folder ? fingerprintFile(local(manifestPath(spec))) : FileFingerprint{};
     auto reader = openStream(local(spec), options);
     if (!reader)
         return reader.error();
     auto opened = std::make_shared<OpenedStream>();
+    opened->manifest_read = manifest_read;
     opened->spec = spec;
     opened->source = std::make_shared<FrameSource>();
     std::unique_ptr<StreamReader> r = std::move(reader).value();
@@ -200,6 +213,13 @@ void StreamDocument::adopt(std::shared_ptr<OpenedStream> opened)
     m_answered = m_serial;
     m_first_serial = m_serial + 1; // what the worker still does for the stream before is dropped
     resetMeans();
+    // The orientation's file: an image folder's stream.json, as it was before it was read.
+    std::error_code ec;
+    if (m_stream->info.kind == StreamKind::ImageFolder &&
+        std::filesystem::is_directory(local(m_stream->spec), ec))
+        setFile(manifestPath(m_stream->spec), m_stream->manifest_read);
+    else
+        setFile(QString());
     emit streamChanged();
     emit currentIndexChanged(m_index);
     submit();
@@ -216,6 +236,12 @@ void StreamDocument::setParamsFile(const std::string& path)
     if (!m_stream)
         return;
     m_stream->info.params = path;
+}
+
+void StreamDocument::manifestWritten()
+{
+    if (!path().isEmpty())
+        setFile(path());
 }
 
 QString StreamDocument::frameName(std::size_t index) const
@@ -279,12 +305,17 @@ bool StreamDocument::canSaveOrientation() const
            std::filesystem::is_directory(local(m_stream->spec));
 }
 
-Status StreamDocument::saveOrientation()
+QString StreamDocument::noFileMessage() const
 {
-    if (!canSaveOrientation())
-        return Error{(m_stream ? local(m_stream->spec) : std::string("no stream")) +
-                     ": only a folder of images has a stream.json to keep the orientation in; "
-                     "give --orientation to the commands instead"};
+    return QString::fromStdString(m_stream ? local(m_stream->spec) : std::string("no stream")) +
+           tr(": only a folder of images has a stream.json to keep the orientation in; give "
+              "--orientation to the commands instead");
+}
+
+Status StreamDocument::writeFile(const QString& path)
+{
+    if (!canSaveOrientation() || path != manifestPath(m_stream->spec))
+        return Error{noFileMessage().toStdString()};
     if (Status s = writeStreamOrientation(local(m_stream->spec), orientation()); !s)
         return s;
     m_stream->info.stream_orientation = orientation();

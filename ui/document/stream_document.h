@@ -38,7 +38,8 @@ struct OpenedStream
     /// write during the open is still a change to the window's documents.
     FileFingerprint lut_read;
     FileFingerprint annotations_read;
-    FileFingerprint params_read; ///< the stream's own parameter file (info.params), likewise
+    FileFingerprint params_read;   ///< the stream's own parameter file (info.params), likewise
+    FileFingerprint manifest_read; ///< an image folder's stream.json (its orientation), likewise
     /// The stream's own stage parameters (its manifest's "params"; empty: none), or none when
     /// its file could not be used (said in the warnings).
     std::optional<ParamSet> params;
@@ -80,6 +81,9 @@ public:
     /// The stream's manifest now names `path` as its parameter file (it was just written there;
     /// whether it changed on disk since is the pipeline settings' to tell).
     void setParamsFile(const std::string& path);
+    /// The window itself just rewrote another key of the stream's stream.json (its table or its
+    /// parameter file): that is no other writer's change to the orientation's file.
+    void manifestWritten();
     bool live() const { return m_stream && m_stream->info.kind == StreamKind::Camera; }
     /// Frames of the stream (0 for a camera).
     std::size_t frameCount() const { return m_stream ? m_stream->names.size() : 0; }
@@ -102,9 +106,11 @@ public:
     /// The stream's manifest (stream.json) can keep its orientation: an image folder.
     bool canSaveOrientation() const;
     /// Writes the orientation in use into the stream's stream.json (atomically, other keys kept),
-    /// so it opens that way next time; a read-only folder or a manifest that cannot be read is
-    /// refused with the reason, nothing written.
-    Status saveOrientation();
+    /// so it opens that way next time: the document's save(), its file the folder's stream.json.
+    /// A read-only folder, a manifest that cannot be read, or one another window or program
+    /// wrote since the stream was opened (or saved here) is refused with the reason, nothing
+    /// written.
+    Status saveOrientation() { return save(); }
     /// The orientation in use is not the one the stream's manifest says.
     bool orientationUnsaved() const
     {
@@ -165,6 +171,10 @@ signals:
     void currentIndexChanged(std::size_t index);
     void frameReady();
     void meansReset();
+
+protected:
+    Status writeFile(const QString& path) override;
+    QString noFileMessage() const override;
 
 private:
     friend class OrientationCommand;
