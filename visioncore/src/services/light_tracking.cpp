@@ -23,8 +23,8 @@ constexpr std::array<Colour, 2> kReferenceClasses{Colour::Green, Colour::White};
 /// measure, a dimming light, this step makes 7 maps in 50 frames and 0.01 made 20).
 constexpr double kMapStep = 0.02;
 /// A light within this (ln gain, about 2%) of the table's reads the table as it is: its cells are 2
-/// levels wide and a table has margins, and on B-Human's log a map for every smaller move (a view
-/// that tints the carpet) cost 3 of its 60 lines with no drift at all.
+/// levels wide and a table has margins, and a view that tints the carpet moves the estimate by
+/// that much with no change of light (generated scenes with no drift then read as static).
 constexpr double kNoMapBelow = 0.02;
 
 /// The steepest course of the light the tracker believes, in ln gain per frame (30% in 12
@@ -66,7 +66,8 @@ std::shared_ptr<const LutInputMap> mapOfKey(const std::array<long, 3>& key)
     if (key == std::array<long, 3>{0, 0, 0})
         return nullptr;
     // The maps made lately, shared: the tracker classifying its samples and the worker running
-    // the same frame ask for the same map, and making one costs more than using it for a frame.
+    // the same frame ask for the same map, and a table's memo of a map is shared by the map's
+    // identity (ColourLut::setInputMap), so one map object means one memo filled once.
     static std::mutex mutex;
     static std::array<std::pair<std::array<long, 3>, std::weak_ptr<const LutInputMap>>, 8> recent;
     static std::size_t next = 0;

@@ -436,7 +436,7 @@ Result<TuneResult> tuneStreams(StreamInput& input, const Annotations& truth,
         }
         result.start_holdout = tuning::scoreOf(start_held, options.weights);
         result.tuned_holdout = tuning::scoreOf(tuned_held, options.weights);
-        if (!validation.empty() && !result.cancelled) {
+        if (!validation.empty()) { // like the held-out frames, the best so far after a cancel
             result.start_validation =
                 tuning::scoreOf(scorer.tallyOf(input.params, validation), options.weights);
             result.tuned_validation =

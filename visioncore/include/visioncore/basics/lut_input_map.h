@@ -12,7 +12,7 @@ namespace fieldsight {
 
 /// Maps an observed LUT cell (7-bit Y, Cb, Cr, as ColourLut::index) to the cell its colour had
 /// under the table's light: the cell's centre through the 3x3 linear map of Y, Cb - 128, Cr - 128
-/// that a von Kries change is, in 1/65536 level steps, clamped and rounded down to a cell.
+/// that a von Kries change is, in 1/256 level steps, clamped and rounded down to a cell.
 /// Immutable once made. A cell costs about twenty operations, so a table remembers what each
 /// cell read (ColourLut::setInputMap) instead of asking twice.
 class LutInputMap
