@@ -16,35 +16,23 @@
 //   .strm through.
 #include "bench_gui_timings.h"
 #include "commands/commands.h"
-#include "ui/actions/session_files.h"
 #include "ui/main_window.h"
-#include "ui/settings/window_settings.h"
-#include "ui/scans/edit_effect_scan.h"
-#include "ui/panels/layers_panel.h"
-#include "ui/tools/annotate_tool.h"
-#include "visioncore/services/lut_editing.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
 #include "tool_platform.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QSettings>
-#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
-#include <QTimer>
-#include <QTest>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <sstream>
-#include <unistd.h>
 
 using namespace fieldsight;
 using fieldsight::ui::MainWindow;

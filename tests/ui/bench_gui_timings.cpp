@@ -13,10 +13,7 @@
 #include "visioncore/services/lut_editing.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
-#include "tool_platform.h"
-
 #include <QApplication>
-#include <QCommandLineParser>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
