@@ -151,6 +151,87 @@ private slots:
         }
     }
 
+    void aChannelTheCameraClippedStaysClippedThroughTheMap()
+    {
+        // A bright yellow post whose red the camera clips under the table's light and under a
+        // warmer one: the table knows it with red at 255, and so must the map read it.
+        const Rgbd yellow{270, 225, 40};
+        const Rgbd gain{1.08, 0.95, 0.9};
+        const LutInputMap map = LutInputMap::forRgbGain(gain[0], gain[1], gain[2]);
+        const cv::Vec3b seen = ycbcrOf(times(yellow, gain)); // red clipped at 255 again
+        const cv::Vec3b meant = ycbcrOf(yellow);
+        const std::size_t got = map.index(seen[0], seen[1], seen[2]);
+        const std::size_t want = ColourLut::index(meant[0], meant[1], meant[2]);
+        for (int shift : {14, 7, 0}) {
+            const long a = long((got >> shift) & 127);
+            const long b = long((want >> shift) & 127);
+            QVERIFY2(std::abs(a - b) <= 1,
+                     qPrintable(QString("shift %1: %2 vs %3").arg(shift).arg(a).arg(b)));
+        }
+        // Under a dimmer light a channel the division takes past 255 reads 255, as the table's
+        // light clipped it.
+        const Rgbd dim{0.85, 0.85, 0.85};
+        const LutInputMap dimmer = LutInputMap::forRgbGain(dim[0], dim[1], dim[2]);
+        const cv::Vec3b dimmed = ycbcrOf(times(yellow, dim)); // red 229.5, unclipped
+        const std::size_t read = dimmer.index(dimmed[0], dimmed[1], dimmed[2]);
+        for (int shift : {14, 7, 0})
+            QVERIFY(std::abs(long((read >> shift) & 127) - long((want >> shift) & 127)) <= 1);
+    }
+
+    void whereTheFirstMapFindsNothingTheNextMapIsRead()
+    {
+        // The cautious map (the colour) first, then the one with the level: a cell the first
+        // finds classified keeps its class, one it finds unclassified reads through the next.
+        const auto full = std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(0.8, 0.8, 0.8));
+        const auto map =
+            std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(1, 1, 1, full));
+        QCOMPARE(map->then(), full.get());
+        ColourLut lut;
+        const cv::Vec3b orange = ycbcrOf(kOrange);
+        for (int y = -2; y <= 2; y += 2) // its cell and the cells beside it
+            for (int cb = -2; cb <= 2; cb += 2)
+                for (int cr = -2; cr <= 2; cr += 2)
+                    lut.setCell(ColourLut::index(std::uint8_t(orange[0] + y),
+                                                 std::uint8_t(orange[1] + cb),
+                                                 std::uint8_t(orange[2] + cr)),
+                                Colour::Orange);
+        const cv::Vec3b dark = ycbcrOf(times(kOrange, {0.8, 0.8, 0.8}));
+        const cv::Vec3b carpet = ycbcrOf(kCarpet);
+        lut.setCell(ColourLut::index(carpet[0], carpet[1], carpet[2]), Colour::Green);
+        // A carpet pixel whose brighter self would be unclassified stays carpet.
+        const auto check = [&] {
+            QCOMPARE(lut.classify(dark[0], dark[1], dark[2]), Colour::Orange);
+            QCOMPARE(lut.classify(carpet[0], carpet[1], carpet[2]), Colour::Green);
+            QCOMPARE(lut.classify(orange[0], orange[1], orange[2]), Colour::Orange);
+        };
+        lut.setInputMap(map);
+        check(); // through the memo
+        lut.setCell(0, Colour::Unclassified);
+        check(); // worked out on every lookup
+        // Without the next map the darker orange is not found.
+        lut.setInputMap(std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(1, 1, 1)));
+        QCOMPARE(lut.classify(dark[0], dark[1], dark[2]), Colour::Unclassified);
+    }
+
+    void aLevelWithinTheMarginIsReadOnlyWhereTheColourFindsNothing()
+    {
+        LightState state;
+        state.gain = {0.95, 0.95, 0.95}; // 5% dimmer, no change of colour
+        const auto map = state.makeMap();
+        QVERIFY(map);
+        QVERIFY(map->then());
+        const cv::Vec3b c = ycbcrOf(kWhite);
+        QCOMPARE(map->index(c[0], c[1], c[2]), ColourLut::index(c[0], c[1], c[2]));
+        const cv::Vec3b dim = ycbcrOf(times(kWhite, state.gain));
+        const std::size_t read = map->then()->index(dim[0], dim[1], dim[2]);
+        QVERIFY(read != ColourLut::index(dim[0], dim[1], dim[2]));
+        for (int shift : {14, 7, 0})
+            QVERIFY(std::abs(long((read >> shift) & 127) -
+                             long((ColourLut::index(c[0], c[1], c[2]) >> shift) & 127)) <= 1);
+        state.gain = {1.01, 1.01, 1.01}; // within 2%: no map
+        QVERIFY(!state.makeMap());
+    }
+
     void classifyRunThroughAMapAgreesWithClassify()
     {
         ColourLut lut;

@@ -132,7 +132,7 @@ void ColourLut::setCell(std::size_t i, Colour colour)
 
 std::uint8_t ColourLut::fillMemo(std::size_t i) const
 {
-    const std::uint8_t c = m_cells[m_map->cellOf(i)];
+    const std::uint8_t c = readThroughMap(i);
     __atomic_store_n(m_memo_cells + i, std::uint8_t(c | kKnown), __ATOMIC_RELAXED);
     return c;
 }

@@ -22,23 +22,47 @@ Matrix times(const Matrix& a, const Matrix& b)
     return p;
 }
 
+// R, G, B from Y, Cb - 128, Cr - 128 and back (BT.601 full range, as ycbcr.h).
+// clang-format off
+constexpr Matrix kToRgb{1, 0,         1.402,
+                        1, -0.344136, -0.714136,
+                        1, 1.772,     0};
+constexpr Matrix kToYcbcr{0.299,     0.587,     0.114,
+                          -0.168736, -0.331264, 0.5,
+                          0.5,       -0.418688, -0.081312};
+// clang-format on
+
+std::array<double, 3> times(const Matrix& a, const std::array<double, 3>& v) // a v
+{
+    std::array<double, 3> p{};
+    for (std::size_t r = 0; r < 3; ++r)
+        for (std::size_t k = 0; k < 3; ++k)
+            p[r] += a[3 * r + k] * v[k];
+    return p;
+}
+
+/// The R, G, B of an observed cell's centre.
+std::array<double, 3> centreRgb(std::size_t observed)
+{
+    const std::array<double, 3> centre{double((observed >> 14) & 127) * 2 + 0.5,
+                                       double((observed >> 7) & 127) * 2 + 0.5 - 128,
+                                       double(observed & 127) * 2 + 0.5 - 128};
+    return times(kToRgb, centre);
+}
+
 } // namespace
 
-LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain)
+LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
+                                    std::shared_ptr<const LutInputMap> then)
 {
-    // R, G, B from Y, Cb - 128, Cr - 128 and back (BT.601 full range, as ycbcr.h): the map is
-    // to_ycbcr * diag(1 / gain) * to_rgb.
-    // clang-format off
-    constexpr Matrix kToRgb{1, 0,         1.402,
-                            1, -0.344136, -0.714136,
-                            1, 1.772,     0};
-    constexpr Matrix kToYcbcr{0.299,     0.587,     0.114,
-                              -0.168736, -0.331264, 0.5,
-                              0.5,       -0.418688, -0.081312};
-    // clang-format on
+    // The map is to_ycbcr * diag(1 / gain) * to_rgb.
     const Matrix divide{1 / r_gain, 0, 0, 0, 1 / g_gain, 0, 0, 0, 1 / b_gain};
     const Matrix m = times(kToYcbcr, times(divide, kToRgb));
     LutInputMap map;
+    map.m_gain = {r_gain, g_gain, b_gain};
+    map.m_then = std::move(then);
+    for (std::size_t c = 0; c < 3; ++c)
+        map.m_slow_from[c] = int(std::floor(std::min(kClip, 255.0 * map.m_gain[c]) * 512));
     constexpr double kOne = double(1 << kFraction);
     for (std::size_t in = 0; in < 3; ++in)
         for (std::size_t cell = 0; cell < 128; ++cell) {
@@ -56,6 +80,19 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain)
             map.m_terms[in][cell] = word;
         }
     return map;
+}
+
+std::size_t LutInputMap::clippedCellOf(std::size_t observed) const
+{
+    std::array<double, 3> rgb = centreRgb(observed);
+    for (std::size_t c = 0; c < 3; ++c)
+        if (rgb[c] < kClip) // a clipped channel stays; the table's light clips at 255 too
+            rgb[c] = std::min(255.0, rgb[c] / m_gain[c]);
+    const std::array<double, 3> mapped = times(kToYcbcr, rgb);
+    const auto cell = [](double v) {
+        return std::size_t(std::clamp(int(std::floor(v / 2)), 0, 127));
+    };
+    return (cell(mapped[0]) << 14) | (cell(mapped[1] + 128) << 7) | cell(mapped[2] + 128);
 }
 
 std::size_t LutInputMap::index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const

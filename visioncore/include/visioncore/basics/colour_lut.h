@@ -75,11 +75,19 @@ private:
     std::uint8_t mappedClass(std::size_t i) const
     {
         if (!m_memo_cells)
-            return m_cells[m_map->cellOf(i)];
+            return readThroughMap(i);
         const std::uint8_t v = __atomic_load_n(m_memo_cells + i, __ATOMIC_RELAXED);
         return v ? std::uint8_t(v & ~kKnown) : fillMemo(i);
     }
     std::uint8_t fillMemo(std::size_t i) const;
+    /// The class observed cell `i` reads through the map, and its next map where unclassified.
+    std::uint8_t readThroughMap(std::size_t i) const
+    {
+        std::uint8_t c = m_cells[m_map->cellOf(i)];
+        for (const LutInputMap* then = m_map->then(); !c && then; then = then->then())
+            c = m_cells[then->cellOf(i)];
+        return c;
+    }
 
     std::vector<std::uint8_t> m_cells;
     /// Names these cells, so that tables with the same cells share a memo: new for a new table,

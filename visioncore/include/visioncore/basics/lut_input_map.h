@@ -7,12 +7,16 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 namespace fieldsight {
 
 /// Maps an observed LUT cell (7-bit Y, Cb, Cr, as ColourLut::index) to the cell its colour had
 /// under the table's light: the cell's centre through the 3x3 linear map of Y, Cb - 128, Cr - 128
-/// that a von Kries change is, in 1/256 level steps, clamped and rounded down to a cell.
+/// that a von Kries change is, in 1/256 level steps, clamped and rounded down to a cell. A
+/// channel the camera clipped says only that the light was at least that bright: a cell whose
+/// R, G or B is at the clip keeps that channel as it is (the table saw it clipped too), and a
+/// channel the division would take past 255 reads 255, as the table's light clipped it.
 /// Immutable once made. A cell costs about twenty operations, so a table remembers what each
 /// cell read (ColourLut::setInputMap) instead of asking twice.
 class LutInputMap
@@ -20,11 +24,19 @@ class LutInputMap
 public:
     /// The map of a light whose R, G, B are `gain` times those of the table's light (von Kries):
     /// each observed pixel is divided by the gains, in BT.601 full range as ycbcr.h converts.
-    static LutInputMap forRgbGain(double r_gain, double g_gain, double b_gain);
+    /// Where the cell a pixel reads is unclassified, it reads through `then` instead (when
+    /// given): a light's level, which a table's cells are broad in and a view's content moves,
+    /// can be followed only where it finds what the cautious map does not.
+    static LutInputMap forRgbGain(double r_gain, double g_gain, double b_gain,
+                                  std::shared_ptr<const LutInputMap> then = nullptr);
+    /// The map an unclassified cell reads through next, or null.
+    const LutInputMap* then() const { return m_then.get(); }
 
     /// The table's cell (as ColourLut::index) that an observed cell reads.
     std::size_t cellOf(std::size_t observed) const
     {
+        if (nearTheClip(observed))
+            return clippedCellOf(observed);
         // Y', Cb' and Cr' side by side in one word: three terms, two additions.
         const std::uint64_t sum = m_terms[0][(observed >> 14) & 127] +
                                   m_terms[1][(observed >> 7) & 127] + m_terms[2][observed & 127];
@@ -38,7 +50,24 @@ public:
     /// The table's cell that an observed pixel reads: the cell of the pixel's own cell.
     std::size_t index(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) const;
 
+    /// R, G or B at or above this is taken as clipped by the camera (noise and 4:2:2 chroma
+    /// scatter a clipped 255 by a few levels).
+    static constexpr double kClip = 250;
+
 private:
+    /// Whether the cell's centre has a channel at the clip, or one the gain takes past 255: its
+    /// R, G, B in 1/512 levels (twice the centre, in 1/256), against m_slow_from.
+    bool nearTheClip(std::size_t observed) const
+    {
+        const int y = int((observed >> 14) & 127) * 4 + 1;
+        const int cb = int((observed >> 7) & 127) * 4 + 1 - 256;
+        const int cr = int(observed & 127) * 4 + 1 - 256;
+        return (y << 8) + 359 * cr >= m_slow_from[0] ||
+               (y << 8) - 88 * cb - 183 * cr >= m_slow_from[1] || (y << 8) + 454 * cb >= m_slow_from[2];
+    }
+    /// cellOf() for a cell near the clip, channel by channel in R, G, B.
+    std::size_t clippedCellOf(std::size_t observed) const;
+
     static constexpr int kFraction = 8;   ///< fixed point: levels times 2^kFraction
     static constexpr int kFieldBits = 21; ///< per output channel in a term
     static constexpr int kTermBias = 512; ///< levels added to each term (clamped to +-512..1023)
@@ -57,6 +86,11 @@ private:
     /// 0-20), Cb' (21-41) and Y' (42-62), each in fixed point plus kTermBias levels (Cb' and Cr'
     /// with their 128 in the Y term), so a cell's map is the sum of three words.
     std::array<std::array<std::uint64_t, 128>, 3> m_terms{};
+    std::array<double, 3> m_gain{1, 1, 1};
+    std::shared_ptr<const LutInputMap> m_then;
+    /// Per R, G, B: the level from which a cell goes through clippedCellOf (the clip, or where
+    /// the division passes 255).
+    std::array<int, 3> m_slow_from{};
 };
 
 } // namespace fieldsight

@@ -54,8 +54,8 @@ struct LightState
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
     /// The map that reads this light's pixels in the table's cells: the colour in full, the level
-    /// only beyond 8% (a table is broad in Y), the gains rounded to 0.02 in ln gain; nullptr
-    /// within 2% of the table's light.
+    /// only beyond 8% (a table is broad in Y) and in full only where that finds nothing (its next
+    /// map), the gains rounded to 0.02 in ln gain; nullptr within 2% of the table's light.
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
 
@@ -69,7 +69,7 @@ public:
     std::shared_ptr<const LutInputMap> mapFor(const LightState& state);
 
 private:
-    std::array<long, 3> m_key{0, 0, 0};
+    std::array<long, 4> m_key{0, 0, 0, 0};
     std::shared_ptr<const LutInputMap> m_map;
 };
 
