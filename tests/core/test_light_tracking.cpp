@@ -182,7 +182,8 @@ private slots:
     {
         // The cautious map (the colour) first, then the one with the level: a cell the first
         // finds classified keeps its class, one it finds unclassified reads through the next.
-        const auto full = std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(0.8, 0.8, 0.8));
+        const auto full =
+            std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(0.8, 0.8, 0.8));
         const auto map =
             std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(1, 1, 1, full));
         QCOMPARE(map->then(), full.get());

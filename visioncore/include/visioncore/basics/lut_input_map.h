@@ -63,7 +63,8 @@ private:
         const int cb = int((observed >> 7) & 127) * 4 + 1 - 256;
         const int cr = int(observed & 127) * 4 + 1 - 256;
         return (y << 8) + 359 * cr >= m_slow_from[0] ||
-               (y << 8) - 88 * cb - 183 * cr >= m_slow_from[1] || (y << 8) + 454 * cb >= m_slow_from[2];
+               (y << 8) - 88 * cb - 183 * cr >= m_slow_from[1] ||
+               (y << 8) + 454 * cb >= m_slow_from[2];
     }
     /// cellOf() for a cell near the clip, channel by channel in R, G, B.
     std::size_t clippedCellOf(std::size_t observed) const;
