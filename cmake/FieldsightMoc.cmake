@@ -1,0 +1,18 @@
+# AUTOMOC for a target, through a moc that is given only Qt's and the project's include
+# directories (moc_own_includes.sh.in). moc follows every #include it can resolve to collect
+# macros; a test suite includes the core's headers, which include OpenCV, Eigen, JSON and the
+# standard library, and reading those took four fifths of moc's time (0.57 s a suite against
+# 0.12 s) for output that is the same byte for byte.
+get_target_property(FIELDSIGHT_MOC Qt6::moc IMPORTED_LOCATION)
+if(NOT FIELDSIGHT_MOC)
+    get_target_property(FIELDSIGHT_MOC Qt6::moc LOCATION)
+endif()
+set(FIELDSIGHT_MOC_WRAPPER "${PROJECT_BINARY_DIR}/moc_own_includes.sh")
+configure_file("${CMAKE_CURRENT_LIST_DIR}/moc_own_includes.sh.in" "${FIELDSIGHT_MOC_WRAPPER}"
+    @ONLY FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE
+    WORLD_READ WORLD_EXECUTE)
+
+function(fieldsight_automoc target)
+    set_target_properties(${target} PROPERTIES AUTOMOC ON
+        AUTOMOC_EXECUTABLE "${FIELDSIGHT_MOC_WRAPPER}")
+endfunction()
