@@ -211,8 +211,13 @@ private slots:
         check(); // through the memo
         lut.setCell(0, Colour::Unclassified);
         check(); // worked out on every lookup
-        // Without the next map the darker orange is not found.
+        // Without the next map the darker orange is not found, nor when orange is not among the
+        // classes taken from it.
         lut.setInputMap(std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(1, 1, 1)));
+        QCOMPARE(lut.classify(dark[0], dark[1], dark[2]), Colour::Unclassified);
+        const std::uint32_t all_but_orange = ~(std::uint32_t(1) << int(Colour::Orange));
+        lut.setInputMap(std::make_shared<const LutInputMap>(
+            LutInputMap::forRgbGain(1, 1, 1, full, all_but_orange)));
         QCOMPARE(lut.classify(dark[0], dark[1], dark[2]), Colour::Unclassified);
     }
 
@@ -223,6 +228,11 @@ private slots:
         const auto map = state.makeMap();
         QVERIFY(map);
         QVERIFY(map->then());
+        // Not the carpet and the white, which the table is broad in Y for; the other classes.
+        QVERIFY(!map->takesFromThen(std::uint8_t(Colour::Green)));
+        QVERIFY(!map->takesFromThen(std::uint8_t(Colour::White)));
+        QVERIFY(map->takesFromThen(std::uint8_t(Colour::Yellow)));
+        QVERIFY(map->takesFromThen(std::uint8_t(Colour::Orange)));
         const cv::Vec3b c = ycbcrOf(kWhite);
         QCOMPARE(map->index(c[0], c[1], c[2]), ColourLut::index(c[0], c[1], c[2]));
         const cv::Vec3b dim = ycbcrOf(times(kWhite, state.gain));

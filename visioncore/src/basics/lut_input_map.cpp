@@ -53,7 +53,8 @@ std::array<double, 3> centreRgb(std::size_t observed)
 } // namespace
 
 LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
-                                    std::shared_ptr<const LutInputMap> then)
+                                    std::shared_ptr<const LutInputMap> then,
+                                    std::uint32_t then_classes)
 {
     // The map is to_ycbcr * diag(1 / gain) * to_rgb.
     const Matrix divide{1 / r_gain, 0, 0, 0, 1 / g_gain, 0, 0, 0, 1 / b_gain};
@@ -61,6 +62,7 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
     LutInputMap map;
     map.m_gain = {r_gain, g_gain, b_gain};
     map.m_then = std::move(then);
+    map.m_then_classes = then_classes;
     for (std::size_t c = 0; c < 3; ++c)
         map.m_slow_from[c] = int(std::floor(std::min(kClip, 255.0 * map.m_gain[c]) * 512));
     constexpr double kOne = double(1 << kFraction);

@@ -80,12 +80,14 @@ private:
         return v ? std::uint8_t(v & ~kKnown) : fillMemo(i);
     }
     std::uint8_t fillMemo(std::size_t i) const;
-    /// The class observed cell `i` reads through the map, and its next map where unclassified.
+    /// The class observed cell `i` reads through the map, and its next map where unclassified
+    /// (a class the map takes from it).
     std::uint8_t readThroughMap(std::size_t i) const
     {
         std::uint8_t c = m_cells[m_map->cellOf(i)];
-        for (const LutInputMap* then = m_map->then(); !c && then; then = then->then())
-            c = m_cells[then->cellOf(i)];
+        for (const LutInputMap* map = m_map.get(); !c && map->then(); map = map->then())
+            if (const std::uint8_t next = m_cells[map->then()->cellOf(i)]; map->takesFromThen(next))
+                c = next;
         return c;
     }
 

@@ -25,12 +25,16 @@ public:
     /// The map of a light whose R, G, B are `gain` times those of the table's light (von Kries):
     /// each observed pixel is divided by the gains, in BT.601 full range as ycbcr.h converts.
     /// Where the cell a pixel reads is unclassified, it reads through `then` instead (when
-    /// given): a light's level, which a table's cells are broad in and a view's content moves,
-    /// can be followed only where it finds what the cautious map does not.
+    /// given), and takes what it finds there if it is one of `then_classes` (bit i: Colour i): a
+    /// light's level, which a table's cells are broad in and a view's content moves, can be
+    /// followed only where it finds what the cautious map does not, and only for some classes.
     static LutInputMap forRgbGain(double r_gain, double g_gain, double b_gain,
-                                  std::shared_ptr<const LutInputMap> then = nullptr);
+                                  std::shared_ptr<const LutInputMap> then = nullptr,
+                                  std::uint32_t then_classes = ~std::uint32_t(0));
     /// The map an unclassified cell reads through next, or null.
     const LutInputMap* then() const { return m_then.get(); }
+    /// Whether a cell may take `colour_id` from the next map.
+    bool takesFromThen(std::uint8_t colour_id) const { return (m_then_classes >> colour_id) & 1; }
 
     /// The table's cell (as ColourLut::index) that an observed cell reads.
     std::size_t cellOf(std::size_t observed) const
@@ -89,6 +93,7 @@ private:
     std::array<std::array<std::uint64_t, 128>, 3> m_terms{};
     std::array<double, 3> m_gain{1, 1, 1};
     std::shared_ptr<const LutInputMap> m_then;
+    std::uint32_t m_then_classes = ~std::uint32_t(0);
     /// Per R, G, B: the level from which a cell goes through clippedCellOf (the clip, or where
     /// the division passes 255).
     std::array<int, 3> m_slow_from{};
