@@ -261,7 +261,7 @@ private slots:
                  message.c_str());
     }
 
-    void savingTheOrientationKeepsTheOtherKeys()
+    void eachManifestWriteReplacesOnlyItsOwnKey()
     {
         const std::string dir = path("to_save");
         QVERIFY(test::writeTurnedStream(dir, scenes(), {Orientation::Half, {}, horizons()}));
@@ -280,6 +280,18 @@ private slots:
         QCOMPARE(after.dump(), before.dump()); // every other key, in its order
         QCOMPARE(openStream(dir).value()->info().orientation, Orientation::Half);
         QCOMPARE(detect(dir).dump(), detect(m_upright).dump());
+
+        // The table and the parameter file are written the same way: their one key replaced in
+        // the manifest as it is on disk then (another writer's keys kept), named from the folder.
+        before = nlohmann::ordered_json::parse(readText(manifest));
+        before["by_another_writer"] = "kept";
+        writeText(manifest, before.dump());
+        QVERIFY(writeStreamLut(dir, (fs::path(dir) / "venue.lut").string()));
+        QVERIFY(writeStreamParams(dir, (fs::path(dir) / "venue_params.json").string()));
+        after = nlohmann::ordered_json::parse(readText(manifest));
+        before["lut"] = "venue.lut"; // replaced where it was
+        before["params"] = "venue_params.json";
+        QCOMPARE(after.dump(), before.dump());
 
         // A folder without a manifest gets one with the format and the orientation.
         const std::string bare = path("bare");
