@@ -2,6 +2,8 @@
 // per frame, and a median and exponential filter that one odd frame cannot pull away.
 #include "visioncore/services/light_tracking.h"
 
+#include "visioncore/basics/ycbcr.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -184,14 +186,9 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
             const std::size_t k = c == kReferenceClasses[0] ? 0 : c == kReferenceClasses[1] ? 1 : 2;
             if (k == 2)
                 continue;
-            // Back to R, G, B (BT.601 full range, in 1/256 steps); a clipped channel says
-            // nothing of the gain.
-            const int cb = p[1] - 128;
-            const int cr = p[2] - 128;
-            const int r = p[0] + ((359 * cr) >> 8);
-            const int g = p[0] - ((88 * cb + 183 * cr) >> 8);
-            const int b = p[0] + ((454 * cb) >> 8);
-            if (std::max({r, g, b}) >= 250 || std::min({r, g, b}) <= 2)
+            // Back to R, G, B (BT.601 full range); a clipped channel says nothing of the gain.
+            const auto [r, g, b] = rgbOfYcc(p[0], p[1] - 128, p[2] - 128);
+            if (std::max({r, g, b}) >= LutInputMap::kClip || std::min({r, g, b}) <= 2)
                 continue;
             sum[k][0] += r;
             sum[k][1] += g;

@@ -84,11 +84,11 @@ private:
     /// (a class the map takes from it).
     std::uint8_t readThroughMap(std::size_t i) const
     {
-        std::uint8_t c = m_cells[m_map->cellOf(i)];
-        for (const LutInputMap* map = m_map.get(); !c && map->then(); map = map->then())
-            if (const std::uint8_t next = m_cells[map->then()->cellOf(i)]; map->takesFromThen(next))
-                c = next;
-        return c;
+        const std::uint8_t c = m_cells[m_map->cellOf(i)];
+        if (c || !m_map->then())
+            return c;
+        const std::uint8_t next = m_cells[m_map->then()->cellOf(i)];
+        return m_map->takesFromThen(next) ? next : std::uint8_t(0);
     }
 
     std::vector<std::uint8_t> m_cells;

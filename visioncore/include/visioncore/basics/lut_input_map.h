@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <memory>
 
+#include "visioncore/basics/ycbcr.h"
+
 namespace fieldsight {
 
 /// Maps an observed LUT cell (7-bit Y, Cb, Cr, as ColourLut::index) to the cell its colour had
@@ -17,8 +19,8 @@ namespace fieldsight {
 /// channel the camera clipped says only that the light was at least that bright: a cell whose
 /// R, G or B is at the clip keeps that channel as it is (the table saw it clipped too), and a
 /// channel the division would take past 255 reads 255, as the table's light clipped it.
-/// Immutable once made. A cell costs about twenty operations, so a table remembers what each
-/// cell read (ColourLut::setInputMap) instead of asking twice.
+/// Immutable once made. A cell costs about twenty to forty operations, so a table remembers what
+/// each cell read (ColourLut::setInputMap) instead of asking twice.
 class LutInputMap
 {
 public:
@@ -66,9 +68,8 @@ private:
         const int y = int((observed >> 14) & 127) * 4 + 1;
         const int cb = int((observed >> 7) & 127) * 4 + 1 - 256;
         const int cr = int(observed & 127) * 4 + 1 - 256;
-        return (y << 8) + 359 * cr >= m_slow_from[0] ||
-               (y << 8) - 88 * cb - 183 * cr >= m_slow_from[1] ||
-               (y << 8) + 454 * cb >= m_slow_from[2];
+        const std::array<int, 3> rgb = rgbOfYcc(y << 8, cb << 8, cr << 8);
+        return rgb[0] >= m_slow_from[0] || rgb[1] >= m_slow_from[1] || rgb[2] >= m_slow_from[2];
     }
     /// cellOf() for a cell near the clip, channel by channel in R, G, B.
     std::size_t clippedCellOf(std::size_t observed) const;
