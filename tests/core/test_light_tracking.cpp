@@ -180,6 +180,57 @@ private slots:
         QVERIFY2(farApart(read, want).isEmpty(), qPrintable(farApart(read, want)));
     }
 
+    void everyCellReadsByTheClipRuleWhereItsCentreIsNearTheClip()
+    {
+        // Every cell's centre in R, G, B: where a channel is at the clip, or the division would
+        // take it past 255, the cell reads exactly what the rule says (the clipped channel kept,
+        // the others divided and capped at 255); elsewhere within a cell of the plain division.
+        const auto cellOfLevels = [](const Rgbd& rgb) {
+            const auto cell = [](double v) { return std::clamp(int(std::floor(v / 2)), 0, 127); };
+            const double y = 0.299 * rgb[0] + 0.587 * rgb[1] + 0.114 * rgb[2];
+            const double cb = -0.168736 * rgb[0] - 0.331264 * rgb[1] + 0.5 * rgb[2];
+            const double cr = 0.5 * rgb[0] - 0.418688 * rgb[1] - 0.081312 * rgb[2];
+            return (std::size_t(cell(y)) << 14) | (std::size_t(cell(cb + 128)) << 7) |
+                   std::size_t(cell(cr + 128));
+        };
+        std::size_t clipped = 0;
+        for (const Rgbd& gain : {Rgbd{1.08, 0.95, 0.9}, Rgbd{0.8, 0.8, 0.8}, Rgbd{1.3, 1, 0.7}}) {
+            const LutInputMap map = LutInputMap::forRgbGain(gain[0], gain[1], gain[2]);
+            for (std::size_t cell = 0; cell < ColourLut::kCells; cell += 5) {
+                const int y = int(cell >> 14) * 4 + 1;
+                const int cb = int((cell >> 7) & 127) * 4 + 1 - 256;
+                const int cr = int(cell & 127) * 4 + 1 - 256;
+                // Near the clip by the integer conversion (1/512 levels), read in doubles.
+                const std::array<int, 3> twice = rgbOfYcc(y << 8, cb << 8, cr << 8);
+                const double cy = y / 2.0;
+                const double ccb = cb / 2.0;
+                const double ccr = cr / 2.0;
+                const Rgbd centre{cy + 1.402 * ccr, cy - 0.344136 * ccb - 0.714136 * ccr,
+                                  cy + 1.772 * ccb};
+                bool near = false;
+                Rgbd rule = centre;
+                Rgbd divided = centre;
+                for (std::size_t c = 0; c < 3; ++c) {
+                    near =
+                        near ||
+                        twice[c] >= std::floor(std::min(LutInputMap::kClip, 255 * gain[c]) * 512);
+                    divided[c] = centre[c] / gain[c];
+                    if (centre[c] < LutInputMap::kClip)
+                        rule[c] = std::min(255.0, centre[c] / gain[c]);
+                }
+                const std::size_t got = map.cellOf(cell);
+                if (near) {
+                    ++clipped;
+                    QCOMPARE(got, cellOfLevels(rule));
+                } else {
+                    QVERIFY2(farApart(got, cellOfLevels(divided)).isEmpty(),
+                             qPrintable(farApart(got, cellOfLevels(divided))));
+                }
+            }
+        }
+        QVERIFY(clipped > 10000);
+    }
+
     void whereTheFirstMapFindsNothingTheNextMapIsRead()
     {
         // The cautious map (the colour) first, then the one with the level: a cell the first

@@ -50,6 +50,38 @@ std::array<double, 3> centreRgb(std::size_t observed)
     return times(kToRgb, centre);
 }
 
+/// LutInputMap::m_clip_terms for `gain`: rgbOfYcc of twice a cell's centre in 1/256 levels, term
+/// by term (exact: each of its products is a multiple of 256 before the shift).
+std::array<std::array<std::uint64_t, 128>, 3> clipTerms(const std::array<double, 3>& gain)
+{
+    // The most negative a Cb or Cr term can add to R, G, B, added back so that no field borrows.
+    constexpr std::array<std::int64_t, 3> kCbLow{0, 88 * 253, 454 * 255};
+    constexpr std::array<std::int64_t, 3> kCrLow{359 * 255, 183 * 253, 0};
+    constexpr std::int64_t kTop = std::int64_t(1) << 20;
+    std::array<std::array<std::uint64_t, 128>, 3> terms{};
+    const auto pack = [](const std::array<std::int64_t, 3>& rgb) {
+        std::uint64_t word = 0;
+        for (std::size_t c = 0; c < 3; ++c)
+            word |= std::uint64_t(rgb[c]) << (21 * c);
+        return word;
+    };
+    std::array<std::int64_t, 3> y_bias{};
+    for (std::size_t c = 0; c < 3; ++c)
+        y_bias[c] = kTop - kCbLow[c] - kCrLow[c] -
+                    std::int64_t(std::floor(std::min(LutInputMap::kClip, 255.0 * gain[c]) * 512));
+    for (int cell = 0; cell < 128; ++cell) {
+        const std::int64_t v = cell * 4 + 1; // twice the centre, in levels
+        const std::array<std::int64_t, 3> y{256 * v + y_bias[0], 256 * v + y_bias[1],
+                                            256 * v + y_bias[2]};
+        const std::int64_t chroma = v - 256;
+        terms[0][std::size_t(cell)] = pack(y);
+        terms[1][std::size_t(cell)] = pack({0, -88 * chroma + kCbLow[1], 454 * chroma + kCbLow[2]});
+        terms[2][std::size_t(cell)] =
+            pack({359 * chroma + kCrLow[0], -183 * chroma + kCrLow[1], 0});
+    }
+    return terms;
+}
+
 } // namespace
 
 LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
@@ -63,8 +95,7 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
     map.m_gain = {r_gain, g_gain, b_gain};
     map.m_then = std::move(then);
     map.m_then_classes = then_classes;
-    for (std::size_t c = 0; c < 3; ++c)
-        map.m_slow_from[c] = int(std::floor(std::min(kClip, 255.0 * map.m_gain[c]) * 512));
+    map.m_clip_terms = clipTerms(map.m_gain);
     constexpr double kOne = double(1 << kFraction);
     for (std::size_t in = 0; in < 3; ++in)
         for (std::size_t cell = 0; cell < 128; ++cell) {

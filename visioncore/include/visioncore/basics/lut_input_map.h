@@ -62,14 +62,14 @@ public:
 
 private:
     /// Whether the cell's centre has a channel at the clip, or one the gain takes past 255: its
-    /// R, G, B in 1/512 levels (twice the centre, in 1/256), against m_slow_from.
+    /// R, G, B in 1/512 levels (twice the centre, in 1/256, as rgbOfYcc), each field biased so
+    /// that it reaches bit 20 exactly when the channel reaches m_slow_from's level: three terms,
+    /// two additions and a mask.
     bool nearTheClip(std::size_t observed) const
     {
-        const int y = int((observed >> 14) & 127) * 4 + 1;
-        const int cb = int((observed >> 7) & 127) * 4 + 1 - 256;
-        const int cr = int(observed & 127) * 4 + 1 - 256;
-        const std::array<int, 3> rgb = rgbOfYcc(y << 8, cb << 8, cr << 8);
-        return rgb[0] >= m_slow_from[0] || rgb[1] >= m_slow_from[1] || rgb[2] >= m_slow_from[2];
+        return ((m_clip_terms[0][(observed >> 14) & 127] + m_clip_terms[1][(observed >> 7) & 127] +
+                 m_clip_terms[2][observed & 127]) &
+                kClipBits) != 0;
     }
     /// cellOf() for a cell near the clip, channel by channel in R, G, B.
     std::size_t clippedCellOf(std::size_t observed) const;
@@ -95,9 +95,13 @@ private:
     std::array<double, 3> m_gain{1, 1, 1};
     std::shared_ptr<const LutInputMap> m_then;
     std::uint32_t m_then_classes = ~std::uint32_t(0);
-    /// Per R, G, B: the level from which a cell goes through clippedCellOf (the clip, or where
-    /// the division passes 255).
-    std::array<int, 3> m_slow_from{};
+    /// By input channel and its 7-bit cell: what the cell's centre adds to R (bits 0-20), G
+    /// (21-41) and B (42-62) in 1/512 levels, with biases that keep every term and sum within its
+    /// field and put a channel's bit 20 at the level from which a cell goes through
+    /// clippedCellOf (the clip, or where the division passes 255).
+    std::array<std::array<std::uint64_t, 128>, 3> m_clip_terms{};
+    static constexpr std::uint64_t kClipBits =
+        (std::uint64_t(1) << 20) | (std::uint64_t(1) << 41) | (std::uint64_t(1) << 62);
 };
 
 } // namespace fieldsight
