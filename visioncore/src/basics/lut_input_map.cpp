@@ -108,7 +108,7 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
                                                2.0 * kTermBias - 1) +
                                     kTermBias;
                 // Non-negative, so rounding is adding a half; Y' in the top field.
-                word |= std::uint64_t(term * kOne + 0.5) << ((2 - out) * kFieldBits);
+                word |= std::uint64_t(std::int64_t(term * kOne + 0.5)) << ((2 - out) * kFieldBits);
             }
             map.m_terms[in][cell] = word;
         }
