@@ -32,10 +32,12 @@ StatusLine::StatusLine(QStatusBar& bar, EditingSession& session, const Timeline&
     bar.addPermanentWidget(m_time);
     bar.addPermanentWidget(zoom);
     EffectStrip& effect = timeline.effectStrip();
-    connect(&session.effectScan(), &EditEffectScan::updated, this, [this, e = &effect] {
+    const auto showEffect = [this, e = &effect] {
         m_effect->setText(e->summary());
         m_effect->setToolTip(e->summary());
-    });
+    };
+    connect(&session.effectScan(), &EditEffectScan::updated, this, showEffect);
+    connect(&session.lightScan(), &LightScan::enabledChanged, this, showEffect);
     connect(&view, &FrameView::zoomChanged, zoom,
             [zoom](double z) { zoom->setText(tr("zoom %1%").arg(z * 100, 0, 'f', 0)); });
     connect(&session.stream(), &StreamDocument::frameReady, this, &StatusLine::showTimes);

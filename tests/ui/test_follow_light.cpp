@@ -9,10 +9,12 @@
 #include "ui/scans/light_scan.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
+#include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/light_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
 #include <QAction>
+#include <QLabel>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -94,6 +96,14 @@ private slots:
         QCOMPARE(d.front(), 0.0);
         QVERIFY2(d.back() > 0.2 && d.back() > d[last / 2], qPrintable(QString::number(d.back())));
         QVERIFY(w.timeline().lightStrip().frameText(last).contains(QStringLiteral("R ×")));
+        // The edit-effect scan runs the table as it is: its counts say so while the view follows
+        // the light, in the strip's summary and the status bar.
+        const QString unfollowed = QStringLiteral("not following the light");
+        QVERIFY2(w.timeline().effectStrip().summary().contains(unfollowed),
+                 qPrintable(w.timeline().effectStrip().summary()));
+        auto* status = w.findChild<QLabel*>(QStringLiteral("effect_summary"));
+        QVERIFY(status);
+        QVERIFY2(status->text().contains(unfollowed), qPrintable(status->text()));
 
         // Off: the table as it is again, the same classes as before.
         follow->trigger();
@@ -103,6 +113,8 @@ private slots:
         const cv::Mat again = w.session().stream().current()->classes;
         QCOMPARE(cv::countNonZero(again != static_classes), 0);
         QVERIFY(!w.timeline().lightStrip().isVisible());
+        QVERIFY(!w.timeline().effectStrip().summary().contains(unfollowed));
+        QVERIFY(!status->text().contains(unfollowed));
 
         // Remembered: on at the close, on in the next window.
         follow->trigger();

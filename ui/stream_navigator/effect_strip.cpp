@@ -41,8 +41,9 @@ QString deltaText(const DetectionDelta& d)
 
 } // namespace
 
-EffectStrip::EffectStrip(const EditEffectScan& scan, const QSlider& slider, QWidget* parent)
-    : QWidget(parent), m_scan(scan), m_slider(slider)
+EffectStrip::EffectStrip(const EditEffectScan& scan, const LightScan& light, const QSlider& slider,
+                         QWidget* parent)
+    : QWidget(parent), m_scan(scan), m_light(light), m_slider(slider)
 {
     setObjectName(QStringLiteral("effect_strip"));
     setFixedHeight(22);
@@ -123,6 +124,10 @@ QString EffectStrip::summary() const
                                .arg(first)
                                .arg(reason);
     }
+    // The scan runs the table as it is: while the view follows the light, its counts are not
+    // what the frames show.
+    if (m_light.enabled())
+        text += tr("; counted with the table as it is, not following the light");
     if (!scanning && m_scan.lastScanMs() >= 0)
         text += tr(" (%1 s)").arg(m_scan.lastScanMs() / 1000.0, 0, 'f', 2);
     return text;
