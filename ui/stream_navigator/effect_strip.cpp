@@ -125,9 +125,9 @@ QString EffectStrip::summary() const
                                .arg(reason);
     }
     // The scan runs the table as it is: while the view follows the light, its counts are not
-    // what the frames show.
+    // what the frames show. Said first, where the status bar does not cut it.
     if (m_light.enabled())
-        text += tr("; counted with the table as it is, not following the light");
+        text = tr("Table as it is, not following the light: %1").arg(text);
     if (!scanning && m_scan.lastScanMs() >= 0)
         text += tr(" (%1 s)").arg(m_scan.lastScanMs() / 1000.0, 0, 'f', 2);
     return text;
