@@ -107,12 +107,10 @@ cv::Mat viewedFrame(std::uint64_t seed, const Rgbd& white, const Rgbd& carpet)
     return bgrToYcbcr(bgr);
 }
 
-/// Every frame looked at, 4 px apart: the filter's tests judge it frame by frame.
 LightTrackingOptions denseSampling()
 {
     LightTrackingOptions options;
     options.sample_step = 4;
-    options.observe_every = 1;
     return options;
 }
 
@@ -498,48 +496,6 @@ private slots:
                                                                    .arg(tracker.state().gain[1])
                                                                    .arg(tracker.state().gain[2])));
         QCOMPARE(tracker.state().makeMap(), nullptr);
-    }
-
-    void byDefaultEveryOtherFrameIsLookedAtAndTheFramesBetweenKeepTheState()
-    {
-        // The light changes over seconds: half the frames tell it nearly as well as all of them,
-        // at half the cost.
-        LightTrackingOptions every_other = denseSampling();
-        every_other.observe_every = 2;
-        LightTracker half(referenceTable(), every_other);
-        LightTracker all(referenceTable(), denseSampling());
-        const Rgbd end{1.2 * 0.9, 0.9, 0.8 * 0.9};
-        for (int i = 0; i < 50; ++i) {
-            const double t = std::min(1.0, i / 40.0);
-            const Rgbd gain{1 + (end[0] - 1) * t, 1 + (end[1] - 1) * t, 1 + (end[2] - 1) * t};
-            const cv::Mat frame = fieldFrame(gain, std::uint64_t(i));
-            const LightState before = half.state();
-            const LightState& s = half.observe(frame, Horizon{});
-            all.observe(frame, Horizon{});
-            if (i < 5) {
-                QCOMPARE(s.verdict, LightState::Verdict::Reference);
-            } else if ((i - 5) % 2 == 0) {
-                QCOMPARE(s.verdict, LightState::Verdict::Between);
-                QCOMPARE(s.samples, std::size_t(0));
-                QCOMPARE(s.gain, before.gain);
-            } else {
-                QCOMPARE(s.verdict, LightState::Verdict::Followed);
-                QVERIFY(s.samples > 0);
-            }
-            // Within 4% of the tracker that looks at every frame while the light moves (a frame
-            // more of lag), and 1.5% once it has settled.
-            QVERIFY2(logDistance(half.state().gain, all.state().gain) < (i < 45 ? 0.04 : 0.015),
-                     qPrintable(QString("frame %1: R, G, B %2 %3 %4 against %5 %6 %7")
-                                    .arg(i)
-                                    .arg(half.state().gain[0])
-                                    .arg(half.state().gain[1])
-                                    .arg(half.state().gain[2])
-                                    .arg(all.state().gain[0])
-                                    .arg(all.state().gain[1])
-                                    .arg(all.state().gain[2])));
-        }
-        QVERIFY(logDistance(half.state().gain, end) < 0.05);
-        QCOMPARE(LightTrackingOptions{}.observe_every, 2);
     }
 
     void onlyPixelsBelowTheHorizonAreSampled()

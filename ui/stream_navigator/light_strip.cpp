@@ -67,9 +67,7 @@ QString LightStrip::frameText(std::size_t index) const
                        .arg(s.gain[1], 0, 'f', 3)
                        .arg(s.gain[2], 0, 'f', 3)
                        .arg(100 * (std::exp(s.distance()) - 1), 0, 'f', 1);
-    if (s.verdict == LightState::Verdict::Between)
-        text += tr("\nthis frame: %1").arg(QString::fromUtf8(verdictName(s.verdict)));
-    else if (s.verdict != LightState::Verdict::Followed)
+    if (s.verdict != LightState::Verdict::Followed)
         text += tr("\nthis frame: %1 (%2 carpet and white samples)")
                     .arg(QString::fromUtf8(verdictName(s.verdict)))
                     .arg(s.samples);
@@ -111,8 +109,7 @@ void LightStrip::paintEvent(QPaintEvent*)
         const double h = std::min(1.0, s.distance() / kFullScale) * height();
         p.fillRect(QRectF(xOf(i) - w / 2, height() - h, w, h), QColor(250, 190, 60));
         if (s.verdict != LightState::Verdict::Followed &&
-            s.verdict != LightState::Verdict::Reference &&
-            s.verdict != LightState::Verdict::Between)
+            s.verdict != LightState::Verdict::Reference)
             p.fillRect(QRectF(xOf(i) - w / 2, 0, w, 3), QColor(230, 60, 50));
     }
     const long long current = m_slider.value();

@@ -145,8 +145,6 @@ const char* verdictName(LightState::Verdict verdict)
         return "the carpet and the white disagree";
     case LightState::Verdict::Unread:
         return "unreadable";
-    case LightState::Verdict::Between:
-        return "not looked at (between the frames the light is followed on)";
     }
     return "?";
 }
@@ -159,7 +157,6 @@ LightTracker::LightTracker(std::shared_ptr<const ColourLut> lut, LightTrackingOp
     m_seen = *lut;
     m_options.sample_step = std::max(1, m_options.sample_step);
     m_options.median_window = std::max(1, m_options.median_window);
-    m_options.observe_every = std::max(1, m_options.observe_every);
 }
 
 void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
@@ -209,15 +206,6 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
 const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& horizon)
 {
     CV_Assert(ycbcr.type() == CV_8UC3);
-    // Once the reference is set, every observe_every-th frame is looked at; the others keep the
-    // state (and so the map).
-    if (m_reference_frames >= m_options.reference_frames &&
-        ++m_since_looked % m_options.observe_every != 0) {
-        m_state.samples = 0;
-        m_state.estimate = m_state.gain;
-        m_state.verdict = LightState::Verdict::Between;
-        return m_state;
-    }
     std::array<ClassSums, 2> sums{};
     sample(ycbcr, horizon, sums);
     const std::size_t samples = sums[0].count + sums[1].count;
@@ -324,8 +312,7 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     // The light's course: a robust line (Theil-Sen) through the recent accepted estimates, so a
     // steady change is followed without lag and one odd frame moves nothing. A frame is judged
     // an outlier against where that line says the light is now.
-    const double max_slope = kMaxSlope * m_options.observe_every; // per frame looked at
-    const auto fitAt = [this, max_slope](std::size_t c, double x) {
+    const auto fitAt = [this](std::size_t c, double x) {
         const std::size_t n = m_recent.size();
         std::vector<double>& slopes = m_scratch;
         slopes.clear();
@@ -333,7 +320,7 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
             for (std::size_t b = a + 1; b < n; ++b)
                 slopes.push_back((m_recent[b][c] - m_recent[a][c]) / double(b - a));
         const double slope =
-            slopes.empty() ? 0.0 : std::clamp(medianOf(slopes), -max_slope, max_slope);
+            slopes.empty() ? 0.0 : std::clamp(medianOf(slopes), -kMaxSlope, kMaxSlope);
         std::vector<double>& intercepts = m_scratch;
         intercepts.clear();
         for (std::size_t a = 0; a < n; ++a)
@@ -358,13 +345,10 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     m_recent.push_back(log_estimate);
     while (m_recent.size() > std::size_t(m_options.median_window))
         m_recent.pop_front();
-    // The smoothing is per frame: looked at every n-th frame, the state moves as far as n
-    // frames' smoothing would take it.
-    const double smoothing = 1 - std::pow(1 - m_options.smoothing, m_options.observe_every);
     for (std::size_t c = 0; c < 3; ++c) {
         const double target = fitAt(c, double(m_recent.size() - 1));
         const double now = std::log(m_state.gain[c]);
-        m_state.gain[c] = std::exp(now + smoothing * (target - now));
+        m_state.gain[c] = std::exp(now + m_options.smoothing * (target - now));
     }
     m_state.verdict = LightState::Verdict::Followed;
     m_seen.setInputMap(m_maps.mapFor(m_state));

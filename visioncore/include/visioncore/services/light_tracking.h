@@ -32,9 +32,6 @@ struct LightTrackingOptions
     int outlier_patience = 20;      ///< outlying frames in a row after which the light has changed
     int median_window = 7;          ///< accepted estimates the course is fitted through
     double smoothing = 0.5;         ///< share of the way to the course that the state moves
-    /// Once the reference is set, the light is followed on every this-many-th frame, and the
-    /// frames between keep the state and its map (LightState::Verdict::Between).
-    int observe_every = 2;
 };
 
 /// The light of one frame, relative to the light the table was made for.
@@ -48,7 +45,6 @@ struct LightState
         Outlier,      ///< its estimate was far from the state (a flash): ignored
         Inconsistent, ///< the carpet's and the white's colour moved apart (not the light's doing)
         Unread,       ///< the frame could not be read: ignored
-        Between,      ///< not looked at: between the frames the light is followed on
     };
     std::array<double, 3> gain{1, 1, 1};     ///< R, G, B of the frame's light over the table's
     std::array<double, 3> estimate{1, 1, 1}; ///< this frame's own estimate (Followed, Outlier)
@@ -105,7 +101,6 @@ private:
     std::array<ClassSums, 2> m_reference; ///< carpet and white under the table's light
     int m_reference_frames = 0;
     int m_outliers_in_a_row = 0;
-    int m_since_looked = 0;                     ///< frames since the reference, for observe_every
     std::deque<std::array<double, 3>> m_recent; ///< ln of the latest accepted estimates
     std::vector<double> m_scratch;              ///< the course's slopes and intercepts
     mutable std::vector<int> m_first_row;       ///< sample(): each sampled column's first row
