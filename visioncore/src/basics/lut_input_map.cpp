@@ -50,35 +50,51 @@ std::array<double, 3> centreRgb(std::size_t observed)
     return times(kToRgb, centre);
 }
 
-/// LutInputMap::m_clip_terms for `gain`: rgbOfYcc of twice a cell's centre in 1/256 levels, term
-/// by term (exact: each of its products is a multiple of 256 before the shift).
+/// Each input channel's share of R, G, B by cell: rgbOfYcc of twice the cell's centre in 1/256
+/// levels, input channel by input channel (exact and so additive: each of its products is a
+/// multiple of 256 before the shift), and the most negative share each adds to R, G and B.
+struct ClipShares
+{
+    std::array<std::array<std::array<int, 3>, 128>, 3> share{};
+    std::array<std::array<std::int64_t, 3>, 3> lowest{};
+
+    ClipShares()
+    {
+        for (int cell = 0; cell < 128; ++cell) {
+            const int v = cell * 4 + 1; // twice the centre, in levels
+            const int chroma = (v - 256) << 8;
+            share[0][std::size_t(cell)] = rgbOfYcc(v << 8, 0, 0);
+            share[1][std::size_t(cell)] = rgbOfYcc(0, chroma, 0);
+            share[2][std::size_t(cell)] = rgbOfYcc(0, 0, chroma);
+            for (std::size_t in = 0; in < 3; ++in)
+                for (std::size_t c = 0; c < 3; ++c)
+                    lowest[in][c] =
+                        std::min<std::int64_t>(lowest[in][c], share[in][std::size_t(cell)][c]);
+        }
+    }
+};
+
+/// LutInputMap::m_clip_terms for `gain`: the shares, the chroma ones raised by their lowest so
+/// that no field borrows, the Y one lowered by both and by the level where the slow path starts.
 std::array<std::array<std::uint64_t, 128>, 3> clipTerms(const std::array<double, 3>& gain)
 {
-    // The most negative a Cb or Cr term can add to R, G, B, added back so that no field borrows.
-    constexpr std::array<std::int64_t, 3> kCbLow{0, 88 * 253, 454 * 255};
-    constexpr std::array<std::int64_t, 3> kCrLow{359 * 255, 183 * 253, 0};
+    static const ClipShares shares;
     constexpr std::int64_t kTop = std::int64_t(1) << 20;
-    std::array<std::array<std::uint64_t, 128>, 3> terms{};
-    const auto pack = [](const std::array<std::int64_t, 3>& rgb) {
-        std::uint64_t word = 0;
-        for (std::size_t c = 0; c < 3; ++c)
-            word |= std::uint64_t(rgb[c]) << (21 * c);
-        return word;
-    };
-    std::array<std::int64_t, 3> y_bias{};
-    for (std::size_t c = 0; c < 3; ++c)
-        y_bias[c] = kTop - kCbLow[c] - kCrLow[c] -
-                    std::int64_t(std::floor(std::min(LutInputMap::kClip, 255.0 * gain[c]) * 512));
-    for (int cell = 0; cell < 128; ++cell) {
-        const std::int64_t v = cell * 4 + 1; // twice the centre, in levels
-        const std::array<std::int64_t, 3> y{256 * v + y_bias[0], 256 * v + y_bias[1],
-                                            256 * v + y_bias[2]};
-        const std::int64_t chroma = v - 256;
-        terms[0][std::size_t(cell)] = pack(y);
-        terms[1][std::size_t(cell)] = pack({0, -88 * chroma + kCbLow[1], 454 * chroma + kCbLow[2]});
-        terms[2][std::size_t(cell)] =
-            pack({359 * chroma + kCrLow[0], -183 * chroma + kCrLow[1], 0});
+    std::array<std::array<std::int64_t, 3>, 3> bias{};
+    for (std::size_t c = 0; c < 3; ++c) {
+        bias[1][c] = -shares.lowest[1][c];
+        bias[2][c] = -shares.lowest[2][c];
+        bias[0][c] = kTop - bias[1][c] - bias[2][c] -
+                     std::int64_t(std::floor(std::min(LutInputMap::kClip, 255.0 * gain[c]) * 512));
     }
+    std::array<std::array<std::uint64_t, 128>, 3> terms{};
+    for (std::size_t in = 0; in < 3; ++in)
+        for (std::size_t cell = 0; cell < 128; ++cell) {
+            std::uint64_t word = 0;
+            for (std::size_t c = 0; c < 3; ++c)
+                word |= std::uint64_t(shares.share[in][cell][c] + bias[in][c]) << (21 * c);
+            terms[in][cell] = word;
+        }
     return terms;
 }
 

@@ -63,8 +63,8 @@ public:
 private:
     /// Whether the cell's centre has a channel at the clip, or one the gain takes past 255: its
     /// R, G, B in 1/512 levels (twice the centre, in 1/256, as rgbOfYcc), each field biased so
-    /// that it reaches bit 20 exactly when the channel reaches m_slow_from's level: three terms,
-    /// two additions and a mask.
+    /// that it reaches bit 20 exactly when the channel reaches that level (m_clip_terms): three
+    /// terms, two additions and a mask.
     bool nearTheClip(std::size_t observed) const
     {
         return ((m_clip_terms[0][(observed >> 14) & 127] + m_clip_terms[1][(observed >> 7) & 127] +
