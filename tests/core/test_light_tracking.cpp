@@ -56,17 +56,17 @@ QString farApart(std::size_t got, std::size_t want)
 }
 
 /// A table that knows the carpet and the white (and orange) of the reference light, each a box
-/// of +-10 levels around its colour.
-std::shared_ptr<const ColourLut> referenceTable()
+/// of +-`half` levels around its colour.
+std::shared_ptr<const ColourLut> referenceTable(int half = 10)
 {
     auto lut = std::make_shared<ColourLut>();
     const std::pair<Rgbd, Colour> classes[] = {
         {kCarpet, Colour::Green}, {kWhite, Colour::White}, {kOrange, Colour::Orange}};
     for (const auto& [rgb, colour] : classes) {
         const cv::Vec3b c = ycbcrOf(rgb);
-        for (int y = c[0] - 10; y <= c[0] + 10; y += 2)
-            for (int cb = c[1] - 10; cb <= c[1] + 10; cb += 2)
-                for (int cr = c[2] - 10; cr <= c[2] + 10; cr += 2)
+        for (int y = c[0] - half; y <= c[0] + half; y += 2)
+            for (int cb = c[1] - half; cb <= c[1] + half; cb += 2)
+                for (int cr = c[2] - half; cr <= c[2] + half; cr += 2)
                     lut->setCell(
                         ColourLut::index(std::uint8_t(y), std::uint8_t(cb), std::uint8_t(cr)),
                         colour);
@@ -454,6 +454,44 @@ private slots:
         for (int i = 0; i < 5; ++i)
             tracker.observe(fieldFrame(gain, std::uint64_t(200 + i)), Horizon{});
         QVERIFY(logDistance(tracker.state().gain, gain) < 0.02);
+    }
+
+    void aLastingStepOfTheLightIsFollowedAfterAFewFrames()
+    {
+        // A bank of lights going off: an eighth dimmer and bluer-poorer from one frame to the
+        // next, for good (a table broad enough that the carpet and the white still classify).
+        const LightTrackingOptions options = denseSampling();
+        LightTracker tracker(referenceTable(24), options);
+        for (int i = 0; i < 15; ++i)
+            tracker.observe(fieldFrame({1, 1, 1}, std::uint64_t(i)), Horizon{});
+        const Rgbd dimmer{1.12 * 0.88, 0.88, 0.88 * 0.88};
+        for (int i = 0; i < options.outlier_patience + 3; ++i) {
+            const LightState& s = tracker.observe(fieldFrame(dimmer, std::uint64_t(50 + i)), {});
+            if (i + 1 < options.outlier_patience) {
+                QCOMPARE(s.verdict, LightState::Verdict::Outlier);
+                QVERIFY(s.distance() < 0.02);
+            }
+        }
+        QVERIFY2(logDistance(tracker.state().gain, dimmer) < 0.03,
+                 qPrintable(QString("%1 %2 %3")
+                                .arg(tracker.state().gain[0])
+                                .arg(tracker.state().gain[1])
+                                .arg(tracker.state().gain[2])));
+    }
+
+    void outliersBetweenFramesOfTheStatesLightDoNotAddUp()
+    {
+        // A robot walking through the view, frame on, frame off: each odd frame as far off as the
+        // step above, never outlier_patience of them in a row.
+        LightTracker tracker(referenceTable(24), denseSampling());
+        for (int i = 0; i < 15; ++i)
+            tracker.observe(fieldFrame({1, 1, 1}, std::uint64_t(i)), Horizon{});
+        const Rgbd odd{1.12 * 0.88, 0.88, 0.88 * 0.88};
+        for (int i = 0; i < 30; ++i) {
+            const LightState& s =
+                tracker.observe(fieldFrame(i % 2 ? Rgbd{1, 1, 1} : odd, std::uint64_t(50 + i)), {});
+            QVERIFY2(s.distance() < 0.02, qPrintable(QString("frame %1").arg(i)));
+        }
     }
 
     void aChangeOfViewIsNotAChangeOfLight()

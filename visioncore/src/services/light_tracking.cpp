@@ -105,6 +105,12 @@ std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
     return map;
 }
 
+/// The largest |difference| of two ln gains, over the channels.
+double logStep(const std::array<double, 3>& a, const std::array<double, 3>& b)
+{
+    return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
+}
+
 /// The median of `v`, reordered.
 double medianOf(std::vector<double>& v)
 {
@@ -302,6 +308,7 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         for (std::size_t c = 0; c < 3; ++c)
             if (std::abs(r.log[c] - r.log[1] - mean[c]) > m_options.max_disagreement) {
                 m_state.verdict = LightState::Verdict::Inconsistent;
+                m_outlier_run.clear(); // not the light's doing, so no run of it either
                 return;
             }
     std::array<double, 3> estimate{};
@@ -335,13 +342,30 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
             m_recent.size() < 3 ? std::log(m_state.gain[c]) : fitAt(c, double(m_recent.size()));
         step = std::max(step, std::abs(log_estimate[c] - expected));
     }
-    if (step > m_options.max_step && ++m_outliers_in_a_row < m_options.outlier_patience) {
-        m_state.verdict = LightState::Verdict::Outlier;
+    if (step > m_options.max_step) {
+        // A lasting change (a bank of lights off, a cloud over a window) gives outliers frame
+        // after frame, each near the last; a flash or a view of something else gives one or two,
+        // between frames that agree with the state (on B-Human's log at most two in a row). A run
+        // of outlier_patience such frames is the light: start over from them.
+        if (!m_outlier_run.empty() &&
+            logStep(m_outlier_run.back(), log_estimate) > m_options.max_step)
+            m_outlier_run.clear();
+        m_outlier_run.push_back(log_estimate);
+        if (int(m_outlier_run.size()) < m_options.outlier_patience) {
+            m_state.verdict = LightState::Verdict::Outlier;
+            return;
+        }
+        m_recent.assign(m_outlier_run.begin(), m_outlier_run.end());
+        m_outlier_run.clear();
+        while (m_recent.size() > std::size_t(m_options.median_window))
+            m_recent.pop_front();
+        for (std::size_t c = 0; c < 3; ++c)
+            m_state.gain[c] = std::exp(fitAt(c, double(m_recent.size() - 1)));
+        m_state.verdict = LightState::Verdict::Followed;
+        m_seen.setInputMap(m_maps.mapFor(m_state));
         return;
     }
-    if (step > m_options.max_step)
-        m_recent.clear(); // the light has changed for good: start over from the new one
-    m_outliers_in_a_row = 0;
+    m_outlier_run.clear();
     m_recent.push_back(log_estimate);
     while (m_recent.size() > std::size_t(m_options.median_window))
         m_recent.pop_front();

@@ -29,7 +29,9 @@ struct LightTrackingOptions
     std::size_t min_samples = 40;   ///< carpet and white samples a frame needs to count
     double max_step = 0.12;         ///< largest |ln gain| a frame may move from the state
     double max_disagreement = 0.04; ///< ln; classes further apart than this do not agree
-    int outlier_patience = 20;      ///< outlying frames in a row after which the light has changed
+    int outlier_patience = 4;       ///< outliers in a row, each within max_step of the last,
+                                    ///< after which the light has changed (frames with too
+                                    ///< few samples do not break the row, others do)
     int median_window = 7;          ///< accepted estimates the course is fitted through
     double smoothing = 0.5;         ///< share of the way to the course that the state moves
 };
@@ -100,10 +102,10 @@ private:
     ColourLut m_seen; ///< the table through m_state's map, that classifies the samples
     std::array<ClassSums, 2> m_reference; ///< carpet and white under the table's light
     int m_reference_frames = 0;
-    int m_outliers_in_a_row = 0;
-    std::deque<std::array<double, 3>> m_recent; ///< ln of the latest accepted estimates
-    std::vector<double> m_scratch;              ///< the course's slopes and intercepts
-    mutable std::vector<int> m_first_row;       ///< sample(): each sampled column's first row
+    std::vector<std::array<double, 3>> m_outlier_run; ///< ln of the outliers in a row
+    std::deque<std::array<double, 3>> m_recent;       ///< ln of the latest accepted estimates
+    std::vector<double> m_scratch;                    ///< the course's slopes and intercepts
+    mutable std::vector<int> m_first_row;             ///< sample(): each sampled column's first row
 };
 
 struct LightTrack
