@@ -4,6 +4,7 @@
 // cancel stops a scan; and the detection delta is reported per percept kind.
 #include "support/test_suite.h"
 #include "support/synthetic_frames.h"
+#include "support/light_ramp.h"
 #include "support/test_images.h"
 
 #include "visioncore/percepts/ball.h"
@@ -11,6 +12,7 @@
 #include "visioncore/percepts/obstacle.h"
 #include "visioncore/services/edit_effect.h"
 #include "visioncore/services/evaluation.h"
+#include "visioncore/services/light_tracking.h"
 
 #include <QtTest>
 
@@ -179,6 +181,78 @@ private slots:
         const EditEffectProgress all = scan(scanner, settings);
         QVERIFY(all.finished);
         QCOMPARE(CountingStage::runs.load(), int(kFrames));
+    }
+
+    void followingTheLightTheEditIsCountedAndRunInEachFramesLight()
+    {
+        // The frames under a light warming and dimming to the end, as the window following the
+        // light reads them: each through its light's map (trackLight with the edited table).
+        QTemporaryDir dir;
+        const QString ramp = dir.filePath(QStringLiteral("ramp"));
+        QCOMPARE(test::writeLightRamp(QString::fromStdString(test::sampleStreamsDir() + "/lab1"),
+                                      ramp, {1.3 * 0.85, 0.85, 0.7 * 0.85}),
+                 QString());
+        const std::string stream = ramp.toStdString();
+        EditEffectScanner scanner;
+        scanner.setThreads(2);
+        scanner.setStream(stream);
+        const auto before = lab1Lut();
+        const auto after = withoutOrange(*before);
+        EditEffectJob record{nullptr, before};
+        record.adapt = LightTrackingOptions{};
+        QVERIFY(scan(scanner, record).finished);
+        EditEffectJob edit{before, after};
+        edit.adapt = LightTrackingOptions{};
+        const EditEffectProgress p = scan(scanner, edit);
+        QVERIFY2(p.error.empty(), p.error.c_str());
+        QVERIFY(p.finished);
+
+        auto reader = openStream(stream);
+        QVERIFY(reader);
+        const std::size_t frames = reader.value()->info().frame_count;
+        QCOMPARE(p.effects.size(), frames);
+        const LightTrack track = trackLight(*reader.value(), after, frames);
+        QCOMPARE(track.frames.size(), frames);
+        // Balls by an independent run following the light with the table before.
+        auto input = openStreamInput(stream, test::sampleStreamsDir() + "/lab1/default.lut");
+        QVERIFY(input);
+        input.value().adapt = LightTrackingOptions{};
+        auto run = runStream(input.value(), firstFrames(frames), 1);
+        QVERIFY(run);
+        int mapped = 0;
+        int differs_from_static = 0;
+        for (std::size_t i = 0; i < frames; ++i) {
+            auto frame = reader.value()->read(i);
+            QVERIFY(frame);
+            ColourLut a = *after;
+            ColourLut b = *before;
+            a.setInputMap(track.frames[i].makeMap());
+            b.setInputMap(a.inputMap());
+            mapped += a.inputMap() != nullptr;
+            const cv::Mat& px = frame.value().ycbcr;
+            std::uint32_t changed = 0;
+            std::uint32_t unclassified = 0;
+            std::uint32_t orange_as_it_is = 0;
+            for (int y = 0; y < px.rows; ++y)
+                for (int x = 0; x < px.cols; ++x) {
+                    const cv::Vec3b c = px.at<cv::Vec3b>(y, x);
+                    const Colour now = a.classify(c[0], c[1], c[2]);
+                    changed += now != b.classify(c[0], c[1], c[2]);
+                    unclassified += now == Colour::Unclassified;
+                    orange_as_it_is += before->classify(c[0], c[1], c[2]) == Colour::Orange;
+                }
+            const FrameEffect& e = p.effects[i];
+            QVERIFY(e.done);
+            QCOMPARE(e.changed_pixels, changed);
+            QCOMPARE(e.unclassified, unclassified);
+            differs_from_static += changed != orange_as_it_is;
+            const int n = int(run.value().frames[i].percepts.list<Ball>().size());
+            QCOMPARE(e.delta.of("balls").vanished, n);
+        }
+        // The light moved far enough that some frames were read through a map, and there the
+        // counts are not those of the table as it is.
+        QVERIFY(mapped > 0);
+        QVERIFY(differs_from_static > 0);
     }
 
     void anUnreadableFrameIsMarkedAndTheScanGoesOn()

@@ -6,6 +6,8 @@
 #include "support/light_ramp.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
+#include "ui/scans/edit_effect_scan.h"
+#include "ui/scans/evaluation_scan.h"
 #include "ui/scans/light_scan.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
@@ -36,6 +38,12 @@ int pixelsOf(MainWindow& w, Colour colour, int from)
         return -1;
     const cv::Mat below = out->classes.rowRange(from, out->classes.rows);
     return cv::countNonZero(below == int(colour));
+}
+
+/// Whether `scan` has finished a scan that covered frame `last`.
+bool scanned(const ui::EditEffectScan& scan, std::size_t last)
+{
+    return !scan.running() && scan.effects().size() > last && scan.effects()[last].done;
 }
 
 } // namespace
@@ -73,6 +81,9 @@ private slots:
         const int rows = w.session().stream().current()->classes.rows;
         const int static_green = pixelsOf(w, Colour::Green, rows / 2);
         const cv::Mat static_classes = w.session().stream().current()->classes.clone();
+        QTRY_VERIFY_WITH_TIMEOUT(scanned(w.session().effectScan(), last), 30000);
+        const std::uint32_t static_unclassified =
+            w.session().effectScan().effects()[last].unclassified;
         QVERIFY(!w.timeline().lightStrip().isVisible());
 
         auto* follow = w.findChild<QAction*>(QStringLiteral("view.follow_light"));
@@ -96,14 +107,23 @@ private slots:
         QCOMPARE(d.front(), 0.0);
         QVERIFY2(d.back() > 0.2 && d.back() > d[last / 2], qPrintable(QString::number(d.back())));
         QVERIFY(w.timeline().lightStrip().frameText(last).contains(QStringLiteral("R ×")));
-        // The edit-effect scan runs the table as it is: its counts say so while the view follows
-        // the light, in the strip's summary and the status bar.
-        const QString unfollowed = QStringLiteral("not following the light");
-        QVERIFY2(w.timeline().effectStrip().summary().contains(unfollowed),
+        // The whole-stream scans read the frames in their light too: the last frame's carpet is
+        // counted classified, and the strip's summary and the status bar say whose counts they
+        // are.
+        ui::EditEffectScan& effect = w.session().effectScan();
+        QVERIFY(effect.followsLight() && w.session().evaluation().followsLight());
+        QTRY_VERIFY_WITH_TIMEOUT(scanned(effect, last), 30000);
+        const std::uint32_t followed_unclassified = effect.effects()[last].unclassified;
+        QVERIFY2(followed_unclassified + std::uint32_t(rows) * 20 < static_unclassified,
+                 qPrintable(QString("unclassified %1 -> %2")
+                                .arg(static_unclassified)
+                                .arg(followed_unclassified)));
+        const QString followed = QStringLiteral("Following the light");
+        QVERIFY2(w.timeline().effectStrip().summary().startsWith(followed),
                  qPrintable(w.timeline().effectStrip().summary()));
         auto* status = w.findChild<QLabel*>(QStringLiteral("effect_summary"));
         QVERIFY(status);
-        QVERIFY2(status->text().contains(unfollowed), qPrintable(status->text()));
+        QVERIFY2(status->text().contains(followed), qPrintable(status->text()));
 
         // Off: the table as it is again, the same classes as before.
         follow->trigger();
@@ -113,8 +133,11 @@ private slots:
         const cv::Mat again = w.session().stream().current()->classes;
         QCOMPARE(cv::countNonZero(again != static_classes), 0);
         QVERIFY(!w.timeline().lightStrip().isVisible());
-        QVERIFY(!w.timeline().effectStrip().summary().contains(unfollowed));
-        QVERIFY(!status->text().contains(unfollowed));
+        QVERIFY(!effect.followsLight() && !w.session().evaluation().followsLight());
+        QTRY_VERIFY_WITH_TIMEOUT(scanned(effect, last), 30000);
+        QCOMPARE(effect.effects()[last].unclassified, static_unclassified);
+        QVERIFY(!w.timeline().effectStrip().summary().contains(followed));
+        QVERIFY(!status->text().contains(followed));
 
         // Remembered: on at the close, on in the next window.
         follow->trigger();

@@ -320,8 +320,7 @@ private slots:
         // The status line says which frame and why.
         QSlider slider(Qt::Horizontal);
         slider.setRange(0, 4);
-        const ui::LightScan light; // not following the light
-        ui::EffectStrip strip(scan, light, slider);
+        ui::EffectStrip strip(scan, slider);
         QVERIFY2(strip.summary().contains("unreadable frame 1: ") &&
                      strip.summary().contains("frame_000001.png"),
                  qPrintable(strip.summary()));

@@ -72,6 +72,9 @@ EditingSession::EditingSession(const Pipeline& pipeline, QObject* parent)
     connect(m_lut, &LutDocument::changed, m_light, [this] { m_light->setLut(m_lut->version()); });
     connect(m_light, &LightScan::trackChanged, m_stream,
             [this] { m_stream->setLight(m_light->track()); });
+    // The whole-stream scans then read the frames in their light too, as the view does.
+    connect(m_light, &LightScan::enabledChanged, m_effect, &EditEffectScan::setFollowLight);
+    connect(m_light, &LightScan::enabledChanged, m_evaluation, &EvaluationScan::setFollowLight);
 
     // Whatever reads the stream's frames reads them turned as the window shows them.
     connect(m_stream, &StreamDocument::orientationChanged, this, [this] {

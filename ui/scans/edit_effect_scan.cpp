@@ -63,6 +63,14 @@ void EditEffectScan::setSettings(std::shared_ptr<const ParamSet> params,
     m_delay.start();
 }
 
+void EditEffectScan::setFollowLight(bool on)
+{
+    if (on == m_follow_light)
+        return;
+    m_follow_light = on;
+    setSettings(m_params, m_skip); // every frame read otherwise: none of their results holds
+}
+
 void EditEffectScan::edited(std::shared_ptr<const ColourLut> before,
                             std::shared_ptr<const ColourLut> after)
 {
@@ -112,6 +120,8 @@ void EditEffectScan::start()
     EditEffectJob job = std::move(*m_pending);
     m_pending.reset();
     job.rerun_all = m_settings_changed;
+    if (m_follow_light)
+        job.adapt = LightTrackingOptions{};
     m_shows_settings = m_settings_changed;
     m_settings_changed = false;
     m_shows_edit = job.before != nullptr;

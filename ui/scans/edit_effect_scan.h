@@ -52,6 +52,10 @@ public:
     /// The pipeline settings the scans use; a change records every frame's detections again.
     void setSettings(std::shared_ptr<const ParamSet> params,
                      std::set<std::string, std::less<>> skip);
+    /// Follow the light (as the window's View > Follow the light): each frame is run and
+    /// counted through its light's map, as --adapt does; a switch is a change of the settings.
+    void setFollowLight(bool on);
+    bool followsLight() const { return m_follow_light; }
     QString stream() const { return m_spec; }
     /// The table went from `before` (null: the last table given) to `after`: every frame is
     /// scanned again.
@@ -104,6 +108,7 @@ private:
     std::shared_ptr<const ColourLut> m_lut; ///< the newest table
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> m_skip;
+    bool m_follow_light = false;
     bool m_settings_changed = false; ///< since the last job started
     bool m_shows_settings = false;
 

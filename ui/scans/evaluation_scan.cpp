@@ -36,6 +36,7 @@ struct EvaluationScan::Job
     std::shared_ptr<const ColourLut> lut;
     std::shared_ptr<const ParamSet> params;
     std::vector<std::string> skip;
+    bool follow_light = false;
     int threads = 0;
     std::shared_ptr<ScanGate> gate; ///< passed before each frame (null: none)
     std::shared_ptr<const Annotations> truth;
@@ -102,6 +103,8 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
         input.lut = job->lut;
         input.params = *job->params;
         input.skip = job->skip;
+        if (job->follow_light)
+            input.adapt = LightTrackingOptions{};
         RunHooks hooks;
         hooks.cancel = &job->cancel;
         hooks.progress = [&job](std::size_t done, std::size_t total) {
@@ -110,7 +113,7 @@ EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
         };
         if (job->gate)
             hooks.pause = [&job] { job->gate->pass(&job->cancel); };
-        hooks.prefilter = [](std::size_t, const Frame&) {
+        hooks.prefilter = [](std::size_t, const Frame&, const ColourLut&) {
             lowerThreadPriority(kEvaluationNiceness);
             return true;
         };
@@ -186,6 +189,15 @@ void EvaluationScan::setSettings(std::shared_ptr<const ParamSet> params,
 {
     m_params = params ? std::move(params) : std::make_shared<ParamSet>();
     m_skip = std::move(skip);
+    ++m_settings_serial;
+    schedule(true);
+}
+
+void EvaluationScan::setFollowLight(bool on)
+{
+    if (on == m_follow_light)
+        return;
+    m_follow_light = on;
     ++m_settings_serial;
     schedule(true);
 }
@@ -285,6 +297,7 @@ void EvaluationScan::start()
     job->lut = m_lut;
     job->params = m_params;
     job->skip.assign(m_skip.begin(), m_skip.end());
+    job->follow_light = m_follow_light;
     job->threads = m_threads;
     job->gate = m_gate;
     job->truth = m_truth;

@@ -68,6 +68,10 @@ public:
     /// The pipeline settings changed: the same.
     void setSettings(std::shared_ptr<const ParamSet> params,
                      std::set<std::string, std::less<>> skip);
+    /// Follow the light (as the window's View > Follow the light): the frames are run through
+    /// their light's map, as --adapt does; a switch is a change of the settings.
+    void setFollowLight(bool on);
+    bool followsLight() const { return m_follow_light; }
 
     /// Evaluates now, every scored frame run again (a change waiting for its quiet time is
     /// included).
@@ -136,6 +140,7 @@ private:
     std::shared_ptr<const ColourLut> m_lut;
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> m_skip;
+    bool m_follow_light = false;
     int m_settings_serial = 0; ///< which table, settings and stream detections were made with
     std::shared_ptr<const Annotations> m_truth;
     QString m_truth_path;

@@ -41,9 +41,8 @@ QString deltaText(const DetectionDelta& d)
 
 } // namespace
 
-EffectStrip::EffectStrip(const EditEffectScan& scan, const LightScan& light, const QSlider& slider,
-                         QWidget* parent)
-    : QWidget(parent), m_scan(scan), m_light(light), m_slider(slider)
+EffectStrip::EffectStrip(const EditEffectScan& scan, const QSlider& slider, QWidget* parent)
+    : QWidget(parent), m_scan(scan), m_slider(slider)
 {
     setObjectName(QStringLiteral("effect_strip"));
     setFixedHeight(22);
@@ -124,10 +123,10 @@ QString EffectStrip::summary() const
                                .arg(first)
                                .arg(reason);
     }
-    // The scan runs the table as it is: while the view follows the light, its counts are not
-    // what the frames show. Said first, where the status bar does not cut it.
-    if (m_light.enabled())
-        text = tr("Table as it is, not following the light: %1").arg(text);
+    // Whether the counts are of the table as it is or following the light, as the view is
+    // (said first, where the status bar does not cut it).
+    if (m_scan.followsLight())
+        text = tr("Following the light: %1").arg(text);
     if (!scanning && m_scan.lastScanMs() >= 0)
         text += tr(" (%1 s)").arg(m_scan.lastScanMs() / 1000.0, 0, 'f', 2);
     return text;

@@ -4,7 +4,6 @@
 #pragma once
 
 #include "ui/scans/edit_effect_scan.h"
-#include "ui/scans/light_scan.h"
 
 #include <QWidget>
 
@@ -16,10 +15,8 @@ class EffectStrip : public QWidget
 {
     Q_OBJECT
 public:
-    /// Frames are placed where `slider` puts them, so the strip lines up with it. `light`: whether
-    /// the window follows the light, which the scan does not (the summary says so).
-    EffectStrip(const EditEffectScan& scan, const LightScan& light, const QSlider& slider,
-                QWidget* parent = nullptr);
+    /// Frames are placed where `slider` puts them, so the strip lines up with it.
+    EffectStrip(const EditEffectScan& scan, const QSlider& slider, QWidget* parent = nullptr);
 
     /// The frame under x (widget px), or -1 when there are no frames.
     long long frameAt(int x) const;
@@ -39,7 +36,6 @@ private:
     std::pair<double, double> span() const;
 
     const EditEffectScan& m_scan;
-    const LightScan& m_light;
     const QSlider& m_slider;
 };
 

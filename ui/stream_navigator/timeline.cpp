@@ -27,7 +27,7 @@ Timeline::Timeline(EditingSession& session, StreamNavigator& navigator) : m_sess
     m_scores_change->setSizePolicy(keep);
     m_scores_change->hide();
     navigator.addTimelineStrip(m_scores_change);
-    m_effect = new EffectStrip(session.effectScan(), session.lightScan(), slider, &navigator);
+    m_effect = new EffectStrip(session.effectScan(), slider, &navigator);
     navigator.addTimelineStrip(m_effect);
     QObject::connect(m_effect, &EffectStrip::frameClicked, &navigator, &StreamNavigator::goToFrame);
     QObject::connect(&slider, &QSlider::valueChanged, m_effect, qOverload<>(&QWidget::update));

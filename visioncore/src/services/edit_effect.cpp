@@ -4,9 +4,53 @@
 #include "visioncore/services/lut_compare.h"
 
 #include <exception>
+#include <memory>
+#include <mutex>
 #include <utility>
 
 namespace fieldsight {
+
+namespace {
+
+/// The table before the edit, read through the light of the frame each worker is on: a copy per
+/// worker (its input map set frame by frame), so frames under different lights run side by side.
+class BeforeThroughLight
+{
+public:
+    explicit BeforeThroughLight(std::shared_ptr<const ColourLut> before)
+        : m_before(std::move(before))
+    {
+    }
+
+    /// `after` (with its input map) against the table before, through that map.
+    PixelTally tally(const ColourLut& after, const cv::Mat& ycbcr)
+    {
+        if (!m_before)
+            return tallyThroughMap(nullptr, after, ycbcr);
+        std::unique_ptr<ColourLut> copy;
+        {
+            std::lock_guard lock(m_mutex);
+            if (!m_free.empty()) {
+                copy = std::move(m_free.back());
+                m_free.pop_back();
+            }
+        }
+        if (!copy)
+            copy = std::make_unique<ColourLut>(*m_before);
+        copy->setInputMap(after.inputMap());
+        const PixelTally tally = tallyThroughMap(copy.get(), after, ycbcr);
+        std::lock_guard lock(m_mutex);
+        m_free.push_back(std::move(copy));
+        return tally;
+    }
+
+private:
+    std::shared_ptr<const ColourLut> m_before;
+    std::mutex m_mutex;
+    std::vector<std::unique_ptr<ColourLut>> m_free;
+};
+
+} // namespace
 
 EditEffectScanner::EditEffectScanner(const Pipeline& pipeline) : m_pipeline(pipeline) {}
 
@@ -17,6 +61,7 @@ void EditEffectScanner::setStream(std::string path, StreamOptions options)
     m_input.reset();
     m_previous.clear();
     m_previous_lut.clear();
+    m_previous_map.clear();
 }
 
 void EditEffectScanner::clearResults()
@@ -58,14 +103,17 @@ void EditEffectScanner::run(const EditEffectJob& job)
             m_input.emplace(std::move(input));
             m_previous.assign(m_input->info().frame_count, std::nullopt);
             m_previous_lut.assign(m_input->info().frame_count, nullptr);
+            m_previous_map.assign(m_input->info().frame_count, nullptr);
         }
         StreamInput& input = *m_input;
         input.lut = job.after;
         input.params = *job.params;
         input.skip.assign(job.skip.begin(), job.skip.end());
+        input.adapt = job.adapt;
         const CellMask mask =
             job.before ? CellMask::differences(*job.before, *job.after) : CellMask();
         const PixelTallier tally_pixels(*job.after, mask);
+        BeforeThroughLight before_through_light(job.before);
         const std::size_t frames = input.info().frame_count;
         const int width = input.info().width;
         const int height = input.info().height;
@@ -88,19 +136,26 @@ void EditEffectScanner::run(const EditEffectJob& job)
             ++m_progress.done;
         };
         std::vector<PixelTally> tallies(frames);
+        std::vector<std::shared_ptr<const LutInputMap>> frame_maps(frames);
         RunHooks hooks;
         hooks.cancel = &m_cancel;
         hooks.pause = m_gate; // before each frame's read and its run
         // A frame none of whose pixels changed class keeps its result: the pipeline runs only
-        // where the edit shows (or everywhere when the settings changed).
-        hooks.prefilter = [&](std::size_t index, const Frame& frame) {
+        // where the edit shows (or everywhere when the settings changed). Following the light,
+        // a frame read through a map is counted through it, and its result holds only if it was
+        // read through the same map.
+        hooks.prefilter = [&](std::size_t index, const Frame& frame, const ColourLut& table) {
             lowerThreadPriority(); // the scan yields to the window and its frame worker
-            tallies[index] = tally_pixels(frame.ycbcr);
+            tallies[index] = table.inputMap() ? before_through_light.tally(table, frame.ycbcr)
+                                              : tally_pixels(frame.ycbcr);
             const bool unchanged = job.before && !job.rerun_all && tallies[index].in_mask == 0 &&
-                                   m_previous[index] && m_previous_lut[index] == job.before;
+                                   m_previous[index] && m_previous_lut[index] == job.before &&
+                                   m_previous_map[index] == table.inputMap();
+            frame_maps[index] = table.inputMap();
             if (!unchanged)
                 return true;
             m_previous_lut[index] = job.after;
+            m_previous_map[index] = frame_maps[index];
             record(index, tallies[index], {});
             return false;
         };
@@ -123,6 +178,7 @@ void EditEffectScanner::run(const EditEffectJob& job)
                 delta = compareDetections(*previous, result.percepts, width, height, kinds);
             previous = result.percepts; // one frame per index: no other thread writes it
             m_previous_lut[index] = job.after;
+            m_previous_map[index] = frame_maps[index];
             record(index, tallies[index], delta);
             return {};
         };

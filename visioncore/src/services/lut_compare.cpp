@@ -84,6 +84,27 @@ PixelTally PixelTallier::operator()(const cv::Mat& ycbcr) const
     return tally;
 }
 
+PixelTally tallyThroughMap(const ColourLut* before, const ColourLut& after, const cv::Mat& ycbcr)
+{
+    PixelTally tally;
+    if (ycbcr.type() != CV_8UC3)
+        return tally;
+    std::vector<std::uint8_t> a(std::size_t(ycbcr.cols));
+    std::vector<std::uint8_t> b(std::size_t(ycbcr.cols));
+    for (int row = 0; row < ycbcr.rows; ++row) {
+        const std::uint8_t* px = ycbcr.ptr<std::uint8_t>(row);
+        after.classifyRun(px, 3, ycbcr.cols, a.data());
+        if (before)
+            before->classifyRun(px, 3, ycbcr.cols, b.data());
+        for (std::size_t col = 0; col < a.size(); ++col) {
+            tally.unclassified += a[col] == std::uint8_t(Colour::Unclassified);
+            tally.in_mask += before && a[col] != b[col];
+        }
+    }
+    tally.pixels = std::size_t(ycbcr.rows) * std::size_t(ycbcr.cols);
+    return tally;
+}
+
 cv::Mat pixelsIn(const cv::Mat& ycbcr, const CellMask& mask)
 {
     cv::Mat out(ycbcr.rows, ycbcr.cols, CV_8U, cv::Scalar(0));

@@ -97,7 +97,7 @@ Result<std::vector<HeldFrame>> readScoredFrames(StreamInput& input, const Annota
     std::mutex mutex;
     std::map<std::size_t, Frame> decoded;
     RunHooks hooks;
-    hooks.prefilter = [&](std::size_t index, const Frame& frame) {
+    hooks.prefilter = [&](std::size_t index, const Frame& frame, const ColourLut&) {
         Frame copy = frame;
         copy.ycbcr = frame.ycbcr.clone(); // the reader may reuse its buffer
         const std::lock_guard lock(mutex);

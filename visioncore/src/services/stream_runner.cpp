@@ -291,7 +291,8 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
                         adapted->setInputMap(maps.mapFor(light[indices[pos]]));
                     if (!pausedThenGoOn())
                         break;
-                    if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame())) {
+                    if (hooks.prefilter && !hooks.prefilter(indices[pos], data.frame(),
+                                                            adapted ? *adapted : *input.lut)) {
                         leaveOut(pos, data.frame().name);
                         continue;
                     }

@@ -8,6 +8,7 @@
 #include "visioncore/framework/controller.h"
 #include "visioncore/framework/param_set.h"
 #include "visioncore/services/evaluation.h"
+#include "visioncore/services/light_tracking.h"
 #include "visioncore/services/stream_runner.h"
 
 #include <atomic>
@@ -44,6 +45,10 @@ struct EditEffectJob
     std::shared_ptr<const ParamSet> params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> skip{}; ///< stage ids switched off
     bool rerun_all = false; ///< the settings changed: no earlier result still holds
+    /// Follow the light (as --adapt, from frame 0 with `after`): each frame is run, and its
+    /// pixels counted, through the input map of its light, as the window shows it. Set it on
+    /// every job while the window follows the light (rerun_all when it is switched).
+    std::optional<LightTrackingOptions> adapt{};
 };
 
 /// How far a scan has got, copied under the scanner's lock.
@@ -104,8 +109,9 @@ private:
     std::string m_path;
     StreamOptions m_options;
     std::optional<StreamInput> m_input;
-    std::vector<std::optional<PerceptSet>> m_previous;            ///< each frame's last result
-    std::vector<std::shared_ptr<const ColourLut>> m_previous_lut; ///< the table it was run with
+    std::vector<std::optional<PerceptSet>> m_previous;              ///< each frame's last result
+    std::vector<std::shared_ptr<const ColourLut>> m_previous_lut;   ///< the table it was run with
+    std::vector<std::shared_ptr<const LutInputMap>> m_previous_map; ///< and its light's map
 };
 
 } // namespace fieldsight

@@ -59,6 +59,11 @@ public:
 private:
     std::vector<std::uint8_t> m_flags;
 };
+/// A frame's pixels as two tables read them through the same input map (a light the tables
+/// follow): `in_mask` counts the pixels the two read as different classes, `unclassified` those
+/// `after` leaves unclassified. `before` may be null (nothing is compared). Two memo lookups a
+/// pixel: for frames PixelTallier cannot read, whose pixels go through a map first.
+PixelTally tallyThroughMap(const ColourLut* before, const ColourLut& after, const cv::Mat& ycbcr);
 /// A CV_8U image, 255 where the frame's pixel falls in a cell of `mask`, else 0.
 cv::Mat pixelsIn(const cv::Mat& ycbcr, const CellMask& mask);
 

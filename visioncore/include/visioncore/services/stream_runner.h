@@ -78,9 +78,11 @@ struct RunHooks
     /// Called for every frame once it is done, with its image and the requested drawings; an
     /// error stops the run (a failure, as for an output that cannot be written).
     std::function<Status(const FrameResult&, const Frame&, const DebugCanvas&)> on_frame;
-    /// Called with each frame once it is read, before the pipeline: false leaves the frame out
-    /// (its FrameResult keeps only its index and name, and on_frame is not called for it).
-    std::function<bool(std::size_t index, const Frame&)> prefilter;
+    /// Called with each frame once it is read, before the pipeline, and the table the pipeline
+    /// will read it with (with StreamInput::adapt, through the input map of the frame's light):
+    /// false leaves the frame out (its FrameResult keeps only its index and name, and on_frame
+    /// is not called for it).
+    std::function<bool(std::size_t index, const Frame&, const ColourLut& table)> prefilter;
     /// When set, a frame that cannot be read (a damaged file in a folder, a bad record) is handed
     /// to it with the reader's message and the run goes on (its FrameResult keeps only its index
     /// and name, as a prefiltered frame). Unset, such a frame is the run's Error. Called from the
