@@ -118,12 +118,12 @@ private slots:
                  qPrintable(QString("unclassified %1 -> %2")
                                 .arg(static_unclassified)
                                 .arg(followed_unclassified)));
-        const QString followed = QStringLiteral("Following the light");
-        QVERIFY2(w.timeline().effectStrip().summary().startsWith(followed),
+        const QString switched_on = QStringLiteral("Follow the light switched on, over");
+        QVERIFY2(w.timeline().effectStrip().summary().startsWith(switched_on),
                  qPrintable(w.timeline().effectStrip().summary()));
         auto* status = w.findChild<QLabel*>(QStringLiteral("effect_summary"));
         QVERIFY(status);
-        QVERIFY2(status->text().contains(followed), qPrintable(status->text()));
+        QVERIFY2(status->text().contains(switched_on), qPrintable(status->text()));
 
         // Off: the table as it is again, the same classes as before.
         follow->trigger();
@@ -136,8 +136,10 @@ private slots:
         QVERIFY(!effect.followsLight() && !w.session().evaluation().followsLight());
         QTRY_VERIFY_WITH_TIMEOUT(scanned(effect, last), 30000);
         QCOMPARE(effect.effects()[last].unclassified, static_unclassified);
-        QVERIFY(!w.timeline().effectStrip().summary().contains(followed));
-        QVERIFY(!status->text().contains(followed));
+        QVERIFY2(w.timeline().effectStrip().summary().startsWith(
+                     QStringLiteral("Follow the light switched off, over")),
+                 qPrintable(w.timeline().effectStrip().summary()));
+        QVERIFY(!status->text().contains(QStringLiteral("Following the light")));
 
         // Remembered: on at the close, on in the next window.
         follow->trigger();

@@ -35,6 +35,7 @@ void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const Colour
     m_scanner.setStream(toLocalPath(m_spec), options);
     m_shows_edit = false;
     m_shows_settings = false;
+    m_shows_light_switch = false;
     m_lut = std::move(lut);
     m_pending.reset();
     if (m_spec.isEmpty() || !m_lut)
@@ -49,6 +50,12 @@ void EditEffectScan::setSettings(std::shared_ptr<const ParamSet> params,
 {
     m_params = params ? std::move(params) : std::make_shared<ParamSet>();
     m_skip = std::move(skip);
+    m_params_changed = true;
+    rerunForSettings();
+}
+
+void EditEffectScan::rerunForSettings()
+{
     m_settings_changed = true;
     if (m_spec.isEmpty() || !m_lut)
         return;
@@ -68,7 +75,8 @@ void EditEffectScan::setFollowLight(bool on)
     if (on == m_follow_light)
         return;
     m_follow_light = on;
-    setSettings(m_params, m_skip); // every frame read otherwise: none of their results holds
+    m_light_switched = true;
+    rerunForSettings(); // every frame read otherwise: none of their results holds
 }
 
 void EditEffectScan::edited(std::shared_ptr<const ColourLut> before,
@@ -123,7 +131,10 @@ void EditEffectScan::start()
     if (m_follow_light)
         job.adapt = LightTrackingOptions{};
     m_shows_settings = m_settings_changed;
+    m_shows_light_switch = m_light_switched && !m_params_changed;
     m_settings_changed = false;
+    m_light_switched = false;
+    m_params_changed = false;
     m_shows_edit = job.before != nullptr;
     clearResults(); // and forgets the cancel that stopped the last scan
     m_started = m_requested;

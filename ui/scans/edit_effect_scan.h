@@ -71,6 +71,8 @@ public:
     bool showsEdit() const { return m_shows_edit; }
     /// The scan shown includes a change of the parameters or stage switches.
     bool showsSettingsChange() const { return m_shows_settings; }
+    /// The scan shown is of Follow the light switched (followsLight(): on), nothing else.
+    bool showsLightSwitch() const { return m_shows_light_switch; }
     /// ms from the edit (or the settings change) to the scan's last frame (negative while none
     /// has finished).
     double lastScanMs() const { return m_last_scan_ms; }
@@ -93,6 +95,8 @@ private:
     /// Empties the shown and the scanner's results, and starts a new generation.
     void clearResults();
     void start();
+    /// A change of how every frame is run (the settings, following the light): all run again.
+    void rerunForSettings();
     void collect(); ///< on the GUI thread
 
     EditEffectScanner m_scanner;
@@ -109,6 +113,9 @@ private:
     std::shared_ptr<const ParamSet> m_params = std::make_shared<ParamSet>();
     std::set<std::string, std::less<>> m_skip;
     bool m_follow_light = false;
+    bool m_params_changed = false; ///< since the last job started
+    bool m_light_switched = false; ///< since the last job started
+    bool m_shows_light_switch = false;
     bool m_settings_changed = false; ///< since the last job started
     bool m_shows_settings = false;
 
