@@ -252,11 +252,19 @@ private slots:
         const cv::Vec3b dark = ycbcrOf(times(kOrange, {0.8, 0.8, 0.8}));
         const cv::Vec3b carpet = ycbcrOf(kCarpet);
         lut.setCell(ColourLut::index(carpet[0], carpet[1], carpet[2]), Colour::Green);
-        // A carpet pixel whose brighter self would be unclassified stays carpet.
+        // A carpet pixel whose brighter self would be unclassified stays carpet; a run of pixels
+        // reads as each pixel does.
         const auto check = [&] {
             QCOMPARE(lut.classify(dark[0], dark[1], dark[2]), Colour::Orange);
             QCOMPARE(lut.classify(carpet[0], carpet[1], carpet[2]), Colour::Green);
             QCOMPARE(lut.classify(orange[0], orange[1], orange[2]), Colour::Orange);
+            const std::uint8_t run[] = {dark[0],   dark[1],   dark[2],   carpet[0], carpet[1],
+                                        carpet[2], orange[0], orange[1], orange[2]};
+            std::uint8_t classes[3] = {};
+            lut.classifyRun(run, 3, 3, classes);
+            QCOMPARE(Colour(classes[0]), Colour::Orange);
+            QCOMPARE(Colour(classes[1]), Colour::Green);
+            QCOMPARE(Colour(classes[2]), Colour::Orange);
         };
         lut.setInputMap(map);
         check(); // through the memo

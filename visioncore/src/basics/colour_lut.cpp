@@ -146,7 +146,7 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
     }
     if (!m_memo_cells) { // a cell was set since the map was: no memo until it is set again
         for (int i = 0; i < count; ++i, px += stride)
-            out[i] = m_cells[m_map->index(px[0], px[1], px[2])];
+            out[i] = readThroughMap(index(px[0], px[1], px[2]));
         return;
     }
     memoRun(m_memo_cells, px, stride, count, out);
