@@ -33,7 +33,7 @@ struct LightTrackingOptions
                                     ///< after which the light has changed (frames with too
                                     ///< few samples do not break the row, others do)
     int median_window = 7;          ///< accepted estimates the course is fitted through
-    double smoothing = 0.5;         ///< share of the way to the course that the state moves
+    double smoothing = 0.75;        ///< share of the way to the course that the state moves
 };
 
 /// The light of one frame, relative to the light the table was made for.
