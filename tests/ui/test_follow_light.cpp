@@ -4,6 +4,7 @@
 // moved, switching it off gives the table as it is again, and the window remembers the switch.
 #include "support/test_suite.h"
 #include "support/light_ramp.h"
+#include "support/child_process.h"
 #include "support/test_files.h"
 #include "support/window_waits.h"
 #include "ui/scans/edit_effect_scan.h"
@@ -11,14 +12,18 @@
 #include "ui/scans/light_scan.h"
 #include "ui/main_window.h"
 #include "ui/settings/window_settings.h"
+#include "ui/panels/evaluation_panel.h"
 #include "ui/stream_navigator/effect_strip.h"
 #include "ui/stream_navigator/light_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
 
 #include <QAction>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -124,6 +129,26 @@ private slots:
         auto* status = w.findChild<QLabel*>(QStringLiteral("effect_summary"));
         QVERIFY(status);
         QVERIFY2(status->text().contains(switched_on), qPrintable(status->text()));
+        // The evaluation panel scores the frames in their light: its counts are eval --adapt's.
+        QVERIFY(waitForEvaluation(w));
+        const QString json = m_dir.filePath("adapt_eval.json");
+        const Outcome o =
+            runChild(FIELDSIGHT_EXE,
+                     {"eval", m_stream.toStdString(), "--adapt", "--json", json.toStdString()},
+                     m_dir.path().toStdString(), RLIM_INFINITY, false, 120);
+        QVERIFY2(o.status == 0, o.err.c_str());
+        const QJsonObject classes =
+            QJsonDocument::fromJson(fileBytes(json)).object().value("classes").toObject();
+        const QStringList names{"ball", "goalpost", "obstacle", "field_line"};
+        const QTableWidget& scores = w.evaluationPanel().scores();
+        QCOMPARE(scores.rowCount(), names.size());
+        for (int r = 0; r < names.size(); ++r) {
+            const QJsonObject c = classes.value(names[r]).toObject();
+            QVERIFY2(!c.isEmpty(), qPrintable(names[r]));
+            for (const auto& [column, key] : {std::pair{1, "tp"}, {2, "fp"}, {3, "fn"}})
+                QCOMPARE(scores.item(r, column)->text(), QString::number(c.value(key).toInt()));
+        }
+        QVERIFY(classes.value("ball").toObject().value("tp").toInt() > 0);
 
         // Off: the table as it is again, the same classes as before.
         follow->trigger();
