@@ -316,30 +316,13 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         estimate[c] = std::exp(level + colour[c]);
     m_state.estimate = estimate;
 
-    // The light's course: a robust line (Theil-Sen) through the recent accepted estimates, so a
-    // steady change is followed without lag and one odd frame moves nothing. A frame is judged
-    // an outlier against where that line says the light is now.
-    const auto fitAt = [this](std::size_t c, double x) {
-        const std::size_t n = m_recent.size();
-        std::vector<double>& slopes = m_scratch;
-        slopes.clear();
-        for (std::size_t a = 0; a < n; ++a)
-            for (std::size_t b = a + 1; b < n; ++b)
-                slopes.push_back((m_recent[b][c] - m_recent[a][c]) / double(b - a));
-        const double slope =
-            slopes.empty() ? 0.0 : std::clamp(medianOf(slopes), -kMaxSlope, kMaxSlope);
-        std::vector<double>& intercepts = m_scratch;
-        intercepts.clear();
-        for (std::size_t a = 0; a < n; ++a)
-            intercepts.push_back(m_recent[a][c] - slope * double(a));
-        return medianOf(intercepts) + slope * x;
-    };
+    // A frame is judged an outlier against where the light's course says the light is now.
     std::array<double, 3> log_estimate{};
     double step = 0;
     for (std::size_t c = 0; c < 3; ++c) {
         log_estimate[c] = std::log(estimate[c]);
         const double expected =
-            m_recent.size() < 3 ? std::log(m_state.gain[c]) : fitAt(c, double(m_recent.size()));
+            m_recent.size() < 3 ? std::log(m_state.gain[c]) : courseAt(c, double(m_recent.size()));
         step = std::max(step, std::abs(log_estimate[c] - expected));
     }
     if (step > m_options.max_step) {
@@ -359,8 +342,9 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         m_outlier_run.clear();
         while (m_recent.size() > std::size_t(m_options.median_window))
             m_recent.pop_front();
+        fitCourse();
         for (std::size_t c = 0; c < 3; ++c)
-            m_state.gain[c] = std::exp(fitAt(c, double(m_recent.size() - 1)));
+            m_state.gain[c] = std::exp(courseAt(c, double(m_recent.size() - 1)));
         m_state.verdict = LightState::Verdict::Followed;
         m_seen.setInputMap(m_maps.mapFor(m_state));
         return;
@@ -369,13 +353,36 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     m_recent.push_back(log_estimate);
     while (m_recent.size() > std::size_t(m_options.median_window))
         m_recent.pop_front();
+    fitCourse();
     for (std::size_t c = 0; c < 3; ++c) {
-        const double target = fitAt(c, double(m_recent.size() - 1));
+        const double target = courseAt(c, double(m_recent.size() - 1));
         const double now = std::log(m_state.gain[c]);
         m_state.gain[c] = std::exp(now + m_options.smoothing * (target - now));
     }
     m_state.verdict = LightState::Verdict::Followed;
     m_seen.setInputMap(m_maps.mapFor(m_state));
+}
+
+void LightTracker::fitCourse()
+{
+    // A robust line (Theil-Sen) through the recent accepted estimates, so a steady change is
+    // followed without lag and one odd frame moves nothing. Fitted once each time they change:
+    // the next frame's outlier test reads the same line.
+    const std::size_t n = m_recent.size();
+    for (std::size_t c = 0; c < 3; ++c) {
+        std::vector<double>& slopes = m_scratch;
+        slopes.clear();
+        for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t b = a + 1; b < n; ++b)
+                slopes.push_back((m_recent[b][c] - m_recent[a][c]) / double(b - a));
+        const double slope =
+            slopes.empty() ? 0.0 : std::clamp(medianOf(slopes), -kMaxSlope, kMaxSlope);
+        std::vector<double>& intercepts = m_scratch;
+        intercepts.clear();
+        for (std::size_t a = 0; a < n; ++a)
+            intercepts.push_back(m_recent[a][c] - slope * double(a));
+        m_course[c] = {slope, medianOf(intercepts)};
+    }
 }
 
 const LightState& LightTracker::skip()

@@ -95,6 +95,13 @@ private:
     };
     void sample(const cv::Mat& ycbcr, const Horizon& horizon, std::array<ClassSums, 2>& sums) const;
     void follow(const std::array<ClassSums, 2>& sums, std::size_t samples);
+    /// Fits the light's course through m_recent (after every change of it).
+    void fitCourse();
+    /// The course of channel `c` at position `x` of m_recent, in ln gain.
+    double courseAt(std::size_t c, double x) const
+    {
+        return m_course[c].intercept + m_course[c].slope * x;
+    }
 
     LightTrackingOptions m_options;
     LightState m_state;
@@ -105,7 +112,13 @@ private:
     std::vector<std::array<double, 3>> m_outlier_run; ///< ln of the outliers in a row
     std::deque<std::array<double, 3>> m_recent;       ///< ln of the latest accepted estimates
     std::vector<double> m_scratch;                    ///< the course's slopes and intercepts
-    mutable std::vector<int> m_first_row;             ///< sample(): each sampled column's first row
+    struct Line
+    {
+        double slope = 0;
+        double intercept = 0;
+    };
+    std::array<Line, 3> m_course{};       ///< per channel, through m_recent (fitCourse)
+    mutable std::vector<int> m_first_row; ///< sample(): each sampled column's first row
 };
 
 struct LightTrack
