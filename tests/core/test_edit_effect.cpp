@@ -255,6 +255,40 @@ private slots:
         QVERIFY(differs_from_static > 0);
     }
 
+    void followingTheLightAnEditNoPixelReadsRunsNoFrameAgain()
+    {
+        // A cell no frame's pixel reads through any of its lights: every frame keeps its result,
+        // as without following the light.
+        QTemporaryDir dir;
+        const QString ramp = dir.filePath(QStringLiteral("ramp"));
+        QCOMPARE(test::writeLightRamp(QString::fromStdString(test::sampleStreamsDir() + "/lab1"),
+                                      ramp, {1.3 * 0.85, 0.85, 0.7 * 0.85}),
+                 QString());
+        const Pipeline pipeline = countingPipeline();
+        EditEffectScanner scanner(pipeline);
+        scanner.setThreads(2);
+        scanner.setStream(ramp.toStdString());
+        const auto before = lab1Lut();
+        ColourLut edited = *before;
+        QCOMPARE(edited.cell(0), Colour::Unclassified);
+        edited.setCell(0, Colour::Orange);
+        const auto after = std::make_shared<const ColourLut>(std::move(edited));
+        EditEffectJob record{nullptr, before};
+        record.adapt = LightTrackingOptions{};
+        QVERIFY(scan(scanner, record).finished);
+        const int frames = CountingStage::runs.load();
+        QVERIFY(frames > 20);
+        CountingStage::runs = 0;
+        EditEffectJob edit{before, after};
+        edit.adapt = LightTrackingOptions{};
+        const EditEffectProgress p = scan(scanner, edit);
+        QVERIFY(p.finished);
+        QCOMPARE(p.changed_cells, std::size_t(1));
+        for (const FrameEffect& e : p.effects)
+            QCOMPARE(e.changed_pixels, 0u);
+        QCOMPARE(CountingStage::runs.load(), 0);
+    }
+
     void anUnreadableFrameIsMarkedAndTheScanGoesOn()
     {
         QTemporaryDir dir;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <utility>
 #include <stdexcept>
@@ -76,17 +77,18 @@ std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
 {
     if (key == MapKey{0, 0, 0, 0})
         return nullptr;
-    // The maps made lately, shared: the tracker classifying its samples and the worker running
-    // the same frame ask for the same map, and a table's memo of a map is shared by the map's
-    // identity (ColourLut::setInputMap), so one map object means one memo filled once.
+    // One map object per key while anyone holds it: the tracker classifying its samples and the
+    // worker running the same frame ask for the same map, a table's memo of a map is shared by
+    // the map's identity (ColourLut::setInputMap), so one map object means one memo filled once,
+    // and the edit-effect scan knows a frame is read as before by its map's identity.
     static std::mutex mutex;
-    static std::array<std::pair<MapKey, std::weak_ptr<const LutInputMap>>, 8> recent;
-    static std::size_t next = 0;
+    static std::map<MapKey, std::weak_ptr<const LutInputMap>> made;
     std::lock_guard lock(mutex);
-    for (const auto& [made_for, map] : recent)
-        if (made_for == key)
-            if (auto shared = map.lock())
-                return shared;
+    if (const auto it = made.find(key); it != made.end())
+        if (auto shared = it->second.lock())
+            return shared;
+    if (made.size() >= 64)
+        std::erase_if(made, [](const auto& entry) { return entry.second.expired(); });
     const auto gain = [&key](std::size_t k, long level) {
         return std::exp(double(key[k] + level) * kMapStep);
     };
@@ -99,9 +101,10 @@ std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
     std::uint32_t classes = ~std::uint32_t(0);
     for (const Colour reference : kReferenceClasses)
         classes &= ~(std::uint32_t(1) << int(reference));
-    auto map = std::make_shared<const LutInputMap>(
-        LutInputMap::forRgbGain(gain(0, 0), gain(1, 0), gain(2, 0), std::move(full), classes));
-    recent[next++ % recent.size()] = {key, map};
+    // Allocated apart from its count, so that an expired entry holds no map's memory.
+    std::shared_ptr<const LutInputMap> map(new LutInputMap(
+        LutInputMap::forRgbGain(gain(0, 0), gain(1, 0), gain(2, 0), std::move(full), classes)));
+    made[key] = map;
     return map;
 }
 
@@ -212,6 +215,7 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
 const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& horizon)
 {
     CV_Assert(ycbcr.type() == CV_8UC3);
+    ++m_frame;
     std::array<ClassSums, 2> sums{};
     sample(ycbcr, horizon, sums);
     const std::size_t samples = sums[0].count + sums[1].count;
@@ -330,10 +334,14 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         // after frame, each near the last; a flash or a view of something else gives one or two,
         // between frames that agree with the state (on B-Human's log at most two in a row). A run
         // of outlier_patience such frames is the light: start over from them.
+        // Frames with too few samples between two outliers do not break the run, unless there
+        // are more than median_window of them: the run's first outliers would be stale.
         if (!m_outlier_run.empty() &&
-            logStep(m_outlier_run.back(), log_estimate) > m_options.max_step)
+            (logStep(m_outlier_run.back(), log_estimate) > m_options.max_step ||
+             m_frame - m_last_outlier > std::size_t(m_options.median_window)))
             m_outlier_run.clear();
         m_outlier_run.push_back(log_estimate);
+        m_last_outlier = m_frame;
         if (int(m_outlier_run.size()) < m_options.outlier_patience) {
             m_state.verdict = LightState::Verdict::Outlier;
             return;
@@ -387,6 +395,7 @@ void LightTracker::fitCourse()
 
 const LightState& LightTracker::skip()
 {
+    ++m_frame;
     m_state.samples = 0;
     m_state.estimate = m_state.gain;
     m_state.verdict = LightState::Verdict::Unread;

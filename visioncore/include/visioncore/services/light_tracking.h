@@ -30,8 +30,9 @@ struct LightTrackingOptions
     double max_step = 0.12;         ///< largest |ln gain| a frame may move from the state
     double max_disagreement = 0.04; ///< ln; classes further apart than this do not agree
     int outlier_patience = 4;       ///< outliers in a row, each within max_step of the last,
-                                    ///< after which the light has changed (frames with too
-                                    ///< few samples do not break the row, others do)
+                                    ///< after which the light has changed (up to median_window
+                                    ///< frames with too few samples between two do not break
+                                    ///< the row, others do)
     int median_window = 7;          ///< accepted estimates the course is fitted through
     double smoothing = 0.75;        ///< share of the way to the course that the state moves
 };
@@ -110,6 +111,8 @@ private:
     std::array<ClassSums, 2> m_reference; ///< carpet and white under the table's light
     int m_reference_frames = 0;
     std::vector<std::array<double, 3>> m_outlier_run; ///< ln of the outliers in a row
+    std::size_t m_frame = 0;                          ///< frames observed or skipped
+    std::size_t m_last_outlier = 0;                   ///< m_frame of the run's last outlier
     std::deque<std::array<double, 3>> m_recent;       ///< ln of the latest accepted estimates
     std::vector<double> m_scratch;                    ///< the course's slopes and intercepts
     struct Line
