@@ -89,6 +89,7 @@ EvaluationScan::~EvaluationScan()
 
 EvaluationScan::Outcome EvaluationScan::runJob(const std::shared_ptr<Job>& job)
 {
+    lowerThreadPriority(kEvaluationNiceness); // from the start: following the light reads first
     Outcome out;
     try {
         auto reader = openStream(job->stream, job->options);

@@ -33,10 +33,16 @@ public:
             if (!m_free.empty()) {
                 copy = std::move(m_free.back());
                 m_free.pop_back();
+            } else {
+                // The copies from one that has had a map (and so names its cells), so that
+                // they share what each cell reads through a map.
+                if (!m_prototype) {
+                    m_prototype = std::make_unique<ColourLut>(*m_before);
+                    m_prototype->setInputMap(after.inputMap());
+                }
+                copy = std::make_unique<ColourLut>(*m_prototype);
             }
         }
-        if (!copy)
-            copy = std::make_unique<ColourLut>(*m_before);
         copy->setInputMap(after.inputMap());
         const PixelTally tally = tallyThroughMap(copy.get(), after, ycbcr);
         std::lock_guard lock(m_mutex);
@@ -47,6 +53,7 @@ public:
 private:
     std::shared_ptr<const ColourLut> m_before;
     std::mutex m_mutex;
+    std::unique_ptr<ColourLut> m_prototype;
     std::vector<std::unique_ptr<ColourLut>> m_free;
 };
 
@@ -91,6 +98,8 @@ void EditEffectScanner::fail(std::string message)
 
 void EditEffectScanner::run(const EditEffectJob& job)
 {
+    // The scan yields to the window and its frame worker, its light-tracking pass included.
+    lowerThreadPriority();
     try {
         if (!m_input) {
             auto reader = openStream(m_path, m_options);

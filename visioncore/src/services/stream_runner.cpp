@@ -208,8 +208,13 @@ Result<StreamRun> runStream(StreamInput& input, const std::vector<std::size_t>& 
         input.adapt && threads == 1 && indices == firstFrames(indices.size());
     if (input.adapt && !track_in_pass && !indices.empty()) {
         const std::size_t last = *std::max_element(indices.begin(), indices.end());
+        // The caller's pause holds this pass too (a background scan while the user steps).
+        const auto pause = [&hooks](std::size_t, std::size_t) {
+            if (hooks.pause)
+                hooks.pause();
+        };
         LightTrack track =
-            trackLight(*input.reader, input.lut, last + 1, *input.adapt, {}, hooks.cancel);
+            trackLight(*input.reader, input.lut, last + 1, *input.adapt, pause, hooks.cancel);
         if (track.cancelled)
             return StreamRun{{}, {}, true};
         light = std::move(track.frames);
