@@ -36,6 +36,7 @@ void EditEffectScan::setStream(const QString& spec, std::shared_ptr<const Colour
     m_shows_edit = false;
     m_shows_settings = false;
     m_shows_light_switch = false;
+    m_shows_following = m_follow_light;
     m_lut = std::move(lut);
     m_pending.reset();
     if (m_spec.isEmpty() || !m_lut)
@@ -132,6 +133,7 @@ void EditEffectScan::start()
         job.adapt = LightTrackingOptions{};
     m_shows_settings = m_settings_changed;
     m_shows_light_switch = m_light_switched && !m_params_changed;
+    m_shows_following = m_follow_light;
     m_settings_changed = false;
     m_light_switched = false;
     m_params_changed = false;

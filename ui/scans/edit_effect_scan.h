@@ -71,8 +71,10 @@ public:
     bool showsEdit() const { return m_shows_edit; }
     /// The scan shown includes a change of the parameters or stage switches.
     bool showsSettingsChange() const { return m_shows_settings; }
-    /// The scan shown is of Follow the light switched (followsLight(): on), nothing else.
+    /// The scan shown is of Follow the light switched (showsFollowing(): on), nothing else.
     bool showsLightSwitch() const { return m_shows_light_switch; }
+    /// The scan shown followed the light (followsLight() when it started).
+    bool showsFollowing() const { return m_shows_following; }
     /// ms from the edit (or the settings change) to the scan's last frame (negative while none
     /// has finished).
     double lastScanMs() const { return m_last_scan_ms; }
@@ -116,6 +118,7 @@ private:
     bool m_params_changed = false; ///< since the last job started
     bool m_light_switched = false; ///< since the last job started
     bool m_shows_light_switch = false;
+    bool m_shows_following = false;
     bool m_settings_changed = false; ///< since the last job started
     bool m_shows_settings = false;
 

@@ -99,9 +99,11 @@ QString EffectStrip::summary() const
     if (scanning)
         detections_text += tr(" so far");
     QString text;
-    if (m_scan.showsEdit() && m_scan.showsLightSwitch() && m_scan.changedCells() == 0) {
-        text = (m_scan.followsLight() ? tr("Follow the light switched on, %1: %2")
-                                      : tr("Follow the light switched off, %1: %2"))
+    const bool light_switch =
+        m_scan.showsEdit() && m_scan.showsLightSwitch() && m_scan.changedCells() == 0;
+    if (light_switch) {
+        text = (m_scan.showsFollowing() ? tr("Follow the light switched on, %1: %2")
+                                        : tr("Follow the light switched off, %1: %2"))
                    .arg(frames, detections_text);
     } else if (m_scan.showsEdit() && m_scan.showsSettingsChange() && m_scan.changedCells() == 0) {
         text = tr("Last parameter change, %1: %2").arg(frames, detections_text);
@@ -129,7 +131,7 @@ QString EffectStrip::summary() const
     }
     // Whether the counts are of the table as it is or following the light, as the view is
     // (said first, where the status bar does not cut it).
-    if (m_scan.followsLight() && !(m_scan.showsEdit() && m_scan.showsLightSwitch()))
+    if (m_scan.showsFollowing() && !light_switch)
         text = tr("Following the light: %1").arg(text);
     if (!scanning && m_scan.lastScanMs() >= 0)
         text += tr(" (%1 s)").arg(m_scan.lastScanMs() / 1000.0, 0, 'f', 2);
