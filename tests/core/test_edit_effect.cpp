@@ -99,6 +99,12 @@ private slots:
         }
         QVERIFY(fieldsight::test::imwrite(path() + "/frame_000008.png",
                                           cv::Mat(240, 320, CV_8UC3, cv::Scalar(0, 0, 0))));
+        // The whole of lab1 under a light warming by 30% and dimming by 15% to its end.
+        QVERIFY(m_ramp_dir.isValid());
+        QCOMPARE(test::writeLightRamp(QString::fromStdString(test::sampleStreamsDir() + "/lab1"),
+                                      QString::fromStdString(rampPath()),
+                                      {1.3 * 0.85, 0.85, 0.7 * 0.85}),
+                 QString());
     }
 
     void aFirstScanRecordsEveryFrameAndReportsNoDelta()
@@ -187,12 +193,7 @@ private slots:
     {
         // The frames under a light warming and dimming to the end, as the window following the
         // light reads them: each through its light's map (trackLight with the edited table).
-        QTemporaryDir dir;
-        const QString ramp = dir.filePath(QStringLiteral("ramp"));
-        QCOMPARE(test::writeLightRamp(QString::fromStdString(test::sampleStreamsDir() + "/lab1"),
-                                      ramp, {1.3 * 0.85, 0.85, 0.7 * 0.85}),
-                 QString());
-        const std::string stream = ramp.toStdString();
+        const std::string stream = rampPath();
         EditEffectScanner scanner;
         scanner.setThreads(2);
         scanner.setStream(stream);
@@ -259,15 +260,10 @@ private slots:
     {
         // A cell no frame's pixel reads through any of its lights: every frame keeps its result,
         // as without following the light.
-        QTemporaryDir dir;
-        const QString ramp = dir.filePath(QStringLiteral("ramp"));
-        QCOMPARE(test::writeLightRamp(QString::fromStdString(test::sampleStreamsDir() + "/lab1"),
-                                      ramp, {1.3 * 0.85, 0.85, 0.7 * 0.85}),
-                 QString());
         const Pipeline pipeline = countingPipeline();
         EditEffectScanner scanner(pipeline);
         scanner.setThreads(2);
-        scanner.setStream(ramp.toStdString());
+        scanner.setStream(rampPath());
         const auto before = lab1Lut();
         ColourLut edited = *before;
         QCOMPARE(edited.cell(0), Colour::Unclassified);
@@ -422,6 +418,7 @@ private:
     static constexpr std::size_t kFrames = 9;
 
     std::string path() const { return m_dir.path().toStdString(); }
+    std::string rampPath() const { return m_ramp_dir.filePath("ramp").toStdString(); }
     static std::size_t cellCount(const ColourLut& lut, Colour colour)
     {
         std::size_t n = 0;
@@ -431,6 +428,7 @@ private:
     }
 
     QTemporaryDir m_dir;
+    QTemporaryDir m_ramp_dir;
 };
 
 FIELDSIGHT_TEST_SUITE(TestEditEffect, None)
