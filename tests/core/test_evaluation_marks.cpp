@@ -110,6 +110,30 @@ private slots:
         QCOMPARE(e.disagreements.size(), std::size_t(1));
     }
 
+    void aConcealedObjectTakesOnlyADetectionNoPlainOneWants()
+    {
+        // A plain ball at (50, 50) and a concealed one at (54, 50); the one detection, at
+        // (53, 50), is nearer the concealed ball but within reach of both.
+        Annotations truth;
+        FrameAnnotation& f = frame(truth, "a.png", true, {{50, 50, 8}, {54, 50, 8}});
+        f.setFlags("balls", 1, ObjectFlags{.concealed = true});
+        std::map<std::string, PerceptSet> detected;
+        detected["a.png"].output<Ball>() = {{53, 50, 8}};
+        Evaluation e = evaluateFrames(detected, truth, 200, 200);
+        // The plain ball has it; the concealed one is left, and is no miss.
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{1, 0, 0, 0, 1}));
+        QVERIFY(e.disagreements.empty());
+        // A second detection at the concealed ball: it is found there, still no false positive.
+        detected["a.png"].output<Ball>() = {{53, 50, 8}, {55, 50, 8}};
+        e = evaluateFrames(detected, truth, 200, 200);
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{1, 0, 0, 1, 0}));
+        // Both plain: nearest first, so the detection goes to the second and the first is missed.
+        f.setFlags("balls", 1, ObjectFlags{});
+        detected["a.png"].output<Ball>() = {{53, 50, 8}};
+        e = evaluateFrames(detected, truth, 200, 200);
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{1, 0, 1}));
+    }
+
     void reviewedKindsOfAFrameNotDoneAreScored()
     {
         Annotations truth;

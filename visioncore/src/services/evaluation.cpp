@@ -16,13 +16,20 @@ namespace {
 
 /// Accepts candidates nearest first, each detection and each true object at most once. Ties go
 /// to the lower truth index, then the lower detection index, so the result is deterministic.
+/// `concealed` (empty: none) marks the true objects that take a detection only after every plain
+/// one has had its pick: a robot mostly hidden behind another takes no detection from the one in
+/// front.
 MatchResult greedyMatch(std::vector<MatchCandidate> candidates, std::size_t detected_count,
-                        std::size_t truth_count)
+                        std::size_t truth_count, const std::vector<bool>& concealed = {})
 {
-    std::sort(
-        candidates.begin(), candidates.end(), [](const MatchCandidate& a, const MatchCandidate& b) {
-            return std::tie(a.cost, a.truth, a.detection) < std::tie(b.cost, b.truth, b.detection);
-        });
+    const auto later = [&concealed](const MatchCandidate& c) {
+        return c.truth < concealed.size() && concealed[c.truth];
+    };
+    std::sort(candidates.begin(), candidates.end(),
+              [&later](const MatchCandidate& a, const MatchCandidate& b) {
+                  return std::make_tuple(later(a), a.cost, a.truth, a.detection) <
+                         std::make_tuple(later(b), b.cost, b.truth, b.detection);
+              });
     std::vector<bool> detection_used(detected_count, false);
     std::vector<bool> truth_used(truth_count, false);
     MatchResult result;
@@ -156,16 +163,17 @@ FrameMatch matchFrameWith(const PerceptSet& detected, const PerceptSet& truth,
         const PerceptEntry* truth_list = listOf(truth, kind);
         const std::size_t detected_count = detected_list ? detected_list->size() : 0;
         const std::size_t truth_count = truth_list ? truth_list->size() : 0;
+        std::vector<bool> concealed_truth(truth_count, false);
+        for (std::size_t t = 0; marks && t < truth_count; ++t)
+            concealed_truth[t] = marks->flagsOf(kind.truth_key, t).concealed;
         const MatchResult match = greedyMatch(kind.match(detected_list, truth_list, width, height),
-                                              detected_count, truth_count);
+                                              detected_count, truth_count, concealed_truth);
         KindMatch m;
         m.kind = &kind;
         m.pairs = match.pairs;
         std::vector<bool> detection_used(detected_count, false);
         std::vector<bool> truth_used(truth_count, false);
-        const auto concealed = [&](std::size_t t) {
-            return marks && marks->flagsOf(kind.truth_key, t).concealed;
-        };
+        const auto concealed = [&](std::size_t t) { return bool(concealed_truth[t]); };
         for (const MatchPair& pair : match.pairs) {
             detection_used[pair.detection] = true;
             truth_used[pair.truth] = true;
