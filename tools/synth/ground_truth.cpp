@@ -303,6 +303,28 @@ std::vector<FieldLine> projectedFieldLines(const CameraModel& camera)
     return out;
 }
 
+namespace {
+
+/// A ball or robot with less than this share of itself seen is not listed at all.
+constexpr double kConcealedShare = 0.1;
+
+/// `objects` (each with whether it is concealed) sorted left to right into `out`, their flags
+/// set in `annotation` under `truth_key`.
+template <class Object>
+void sortedInto(std::vector<std::pair<Object, bool>>& objects, std::vector<Object>& out,
+                FrameAnnotation& annotation, std::string_view truth_key)
+{
+    std::stable_sort(objects.begin(), objects.end(),
+                     [](const auto& a, const auto& b) { return a.first.left < b.first.left; });
+    for (const auto& [object, concealed] : objects) {
+        if (concealed)
+            annotation.setFlags(truth_key, out.size(), {.concealed = true});
+        out.push_back(object);
+    }
+}
+
+} // namespace
+
 FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const cv::Mat& primitive)
 {
     const int w = camera.width();
@@ -313,6 +335,9 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
     std::vector<Goalpost>& goalposts = annotation.truth.output<Goalpost>();
     std::vector<Obstacle>& obstacles = annotation.truth.output<Obstacle>();
     const Seen seen = seenPixels(scene, primitive);
+    std::vector<bool> ball_concealed;
+    std::vector<std::pair<Goalpost, bool>> posts; // and whether concealed
+    std::vector<std::pair<Obstacle, bool>> robots;
 
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const SceneObject& object = scene.objects[o];
@@ -333,13 +358,17 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
                 if (i >= 0 && scene.primitives[std::size_t(i)].object == int(o))
                     ++visible;
             });
-            if (disc > 0 && double(visible) >= 0.6 * double(disc))
+            // In view but mostly hidden or cut by the frame: listed as concealed, so that a
+            // detector finding what is seen of it scores neither a hit nor a false ball.
+            if (disc > 0 && visible > 0 && double(visible) >= kConcealedShare * double(disc)) {
                 balls.push_back(
                     {round2(image->centre.x), round2(image->centre.y), round2(image->radius)});
+                ball_concealed.push_back(double(visible) < 0.6 * double(disc));
+            }
             break;
         }
         case ObjectKind::Post:
-            if (box.height() >= 8 && box.width() >= 2) {
+            if (box.count > 0) {
                 Goalpost post;
                 post.left = box.left;
                 post.right = box.right;
@@ -347,7 +376,7 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
                 post.bottom = box.bottom;
                 post.base_x = (box.left + box.right) / 2.0;
                 post.base_y = box.bottom;
-                goalposts.push_back(post);
+                posts.push_back({post, box.height() < 8 || box.width() < 2});
             }
             break;
         case ObjectKind::Robot:
@@ -355,22 +384,24 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
             if (box.width() < 6 || seen.visibility_parts[o] == 0)
                 break;
             // At least half of it in view, or (close to the camera, cut by the frame) filling
-            // a quarter of the frame: an obstacle either way.
+            // a quarter of the frame: an obstacle either way. Less of it seen: concealed.
             const long full = unoccludedPixels(scene, int(o), camera);
             const long seen_px = seen.visibility_parts[o];
-            if ((full > 0 && double(seen_px) >= 0.5 * double(full)) ||
-                4 * seen_px >= long(w) * long(h))
-                obstacles.push_back({box.left, box.right, box.top, box.bottom});
+            const bool plain = (full > 0 && double(seen_px) >= 0.5 * double(full)) ||
+                               4 * seen_px >= long(w) * long(h);
+            if (plain || double(seen_px) >= kConcealedShare * double(full))
+                robots.push_back({{box.left, box.right, box.top, box.bottom}, !plain});
             break;
         }
         default:
             break;
         }
     }
-    std::sort(goalposts.begin(), goalposts.end(),
-              [](const Goalpost& a, const Goalpost& b) { return a.left < b.left; });
-    std::sort(obstacles.begin(), obstacles.end(),
-              [](const Obstacle& a, const Obstacle& b) { return a.left < b.left; });
+    for (std::size_t i = 0; i < ball_concealed.size(); ++i)
+        if (ball_concealed[i])
+            annotation.setFlags(PerceptTraits<Ball>::truth_key, i, {.concealed = true});
+    sortedInto(posts, goalposts, annotation, PerceptTraits<Goalpost>::truth_key);
+    sortedInto(robots, obstacles, annotation, PerceptTraits<Obstacle>::truth_key);
 
     const std::vector<double> top = fieldTopPerColumn(camera);
     std::vector<PointF> column_points;

@@ -3,16 +3,17 @@
 // Rules (a frame is always "done", so these decide what a detector is expected to find):
 // - ball: the centroid and equal-area radius of its projected outline (see BallImage). Listed when
 //   that centre is inside the image, the radius is >= 3 px, and >= 60 % of the pixel centres inside
-//   the outline are inside the image and show the ball (not an occluder). A ball that is in view
-//   but below this threshold is omitted, so on such a frame a detector that finds it scores a false
-//   positive; those frames are rare and the rule is the same for every detector.
+//   the outline are inside the image and show the ball (not an occluder). A ball in view below
+//   this threshold, with >= 10 % seen, is listed as concealed (scored apart by eval), so a
+//   detector that finds it scores no false positive.
 // - goalposts: the box (inclusive px) of the pixels where the post is the nearest surface, listed
-//   when that box is >= 8 px tall and >= 2 px wide. The crossbar is not a post. A post whose base
-//   is in view is at least 35 px tall on this field, so this only drops posts cut to slivers by the
-//   image edge or an occluder.
+//   when that box is >= 8 px tall and >= 2 px wide, and as concealed when smaller. The crossbar is
+//   not a post. A post whose base is in view is at least 35 px tall on this field, so only posts
+//   cut to slivers by the image edge or an occluder are concealed.
 // - obstacles: robots and people on the carpet. Visibility is judged on the parts below 0.5 m (all
 //   of a robot; a person's shoes and shins): listed when >= 50 % of those parts' pixels are seen
-//   and the box of all its seen pixels is >= 6 px wide. The box is that of the seen pixels.
+//   and the box of all its seen pixels is >= 6 px wide, as concealed when 10 % to 50 % are seen.
+//   The box is that of the seen pixels.
 // - field_boundary: per column, the top of the carpet (field plus border strip) as projected,
 //   ignoring everything standing on it; h-1 where the carpet is not in the column, 0 where it
 //   covers the whole column. Simplified to a polyline within 0.25 px, x = 0 .. width-1.
