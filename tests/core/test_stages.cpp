@@ -177,6 +177,56 @@ private slots:
         QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
     }
 
+    /// Ball colour with no carpet or line around it (specks in a robot's red arm at the bottom
+    /// of the frame, which the table leaves unclassified) is no ball; the same blob on the carpet
+    /// is, and so is this one with the rule off.
+    void ballWithNoFieldAroundItIsRejected()
+    {
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 60, 130, 260, 239, Colour::Unclassified); // the arm
+        fillCircle(f, 160.0, 185.0, 6, Colour::Orange);
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"ball.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(0));
+        bool said = false;
+        for (const auto& [i, note] : sink.published.at("ball.rejected").notes)
+            said = said || note.find("min_field_around") != std::string::npos;
+        QVERIFY2(said, "no rejected circle says it has no field around it");
+        QVERIFY(core.setParam("ball", "min_field_around", 0).ok());
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
+
+        // On the carpet, half of it hidden by the arm's edge: found with the rule on.
+        QVERIFY(core.setParam("ball", "min_field_around", 0.1).ok());
+        cv::Mat on_field = fieldFrame(60);
+        fillRect(on_field, 160, 130, 260, 239, Colour::Unclassified);
+        fillCircle(on_field, 160.0, 185.0, 6, Colour::Orange);
+        data.setFrame(on_field, Horizon{});
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
+    }
+
+    /// A ball found from one run alone stands for a ball too small for three edge points: the
+    /// longest run across a red band lying on the carpet (no circle fits its edges) is none.
+    void aLongRunAloneIsNoBall()
+    {
+        cv::Mat f = fieldFrame(60);
+        fillRect(f, 100, 150, 179, 159, Colour::Orange);
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"ball.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(0));
+        bool said = false;
+        for (const auto& [i, note] : sink.published.at("ball.rejected").notes)
+            said = said || note.find("max_chord_spacings") != std::string::npos;
+        QVERIFY2(said, "no rejected circle says its run is too long");
+        QVERIFY(core.setParam("ball", "max_chord_spacings", 0).ok());
+        QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
+    }
+
     void ballCentreMustBeInTheImage()
     {
         cv::Mat f = fieldFrame(60);

@@ -109,6 +109,26 @@ std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double 
     return groups;
 }
 
+/// Fraction of carpet and line pixels on two rings just outside the circle (at r + 2 and
+/// 1.5 r + 3 px), of those in the image; 1 when fewer than 8 are.
+double fieldAround(const Blackboard& bb, const Circle& c)
+{
+    constexpr int kAngles = 32;
+    int total = 0, field = 0;
+    for (const double r : {c.radius + 2, 1.5 * c.radius + 3})
+        for (int a = 0; a < kAngles; ++a) {
+            const double angle = 2 * 3.14159265358979 * a / kAngles;
+            const int x = int(std::lround(c.centre.x + r * std::cos(angle)));
+            const int y = int(std::lround(c.centre.y + r * std::sin(angle)));
+            if (x < 0 || y < 0 || x >= bb.width() || y >= bb.height())
+                continue;
+            ++total;
+            const Colour colour = bb.classify(x, y);
+            field += colour == Colour::Green || colour == Colour::White;
+        }
+    return total < 8 ? 1.0 : double(field) / total;
+}
+
 /// Fraction of ball-coloured pixels in the square inscribed in the circle.
 double colourFraction(const Blackboard& bb, const Circle& c, Colour colour)
 {
@@ -182,6 +202,13 @@ bool BallDetector::rejects(const Blackboard& bb, PointF centre, double radius, C
         return why ? say("ball colour " + oneDecimal(100 * orange) +
                          " %, under min_orange_fraction")
                    : true;
+    if (m_min_field_around > 0) {
+        const double field = fieldAround(bb, {centre, radius});
+        if (field < m_min_field_around)
+            return why ? say("carpet or line " + oneDecimal(100 * field) +
+                             " % around it, under min_field_around")
+                       : true;
+    }
     return false;
 }
 
@@ -280,7 +307,16 @@ void BallDetector::run(Blackboard& bb)
                 return a->length() < b->length();
             });
         Circle c{{(s->x0 + s->x1 - 1) / 2.0, double(s->y0)}, s->length() / 2.0};
-        if (accept(c)) {
+        // A ball wider than a few scan lines' spacing crosses enough of them to give a cluster
+        // of edge points: a long chord left over is no ball's (a robot's red arm).
+        const double widest =
+            m_max_chord_spacings * std::max(spacing, double(bb.verticalScanSpacing()));
+        if (m_max_chord_spacings > 0 && s->length() > widest) {
+            if (rejected)
+                addRejected(*rejected, circleShape(c.centre, c.radius, {}),
+                            "a chord of " + std::to_string(s->length()) +
+                                " px, over max_chord_spacings");
+        } else if (accept(c)) {
             ball = c;
             found = true;
         }

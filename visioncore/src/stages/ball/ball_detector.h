@@ -60,6 +60,18 @@ private:
         {"max_radius", "", 0.05, 2, 0.05,
          "Largest radius as a share of the image height; a ball's centre must also lie in the "
          "image."}};
+    Param<double> m_min_field_around{
+        this,
+        0.1,
+        {"min_field_around", "", 0, 1, 0.05,
+         "Share of carpet or line pixels needed on two rings just outside a ball (those in the "
+         "image): a ball lies on the field, not inside a robot's red arm."}};
+    Param<double> m_max_chord_spacings{
+        this,
+        3,
+        {"max_chord_spacings", "", 0, 20, 0.5,
+         "A ball found by one run alone (too small for three edge points) is at most this many "
+         "scan line spacings wide (0: any width)."}};
     Param<double> m_focal_length{
         this,
         0,
