@@ -410,6 +410,41 @@ private slots:
         QVERIFY(concealed_robots >= 2);
     }
 
+    /// A post whose foot is in the frame but behind a robot (Lab 1's frames 2 and 14) is listed
+    /// as concealed: its box ends at the robot, not at its base. A post standing in view is not.
+    void aPostWithItsFootHiddenIsConcealed()
+    {
+        const ScenarioScript script(Scenario::Lab1, 1, 320, 240);
+        int hidden = 0;
+        int standing = 0;
+        for (const int i : {2, 10, 14}) {
+            const StreamFrame frame = renderStreamFrame(script, i);
+            const auto& posts = frame.truth.truth.list<Goalpost>();
+            for (std::size_t p = 0; p < posts.size(); ++p) {
+                // The post's object: the one whose foot projects into this box's columns.
+                std::optional<PointF> foot;
+                for (const SceneObject& o : frame.scene.objects)
+                    if (const auto at = frame.camera.project(o.position);
+                        o.kind == ObjectKind::Post && at && at->x >= posts[p].left - 1 &&
+                        at->x <= posts[p].right + 1)
+                        foot = at;
+                if (!foot || foot->y >= 239 || posts[p].bottom - posts[p].top < 8)
+                    continue;
+                // Post colour on the foot's row or just above it, in the box's columns.
+                bool yellow = false;
+                for (int y = int(std::lround(foot->y)) - 2; y <= int(std::lround(foot->y)); ++y)
+                    for (int x = posts[p].left; x <= posts[p].right; ++x)
+                        yellow = yellow ||
+                                 frame.image.labels.at<std::uint8_t>(y, x) == int(Colour::Yellow);
+                const bool concealed = frame.truth.flagsOf("goalposts", p).concealed;
+                QVERIFY2(concealed != yellow, std::to_string(i).c_str());
+                ++(concealed ? hidden : standing);
+            }
+        }
+        QVERIFY(hidden >= 2);
+        QVERIFY(standing >= 2);
+    }
+
     void fieldBoundaryIsTopOfTheGreen()
     {
         ScenarioScript script(Scenario::RC2012, 1, 320, 240);

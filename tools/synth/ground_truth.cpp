@@ -308,6 +308,28 @@ namespace {
 /// A ball or robot with less than this share of itself seen is not listed at all.
 constexpr double kConcealedShare = 0.1;
 
+/// Whether post `object` stands with its foot in the image but hidden behind something nearer
+/// (a robot close to the camera): the post's box then ends at the occluder, not at its base. The
+/// foot is seen when a pixel of the post's columns (`box`) shows the post within 2 px above it.
+bool footHidden(const Scene& scene, int object, const PixelBox& box, const CameraModel& camera,
+                const cv::Mat& primitive)
+{
+    const SceneObject& post = scene.objects[std::size_t(object)];
+    const auto foot = camera.project(post.position);
+    if (!foot)
+        return false;
+    const int y = int(std::lround(foot->y));
+    if (foot->x < 0 || y < 0 || foot->x > primitive.cols - 1 || y >= primitive.rows)
+        return false; // cut by the frame: the box's bottom at the border says so
+    for (int row = std::max(0, y - 2); row <= y; ++row)
+        for (int x = std::max(0, box.left); x <= std::min(primitive.cols - 1, box.right); ++x) {
+            const int i = primitive.at<std::int32_t>(row, x);
+            if (i >= 0 && scene.primitives[std::size_t(i)].object == object)
+                return false;
+        }
+    return true;
+}
+
 /// `objects` (each with whether it is concealed) sorted left to right into `out`, their flags
 /// set in `annotation` under `truth_key`.
 template <class Object>
@@ -376,7 +398,8 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
                 post.bottom = box.bottom;
                 post.base_x = (box.left + box.right) / 2.0;
                 post.base_y = box.bottom;
-                posts.push_back({post, box.height() < 8 || box.width() < 2});
+                posts.push_back({post, box.height() < 8 || box.width() < 2 ||
+                                           footHidden(scene, int(o), box, camera, primitive)});
             }
             break;
         case ObjectKind::Robot:

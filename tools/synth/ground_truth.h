@@ -7,9 +7,9 @@
 //   this threshold, with >= 10 % seen, is listed as concealed (scored apart by eval), so a
 //   detector that finds it scores no false positive.
 // - goalposts: the box (inclusive px) of the pixels where the post is the nearest surface, listed
-//   when that box is >= 8 px tall and >= 2 px wide, and as concealed when smaller. The crossbar is
-//   not a post. A post whose base is in view is at least 35 px tall on this field, so only posts
-//   cut to slivers by the image edge or an occluder are concealed.
+//   when that box is >= 8 px tall and >= 2 px wide, and as concealed when smaller or when its
+//   foot is in the frame but hidden behind something nearer (the box then ends at the occluder,
+//   not at the base). The crossbar is not a post.
 // - obstacles: robots and people on the carpet. Visibility is judged on the parts below 0.5 m (all
 //   of a robot; a person's shoes and shins): listed when >= 50 % of those parts' pixels are seen
 //   and the box of all its seen pixels is >= 6 px wide, as concealed when 10 % to 50 % are seen.
