@@ -3,6 +3,7 @@
 // disagreements that the eval command, the window and the edit-effect scan share.
 #include "support/test_suite.h"
 #include "visioncore/percepts/field_boundary.h"
+#include "visioncore/percepts/obstacle.h"
 #include "visioncore/services/evaluation.h"
 
 #include <QtTest>
@@ -132,6 +133,35 @@ private slots:
         detected["a.png"].output<Ball>() = {{53, 50, 8}};
         e = evaluateFrames(detected, truth, 200, 200);
         QCOMPARE(e.scores.of<Ball>(), (ClassScore{1, 0, 1}));
+    }
+
+    void aDetectionOfWhatIsSeenOfAConcealedObjectMatchesIt()
+    {
+        // A ball half behind a robot: the detector fits the seen half, 7 px off the true centre
+        // (the ball rule reaches max(3, 5) px), inside the true disc.
+        Annotations truth;
+        FrameAnnotation& f = frame(truth, "a.png", true, {{50, 50, 10}});
+        f.setFlags("balls", 0, ObjectFlags{.concealed = true});
+        f.truth.output<Obstacle>() = {Obstacle{100, 139, 20, 99}};
+        f.setFlags("obstacles", 0, ObjectFlags{.concealed = true});
+        std::map<std::string, PerceptSet> detected;
+        detected["a.png"].output<Ball>() = {{57, 50, 4}};
+        // A box of the robot's seen part: IoU under the rule's 0.3, its centre inside.
+        detected["a.png"].output<Obstacle>() = {Obstacle{130, 139, 60, 99}};
+        Evaluation e = evaluateFrames(detected, truth, 200, 200);
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{0, 0, 0, 1, 0}));
+        QCOMPARE(e.scores.of<Obstacle>(), (ClassScore{0, 0, 0, 1, 0}));
+        // Outside the disc or the box: a false detection, and the concealed object missed.
+        detected["a.png"].output<Ball>() = {{61, 50, 4}};
+        detected["a.png"].output<Obstacle>() = {Obstacle{141, 160, 60, 99}};
+        e = evaluateFrames(detected, truth, 200, 200);
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{0, 1, 0, 0, 1}));
+        QCOMPARE(e.scores.of<Obstacle>(), (ClassScore{0, 1, 0, 0, 1}));
+        // A plain ball is held to its rule: 7 px off is a miss and a false ball.
+        f.setFlags("balls", 0, ObjectFlags{});
+        detected["a.png"].output<Ball>() = {{57, 50, 4}};
+        e = evaluateFrames(detected, truth, 200, 200);
+        QCOMPARE(e.scores.of<Ball>(), (ClassScore{0, 1, 1}));
     }
 
     void reviewedKindsOfAFrameNotDoneAreScored()

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -149,6 +150,59 @@ const PerceptEntry* listOf(const PerceptSet& set, const PerceptKind& kind)
     return e && e->present() ? e : nullptr;
 }
 
+/// The centre of a circle, box or segment; nothing for another form.
+std::optional<PointF> centreOf(ShapeForm form, const EditShape& shape)
+{
+    if (form == ShapeForm::Circle && shape.points.size() == 1)
+        return shape.points[0];
+    if ((form == ShapeForm::Box || form == ShapeForm::Segment) && shape.points.size() == 2)
+        return PointF{(shape.points[0].x + shape.points[1].x) / 2,
+                      (shape.points[0].y + shape.points[1].y) / 2};
+    return std::nullopt;
+}
+
+/// Whether `p` lies inside a circle's disc or a box (inclusive pixels).
+bool inside(ShapeForm form, const EditShape& shape, PointF p)
+{
+    if (form == ShapeForm::Circle && shape.points.size() == 1)
+        return std::hypot(p.x - shape.points[0].x, p.y - shape.points[0].y) <= shape.radius;
+    if (form == ShapeForm::Box && shape.points.size() == 2)
+        return p.x >= shape.points[0].x - 0.5 && p.x <= shape.points[1].x + 0.5 &&
+               p.y >= shape.points[0].y - 0.5 && p.y <= shape.points[1].y + 0.5;
+    return false;
+}
+
+/// Pairs the kind's rule leaves out that a concealed true object takes: a detection of what is
+/// seen of it (the visible half of a ball behind a robot) is placed off its true centre, so its
+/// centre inside the object's outline is enough. They cost more than any pair of the rule.
+void addConcealedPairs(const PerceptEntry* detected, const PerceptEntry* truth,
+                       const std::vector<bool>& concealed, std::vector<MatchCandidate>& candidates)
+{
+    if (!detected || !truth ||
+        std::find(concealed.begin(), concealed.end(), true) == concealed.end())
+        return;
+    const ShapeForm form = truth->kind().form;
+    const std::vector<EditShape> found = detected->shapes();
+    const std::vector<EditShape> true_shapes = truth->shapes();
+    constexpr double kAfterTheRule = 1e6;
+    for (std::size_t t = 0; t < true_shapes.size() && t < concealed.size(); ++t) {
+        if (!concealed[t])
+            continue;
+        const auto true_centre = centreOf(form, true_shapes[t]);
+        for (std::size_t d = 0; d < found.size() && true_centre; ++d) {
+            const auto centre = centreOf(form, found[d]);
+            const bool paired =
+                std::any_of(candidates.begin(), candidates.end(), [&](const MatchCandidate& c) {
+                    return c.detection == d && c.truth == t;
+                });
+            if (centre && !paired && inside(form, true_shapes[t], *centre))
+                candidates.push_back({kAfterTheRule + std::hypot(centre->x - true_centre->x,
+                                                                 centre->y - true_centre->y),
+                                      d, t});
+        }
+    }
+}
+
 /// matchFrame() with `marks` (null: every kind complete, no object concealed).
 FrameMatch matchFrameWith(const PerceptSet& detected, const PerceptSet& truth,
                           const FrameAnnotation* marks, int width, int height,
@@ -166,8 +220,11 @@ FrameMatch matchFrameWith(const PerceptSet& detected, const PerceptSet& truth,
         std::vector<bool> concealed_truth(truth_count, false);
         for (std::size_t t = 0; marks && t < truth_count; ++t)
             concealed_truth[t] = marks->flagsOf(kind.truth_key, t).concealed;
-        const MatchResult match = greedyMatch(kind.match(detected_list, truth_list, width, height),
-                                              detected_count, truth_count, concealed_truth);
+        std::vector<MatchCandidate> candidates =
+            kind.match(detected_list, truth_list, width, height);
+        addConcealedPairs(detected_list, truth_list, concealed_truth, candidates);
+        const MatchResult match =
+            greedyMatch(std::move(candidates), detected_count, truth_count, concealed_truth);
         KindMatch m;
         m.kind = &kind;
         m.pairs = match.pairs;
