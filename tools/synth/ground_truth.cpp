@@ -367,9 +367,10 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
         switch (object.kind) {
         case ObjectKind::Ball: {
             const auto image = ballImage(camera, object.position, object.radius);
-            if (!image || image->centre.x < 0 || image->centre.x > w - 1 || image->centre.y < 0 ||
-                image->centre.y > h - 1 || image->radius < 3.0)
+            if (!image || image->radius < 3.0)
                 break;
+            const bool centre_in_image = image->centre.x >= 0 && image->centre.x <= w - 1 &&
+                                         image->centre.y >= 0 && image->centre.y <= h - 1;
             long disc = 0;
             long visible = 0;
             forEachPixelInside(image->outline, [&](int x, int y) {
@@ -385,7 +386,7 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
             if (disc > 0 && visible > 0 && double(visible) >= kConcealedShare * double(disc)) {
                 balls.push_back(
                     {round2(image->centre.x), round2(image->centre.y), round2(image->radius)});
-                ball_concealed.push_back(double(visible) < 0.6 * double(disc));
+                ball_concealed.push_back(!centre_in_image || double(visible) < 0.6 * double(disc));
             }
             break;
         }

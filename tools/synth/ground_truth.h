@@ -4,8 +4,8 @@
 // - ball: the centroid and equal-area radius of its projected outline (see BallImage). Listed when
 //   that centre is inside the image, the radius is >= 3 px, and >= 60 % of the pixel centres inside
 //   the outline are inside the image and show the ball (not an occluder). A ball in view below
-//   this threshold, with >= 10 % seen, is listed as concealed (scored apart by eval), so a
-//   detector that finds it scores no false positive.
+//   this threshold or with its centre outside the image, with >= 10 % seen, is listed as
+//   concealed (scored apart by eval), so a detector that finds it scores no false positive.
 // - goalposts: the box (inclusive px) of the pixels where the post is the nearest surface, listed
 //   when that box is >= 8 px tall and >= 2 px wide, and as concealed when smaller or when its
 //   foot is in the frame but hidden behind something nearer (the box then ends at the occluder,
