@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 
 #include <fstream>
+#include <functional>
+#include <memory>
 
 using namespace fieldsight;
 
@@ -53,6 +55,38 @@ void writeText(const std::string& path, const std::string& text)
 std::string lab2()
 {
     return test::sampleStreamsDir() + "/lab2";
+}
+
+/// The samples of a 64 x 48 frame's annotations painted on a frame of one distinct colour a
+/// pixel and voted: which class pixel (x, y) voted for (-1: none).
+std::function<int(int, int)> votesOfSamples(const Annotations& truth)
+{
+    const auto samples = samplesFromAnnotations(truth, {64, 48});
+    cv::Mat frame(48, 64, CV_8UC3, cv::Scalar(0, 0, 0));
+    int i = 0;
+    std::vector<const LutSample*> list;
+    for (const LutSample& s : samples) {
+        if (s.frame != "a.png") // the other frames are not done
+            return [](int, int) { return -2; };
+        list.push_back(&s);
+    }
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x, ++i)
+            frame.at<cv::Vec3b>(y, x) =
+                cv::Vec3b(std::uint8_t(2 * (i >> 12)), std::uint8_t(2 * ((i >> 6) & 63)),
+                          std::uint8_t(2 * (i & 63)));
+    auto votes = std::make_shared<LutVotes>();
+    votes->addFrame(frame, list);
+    return [votes, frame](int x, int y) {
+        const cv::Vec3b p = frame.at<cv::Vec3b>(y, x);
+        const auto it = votes->cells().find(std::uint32_t(ColourLut::index(p[0], p[1], p[2])));
+        if (it == votes->cells().end())
+            return -1;
+        for (int c = 0; c < kColourCount; ++c)
+            if (it->second[std::size_t(c)])
+                return c;
+        return -1;
+    };
 }
 
 } // namespace
@@ -337,33 +371,7 @@ private slots:
             "b.png": {"done": false, "balls": [{"x": 30, "y": 30, "radius": 5}]}}})",
                                            "truth", Pipeline::standard().perceptKinds());
         QVERIFY(truth.ok());
-        const auto samples = samplesFromAnnotations(truth.value(), {64, 48});
-        // Paint them as a frame would be painted: each pixel its last sample's class.
-        cv::Mat frame(48, 64, CV_8UC3, cv::Scalar(0, 0, 0));
-        int i = 0;
-        std::vector<const LutSample*> list;
-        for (const LutSample& s : samples) {
-            QCOMPARE(s.frame, std::string("a.png")); // b.png is not done
-            list.push_back(&s);
-        }
-        // One distinct colour a pixel: its cell tells which sample's class it voted for.
-        for (int y = 0; y < 48; ++y)
-            for (int x = 0; x < 64; ++x, ++i)
-                frame.at<cv::Vec3b>(y, x) =
-                    cv::Vec3b(std::uint8_t(2 * (i >> 12)), std::uint8_t(2 * ((i >> 6) & 63)),
-                              std::uint8_t(2 * (i & 63)));
-        LutVotes votes;
-        votes.addFrame(frame, list);
-        auto votedAt = [&](int x, int y) {
-            const cv::Vec3b p = frame.at<cv::Vec3b>(y, x);
-            const auto it = votes.cells().find(std::uint32_t(ColourLut::index(p[0], p[1], p[2])));
-            if (it == votes.cells().end())
-                return -1;
-            for (int c = 0; c < kColourCount; ++c)
-                if (it->second[std::size_t(c)])
-                    return c;
-            return -1;
-        };
+        const auto votedAt = votesOfSamples(truth.value());
         QCOMPARE(votedAt(30, 30), int(Colour::Orange));
         QCOMPARE(votedAt(30, 34), int(Colour::Orange)); // radius 5 shrunk by 1
         QCOMPARE(votedAt(30, 35), -1);                  // the ball's rim: a hole in the green
@@ -376,6 +384,25 @@ private slots:
         QCOMPARE(votedAt(20, 40), int(Colour::White));
         QCOMPARE(votedAt(20, 42), -1); // beside the line
         QCOMPARE(votedAt(20, 44), int(Colour::Green));
+    }
+
+    /// A concealed ball or post (half of it is what hides it) votes for nothing.
+    void concealedObjectsVoteForNothing()
+    {
+        auto truth = Annotations::fromJson(R"({"format": "fieldsight-annotations/1", "frames": {
+            "a.png": {"done": true,
+                      "balls": [{"x": 30, "y": 30, "radius": 5, "concealed": true}],
+                      "goalposts": [{"left": 10, "right": 14, "top": 0, "bottom": 20,
+                                     "concealed": true},
+                                    {"left": 50, "right": 54, "top": 0, "bottom": 20}],
+                      "field_boundary": [[0, 10], [63, 10]]}}})",
+                                           "truth", Pipeline::standard().perceptKinds());
+        QVERIFY(truth.ok());
+        const auto votedAt = votesOfSamples(truth.value());
+        QCOMPARE(votedAt(30, 30), -1);
+        QCOMPARE(votedAt(12, 15), -1);
+        QCOMPARE(votedAt(52, 15), int(Colour::Yellow)); // the plain post
+        QCOMPARE(votedAt(20, 30), int(Colour::Green));
     }
 
     void framesAreFoundByStemAndMissingOnesNamed()

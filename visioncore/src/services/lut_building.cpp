@@ -347,9 +347,18 @@ std::vector<LutSample> samplesFromAnnotations(const Annotations& annotations, cv
                 add(Colour::Unclassified, box(0, p.top - band, w - 1, p.top + band, 0), true);
             }
         }
-        for (const Obstacle& o : truth.list<Obstacle>())
+        // A concealed object (partly hidden, blurred) votes for nothing: its outline holds the
+        // pixels of whatever hides it.
+        const auto concealed = [&frame](std::string_view key, std::size_t i) {
+            return frame.flagsOf(key, i).concealed;
+        };
+        const auto& obstacles = truth.list<Obstacle>();
+        for (std::size_t i = 0; i < obstacles.size(); ++i) {
+            const Obstacle& o = obstacles[i];
             add(rules.obstacle_colour.value_or(Colour::Unclassified),
-                box(o.left, o.top, o.right, o.bottom, grow), !rules.obstacle_colour);
+                box(o.left, o.top, o.right, o.bottom, grow),
+                !rules.obstacle_colour || concealed(PerceptTraits<Obstacle>::truth_key, i));
+        }
         if (rules.objects_out) {
             for (const FieldLine& l : truth.list<FieldLine>())
                 add(Colour::Unclassified, strip(l, rules.line_half_width + shrink), true);
@@ -360,10 +369,16 @@ std::vector<LutSample> samplesFromAnnotations(const Annotations& annotations, cv
         }
         for (const FieldLine& l : truth.list<FieldLine>())
             add(Colour::White, strip(l, rules.line_half_width));
-        for (const Goalpost& p : truth.list<Goalpost>())
-            add(rules.goal_colour, box(p.left, p.top, p.right, p.bottom, -grow));
-        for (const Ball& b : truth.list<Ball>())
-            add(Colour::Orange, disc(b.x, b.y, std::max(0.5, b.radius - shrink)));
+        const auto& posts = truth.list<Goalpost>();
+        for (std::size_t i = 0; i < posts.size(); ++i)
+            add(rules.goal_colour,
+                box(posts[i].left, posts[i].top, posts[i].right, posts[i].bottom, -grow),
+                concealed(PerceptTraits<Goalpost>::truth_key, i));
+        const auto& balls = truth.list<Ball>();
+        for (std::size_t i = 0; i < balls.size(); ++i)
+            add(Colour::Orange,
+                disc(balls[i].x, balls[i].y, std::max(0.5, balls[i].radius - shrink)),
+                concealed(PerceptTraits<Ball>::truth_key, i));
     }
     return out;
 }

@@ -89,8 +89,9 @@ struct AnnotationSampleRules
 /// The samples of every done frame of `annotations`, in `frame_size` images, painted in this
 /// order (later wins): above the boundary unclassified (with `background`), the field below it
 /// green, the rows around a post's top left out (the unannotated crossbar is goal-coloured),
-/// obstacles, field lines white, goalposts `goal_colour`, balls orange. Frames without a
-/// boundary give no background or green.
+/// obstacles, field lines white, goalposts `goal_colour`, balls orange; a concealed object's
+/// outline votes for nothing (it holds the pixels of what hides it). Frames without a boundary
+/// give no background or green.
 std::vector<LutSample> samplesFromAnnotations(const Annotations& annotations, cv::Size frame_size,
                                               const AnnotationSampleRules& rules = {});
 
