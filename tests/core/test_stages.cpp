@@ -209,7 +209,8 @@ private slots:
         fillCircle(f, 160.0, 185.0, 6, Colour::Orange);
         QVERIFY(onlyWithoutTheRuleABall(f, "min_field_around"));
 
-        // On the carpet, half of it hidden by the arm's edge: found with the rule on.
+        // On the carpet beside the arm's edge, half of its ring on the arm: found with the rule
+        // on.
         cv::Mat on_field = fieldFrame(60);
         fillRect(on_field, 160, 130, 260, 239, Colour::Unclassified);
         fillCircle(on_field, 160.0, 185.0, 6, Colour::Orange);

@@ -432,7 +432,8 @@ private slots:
                     continue;
                 // Post colour on the foot's row or just above it, in the box's columns.
                 bool yellow = false;
-                for (int y = int(std::lround(foot->y)) - 2; y <= int(std::lround(foot->y)); ++y)
+                for (int y = std::max(0, int(std::lround(foot->y)) - 2);
+                     y <= int(std::lround(foot->y)); ++y)
                     for (int x = posts[p].left; x <= posts[p].right; ++x)
                         yellow = yellow ||
                                  frame.image.labels.at<std::uint8_t>(y, x) == int(Colour::Yellow);

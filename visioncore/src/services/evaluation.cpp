@@ -166,9 +166,12 @@ bool inside(ShapeForm form, const EditShape& shape, PointF p)
 {
     if (form == ShapeForm::Circle && shape.points.size() == 1)
         return std::hypot(p.x - shape.points[0].x, p.y - shape.points[0].y) <= shape.radius;
-    if (form == ShapeForm::Box && shape.points.size() == 2)
-        return p.x >= shape.points[0].x - 0.5 && p.x <= shape.points[1].x + 0.5 &&
-               p.y >= shape.points[0].y - 0.5 && p.y <= shape.points[1].y + 0.5;
+    if (form == ShapeForm::Box && shape.points.size() == 2) {
+        const PointF& a = shape.points[0];
+        const PointF& b = shape.points[1];
+        return p.x >= std::min(a.x, b.x) - 0.5 && p.x <= std::max(a.x, b.x) + 0.5 &&
+               p.y >= std::min(a.y, b.y) - 0.5 && p.y <= std::max(a.y, b.y) + 0.5;
+    }
     return false;
 }
 

@@ -113,7 +113,8 @@ const PerceptKind& boundaryKind();
 struct KindMatch
 {
     const PerceptKind* kind = nullptr;
-    std::vector<MatchPair> pairs;              ///< in the order accepted (nearest first)
+    std::vector<MatchPair> pairs;              ///< in the order accepted (plain objects, then
+                                               ///< concealed ones, each nearest first)
     ClassScore score;                          ///< concealed objects counted apart
     std::vector<std::size_t> false_detections; ///< detections nothing true matches, ascending
     std::vector<std::size_t> missed;           ///< true objects, not concealed, nothing matches
