@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace fieldsight {
@@ -301,24 +302,33 @@ void BallDetector::run(Blackboard& bb)
         }
     }
     if (!found && !chords.empty()) {
-        // A ball too small for three edge points: the longest chord stands for its diameter.
-        const ColourSegment* s = *std::max_element(
-            chords.begin(), chords.end(), [](const ColourSegment* a, const ColourSegment* b) {
-                return a->length() < b->length();
-            });
-        Circle c{{(s->x0 + s->x1 - 1) / 2.0, double(s->y0)}, s->length() / 2.0};
-        // A ball wider than a few scan lines' spacing crosses enough of them to give a cluster
-        // of edge points: a long chord left over is no ball's (a robot's red arm).
+        // A ball too small for three edge points: the longest chord stands for its diameter. A
+        // ball wider than a few scan lines' spacing crosses enough of them to give a cluster of
+        // edge points, so a longer chord is no ball's (a robot's red arm): the longest within.
         const double widest =
-            m_max_chord_spacings * std::max(spacing, double(bb.verticalScanSpacing()));
-        if (m_max_chord_spacings > 0 && s->length() > widest) {
-            if (rejected)
-                addRejected(*rejected, circleShape(c.centre, c.radius, {}),
-                            "a chord of " + std::to_string(s->length()) +
-                                " px, over max_chord_spacings");
-        } else if (accept(c)) {
-            ball = c;
-            found = true;
+            m_max_chord_spacings > 0
+                ? m_max_chord_spacings * std::max(spacing, double(bb.verticalScanSpacing()))
+                : std::numeric_limits<double>::infinity();
+        const ColourSegment* longest = nullptr;
+        for (const ColourSegment* s : chords) {
+            if (s->length() > widest) {
+                if (rejected)
+                    addRejected(*rejected,
+                                circleShape({(s->x0 + s->x1 - 1) / 2.0, double(s->y0)},
+                                            s->length() / 2.0, {}),
+                                "a chord of " + std::to_string(s->length()) +
+                                    " px, over max_chord_spacings");
+            } else if (!longest || s->length() > longest->length()) {
+                longest = s;
+            }
+        }
+        if (longest) {
+            const Circle c{{(longest->x0 + longest->x1 - 1) / 2.0, double(longest->y0)},
+                           longest->length() / 2.0};
+            if (accept(c)) {
+                ball = c;
+                found = true;
+            }
         }
     }
     if (found)
