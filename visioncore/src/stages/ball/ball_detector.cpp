@@ -13,6 +13,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -115,12 +116,18 @@ std::vector<std::vector<PointF>> cluster(const std::vector<PointF>& pts, double 
 double fieldAround(const Blackboard& bb, const Circle& c)
 {
     constexpr int kAngles = 32;
+    static const auto directions = [] {
+        std::array<PointF, kAngles> d{};
+        for (int a = 0; a < kAngles; ++a)
+            d[std::size_t(a)] = {std::cos(2 * 3.14159265358979 * a / kAngles),
+                                 std::sin(2 * 3.14159265358979 * a / kAngles)};
+        return d;
+    }();
     int total = 0, field = 0;
     for (const double r : {c.radius + 2, 1.5 * c.radius + 3})
-        for (int a = 0; a < kAngles; ++a) {
-            const double angle = 2 * 3.14159265358979 * a / kAngles;
-            const int x = int(std::lround(c.centre.x + r * std::cos(angle)));
-            const int y = int(std::lround(c.centre.y + r * std::sin(angle)));
+        for (const PointF& d : directions) {
+            const int x = int(std::lround(c.centre.x + r * d.x));
+            const int y = int(std::lround(c.centre.y + r * d.y));
             if (x < 0 || y < 0 || x >= bb.width() || y >= bb.height())
                 continue;
             ++total;
