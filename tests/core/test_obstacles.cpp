@@ -142,6 +142,31 @@ private slots:
         QVERIFY(std::abs(bb.percepts.list<Obstacle>()[0].top - 120) <= 1);
     }
 
+    /// A robot further away shows above a nearer one in the same columns, carpet between them:
+    /// one run a scan line finds the near one only; with behind_green both are found.
+    void aRobotAboveANearerOneIsFoundWithBehindGreen()
+    {
+        cv::Mat f = fieldFrame(50);
+        fillRect(f, 120, 70, 139, 110, Colour::ShadowObject);  // far, foot at 110
+        fillRect(f, 100, 140, 179, 239, Colour::ShadowObject); // near, cut by the bottom row
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        const auto boxes = [&] { return runOrDie(core).percepts.list<Obstacle>(); };
+        QCOMPARE(boxes().size(), std::size_t(1));
+        QCOMPARE(boxes()[0].bottom, 239);
+        set(core, "behind_green", 8);
+        const std::vector<Obstacle> both = boxes();
+        QCOMPARE(both.size(), std::size_t(2));
+        const auto far = std::find_if(both.begin(), both.end(),
+                                      [](const Obstacle& o) { return o.bottom < 200; });
+        QVERIFY(far != both.end());
+        QCOMPARE(far->bottom, 110);
+        QVERIFY(std::abs(far->left - 120) <= 3 && std::abs(far->right - 139) <= 3);
+        // Less carpet between them than asked: the near one only.
+        set(core, "behind_green", 40);
+        QCOMPARE(boxes().size(), std::size_t(1));
+    }
+
     void whiteRobotIsFoundOnlyWhenRobotsMayBeWhite()
     {
         cv::Mat f = fieldFrame(60);

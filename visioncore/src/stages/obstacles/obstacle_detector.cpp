@@ -170,6 +170,8 @@ void ObstacleDetector::run(Blackboard& bb)
     // object (its bottom is where it stands).
     std::vector<Run>& runs = m_runs;
     runs.clear();
+    std::vector<Run>& behind_runs = m_behind_runs;
+    behind_runs.clear();
     DebugDrawing* rejected = bb.debug.layer("obstacles.rejected");
     const int spacing = std::max(1, bb.verticalScanSpacing(1));
     // White robots (white_robots): white is field colour to the runs below, so a white robot
@@ -196,11 +198,17 @@ void ObstacleDetector::run(Blackboard& bb)
     const std::vector<int>& usual_depth = m_usual_depth;
     const int min_edge_dip = m_min_edge_dip;
 
-    // The lowest run of obstacle colour on a scan that is long enough and stands (see below).
-    const auto lowestRun = [&](const Scan& scan, unsigned mask, bool report, Run& best) {
+    // The lowest run of obstacle colour on a scan that is long enough and stands (see below),
+    // and in `behind` (x -1: none) the standing run just above it when at least behind_green px
+    // of carpet lie between them: a robot further away, showing above a nearer one.
+    const int behind_green = m_behind_green;
+    const auto lowestRun = [&](const Scan& scan, unsigned mask, bool report, Run& best,
+                               Run& behind) {
         bool have = false;
         int top = -1;
         int bottom = -1;
+        int green = 0; // px of carpet since the last standing run
+        behind.x = -1;
         for (std::size_t k = 0; k <= scan.size(); ++k) {
             if (k < scan.size() && !inMask(mask, scan[k].colour)) {
                 if (top < 0)
@@ -225,8 +233,11 @@ void ObstacleDetector::run(Blackboard& bb)
             const bool standing = bottom - top + 1 - min_run >= m_min_height_ratio * foot_depth;
             if (top >= 0 && bottom - top + 1 >= min_run) {
                 if (standing && bottom - gh >= m_min_distance_from_horizon) {
+                    if (have && behind_green > 0 && green >= behind_green)
+                        behind = best;
                     best = {x, top, bottom};
                     have = true;
+                    green = 0;
                 } else if (report && rejected) {
                     addRejected(
                         *rejected,
@@ -238,6 +249,8 @@ void ObstacleDetector::run(Blackboard& bb)
                 }
             }
             top = -1;
+            if (k < scan.size() && scan[k].colour == Colour::Green)
+                green += scan[k].y1 - scan[k].y0;
         }
         return have;
     };
@@ -245,10 +258,11 @@ void ObstacleDetector::run(Blackboard& bb)
     for (std::size_t i = 0; i < region.size(); ++i) {
         const Scan& scan = region[i];
         Run best{};
+        Run behind_best{-1, 0, 0};
         // (With white robots the second look sees every run the first does: it alone reports.)
-        bool have = lowestRun(scan, field_mask, !white_robots, best);
+        bool have = lowestRun(scan, field_mask, !white_robots, best, behind_best);
         if (!have && white_robots)
-            have = lowestRun(scan, white_mask, true, best);
+            have = lowestRun(scan, white_mask, true, best, behind_best);
         const int dip = edge_depth[i] - usual_depth[i];
         // A run from the green horizon that ends about where the field usually starts along this
         // stretch is the edge's own band, not something standing on the field.
@@ -271,6 +285,8 @@ void ObstacleDetector::run(Blackboard& bb)
         if (have) {
             runs.push_back(best);
             bb.obstacle_points.push_back({best.x, best.bottom});
+            if (behind_best.x >= 0)
+                behind_runs.push_back(behind_best);
         }
     }
     if (auto* d = bb.debug.layer("obstacles.points"))
@@ -293,28 +309,42 @@ void ObstacleDetector::run(Blackboard& bb)
         const double near = std::max(foot, other_foot) - hz, far = std::min(foot, other_foot) - hz;
         return far > 0 && far < m_behind_ratio * near;
     };
-    for (const Run& r : runs) {
-        if (!groups.empty()) {
-            Group& g = groups.back();
-            const bool adjacent = r.x - g.last_x <= max_step;
-            const bool overlaps = r.top <= g.last_bottom && g.last_top <= r.bottom;
-            // Robots side by side at different distances stand on different rows; beside one cut
-            // by the image's bottom, only one much further away is told apart.
-            const bool same_foot = std::abs(r.bottom - g.last_bottom) <= m_max_foot_jump ||
-                                   ((r.bottom >= h - 1 || g.last_bottom >= h - 1) &&
-                                    !behind(r.bottom, g.last_bottom, r.x));
-            if (adjacent && overlaps && same_foot) {
-                g.last_x = r.x;
-                g.top = std::min(g.top, r.top);
-                g.bottom = std::max(g.bottom, r.bottom);
-                g.last_top = r.top;
-                g.last_bottom = r.bottom;
-                ++g.columns;
-                continue;
+    // Runs on neighbouring scan lines into groups, appended to `groups`.
+    const auto groupRuns = [&](const std::vector<Run>& rs) {
+        const std::size_t first = groups.size();
+        for (const Run& r : rs) {
+            if (groups.size() > first) {
+                Group& g = groups.back();
+                const bool adjacent = r.x - g.last_x <= max_step;
+                const bool overlaps = r.top <= g.last_bottom && g.last_top <= r.bottom;
+                // Robots side by side at different distances stand on different rows; beside one
+                // cut by the image's bottom, only one much further away is told apart.
+                const bool same_foot = std::abs(r.bottom - g.last_bottom) <= m_max_foot_jump ||
+                                       ((r.bottom >= h - 1 || g.last_bottom >= h - 1) &&
+                                        !behind(r.bottom, g.last_bottom, r.x));
+                if (adjacent && overlaps && same_foot) {
+                    g.last_x = r.x;
+                    g.top = std::min(g.top, r.top);
+                    g.bottom = std::max(g.bottom, r.bottom);
+                    g.last_top = r.top;
+                    g.last_bottom = r.bottom;
+                    ++g.columns;
+                    continue;
+                }
             }
+            groups.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
         }
-        groups.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
-    }
+    };
+    groupRuns(runs);
+    // Robots showing above nearer ones (behind_green) make pieces of their own, which are merged
+    // among themselves only: between a near robot's pieces they would keep them apart.
+    const std::size_t near_groups = groups.size();
+    groupRuns(behind_runs);
+    std::vector<Group>& behind_groups = m_behind_groups;
+    behind_groups.assign(groups.begin() + std::ptrdiff_t(near_groups), groups.end());
+    groups.resize(near_groups);
+    for (Group& g : behind_groups)
+        g.far = true;
     // Which pieces stand far behind the deepest foot among the pieces next to each other around
     // them (the nearer robot, whichever side of it they are on and whatever lies between).
     for (std::size_t i = 0; i < groups.size();) {
@@ -350,53 +380,60 @@ void ObstacleDetector::run(Blackboard& bb)
         const auto& gh = bb.green_horizon;
         return std::min({gh.yAt(x0), gh.yAt((x0 + x1) / 2), gh.yAt(x1)});
     };
-    for (std::size_t i = 0; i + 1 < groups.size();) {
-        Group& a = groups[i];
-        const Group& b = groups[i + 1];
-        const int top = std::min(a.top, b.top), bottom = std::max(a.bottom, b.bottom);
-        const int width = b.last_x - a.first_x + spacing;
-        // With the camera's horizon, one robot's width in the image goes with how far its foot is
-        // below it: pieces on about the same row that fit in one robot's width (robot_width) are
-        // one robot, whether or not a scan line crosses between them; with edge_robot_width, only
-        // pieces that both reach up to the green horizon: the robot goes on above the edge, where
-        // nothing is scanned (a far robot's two legs).
-        const bool neighbours = b.first_x - a.last_x <= max_step;
-        bool one_robot = false;
-        if (camera.known()) {
-            const double depth = bottom - camera.yAt(0.5 * (a.first_x + b.last_x), bb.width());
-            const auto atEdge = [&](const Group& g) {
-                return g.top <= topOfField(g.first_x, g.last_x) + maxBridged();
+    const auto mergePieces = [&](std::vector<Group>& pieces) {
+        for (std::size_t i = 0; i + 1 < pieces.size();) {
+            Group& a = pieces[i];
+            const Group& b = pieces[i + 1];
+            const int top = std::min(a.top, b.top), bottom = std::max(a.bottom, b.bottom);
+            const int width = b.last_x - a.first_x + spacing;
+            // With the camera's horizon, one robot's width in the image goes with how far its foot
+            // is below it: pieces on about the same row that fit in one robot's width (robot_width)
+            // are one robot, whether or not a scan line crosses between them; with
+            // edge_robot_width, only pieces that both reach up to the green horizon: the robot goes
+            // on above the edge, where nothing is scanned (a far robot's two legs).
+            const bool neighbours = b.first_x - a.last_x <= max_step;
+            bool one_robot = false;
+            if (camera.known()) {
+                const double depth = bottom - camera.yAt(0.5 * (a.first_x + b.last_x), bb.width());
+                const auto atEdge = [&](const Group& g) {
+                    return g.top <= topOfField(g.first_x, g.last_x) + maxBridged();
+                };
+                one_robot =
+                    depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
+                    (width <= m_robot_width * depth ||
+                     (neighbours && width <= m_edge_robot_width * depth && atEdge(a) && atEdge(b)));
+            }
+            // A piece on two or more scan lines standing far behind is its own robot.
+            const bool apart = a.far != b.far && (a.far ? a : b).columns >= 2;
+            // Something cut by the image's bottom row is close and taller than it shows, and a
+            // piece beside it that does not reach up to the green horizon (field above it) is no
+            // robot standing there but a part of the close one (an arm, a hand): their union's seen
+            // height bounds its width less (cut_width_ratio).
+            const auto hangs = [&](const Group& g) {
+                return g.bottom < h - 1 && g.top > topOfField(g.first_x, g.last_x) + maxBridged();
             };
-            one_robot =
-                depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
-                (width <= m_robot_width * depth ||
-                 (neighbours && width <= m_edge_robot_width * depth && atEdge(a) && atEdge(b)));
+            const bool close_part =
+                (a.bottom >= h - 1 && hangs(b)) || (b.bottom >= h - 1 && hangs(a));
+            const double width_ratio = close_part
+                                           ? std::max<double>(m_max_width_ratio, m_cut_width_ratio)
+                                           : m_max_width_ratio;
+            if (!apart && (one_robot || (neighbours && width <= width_ratio * (bottom - top + 1) &&
+                                         joined(a.last_x, b.first_x, std::max(a.top, b.top),
+                                                std::min(a.bottom, b.bottom))))) {
+                a.last_x = b.last_x;
+                a.top = top;
+                a.bottom = bottom;
+                a.columns += b.columns;
+                a.far = a.far && b.far;
+                pieces.erase(pieces.begin() + std::ptrdiff_t(i) + 1);
+            } else {
+                ++i;
+            }
         }
-        // A piece on two or more scan lines standing far behind is its own robot.
-        const bool apart = a.far != b.far && (a.far ? a : b).columns >= 2;
-        // Something cut by the image's bottom row is close and taller than it shows, and a piece
-        // beside it that does not reach up to the green horizon (field above it) is no robot
-        // standing there but a part of the close one (an arm, a hand): their union's seen height
-        // bounds its width less (cut_width_ratio).
-        const auto hangs = [&](const Group& g) {
-            return g.bottom < h - 1 && g.top > topOfField(g.first_x, g.last_x) + maxBridged();
-        };
-        const bool close_part = (a.bottom >= h - 1 && hangs(b)) || (b.bottom >= h - 1 && hangs(a));
-        const double width_ratio =
-            close_part ? std::max<double>(m_max_width_ratio, m_cut_width_ratio) : m_max_width_ratio;
-        if (!apart && (one_robot || (neighbours && width <= width_ratio * (bottom - top + 1) &&
-                                     joined(a.last_x, b.first_x, std::max(a.top, b.top),
-                                            std::min(a.bottom, b.bottom))))) {
-            a.last_x = b.last_x;
-            a.top = top;
-            a.bottom = bottom;
-            a.columns += b.columns;
-            a.far = a.far && b.far;
-            groups.erase(groups.begin() + std::ptrdiff_t(i) + 1);
-        } else {
-            ++i;
-        }
-    }
+    };
+    mergePieces(groups);
+    mergePieces(behind_groups);
+    groups.insert(groups.end(), behind_groups.begin(), behind_groups.end());
 
     // Widen each obstacle to the horizontal segment of non-field colour that its scan lines cross
     // near its foot (it ends somewhere between two scan lines).

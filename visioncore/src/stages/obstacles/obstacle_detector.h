@@ -42,6 +42,8 @@ private:
 
     // Per-frame scratch, kept so a frame allocates nothing once they have grown.
     std::vector<Run> m_runs;
+    std::vector<Run> m_behind_runs;     ///< robots above nearer ones (behind_green)
+    std::vector<Group> m_behind_groups; ///< their pieces, merged among themselves
     std::vector<int> m_edge_depth;
     std::vector<int> m_sorted_depth;
     std::vector<Group> m_groups;
@@ -165,6 +167,13 @@ private:
          "A box beside a goalpost, no wider than it and standing about where it stands (its "
          "foot within half the post's height of the post's base) is the post's blurred "
          "side, not a robot (a robot is several posts wide at the same distance)."}};
+    Param<int> m_behind_green{
+        this,
+        0,
+        {"behind_green", "px", 0, 100, 1,
+         "A scan line also takes the standing run just above its nearest one when at least this "
+         "much carpet lies between them: a robot further away, showing above a nearer one in "
+         "the same columns (crowded venues; 0: the nearest run only)."}};
     Param<bool> m_white_robots{
         this,
         false,
