@@ -258,7 +258,7 @@ void ObstacleDetector::run(Blackboard& bb)
     for (std::size_t i = 0; i < region.size(); ++i) {
         const Scan& scan = region[i];
         Run best{};
-        Run behind_best{-1, 0, 0};
+        Run behind_best{};
         // (With white robots the second look sees every run the first does: it alone reports.)
         bool have = lowestRun(scan, field_mask, !white_robots, best, behind_best);
         if (!have && white_robots)
@@ -295,7 +295,6 @@ void ObstacleDetector::run(Blackboard& bb)
     // Group runs on neighbouring scan lines that overlap vertically.
     const int max_step = spacing * (1 + m_max_column_gap);
     std::vector<Group>& groups = m_groups;
-    groups.clear();
     // With the camera's horizon, how far a foot is below it goes with one over the distance: a foot
     // much higher than its neighbour's (behind_ratio of its depth) is a robot further away showing
     // beside the nearer one; a part of the nearer robot ends lower (a hand about 0.6 of the way
@@ -309,12 +308,12 @@ void ObstacleDetector::run(Blackboard& bb)
         const double near = std::max(foot, other_foot) - hz, far = std::min(foot, other_foot) - hz;
         return far > 0 && far < m_behind_ratio * near;
     };
-    // Runs on neighbouring scan lines into groups, appended to `groups`.
-    const auto groupRuns = [&](const std::vector<Run>& rs) {
-        const std::size_t first = groups.size();
+    // Runs on neighbouring scan lines into groups, in `out`.
+    const auto groupRuns = [&](const std::vector<Run>& rs, std::vector<Group>& out) {
+        out.clear();
         for (const Run& r : rs) {
-            if (groups.size() > first) {
-                Group& g = groups.back();
+            if (!out.empty()) {
+                Group& g = out.back();
                 const bool adjacent = r.x - g.last_x <= max_step;
                 const bool overlaps = r.top <= g.last_bottom && g.last_top <= r.bottom;
                 // Robots side by side at different distances stand on different rows; beside one
@@ -332,17 +331,14 @@ void ObstacleDetector::run(Blackboard& bb)
                     continue;
                 }
             }
-            groups.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
+            out.push_back({r.x, r.x, r.top, r.bottom, 1, r.top, r.bottom});
         }
     };
-    groupRuns(runs);
+    groupRuns(runs, groups);
     // Robots showing above nearer ones (behind_green) make pieces of their own, which are merged
     // among themselves only: between a near robot's pieces they would keep them apart.
-    const std::size_t near_groups = groups.size();
-    groupRuns(behind_runs);
     std::vector<Group>& behind_groups = m_behind_groups;
-    behind_groups.assign(groups.begin() + std::ptrdiff_t(near_groups), groups.end());
-    groups.resize(near_groups);
+    groupRuns(behind_runs, behind_groups);
     for (Group& g : behind_groups)
         g.far = true;
     // Which pieces stand far behind the deepest foot among the pieces next to each other around
