@@ -468,9 +468,14 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
             const double luma = 0.299 * r + 0.587 * g + 0.114 * b;
             const double cb = 128 + 0.564 * (b - luma);
             const double cr = 128 + 0.713 * (r - luma);
-            ycc.at<cv::Vec3f>(y, x) = cv::Vec3f(float(luma + effects.noise_y * rng.normal()),
-                                                float(cb + effects.noise_c * rng.normal()),
-                                                float(cr + effects.noise_c * rng.normal()));
+            // Drawn one by one, Cr first: as arguments of one call their order would be the
+            // compiler's (scenario_cast.cpp says why it matters).
+            const double n_cr = rng.normal();
+            const double n_cb = rng.normal();
+            const double n_y = rng.normal();
+            ycc.at<cv::Vec3f>(y, x) =
+                cv::Vec3f(float(luma + effects.noise_y * n_y), float(cb + effects.noise_c * n_cb),
+                          float(cr + effects.noise_c * n_cr));
         }
     }
     if (effects.chroma_422) {

@@ -1,6 +1,12 @@
 // The cast and the set of each scenario: the hall around the carpet (walls, banners, people,
 // scenery) and the objects on it (robots, the ball, their paths); scenario_script.cpp moves
 // them, lights them and points the camera.
+//
+// A stream is the same bytes whichever compiler built the generator: no two random draws are
+// arguments of one call (or operands of one operator), whose order of evaluation C++ leaves to
+// the compiler. They are drawn into named values first, in the order GCC took them when they
+// were arguments (the last first), so that the streams GCC made before stay as they were; a
+// clang build made other scenes until then (tests/core/test_synth.cpp checks a stream's bytes).
 #include "synth/scenario_script.h"
 
 #include <algorithm>
@@ -83,14 +89,22 @@ Primitive sceneryBox(const Vec2& centre, double yaw, double hx, double hy, doubl
     return p;
 }
 
+/// x uniform in [lo, hi] and y at +-side, a coin's toss (drawn first).
+Vec2 drawnPoint(Rng& rng, double lo, double hi, double side)
+{
+    const double y = rng.chance(0.5) ? side : -side;
+    return Vec2(rng.uniform(lo, hi), y);
+}
+
 /// A point in the band between the carpet and the walls, `margin` m clear of both.
 Vec2 offFieldPoint(Rng& rng, const Surroundings& s, double margin)
 {
     const double cx = FieldGeometry::kCarpetHalfLength + margin;
     const double cy = FieldGeometry::kCarpetHalfWidth + margin;
     for (;;) {
-        const Vec2 p(rng.uniform(-s.half_x + margin, s.half_x - margin),
-                     rng.uniform(-s.half_y + margin, s.half_y - margin));
+        const double y = rng.uniform(-s.half_y + margin, s.half_y - margin);
+        const double x = rng.uniform(-s.half_x + margin, s.half_x - margin);
+        const Vec2 p(x, y);
         if (std::abs(p.x()) > cx || std::abs(p.y()) > cy)
             return p;
     }
@@ -140,16 +154,17 @@ void ScenarioScript::buildSurroundings(Rng& rng)
         const int cupboards = m_scenario == Scenario::Lab1 ? 4 : 2;
         for (int i = 0; i < cupboards; ++i) {
             const Vec2 p = offFieldPoint(rng, s, 0.35);
-            m_static.primitives.push_back(
-                sceneryBox(p, 0, 0.3, 0.3, 0.0, rng.uniform(1.2, 1.9),
-                           rng.chance(0.5) ? Rgbf(126, 130, 160) : Rgbf(150, 108, 74)));
+            const Rgbf colour = rng.chance(0.5) ? Rgbf(126, 130, 160) : Rgbf(150, 108, 74);
+            const double top = rng.uniform(1.2, 1.9);
+            m_static.primitives.push_back(sceneryBox(p, 0, 0.3, 0.3, 0.0, top, colour));
         }
         if (m_scenario == Scenario::Lab1) {
             for (int i = 0; i < 4; ++i) { // boxes and bags on the floor: the background noise
                 const Vec2 p = offFieldPoint(rng, s, 0.2);
-                m_static.primitives.push_back(
-                    sceneryBox(p, rng.uniform(0, kPi), 0.2, 0.15, 0.0, rng.uniform(0.2, 0.5),
-                               rng.chance(0.5) ? Rgbf(172, 140, 100) : Rgbf(120, 60, 96)));
+                const Rgbf colour = rng.chance(0.5) ? Rgbf(172, 140, 100) : Rgbf(120, 60, 96);
+                const double top = rng.uniform(0.2, 0.5);
+                const double yaw = rng.uniform(0, kPi);
+                m_static.primitives.push_back(sceneryBox(p, yaw, 0.2, 0.15, 0.0, top, colour));
             }
         }
         return;
@@ -172,7 +187,8 @@ void ScenarioScript::buildSurroundings(Rng& rng)
     // Team tables behind the touch lines.
     for (int i = 0; i < 4; ++i) {
         const double side = i % 2 ? 1 : -1;
-        const Vec2 p(rng.uniform(-4.5, 4.5), side * rng.uniform(3.3, 4.2));
+        const double y = side * rng.uniform(3.3, 4.2);
+        const Vec2 p(rng.uniform(-4.5, 4.5), y);
         m_static.primitives.push_back(sceneryBox(p, 0, 0.8, 0.4, 0.72, 0.76, Rgbf(158, 118, 86)));
         m_static.primitives.push_back(sceneryBox(p, 0, 0.75, 0.35, 0.0, 0.72, Rgbf(70, 74, 120)));
         m_static.primitives.push_back(sceneryBox(p + Vec2(rng.uniform(-0.4, 0.4), 0), 0, 0.17, 0.12,
@@ -185,8 +201,8 @@ void ScenarioScript::buildSurroundings(Rng& rng)
         crowd = 28;
     for (int i = 0; i < crowd; ++i) {
         const Vec2 p = offFieldPoint(rng, s, 0.35);
-        addPerson(m_static, p, std::atan2(-p.y(), -p.x()) + rng.uniform(-0.6, 0.6),
-                  randomPerson(rng), false);
+        const PersonLook look = randomPerson(rng);
+        addPerson(m_static, p, std::atan2(-p.y(), -p.x()) + rng.uniform(-0.6, 0.6), look, false);
     }
     if (m_scenario == Scenario::Difficult) {
         // Distractors: ball-orange-ish and goal-yellow-ish things off the field.
@@ -209,7 +225,8 @@ void ScenarioScript::buildSurroundings(Rng& rng)
 void ScenarioScript::planObjects(Rng& rng)
 {
     const bool slow = m_scenario == Scenario::Lab2;
-    m_ball_home = Vec2(rng.uniform(-1.2, 1.2), rng.uniform(-0.7, 0.7));
+    const double ball_y = rng.uniform(-0.7, 0.7);
+    m_ball_home = Vec2(rng.uniform(-1.2, 1.2), ball_y);
     m_ball_x = randomWander(rng, slow ? 0.9 : 1.5, slow ? 0.1 : 0.15, slow ? 0.2 : 0.35);
     m_ball_y = randomWander(rng, slow ? 0.6 : 0.9, slow ? 0.1 : 0.15, slow ? 0.2 : 0.35);
     m_cam_distance = randomWander(rng, 1.0, 0.2, 0.5);
@@ -259,7 +276,8 @@ void ScenarioScript::planObjects(Rng& rng)
     };
     auto wanderer = [&](bool blue, double amplitude) {
         RobotPlan r = robot(RobotRole::Wander, blue);
-        r.home = Vec2(rng.uniform(-2.4, 2.4), rng.uniform(-1.6, 1.6));
+        const double y = rng.uniform(-1.6, 1.6);
+        r.home = Vec2(rng.uniform(-2.4, 2.4), y);
         r.radius = amplitude;
         r.bearing = rng.uniform(0, 2 * kPi);
         m_robots.push_back(r);
@@ -294,7 +312,8 @@ void ScenarioScript::planObjects(Rng& rng)
         break;
     case Scenario::Lab2: {
         RobotPlan r = robot(RobotRole::Wander, true);
-        r.home = Vec2(rng.uniform(-1.5, 1.5), rng.chance(0.5) ? 1.9 : -1.9);
+        const double y = rng.chance(0.5) ? 1.9 : -1.9;
+        r.home = Vec2(rng.uniform(-1.5, 1.5), y);
         r.radius = 0.25;
         r.bearing = rng.uniform(0, 2 * kPi);
         m_robots.push_back(r);
@@ -306,7 +325,7 @@ void ScenarioScript::planObjects(Rng& rng)
         follower(true, 0.45, 0.8);
         follower(false, 0.5, 0.9);
         keeper(false, goal);
-        person(Vec2(rng.uniform(-1.5, 1.5), rng.chance(0.5) ? 2.3 : -2.3), 0.8, true);
+        person(drawnPoint(rng, -1.5, 1.5, 2.3), 0.8, true);
         break;
     case Scenario::RC2012:
         follower(true, 0.7, 1.4);
@@ -323,15 +342,22 @@ void ScenarioScript::planObjects(Rng& rng)
         wanderer(false, 0.8);
         keeper(true, goal);
         keeper(false, -goal);
-        person(Vec2(rng.uniform(-1, 1), rng.uniform(-0.5, 0.5)), 1.8, true);
-        m_people.back().follows_play = true;                                         // the referee
-        person(Vec2(rng.uniform(-2, 2), rng.chance(0.5) ? 2.35 : -2.35), 1.0, true); // captain
+        {
+            const double y = rng.uniform(-0.5, 0.5);
+            person(Vec2(rng.uniform(-1, 1), y), 1.8, true);
+        }
+        m_people.back().follows_play = true;             // the referee
+        person(drawnPoint(rng, -2, 2, 2.35), 1.0, true); // captain
         break;
     case Scenario::Crowded:
-        occluder(rng.chance(0.5), rng.uniform(0.15, 0.35)); // close to the camera, and in view
-        m_robots.back().wy.a1 *= 0.3;                       // more often than not
-        m_robots.back().wy.a2 *= 0.3;
-        occluder(rng.chance(0.5), rng.uniform(0.45, 0.7));
+        for (const auto& [lo, hi] : {std::pair(0.15, 0.35), std::pair(0.45, 0.7)}) {
+            const double fraction = rng.uniform(lo, hi);
+            occluder(rng.chance(0.5), fraction);
+            if (lo < 0.4) { // the first: close to the camera, and in view more often than not
+                m_robots.back().wy.a1 *= 0.3;
+                m_robots.back().wy.a2 *= 0.3;
+            }
+        }
         crowd(true, rng.uniform(-0.8, -0.3), 0.3, 0.8);
         crowd(false, rng.uniform(0.2, 0.7), 0.4, 1.0);
         follower(rng.chance(0.5), 0.5, 1.2);
