@@ -23,6 +23,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sys/stat.h>
 
 using namespace fieldsight;
@@ -342,24 +343,27 @@ private slots:
             {"run", "e_broken", "--out", "e.json"}, 0,
             {"e_broken/frame_000009.png", "skipped", "does not exist"}, "e_broken");
         // JSON past what a real file needs: refused unread, not parsed into gigabytes.
-        const auto huge = [](const std::string& head, const std::string& tail) {
-            std::string text = head + "[";
-            text.reserve(50u << 20);
-            while (text.size() < (50u << 20))
-                text += "0,";
-            return text + "0]" + tail;
+        std::string list = "0,"; // doubled up to 50 MiB of "0,0,...": a copy at a time
+        while (list.size() < (50u << 20))
+            list += list;
+        list.resize(50u << 20);
+        const auto writeHuge = [&list](const std::string& file, const std::string& head,
+                                       const std::string& tail) {
+            std::ofstream out(file, std::ios::binary);
+            out << head << '[' << list << "0]" << tail;
+            QVERIFY(out.flush());
         };
         goodStream("m_huge");
-        writeBytes(at("m_huge/stream.json"),
-                   huge(R"({"format": "fieldsight-stream/1", "camera": {"notes": )", "}}"));
+        writeHuge(at("m_huge/stream.json"),
+                  R"({"format": "fieldsight-stream/1", "camera": {"notes": )", "}}");
         add("stream.json of 50 MB", {"run", "m_huge"}, 2,
             {"m_huge/stream.json", "too large", "for a stream.json of 3 frames"}, "m_huge");
-        writeBytes(at("truth_50mb.json"),
-                   huge(R"({"format": "fieldsight-annotations/1", "notes": )", "}"));
+        writeHuge(at("truth_50mb.json"), R"({"format": "fieldsight-annotations/1", "notes": )",
+                  "}");
         add("annotations of 50 MB", {"eval", "good", "--truth", "truth_50mb.json"}, 2,
             {"truth_50mb.json", "too large"});
-        writeBytes(at("samples_50mb.json"),
-                   huge(R"({"format": "fieldsight-lut-samples/1", "notes": )", "}"));
+        writeHuge(at("samples_50mb.json"), R"({"format": "fieldsight-lut-samples/1", "notes": )",
+                  "}");
         add("LUT samples of 50 MB",
             {"lut", "build", "good", "--samples", "samples_50mb.json", "--out", "built.lut"}, 2,
             {"samples_50mb.json", "too large"});
