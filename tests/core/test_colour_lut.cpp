@@ -1,4 +1,5 @@
 // The native .lut format (SPEC §3) and atomic saving.
+#include "support/child_process.h"
 #include "support/test_suite.h"
 #include "visioncore/basics/atomic_file.h"
 #include "visioncore/basics/colour_lut.h"
@@ -24,8 +25,8 @@ namespace {
 
 std::vector<std::uint8_t> fileBytes(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string bytes = test::readAll(path);
+    return {bytes.begin(), bytes.end()};
 }
 
 void writeBytes(const std::string& path, const std::vector<std::uint8_t>& bytes)

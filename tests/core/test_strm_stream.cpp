@@ -38,8 +38,7 @@ bool sameImage(const cv::Mat& a, const cv::Mat& b)
 
 std::string strmFileBytes(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return test::readAll(path);
 }
 
 template <class T> void put(std::string& out, T value)

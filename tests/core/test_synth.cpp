@@ -1,5 +1,6 @@
 // The scene generator: determinism, camera geometry, ground truth against the rendered pixels,
 // the ideal LUT, and the files it writes.
+#include "support/child_process.h"
 #include "support/test_suite.h"
 #include "support/test_images.h"
 #include "synth/camera_model.h"
@@ -39,8 +40,8 @@ constexpr int kFrames = 8;
 
 std::vector<char> readBytes(const fs::path& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string bytes = test::readAll(path.string());
+    return {bytes.begin(), bytes.end()};
 }
 
 nlohmann::json readJson(const fs::path& path)
