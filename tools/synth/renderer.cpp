@@ -170,7 +170,6 @@ Rgbf wallColour(const Surroundings& s, int wall, double u, double z)
     return c * (0.85 + 0.15 * std::min(1.0, z / 2.5));
 }
 
-/// The surroundings along a ray: carpet, floor, walls or ceiling.
 /// How far a ground hit moves per supersample step in image x and y (field metres).
 struct GroundSteps
 {
@@ -179,16 +178,20 @@ struct GroundSteps
     Vec3 forward; ///< the camera's optical axis in the world
 };
 
-Sample environment(const Scene& scene, const Vec3& o, const Vec3& d, const GroundSteps& steps,
-                   double& t_hit)
+/// Where a ray meets the surroundings: how far, and which surface.
+struct EnvironmentHit
 {
-    const Surroundings& s = scene.surroundings;
     double t = std::numeric_limits<double>::infinity();
-    int surface = -1; // 0..3 walls, 4 floor, 5 ceiling
+    int surface = -1; ///< 0..3 walls, 4 floor, 5 ceiling
+};
+
+EnvironmentHit environmentHit(const Surroundings& s, const Vec3& o, const Vec3& d)
+{
+    EnvironmentHit hit;
     auto consider = [&](double tc, int id) {
-        if (tc > 0 && tc < t) {
-            t = tc;
-            surface = id;
+        if (tc > 0 && tc < hit.t) {
+            hit.t = tc;
+            hit.surface = id;
         }
     };
     if (d.x() > 1e-12)
@@ -203,7 +206,17 @@ Sample environment(const Scene& scene, const Vec3& o, const Vec3& d, const Groun
         consider(-o.z() / d.z(), 4);
     if (d.z() > 1e-12)
         consider((s.ceiling - o.z()) / d.z(), 5);
-    t_hit = t;
+    return hit;
+}
+
+/// The surroundings' colour and class where the ray meets them (`hit`, of environmentHit):
+/// carpet, floor, walls or ceiling.
+Sample environment(const Scene& scene, const Vec3& o, const Vec3& d, const GroundSteps& steps,
+                   const EnvironmentHit& hit)
+{
+    const Surroundings& s = scene.surroundings;
+    const double t = hit.t;
+    const int surface = hit.surface;
     const Vec3 p = o + t * d;
     Sample out;
     if (surface == 4) {
@@ -407,9 +420,10 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                 for (int sx = 0; sx < 3; ++sx) {
                     const Vec3 d = camera.rayDirection(x + kOffsets[std::size_t(sx)],
                                                        y + kOffsets[std::size_t(sy)]);
-                    double t_env = 0;
-                    Sample s = environment(scene, origin, d, steps, t_env);
-                    double best = t_env;
+                    // The surroundings are shaded only where no primitive stands in front.
+                    const EnvironmentHit env = environmentHit(scene.surroundings, origin, d);
+                    Sample s;
+                    double best = env.t;
                     int best_index = -1;
                     Hit best_hit;
                     for (const int i : row) {
@@ -430,7 +444,8 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                         s.colour = shadePrimitive(scene, p, origin + best * d, best_hit.normal, d);
                         s.label = p.label;
                         s.primitive = best_index;
-                        s.partial = false;
+                    } else {
+                        s = environment(scene, origin, d, steps, env);
                     }
                     sum += s.colour;
                     if (first_label < 0)
