@@ -216,8 +216,10 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
             lut.addFrame(lit.image.ycbcr, lit.image.labels);
         }
         if (options.write_png) {
+            // zlib's level 6: level 9 made files a tenth smaller in thirteen times the time
+            // (0.18 s against 0.014 s a 320x240 frame, 1.8 s against 0.13 s at 1280x720).
             if (Status s = writeImage((dir / frame.name).string(), frame.image.bgr,
-                                      {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
+                                      {cv::IMWRITE_PNG_COMPRESSION, 6, cv::IMWRITE_PNG_STRATEGY,
                                        cv::IMWRITE_PNG_STRATEGY_FILTERED});
                 !s)
                 return s;
