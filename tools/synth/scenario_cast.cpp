@@ -349,19 +349,18 @@ void ScenarioScript::planObjects(Rng& rng)
         m_people.back().follows_play = true;             // the referee
         person(drawnPoint(rng, -2, 2, 2.35), 1.0, true); // captain
         break;
-    case Scenario::Crowded:
-        for (const auto& [lo, hi] : {std::pair(0.15, 0.35), std::pair(0.45, 0.7)}) {
-            const double fraction = rng.uniform(lo, hi);
-            occluder(rng.chance(0.5), fraction);
-            if (lo < 0.4) { // the first: close to the camera, and in view more often than not
-                m_robots.back().wy.a1 *= 0.3;
-                m_robots.back().wy.a2 *= 0.3;
-            }
-        }
+    case Scenario::Crowded: {
+        const double close = rng.uniform(0.15, 0.35);
+        occluder(rng.chance(0.5), close); // close to the camera, and in view
+        m_robots.back().wy.a1 *= 0.3;     // more often than not
+        m_robots.back().wy.a2 *= 0.3;
+        const double further = rng.uniform(0.45, 0.7);
+        occluder(rng.chance(0.5), further);
         crowd(true, rng.uniform(-0.8, -0.3), 0.3, 0.8);
         crowd(false, rng.uniform(0.2, 0.7), 0.4, 1.0);
         follower(rng.chance(0.5), 0.5, 1.2);
         break;
+    }
     }
 }
 
