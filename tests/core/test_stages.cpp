@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace fieldsight;
 using test::drawLine;
@@ -83,15 +85,19 @@ bool notesSay(const test::RecordingSink& sink, const std::string& layer, const s
         [&what](const auto& note) { return note.second.find(what) != std::string::npos; });
 }
 
-/// Whether frame `f` gives no ball by default, with a rejected circle whose note names ball
-/// parameter `rule`, and one ball with that rule set to 0.
-bool onlyWithoutTheRuleABall(const cv::Mat& f, const std::string& rule)
+/// Whether frame `f` gives no ball by default (with the ball parameters `off` set to 0), with a
+/// rejected circle whose note names ball parameter `rule`, and one ball with that rule set to 0.
+bool onlyWithoutTheRuleABall(const cv::Mat& f, const std::string& rule,
+                             const std::vector<std::string>& off = {})
 {
     MemoryDataWrapper data(f, test::testLut());
     test::RecordingSink sink;
     sink.layers = {"ball.rejected"};
     data.setDebugSink(&sink);
     ControlWrapper core(data);
+    for (const std::string& other : off)
+        if (!core.setParam("ball", other, 0).ok())
+            return false;
     if (!runOrDie(core).percepts.list<Ball>().empty() || !notesSay(sink, "ball.rejected", rule))
         return false;
     return core.setParam("ball", rule, 0).ok() && runOrDie(core).percepts.list<Ball>().size() == 1;
@@ -219,13 +225,26 @@ private slots:
         QCOMPARE(runOrDie(core).percepts.list<Ball>().size(), std::size_t(1));
     }
 
+    /// The rim of a white foot on the carpet that the table calls ball colour (B-Human's kick,
+    /// frame 113), an arc 3 px thick: a small circle fits edges along it and has carpet and line
+    /// around it, but its colour reaches across it one way only, so it is no ball.
+    void aThinBandOfBallColourIsNoBall()
+    {
+        cv::Mat f = fieldFrame(60);
+        fillCircle(f, 160.0, 250.0, 40, Colour::Orange); // the rim
+        fillCircle(f, 160.0, 250.0, 37, Colour::White);  // the foot
+        QVERIFY(onlyWithoutTheRuleABall(f, "min_diameter_balance"));
+    }
+
     /// A ball found from one run alone stands for a ball too small for three edge points: the
     /// longest run across a red band lying on the carpet (no circle fits its edges) is none.
     void aLongRunAloneIsNoBall()
     {
         cv::Mat f = fieldFrame(60);
         fillRect(f, 100, 150, 179, 159, Colour::Orange);
-        QVERIFY(onlyWithoutTheRuleABall(f, "max_chord_spacings"));
+        // Thin one way, the band is no ball by min_diameter_balance too.
+        QVERIFY(onlyWithoutTheRuleABall(f, "max_chord_spacings", {"min_diameter_balance"}));
+        QVERIFY(onlyWithoutTheRuleABall(f, "min_diameter_balance", {"max_chord_spacings"}));
     }
 
     void ballCentreMustBeInTheImage()

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <numeric>
 
 namespace fieldsight {
@@ -155,6 +156,37 @@ double colourFraction(const Blackboard& bb, const Circle& c, Colour colour)
     return total ? double(hits) / total : 0.0;
 }
 
+/// How far the ball colour reaches across the circle's vertical diameter against across its
+/// horizontal one, or the inverse, whichever is at most 1: from its first to its last pixel of
+/// the colour, over the diameter's pixels in the image (1 when a diameter has fewer than 3
+/// there). A ball is a disc of its colour, as wide one way as the other however sparsely the
+/// table covers it; a rim or a highlight band that the table calls ball colour is thin one way.
+double diameterBalance(const Blackboard& bb, const Circle& c, Colour colour)
+{
+    const int r = int(std::floor(c.radius));
+    const int cx = int(std::lround(c.centre.x)), cy = int(std::lround(c.centre.y));
+    std::array<double, 2> reach{};
+    for (std::size_t axis = 0; axis < 2; ++axis) {
+        int total = 0, first = -1, last = -1;
+        for (int t = -r; t <= r; ++t) {
+            const int x = cx + (axis == 0 ? t : 0), y = cy + (axis == 1 ? t : 0);
+            if (x < 0 || y < 0 || x >= bb.width() || y >= bb.height())
+                continue;
+            if (bb.classify(x, y) == colour) {
+                if (first < 0)
+                    first = total;
+                last = total;
+            }
+            ++total;
+        }
+        if (total < 3)
+            return 1.0;
+        reach[axis] = first < 0 ? 0.0 : double(last - first + 1) / total;
+    }
+    const double most = std::max(reach[0], reach[1]);
+    return most > 0 ? std::min(reach[0], reach[1]) / most : 0.0;
+}
+
 } // namespace
 
 const StageInfo& BallDetector::info() const
@@ -210,6 +242,14 @@ bool BallDetector::rejects(const Blackboard& bb, PointF centre, double radius, C
         return why ? say("ball colour " + oneDecimal(100 * orange) +
                          " %, under min_orange_fraction")
                    : true;
+    if (m_min_diameter_balance > 0) {
+        const double balance = diameterBalance(bb, {centre, radius}, colour);
+        if (balance < m_min_diameter_balance)
+            return why ? say("ball colour " + oneDecimal(100 * balance) +
+                             " % as far across one way as the other, under "
+                             "min_diameter_balance")
+                       : true;
+    }
     if (m_min_field_around > 0) {
         const double field = fieldAround(bb, {centre, radius});
         if (field < m_min_field_around)

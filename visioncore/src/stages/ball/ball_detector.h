@@ -60,6 +60,13 @@ private:
         {"max_radius", "", 0.05, 2, 0.05,
          "Largest radius as a share of the image height; a ball's centre must also lie in the "
          "image."}};
+    Param<double> m_min_diameter_balance{
+        this,
+        0.5,
+        {"min_diameter_balance", "", 0, 1, 0.05,
+         "How far the ball colour must reach across the vertical diameter against across the "
+         "horizontal one, or the inverse: a ball is a disc, a rim or a highlight band on a "
+         "robot's arm or foot is thin one way (0: off)."}};
     Param<double> m_min_field_around{
         this,
         0.1,
