@@ -92,7 +92,8 @@ std::vector<Expected> expectedObjects(const Json& frame, int w, int h)
         out.push_back({"field_lines",
                        clippedBox(std::min(x1, x2), std::min(y1, y2), std::max(x1, x2),
                                   std::max(y1, y2), w, h),
-                       {x1, y1, x2, y2}});
+                       {x1, y1, x2, y2},
+                       l.value("concealed", false)});
     }
     return out;
 }

@@ -411,6 +411,39 @@ private slots:
         QVERIFY(concealed_robots >= 2);
     }
 
+    /// A field line is seen where it is at least half a pixel wide across itself and nothing
+    /// stands in front of it: a line across the view 4 m away (about 0.37 px tall) is not seen, the
+    /// same line 1 m away is (about 6 px), a line running away from the camera is seen to where
+    /// it grows thin, and a robot in front hides what it covers.
+    void aFieldLineIsSeenWhereItIsWideAndInFront()
+    {
+        CameraModel camera(320, 240);
+        CameraPose pose; // at the origin, 0.45 m high, looking along +x
+        pose.pitch = 0.2;
+        camera.setPose(pose);
+        cv::Mat nothing(240, 320, CV_32S, cv::Scalar(-1));
+        const auto across = [](double x) {
+            return LineSegment{Eigen::Vector2d(x, -0.5), Eigen::Vector2d(x, 0.5)};
+        };
+        // f_y 262 px: a 5 cm line d m ahead is 262 * 0.05 * 0.45 / d^2 px tall (d >> 0.45 m).
+        QCOMPARE(seenLineShare(across(4.0), camera, nothing), 0.0);
+        QCOMPARE(seenLineShare(across(1.0), camera, nothing), 1.0);
+        // Running away from the camera its width across itself is f * 0.05 / d: half a pixel at
+        // about 26 m, so all of it from 1 to 6 m ahead is seen.
+        const LineSegment away{Eigen::Vector2d(1.0, 0.3), Eigen::Vector2d(6.0, 0.3)};
+        QCOMPARE(seenLineShare(away, camera, nothing), 1.0);
+
+        // Something in front of the middle third of the near line's image.
+        const auto a = camera.project(Eigen::Vector3d(1.0, 0.5, 0));
+        const auto b = camera.project(Eigen::Vector3d(1.0, -0.5, 0));
+        QVERIFY(a && b);
+        cv::Mat robot = nothing.clone();
+        const int third = int((b->x - a->x) / 3);
+        robot(cv::Rect(int(a->x) + third, 0, third, 240)).setTo(0);
+        const double share = seenLineShare(across(1.0), camera, robot);
+        QVERIFY2(std::abs(share - 2.0 / 3.0) < 0.03, std::to_string(share).c_str());
+    }
+
     /// A post whose foot is in the frame but behind a robot (Lab 1's frames 2 and 14) is listed
     /// as concealed: its box ends at the robot, not at its base. A post standing in view is not.
     void aPostWithItsFootHiddenIsConcealed()

@@ -279,10 +279,56 @@ std::vector<double> fieldTopPerColumn(const CameraModel& camera)
     return top;
 }
 
-std::vector<FieldLine> projectedFieldLines(const CameraModel& camera)
+double seenLineShare(const LineSegment& line, const CameraModel& camera, const cv::Mat& primitive)
+{
+    // Points every centimetre along the line's centre, each weighted by the image length to the
+    // next one: the share is of the line's length in the image, not on the field.
+    const Eigen::Vector2d along = line.b - line.a;
+    const double length = along.norm();
+    if (length <= 0)
+        return 0.0;
+    const Eigen::Vector2d normal = Eigen::Vector2d(-along.y(), along.x()) / length;
+    const double half_width = FieldGeometry::kLineWidth / 2;
+    const int steps = std::max(1, int(std::ceil(length / 0.01)));
+    const auto imageOf = [&camera](const Eigen::Vector2d& p) -> std::optional<PointF> {
+        const Vec3 c = camera.toCamera(Vec3(p.x(), p.y(), 0));
+        if (c.z() < 0.05)
+            return std::nullopt;
+        return camera.projectCamera(c);
+    };
+    double in_image = 0, seen = 0;
+    std::optional<PointF> previous;
+    for (int i = 0; i <= steps; ++i) {
+        const Eigen::Vector2d p = line.a + along * (double(i) / steps);
+        const std::optional<PointF> at = imageOf(p);
+        const std::optional<PointF> left = imageOf(p + half_width * normal);
+        const std::optional<PointF> right = imageOf(p - half_width * normal);
+        if (!at || !left || !right) {
+            previous.reset();
+            continue;
+        }
+        const int x = int(std::lround(at->x)), y = int(std::lround(at->y));
+        const bool inside = x >= 0 && y >= 0 && x < primitive.cols && y < primitive.rows;
+        if (previous && inside) {
+            const double dx = at->x - previous->x, dy = at->y - previous->y;
+            const double step = std::hypot(dx, dy);
+            in_image += step;
+            // The line's width across itself in the image: its edges' distance, less what runs
+            // along the line.
+            const double wx = left->x - right->x, wy = left->y - right->y;
+            const double width = step > 0 ? std::abs(wx * dy - wy * dx) / step : 0.0;
+            if (width >= kMinLineWidth && primitive.at<std::int32_t>(y, x) < 0)
+                seen += step;
+        }
+        previous = at;
+    }
+    return in_image > 0 ? seen / in_image : 0.0;
+}
+
+std::vector<ProjectedLine> projectedFieldLines(const CameraModel& camera)
 {
     constexpr double kNear = 0.05;
-    std::vector<FieldLine> out;
+    std::vector<ProjectedLine> out;
     for (const LineSegment& s : straightFieldLines()) {
         Vec3 a = camera.toCamera(Vec3(s.a.x(), s.a.y(), 0));
         Vec3 b = camera.toCamera(Vec3(s.b.x(), s.b.y(), 0));
@@ -298,7 +344,7 @@ std::vector<FieldLine> projectedFieldLines(const CameraModel& camera)
             continue;
         if (std::hypot(pb.x - pa.x, pb.y - pa.y) < 3.0)
             continue;
-        out.push_back({round2(pa.x), round2(pa.y), round2(pb.x), round2(pb.y)});
+        out.push_back({{round2(pa.x), round2(pa.y), round2(pb.x), round2(pb.y)}, &s});
     }
     return out;
 }
@@ -307,6 +353,8 @@ namespace {
 
 /// A ball or robot with less than this share of itself seen is not listed at all.
 constexpr double kConcealedShare = 0.1;
+/// A field line with less than this share of its image length seen is listed as concealed.
+constexpr double kSeenLineShare = 0.5;
 
 /// Whether post `object` stands with its foot in the image but hidden behind something nearer
 /// (a robot close to the camera): the post's box then ends at the occluder, not at its base. The
@@ -440,7 +488,13 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera, const
             boundary.points.push_back({column_points[i].x, round2(column_points[i].y)});
     annotation.truth.output<FieldBoundary>().push_back(std::move(boundary));
 
-    annotation.truth.output<FieldLine>() = projectedFieldLines(camera);
+    std::vector<FieldLine>& lines = annotation.truth.output<FieldLine>();
+    for (const ProjectedLine& projected : projectedFieldLines(camera)) {
+        if (seenLineShare(*projected.source, camera, primitive) < kSeenLineShare)
+            annotation.setFlags(PerceptTraits<FieldLine>::truth_key, lines.size(),
+                                {.concealed = true});
+        lines.push_back(projected.line);
+    }
     return annotation;
 }
 

@@ -18,8 +18,10 @@
 //   ignoring everything standing on it; h-1 where the carpet is not in the column, 0 where it
 //   covers the whole column. Simplified to a polyline within 0.25 px, x = 0 .. width-1.
 // - field_lines: the straight lines (touch, goal, halfway, goal-area lines) as centre-line
-//   segments clipped to the image, >= 3 px long. Occlusion is ignored. The centre circle and the
-//   marks are not straight lines and are not listed.
+//   segments clipped to the image, >= 3 px long. Listed as concealed when less than half of that
+//   length is seen: at least kMinLineWidth wide across itself there and not behind anything
+//   standing on the field (far lines run nearly along the image rows and grow thin; a robot hides
+//   what is behind it). The centre circle and the marks are not straight lines and are not listed.
 #pragma once
 
 #include "synth/camera_model.h"
@@ -58,6 +60,20 @@ FrameAnnotation groundTruth(const Scene& scene, const CameraModel& camera,
 
 /// Per-column top of the carpet, before simplification (one value per column).
 std::vector<double> fieldTopPerColumn(const CameraModel& camera);
-std::vector<FieldLine> projectedFieldLines(const CameraModel& camera);
+/// A straight field line as the image shows its centre, and the line it is.
+struct ProjectedLine
+{
+    FieldLine line;
+    const LineSegment* source = nullptr;
+};
+std::vector<ProjectedLine> projectedFieldLines(const CameraModel& camera);
+/// A line in the image narrower than this across itself (px) is not seen there: it covers less
+/// than half of any pixel it crosses, so no pixel of it is mostly line and a colour table cannot
+/// call one white.
+constexpr double kMinLineWidth = 0.5;
+/// The share of `line`'s length in the image that is seen: in the image, at least kMinLineWidth
+/// wide there, and not behind anything standing on the field (`primitive`, the renderer's map of
+/// what each pixel shows).
+double seenLineShare(const LineSegment& line, const CameraModel& camera, const cv::Mat& primitive);
 
 } // namespace fieldsight::synth
