@@ -279,6 +279,9 @@ std::vector<double> fieldTopPerColumn(const CameraModel& camera)
     return top;
 }
 
+/// m in front of the camera: a field line's part nearer than this is not listed or judged.
+constexpr double kLineNear = 0.05;
+
 double seenLineShare(const LineSegment& line, const CameraModel& camera, const cv::Mat& primitive)
 {
     // Points every centimetre along the line's centre, each weighted by the image length to the
@@ -292,7 +295,7 @@ double seenLineShare(const LineSegment& line, const CameraModel& camera, const c
     const int steps = std::max(1, int(std::ceil(length / 0.01)));
     const auto imageOf = [&camera](const Eigen::Vector2d& p) -> std::optional<PointF> {
         const Vec3 c = camera.toCamera(Vec3(p.x(), p.y(), 0));
-        if (c.z() < 0.05)
+        if (c.z() < kLineNear)
             return std::nullopt;
         return camera.projectCamera(c);
     };
@@ -327,17 +330,16 @@ double seenLineShare(const LineSegment& line, const CameraModel& camera, const c
 
 std::vector<ProjectedLine> projectedFieldLines(const CameraModel& camera)
 {
-    constexpr double kNear = 0.05;
     std::vector<ProjectedLine> out;
     for (const LineSegment& s : straightFieldLines()) {
         Vec3 a = camera.toCamera(Vec3(s.a.x(), s.a.y(), 0));
         Vec3 b = camera.toCamera(Vec3(s.b.x(), s.b.y(), 0));
-        if (a.z() < kNear && b.z() < kNear)
+        if (a.z() < kLineNear && b.z() < kLineNear)
             continue;
-        if (a.z() < kNear)
-            a = a + (kNear - a.z()) / (b.z() - a.z()) * (b - a);
-        else if (b.z() < kNear)
-            b = b + (kNear - b.z()) / (a.z() - b.z()) * (a - b);
+        if (a.z() < kLineNear)
+            a = a + (kLineNear - a.z()) / (b.z() - a.z()) * (b - a);
+        else if (b.z() < kLineNear)
+            b = b + (kLineNear - b.z()) / (a.z() - b.z()) * (a - b);
         PointF pa = camera.projectCamera(a);
         PointF pb = camera.projectCamera(b);
         if (!clipToImage(pa, pb, camera.width(), camera.height()))
