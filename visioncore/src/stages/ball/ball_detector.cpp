@@ -16,7 +16,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <numeric>
 
 namespace fieldsight {
@@ -245,9 +244,8 @@ bool BallDetector::rejects(const Blackboard& bb, PointF centre, double radius, C
     if (m_min_diameter_balance > 0) {
         const double balance = diameterBalance(bb, {centre, radius}, colour);
         if (balance < m_min_diameter_balance)
-            return why ? say("ball colour " + oneDecimal(100 * balance) +
-                             " % as far across one way as the other, under "
-                             "min_diameter_balance")
+            return why ? say("ball colour reaches across one way " + oneDecimal(100 * balance) +
+                             " % as far as the other, under min_diameter_balance")
                        : true;
     }
     if (m_min_field_around > 0) {
