@@ -137,6 +137,15 @@ std::uint8_t ColourLut::fillMemo(std::size_t i) const
     return c;
 }
 
+std::uint8_t ColourLut::knownOrFilled(const std::uint8_t* px) const
+{
+    // An earlier pixel of the run may have filled the cell since memoRun read it (a run over the
+    // carpet reads a few cells many times).
+    const std::size_t i = index(px[0], px[1], px[2]);
+    const std::uint8_t known = __atomic_load_n(m_memo_cells + i, __ATOMIC_RELAXED);
+    return known ? known : std::uint8_t(fillMemo(i) | kKnown);
+}
+
 void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int count,
                             std::uint8_t* out) const
 {
@@ -162,8 +171,7 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
         if (unknown) {
             do {
                 const int k = i + __builtin_ctz(unknown);
-                const std::uint8_t* p = px + k * stride;
-                out[k] = std::uint8_t(fillMemo(index(p[0], p[1], p[2])) | kKnown);
+                out[k] = knownOrFilled(px + k * stride);
                 unknown &= unknown - 1;
             } while (unknown);
             v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + i));
@@ -171,10 +179,8 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
         _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_and_si128(v, low));
     }
 #endif
-    for (; i < count; ++i) {
-        const std::uint8_t* p = px + i * stride;
-        out[i] = out[i] ? std::uint8_t(out[i] & ~kKnown) : fillMemo(index(p[0], p[1], p[2]));
-    }
+    for (; i < count; ++i)
+        out[i] = std::uint8_t((out[i] ? out[i] : knownOrFilled(px + i * stride)) & ~kKnown);
 }
 
 void ColourLut::classifyImage(const cv::Mat& ycbcr, cv::Mat& classes) const

@@ -74,27 +74,48 @@ struct ClipShares
     }
 };
 
-/// LutInputMap::m_clip_terms for `gain`: the shares, the chroma ones raised by their lowest so
-/// that no field borrows, the Y one lowered by both and by the level where the slow path starts.
-std::array<std::array<std::uint64_t, 128>, 3> clipTerms(const std::array<double, 3>& gain)
+using Terms = std::array<std::array<std::uint64_t, 128>, 3>;
+
+/// LutInputMap::m_clip_terms for the gains of the table's own light less each channel's level
+/// where the slow path starts: the shares, the chroma ones raised by their lowest so that no field
+/// borrows, the Y one lowered by both. The same for every map, so worked out once.
+struct ClipTermBase
 {
-    static const ClipShares shares;
-    constexpr std::int64_t kTop = std::int64_t(1) << 20;
-    std::array<std::array<std::int64_t, 3>, 3> bias{};
-    for (std::size_t c = 0; c < 3; ++c) {
-        bias[1][c] = -shares.lowest[1][c];
-        bias[2][c] = -shares.lowest[2][c];
-        bias[0][c] = kTop - bias[1][c] - bias[2][c] -
-                     std::int64_t(std::floor(std::min(LutInputMap::kClip, 255.0 * gain[c]) * 512));
-    }
-    std::array<std::array<std::uint64_t, 128>, 3> terms{};
-    for (std::size_t in = 0; in < 3; ++in)
-        for (std::size_t cell = 0; cell < 128; ++cell) {
-            std::uint64_t word = 0;
-            for (std::size_t c = 0; c < 3; ++c)
-                word |= std::uint64_t(shares.share[in][cell][c] + bias[in][c]) << (21 * c);
-            terms[in][cell] = word;
+    Terms terms{};
+
+    ClipTermBase()
+    {
+        static const ClipShares shares;
+        constexpr std::int64_t kTop = std::int64_t(1) << 20;
+        std::array<std::array<std::int64_t, 3>, 3> bias{};
+        for (std::size_t c = 0; c < 3; ++c) {
+            bias[1][c] = -shares.lowest[1][c];
+            bias[2][c] = -shares.lowest[2][c];
+            bias[0][c] = kTop - bias[1][c] - bias[2][c];
         }
+        for (std::size_t in = 0; in < 3; ++in)
+            for (std::size_t cell = 0; cell < 128; ++cell) {
+                std::uint64_t word = 0;
+                for (std::size_t c = 0; c < 3; ++c)
+                    word += std::uint64_t(shares.share[in][cell][c] + bias[in][c]) << (21 * c);
+                terms[in][cell] = word;
+            }
+    }
+};
+
+/// LutInputMap::m_clip_terms for `gain`: the base with the Y terms lowered by the level, per
+/// channel, where the slow path starts (the words are sums of their fields, so lowering every
+/// field of a word is one subtraction).
+Terms clipTerms(const std::array<double, 3>& gain)
+{
+    static const ClipTermBase base;
+    std::uint64_t start = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+        start += std::uint64_t(std::floor(std::min(LutInputMap::kClip, 255.0 * gain[c]) * 512))
+                 << (21 * c);
+    Terms terms = base.terms;
+    for (std::uint64_t& word : terms[0])
+        word -= start;
     return terms;
 }
 
@@ -113,21 +134,39 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
     map.m_then_classes = then_classes;
     map.m_clip_terms = clipTerms(map.m_gain);
     constexpr double kOne = double(1 << kFraction);
-    for (std::size_t in = 0; in < 3; ++in)
-        for (std::size_t cell = 0; cell < 128; ++cell) {
-            // The centre of the cell's two levels, Cb and Cr about 128.
-            const double v = double(cell) * 2 + 0.5 - (in == 0 ? 0.0 : 128.0);
-            std::uint64_t word = 0;
-            for (std::size_t out = 0; out < 3; ++out) {
-                const double offset = in == 0 && out > 0 ? 128.0 : 0.0;
-                const double term = std::clamp(m[3 * out + in] * v + offset, -double(kTermBias),
-                                               2.0 * kTermBias - 1) +
-                                    kTermBias;
-                // Non-negative, so rounding is adding a half; Y' in the top field.
-                word |= std::uint64_t(std::int64_t(term * kOne + 0.5)) << ((2 - out) * kFieldBits);
+    // Input channel by output channel, the 128 cells in loops of their own.
+    for (std::size_t in = 0; in < 3; ++in) {
+        std::array<std::uint64_t, 128>& words = map.m_terms[in];
+        words.fill(0);
+        const double from = in == 0 ? 0.5 : 0.5 - 128.0;
+        for (std::size_t out = 0; out < 3; ++out) {
+            const double factor = m[3 * out + in];
+            const double offset = in == 0 && out > 0 ? 128.0 : 0.0;
+            const int shift = int(2 - out) * kFieldBits; // Y' in the top field
+            // The centre of the cell's two levels, Cb and Cr about 128, and its term before the
+            // clamp: monotonic in the cell (rounding is), so when neither end is clamped no cell
+            // is, and the loop without the clamp vectorises.
+            const auto unclamped = [&](std::size_t cell) {
+                return factor * (double(int(cell)) * 2 + from) + offset;
+            };
+            const double lo = -double(kTermBias);
+            const double hi = 2.0 * kTermBias - 1;
+            const bool inside = std::min(unclamped(0), unclamped(127)) >= lo &&
+                                std::max(unclamped(0), unclamped(127)) <= hi;
+            // Non-negative and under 2^19, so rounding is adding a half.
+            std::array<std::int32_t, 128> field;
+            if (inside) {
+                for (std::size_t cell = 0; cell < 128; ++cell)
+                    field[cell] = std::int32_t((unclamped(cell) + kTermBias) * kOne + 0.5);
+            } else {
+                for (std::size_t cell = 0; cell < 128; ++cell)
+                    field[cell] = std::int32_t(
+                        (std::clamp(unclamped(cell), lo, hi) + kTermBias) * kOne + 0.5);
             }
-            map.m_terms[in][cell] = word;
+            for (std::size_t cell = 0; cell < 128; ++cell)
+                words[cell] |= std::uint64_t(std::uint32_t(field[cell])) << shift;
         }
+    }
     return map;
 }
 

@@ -80,6 +80,8 @@ private:
         return v ? std::uint8_t(v & ~kKnown) : fillMemo(i);
     }
     std::uint8_t fillMemo(std::size_t i) const;
+    /// classifyRun's first reads: the memo of the pixel at `px` (class | kKnown), filled if empty.
+    std::uint8_t knownOrFilled(const std::uint8_t* px) const;
     /// The class observed cell `i` reads through the map, and its next map where unclassified
     /// (a class the map takes from it).
     std::uint8_t readThroughMap(std::size_t i) const
