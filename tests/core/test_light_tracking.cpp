@@ -141,6 +141,17 @@ private slots:
         QVERIFY(checked > 100000);
     }
 
+    void theTermsOfTheTablesOwnLightGiveEveryCellItself()
+    {
+        // The map of gains 1 reads each cell as itself without its terms; a light a hair from
+        // the table's is read through them, and must agree cell by cell.
+        const LutInputMap hair = LutInputMap::forRgbGain(1, std::nextafter(1.0, 2.0), 1);
+        std::size_t moved = 0;
+        for (std::size_t cell = 0; cell < ColourLut::kCells; ++cell)
+            moved += hair.cellOf(cell) != cell;
+        QCOMPARE(moved, std::size_t(0));
+    }
+
     void aPixelUnderAnotherLightReadsTheCellOfItsColourUnderTheTablesLight()
     {
         const Rgbd gain{1.2, 0.95, 0.75};

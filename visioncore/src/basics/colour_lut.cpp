@@ -137,7 +137,7 @@ std::uint8_t ColourLut::fillMemo(std::size_t i) const
     return c;
 }
 
-std::uint8_t ColourLut::knownOrFilled(const std::uint8_t* px) const
+inline std::uint8_t ColourLut::knownOrFilled(const std::uint8_t* px) const
 {
     // An earlier pixel of the run may have filled the cell since memoRun read it (a run over the
     // carpet reads a few cells many times).

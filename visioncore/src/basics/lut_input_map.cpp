@@ -130,6 +130,7 @@ LutInputMap LutInputMap::forRgbGain(double r_gain, double g_gain, double b_gain,
     const Matrix m = times(kToYcbcr, times(divide, kToRgb));
     LutInputMap map;
     map.m_gain = {r_gain, g_gain, b_gain};
+    map.m_identity = r_gain == 1 && g_gain == 1 && b_gain == 1;
     map.m_then = std::move(then);
     map.m_then_classes = then_classes;
     map.m_clip_terms = clipTerms(map.m_gain);

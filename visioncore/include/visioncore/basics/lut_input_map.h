@@ -41,6 +41,8 @@ public:
     /// The table's cell (as ColourLut::index) that an observed cell reads.
     std::size_t cellOf(std::size_t observed) const
     {
+        if (m_identity)
+            return observed;
         if (nearTheClip(observed))
             return clippedCellOf(observed);
         // Y', Cb' and Cr' side by side in one word: three terms, two additions.
@@ -93,6 +95,9 @@ private:
     /// with their 128 in the Y term), so a cell's map is the sum of three words.
     std::array<std::array<std::uint64_t, 128>, 3> m_terms{};
     std::array<double, 3> m_gain{1, 1, 1};
+    /// The gains are all 1 (a light whose colour is the table's, its level in the next map):
+    /// every cell reads itself, as the terms would give it (checked cell by cell in a test).
+    bool m_identity = false;
     std::shared_ptr<const LutInputMap> m_then;
     std::uint32_t m_then_classes = ~std::uint32_t(0);
     /// By input channel and its 7-bit cell: what the cell's centre adds to R (bits 0-20), G
