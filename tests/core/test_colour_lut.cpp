@@ -152,6 +152,25 @@ private slots:
         QVERIFY2(message.find("2 bad cells") != std::string::npos, message.c_str());
     }
 
+    void rejectsOneBadCellAnywhereInAWord()
+    {
+        // The check reads eight cells a step: one bad cell at each place of a word, of each kind
+        // (just past the last id, below and at 128, the largest), beside cells of the last id.
+        std::vector<std::uint8_t> bytes(ColourLut::kCells, 10);
+        for (const std::uint8_t bad : {11, 127, 128, 255})
+            for (const std::size_t at :
+                 {std::size_t(0), std::size_t(1), std::size_t(4), std::size_t(7),
+                  std::size_t(1000003), ColourLut::kCells - 1}) {
+                bytes[at] = bad;
+                auto lut = ColourLut::fromBytes(bytes, "one");
+                QVERIFY2(!lut.ok(), qPrintable(QString("%1 at %2").arg(bad).arg(at)));
+                QVERIFY(lut.error().message.find("at offset " + std::to_string(at)) !=
+                        std::string::npos);
+                bytes[at] = 10;
+            }
+        QVERIFY(ColourLut::fromBytes(bytes, "tens").ok());
+    }
+
     void acceptsEveryValidIdAtTheBoundary()
     {
         std::vector<std::uint8_t> bytes(ColourLut::kCells, 10);

@@ -67,6 +67,9 @@ public:
     }
 
 private:
+    /// A table of these cells (kCells valid ids), without clearing a table first.
+    explicit ColourLut(std::vector<std::uint8_t> cells);
+
     /// What each observed cell reads through the input map: its class | kKnown, 0 until asked.
     struct MapMemo;
     static constexpr std::uint8_t kKnown = 0x80;
