@@ -157,11 +157,11 @@ private slots:
         // The check reads eight cells a step: one bad cell at each place of a word, of each kind
         // (just past the last id, below and at 128, the largest), beside cells of the last id.
         std::vector<std::uint8_t> bytes(ColourLut::kCells, 10);
-        for (const std::uint8_t bad : {11, 127, 128, 255})
+        for (const int bad : {11, 127, 128, 255})
             for (const std::size_t at :
                  {std::size_t(0), std::size_t(1), std::size_t(4), std::size_t(7),
                   std::size_t(1000003), ColourLut::kCells - 1}) {
-                bytes[at] = bad;
+                bytes[at] = std::uint8_t(bad);
                 auto lut = ColourLut::fromBytes(bytes, "one");
                 QVERIFY2(!lut.ok(), qPrintable(QString("%1 at %2").arg(bad).arg(at)));
                 QVERIFY(lut.error().message.find("at offset " + std::to_string(at)) !=
