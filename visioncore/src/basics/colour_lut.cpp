@@ -166,15 +166,6 @@ std::uint8_t ColourLut::fillMemo(std::size_t i) const
     return c;
 }
 
-inline std::uint8_t ColourLut::knownOrFilled(const std::uint8_t* px) const
-{
-    // An earlier pixel of the run may have filled the cell since memoRun read it (a run over the
-    // carpet reads a few cells many times).
-    const std::size_t i = index(px[0], px[1], px[2]);
-    const std::uint8_t known = __atomic_load_n(m_memo_cells + i, __ATOMIC_RELAXED);
-    return known ? known : std::uint8_t(fillMemo(i) | kKnown);
-}
-
 void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int count,
                             std::uint8_t* out) const
 {

@@ -84,7 +84,14 @@ private:
     }
     std::uint8_t fillMemo(std::size_t i) const;
     /// classifyRun's first reads: the memo of the pixel at `px` (class | kKnown), filled if empty.
-    std::uint8_t knownOrFilled(const std::uint8_t* px) const;
+    /// An earlier pixel of the run may have filled the cell since the run's lookups read it (a
+    /// run over the carpet reads a few cells many times).
+    std::uint8_t knownOrFilled(const std::uint8_t* px) const
+    {
+        const std::size_t i = index(px[0], px[1], px[2]);
+        const std::uint8_t known = __atomic_load_n(m_memo_cells + i, __ATOMIC_RELAXED);
+        return known ? known : std::uint8_t(fillMemo(i) | kKnown);
+    }
     /// The class observed cell `i` reads through the map, and its next map where unclassified
     /// (a class the map takes from it).
     std::uint8_t readThroughMap(std::size_t i) const
