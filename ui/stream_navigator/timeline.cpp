@@ -6,6 +6,7 @@
 #include "ui/stream_navigator/frame_marks_strip.h"
 #include "ui/stream_navigator/light_strip.h"
 #include "ui/stream_navigator/stream_navigator.h"
+#include "ui/widgets/elided_label.h"
 
 #include <QLabel>
 #include <QSlider>
@@ -16,8 +17,9 @@ Timeline::Timeline(EditingSession& session, StreamNavigator& navigator) : m_sess
 {
     QSlider& slider = *navigator.slider();
     // What the last change did to the evaluation's scores, over the strip of what it did to
-    // every frame; shown once there is such a change.
-    m_scores_change = new QLabel(&navigator);
+    // every frame; shown once there is such a change. A line longer than the timeline ends in
+    // "…" (the tooltip has it all).
+    m_scores_change = new ElidedLabel(&navigator);
     m_scores_change->setObjectName(QStringLiteral("scores_change"));
     m_scores_change->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_scores_change->setContentsMargins(4, 1, 4, 1);
