@@ -1,5 +1,5 @@
 // A one-line label that shows as much of its text as fits and ends it with "…" where it is cut,
-// so a reader sees there is more; text() and the tooltip keep the whole line.
+// so a reader sees there is more; text() keeps the whole line (give it as the tooltip too).
 #pragma once
 
 #include <QLabel>
