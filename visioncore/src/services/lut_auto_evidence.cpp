@@ -16,8 +16,13 @@ Gaussian Moments::gaussian(const Eigen::Vector3d& floor) const
     Gaussian g;
     if (n < 3)
         return g;
-    g.mean = sum / n;
-    g.covariance = outer / n - g.mean * g.mean.transpose();
+    const Eigen::Vector3d sums(sum[0], sum[1], sum[2]);
+    Eigen::Matrix3d outers;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            outers(i, j) = outer[i][j];
+    g.mean = sums / n;
+    g.covariance = outers / n - g.mean * g.mean.transpose();
     g.covariance.diagonal() += floor;
     g.inverse = g.covariance.inverse();
     g.valid = g.inverse.allFinite();
@@ -52,9 +57,8 @@ void EvidenceSet::add(Evidence e, const std::uint8_t* px)
 void EvidenceSet::addCell(Evidence e, std::uint32_t cell, std::uint32_t count)
 {
     cells[cell][std::size_t(e)] += count;
-    const Eigen::Vector3d centre(((cell >> 14) & 127) * 2 + 1, ((cell >> 7) & 127) * 2 + 1,
-                                 (cell & 127) * 2 + 1);
-    moments[std::size_t(e)].add(centre, count);
+    moments[std::size_t(e)].add(((cell >> 14) & 127) * 2 + 1, ((cell >> 7) & 127) * 2 + 1,
+                                (cell & 127) * 2 + 1, count);
 }
 
 namespace {

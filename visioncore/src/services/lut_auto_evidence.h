@@ -26,26 +26,41 @@ struct Gaussian
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
     bool valid = false;
 
+    /// The squared Mahalanobis distance, d' inverse d, in plain arithmetic on the coefficients
+    /// (summed in the order Eigen's product and dot sum them, so the same bits): it runs for
+    /// every pixel of every frame, and Eigen's expressions, unless inlined whole, cost tens of
+    /// calls a pixel (the sanitizer build's -O1 inlines few: 30 % of its test time was here).
     double distance2(double y, double cb, double cr) const
     {
-        const Eigen::Vector3d d(y - mean[0], cb - mean[1], cr - mean[2]);
-        return d.dot(inverse * d);
+        const double* mu = mean.data();
+        const double* a = inverse.data(); // column-major
+        const double d0 = y - mu[0], d1 = cb - mu[1], d2 = cr - mu[2];
+        const double r0 = a[0] * d0 + a[3] * d1 + a[6] * d2;
+        const double r1 = a[1] * d0 + a[4] * d1 + a[7] * d2;
+        const double r2 = a[2] * d0 + a[5] * d1 + a[8] * d2;
+        return d0 * r0 + d1 * r1 + d2 * r2;
     }
 };
 
-/// Sums for a mean and covariance.
+/// Sums for a mean and covariance, in plain arrays: added to for every pixel of evidence (see
+/// Gaussian::distance2).
 struct Moments
 {
     double n = 0;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+    double sum[3] = {0, 0, 0};
+    double outer[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}; ///< [row][column]
 
-    void add(const std::uint8_t* px) { add(Eigen::Vector3d(px[0], px[1], px[2]), 1); }
-    void add(const Eigen::Vector3d& p, double weight)
+    void add(const std::uint8_t* px) { add(px[0], px[1], px[2], 1); }
+    void add(double y, double cb, double cr, double weight)
     {
+        const double p[3] = {y, cb, cr};
         n += weight;
-        sum += weight * p;
-        outer += weight * p * p.transpose();
+        for (int i = 0; i < 3; ++i) {
+            const double wp = weight * p[i];
+            sum[i] += wp;
+            for (int j = 0; j < 3; ++j)
+                outer[i][j] += p[j] * wp;
+        }
     }
     /// The Gaussian of the samples with `floor` (units², per channel Y, Cb, Cr) added to the
     /// covariance's diagonal, so JPEG noise and a narrow sample do not make it a needle.
