@@ -64,19 +64,62 @@ ScreenRect screenRect(const Primitive& p, const CameraModel& camera)
     return r;
 }
 
+/// A sphere holding the whole primitive.
+struct BoundingSphere
+{
+    Vec3 centre;
+    double radius = 0;
+};
+
+BoundingSphere boundingSphere(const Primitive& p)
+{
+    BoundingSphere b{p.centre, p.radius};
+    if (p.shape != Primitive::Shape::Sphere) {
+        const double half_z = (p.z1 - p.z0) / 2;
+        b.centre.z() = p.z0 + half_z;
+        const double half_xy =
+            p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
+        b.radius = std::hypot(half_xy, half_z);
+    }
+    return b;
+}
+
 /// A lower bound on the distance from `origin` to any point of the primitive.
 double nearestDistance(const Primitive& p, const Vec3& origin)
 {
-    Vec3 centre = p.centre;
-    double radius = p.radius;
-    if (p.shape != Primitive::Shape::Sphere) {
-        const double half_z = (p.z1 - p.z0) / 2;
-        centre.z() = p.z0 + half_z;
-        const double half_xy =
-            p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
-        radius = std::hypot(half_xy, half_z);
-    }
-    return std::max(0.0, (centre - origin).norm() - radius);
+    const BoundingSphere b = boundingSphere(p);
+    return std::max(0.0, (b.centre - origin).norm() - b.radius);
+}
+
+/// What a ray from the camera needs to know of a primitive's bounding sphere to see that it
+/// misses it: the centre from the camera, and the squared radius with a margin for rounding.
+struct RayBound
+{
+    Vec3 offset; ///< centre - origin
+    double reach2 = 0;
+    double offset2 = 0; ///< |offset|²
+};
+
+RayBound rayBound(const Primitive& p, const Vec3& origin)
+{
+    const BoundingSphere b = boundingSphere(p);
+    RayBound r;
+    r.offset = b.centre - origin;
+    const double reach = b.radius * (1 + 1e-9) + 1e-9;
+    r.reach2 = reach * reach;
+    r.offset2 = r.offset.squaredNorm();
+    return r;
+}
+
+/// Whether the ray from the camera along unit `d` passes outside the bounding sphere: then it
+/// cannot hit the primitive, and the exact intersection need not be tried (a render's most
+/// frequent outcome, and most of its time).
+bool missesBound(const RayBound& r, const Vec3& d)
+{
+    if (r.offset2 <= r.reach2)
+        return false; // the camera is inside the sphere
+    const double along = r.offset.dot(d);
+    return along < 0 || r.offset2 - along * along > r.reach2;
 }
 
 /// A straight painted band: field lines and the arms of the marks, with precomputed frame.
@@ -385,10 +428,12 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
     // and stops at the first whose bounding sphere lies beyond the nearest hit so far.
     std::vector<ScreenRect> rects(scene.primitives.size());
     std::vector<double> nearest(scene.primitives.size());
+    std::vector<RayBound> bounds(scene.primitives.size());
     std::vector<int> order;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         rects[i] = screenRect(scene.primitives[i], camera);
         nearest[i] = nearestDistance(scene.primitives[i], origin);
+        bounds[i] = rayBound(scene.primitives[i], origin);
         if (rects[i].left <= rects[i].right)
             order.push_back(int(i));
     }
@@ -430,7 +475,7 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                         if (nearest[std::size_t(i)] >= best)
                             break;
                         const ScreenRect& r = rects[std::size_t(i)];
-                        if (x < r.left || x > r.right)
+                        if (x < r.left || x > r.right || missesBound(bounds[std::size_t(i)], d))
                             continue;
                         const auto hit = intersect(scene.primitives[std::size_t(i)], origin, d);
                         if (hit && hit->t < best) {
