@@ -454,9 +454,18 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
     const GroundSteps steps{camera.directionToWorld(Vec3(1, 0, 0)) / (3 * camera.fx()),
                             camera.directionToWorld(Vec3(0, 1, 0)) / (3 * camera.fy()),
                             camera.directionToWorld(Vec3(0, 0, 1))};
+    std::vector<int> column;
     for (int y = 0; y < h; ++y) {
         const std::vector<int>& row = rows[std::size_t(y)];
         for (int x = 0; x < w; ++x) {
+            // The row's primitives whose rectangle holds this column, in the row's order, once
+            // for the nine samples.
+            column.clear();
+            for (const int i : row) {
+                const ScreenRect& r = rects[std::size_t(i)];
+                if (x >= r.left && x <= r.right)
+                    column.push_back(i);
+            }
             Rgbf sum(0, 0, 0);
             int first_label = -1;
             bool mixed = false;
@@ -471,11 +480,10 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                     double best = env.t;
                     int best_index = -1;
                     Hit best_hit;
-                    for (const int i : row) {
+                    for (const int i : column) {
                         if (nearest[std::size_t(i)] >= best)
                             break;
-                        const ScreenRect& r = rects[std::size_t(i)];
-                        if (x < r.left || x > r.right || missesBound(bounds[std::size_t(i)], d))
+                        if (missesBound(bounds[std::size_t(i)], d))
                             continue;
                         const auto hit = intersect(scene.primitives[std::size_t(i)], origin, d);
                         if (hit && hit->t < best) {
