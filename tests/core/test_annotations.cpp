@@ -125,7 +125,8 @@ private slots:
             b = a;
             b.truth.output<Ball>()[0].x += 0.5; // another version of the file
         }
-        QTemporaryDir dir;
+        const QTemporaryDir dir(test::crashTestDirTemplate());
+        QVERIFY(dir.isValid());
         const std::string path = dir.filePath("annotations.json").toStdString();
         const std::string first_bytes = first.toJson(test::standardKinds()),
                           second_bytes = second.toJson(test::standardKinds());

@@ -385,7 +385,9 @@ private slots:
         // A child process saves two 2 MiB tables in turn through ColourLut::save without end; it
         // is killed at a random moment, 100 times. Every time the file is one table or the
         // other, whole (issue 10).
-        const std::string path = (m_dir.path() + "/killed.lut").toStdString();
+        const QTemporaryDir dir(test::crashTestDirTemplate());
+        QVERIFY(dir.isValid());
+        const std::string path = dir.filePath("killed.lut").toStdString();
         ColourLut first, second;
         for (std::size_t i = 0; i < ColourLut::kCells; ++i) {
             first.setCell(i, Colour::Green);

@@ -31,6 +31,18 @@ struct KillDuringSaveResult
     std::string first_problem; ///< what the first bad round found
 };
 
+/// Where a crash-safety test's files go: a new folder in memory (/dev/shm) where the system has
+/// one, else in the system's temporary folder. What a killed writer leaves is a matter of the
+/// temporary file and the rename, not of the disk; on a disk, every save's fsync waits on
+/// whatever else writes, and on a loaded machine 100 rounds took a minute instead of seconds
+/// (each round's delay is a few saves long).
+inline QString crashTestDirTemplate()
+{
+    const QFileInfo shm(QStringLiteral("/dev/shm"));
+    const QString base = shm.isDir() && shm.isWritable() ? shm.filePath() : QDir::tempPath();
+    return base + QStringLiteral("/fieldsight-crash-XXXXXX");
+}
+
 /// Stray temporaries of an atomic save of `path` ("name.tmp-*" beside it).
 inline qsizetype temporariesOf(const std::string& path)
 {
