@@ -198,6 +198,24 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
         }
         _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_and_si128(v, low));
     }
+    // The last bytes as the 16 that end the run: those already done have no kKnown bit, so only
+    // the new ones are looked at, and taking the bit off again leaves the others as they are.
+    if (i < count && count >= 16) {
+        const int start = count - 16;
+        __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + start));
+        unsigned unknown = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero))) &
+                           (0xFFFFu << unsigned(i - start));
+        if (unknown) {
+            do {
+                const int k = start + __builtin_ctz(unknown);
+                out[k] = knownOrFilled(px + k * stride);
+                unknown &= unknown - 1;
+            } while (unknown);
+            v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + start));
+        }
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + start), _mm_and_si128(v, low));
+        i = count;
+    }
 #endif
     for (; i < count; ++i)
         out[i] = std::uint8_t((out[i] ? out[i] : knownOrFilled(px + i * stride)) & ~kKnown);
