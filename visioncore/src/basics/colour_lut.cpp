@@ -203,8 +203,8 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
     if (i < count && count >= 16) {
         const int start = count - 16;
         __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + start));
-        unsigned unknown = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero))) &
-                           (0xFFFFu << unsigned(i - start));
+        unsigned unknown =
+            unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero))) & (0xFFFFu << unsigned(i - start));
         if (unknown) {
             do {
                 const int k = start + __builtin_ctz(unknown);
