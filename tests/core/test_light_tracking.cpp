@@ -338,6 +338,19 @@ private slots:
         lut.setInputMap(nullptr);
         lut.classifyRun(pixels.data(), 3, 4000, mapped.data());
         QVERIFY(mapped == plain);
+
+        // Runs of every length to 47 through a map nothing was read through yet, so that first
+        // reads fall in the 16 bytes that end a run, among bytes already done.
+        lut.setInputMap(std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(0.8, 1, 1.2)));
+        std::size_t at = 0;
+        for (int length = 1; length <= 47; ++length, at += std::size_t(length) + 5) {
+            std::vector<std::uint8_t> run(static_cast<std::size_t>(length));
+            lut.classifyRun(pixels.data() + 3 * at, 3, length, run.data());
+            for (int k = 0; k < length; ++k) {
+                const std::uint8_t* p = &pixels[3 * (at + std::size_t(k))];
+                QCOMPARE(Colour(run[std::size_t(k)]), lut.classify(p[0], p[1], p[2]));
+            }
+        }
     }
 
     void whatACellReadThroughAMapIsRememberedOnlyForItsOwnCells()

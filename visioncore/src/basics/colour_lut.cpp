@@ -185,35 +185,26 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
 #if defined(__SSE2__)
     const __m128i zero = _mm_setzero_si128();
     const __m128i low = _mm_set1_epi8(char(~kKnown));
-    for (; i + 16 <= count; i += 16) {
-        __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + i));
-        unsigned unknown = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero)));
+    // The 16 bytes from `at`, those of `mask` looked at: the first reads filled, the bit off.
+    const auto sixteen = [&](int at, unsigned mask) {
+        __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + at));
+        unsigned unknown = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero))) & mask;
         if (unknown) {
             do {
-                const int k = i + __builtin_ctz(unknown);
+                const int k = at + __builtin_ctz(unknown);
                 out[k] = knownOrFilled(px + k * stride);
                 unknown &= unknown - 1;
             } while (unknown);
-            v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + i));
+            v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + at));
         }
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_and_si128(v, low));
-    }
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + at), _mm_and_si128(v, low));
+    };
+    for (; i + 16 <= count; i += 16)
+        sixteen(i, 0xFFFFu);
     // The last bytes as the 16 that end the run: those already done have no kKnown bit, so only
     // the new ones are looked at, and taking the bit off again leaves the others as they are.
     if (i < count && count >= 16) {
-        const int start = count - 16;
-        __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + start));
-        unsigned unknown =
-            unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero))) & (0xFFFFu << unsigned(i - start));
-        if (unknown) {
-            do {
-                const int k = start + __builtin_ctz(unknown);
-                out[k] = knownOrFilled(px + k * stride);
-                unknown &= unknown - 1;
-            } while (unknown);
-            v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + start));
-        }
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + start), _mm_and_si128(v, low));
+        sixteen(count - 16, 0xFFFFu << unsigned(i - (count - 16)));
         i = count;
     }
 #endif
