@@ -64,50 +64,34 @@ ScreenRect screenRect(const Primitive& p, const CameraModel& camera)
     return r;
 }
 
-/// A sphere holding the whole primitive.
-struct BoundingSphere
-{
-    Vec3 centre;
-    double radius = 0;
-};
-
-BoundingSphere boundingSphere(const Primitive& p)
-{
-    BoundingSphere b{p.centre, p.radius};
-    if (p.shape != Primitive::Shape::Sphere) {
-        const double half_z = (p.z1 - p.z0) / 2;
-        b.centre.z() = p.z0 + half_z;
-        const double half_xy =
-            p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
-        b.radius = std::hypot(half_xy, half_z);
-    }
-    return b;
-}
-
-/// A lower bound on the distance from `origin` to any point of the primitive.
-double nearestDistance(const Primitive& p, const Vec3& origin)
-{
-    const BoundingSphere b = boundingSphere(p);
-    return std::max(0.0, (b.centre - origin).norm() - b.radius);
-}
-
-/// What a ray from the camera needs to know of a primitive's bounding sphere to see that it
-/// misses it: the centre from the camera, and the squared radius with a margin for rounding.
+/// What a ray from the camera needs to know of a primitive's bounding sphere: how near the
+/// primitive can be (the nearest-first order), and, to see that the ray misses it, the centre
+/// from the camera and the squared radius with a margin for rounding.
 struct RayBound
 {
     Vec3 offset; ///< centre - origin
     double reach2 = 0;
     double offset2 = 0; ///< |offset|²
+    double nearest = 0; ///< a lower bound on the distance from the camera to any of its points
 };
 
 RayBound rayBound(const Primitive& p, const Vec3& origin)
 {
-    const BoundingSphere b = boundingSphere(p);
+    Vec3 centre = p.centre;
+    double radius = p.radius;
+    if (p.shape != Primitive::Shape::Sphere) {
+        const double half_z = (p.z1 - p.z0) / 2;
+        centre.z() = p.z0 + half_z;
+        const double half_xy =
+            p.shape == Primitive::Shape::Box ? std::hypot(p.half_x, p.half_y) : p.radius;
+        radius = std::hypot(half_xy, half_z);
+    }
     RayBound r;
-    r.offset = b.centre - origin;
-    const double reach = b.radius * (1 + 1e-9) + 1e-9;
-    r.reach2 = reach * reach;
+    r.offset = centre - origin;
     r.offset2 = r.offset.squaredNorm();
+    r.nearest = std::max(0.0, std::sqrt(r.offset2) - radius);
+    const double reach = radius * (1 + 1e-9) + 1e-9;
+    r.reach2 = reach * reach;
     return r;
 }
 
@@ -427,18 +411,16 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
     // Which primitives can cover each row, nearest first, so a pixel only tests plausible ones
     // and stops at the first whose bounding sphere lies beyond the nearest hit so far.
     std::vector<ScreenRect> rects(scene.primitives.size());
-    std::vector<double> nearest(scene.primitives.size());
     std::vector<RayBound> bounds(scene.primitives.size());
     std::vector<int> order;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
         rects[i] = screenRect(scene.primitives[i], camera);
-        nearest[i] = nearestDistance(scene.primitives[i], origin);
         bounds[i] = rayBound(scene.primitives[i], origin);
         if (rects[i].left <= rects[i].right)
             order.push_back(int(i));
     }
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        return nearest[std::size_t(a)] < nearest[std::size_t(b)];
+        return bounds[std::size_t(a)].nearest < bounds[std::size_t(b)].nearest;
     });
     std::vector<std::vector<int>> rows;
     rows.resize(std::size_t(h));
@@ -481,7 +463,7 @@ RenderedFrame renderScene(const Scene& scene, const CameraModel& camera,
                     int best_index = -1;
                     Hit best_hit;
                     for (const int i : column) {
-                        if (nearest[std::size_t(i)] >= best)
+                        if (bounds[std::size_t(i)].nearest >= best)
                             break;
                         if (missesBound(bounds[std::size_t(i)], d))
                             continue;
