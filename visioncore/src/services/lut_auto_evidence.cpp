@@ -16,13 +16,10 @@ Gaussian Moments::gaussian(const Eigen::Vector3d& floor) const
     Gaussian g;
     if (n < 3)
         return g;
-    const Eigen::Vector3d sums(sum[0], sum[1], sum[2]);
-    Eigen::Matrix3d outers;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            outers(i, j) = outer[i][j];
-    g.mean = sums / n;
-    g.covariance = outers / n - g.mean * g.mean.transpose();
+    g.mean = Eigen::Map<const Eigen::Vector3d>(sum) / n;
+    g.covariance =
+        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&outer[0][0]) / n -
+        g.mean * g.mean.transpose();
     g.covariance.diagonal() += floor;
     g.inverse = g.covariance.inverse();
     g.valid = g.inverse.allFinite();
