@@ -71,12 +71,11 @@ template <class Each>
 Result<nlohmann::json> parseJsonMembers(const std::string& text, const std::string& source,
                                         const std::string& list_key, Each each)
 {
-    using Json = nlohmann::json;
-    using Event = Json::parse_event_t;
+    using Event = nlohmann::json::parse_event_t;
     std::string top_key, name;
     std::size_t index = 0;
     bool inside = false;
-    const auto callback = [&](int depth, Event event, Json& value) {
+    const auto callback = [&](int depth, Event event, nlohmann::json& value) {
         if (depth == 1) {
             if (event == Event::key)
                 top_key = value.template get<std::string>();
@@ -96,7 +95,7 @@ Result<nlohmann::json> parseJsonMembers(const std::string& text, const std::stri
         return false;
     };
     try {
-        return Json::parse(text, Json::parser_callback_t(callback));
+        return nlohmann::json::parse(text, nlohmann::json::parser_callback_t(callback));
     } catch (const nlohmann::json::exception& e) { // a syntax error, or a number overflow
         return Error{jsonSyntaxError(source, e.what())};
     }

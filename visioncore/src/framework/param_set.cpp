@@ -16,7 +16,7 @@
 namespace fieldsight {
 
 namespace {
-constexpr const char* kFormat = "fieldsight-params/1";
+constexpr const char* kParamsFormat = "fieldsight-params/1";
 }
 
 void ParamSet::set(std::string_view stage, std::string_view name, double value)
@@ -91,7 +91,7 @@ std::string ParamSet::toJson() const
         for (const auto& [name, value] : params)
             stages[stage][name] = value;
     nlohmann::ordered_json root;
-    root["format"] = kFormat;
+    root["format"] = kParamsFormat;
     root["stages"] = std::move(stages);
     return jsonText(root, 2) + "\n";
 }
@@ -102,7 +102,7 @@ Result<ParamSet> ParamSet::fromJson(const std::string& text, const std::string& 
     if (!parsed)
         return parsed.error();
     const nlohmann::json root = std::move(parsed).value();
-    if (auto problem = formatProblem(root, source, kFormat))
+    if (auto problem = formatProblem(root, source, kParamsFormat))
         return *problem;
     ParamSet set;
     const auto stages = root.find("stages");
@@ -147,7 +147,7 @@ Status ParamSet::save(const std::string& path) const
     nlohmann::ordered_json root = nlohmann::ordered_json::parse(toJson());
     if (auto old = readWholeFile(path, std::size_t(1) << 20); old) {
         const auto before = nlohmann::json::parse(old.value(), nullptr, false);
-        if (!formatProblem(before, path, kFormat))
+        if (!formatProblem(before, path, kParamsFormat))
             addUnknownKeys(unknownKeys(before, {"format", "stages"}), root);
     }
     return writeFileAtomically(path, jsonText(root, 2) + "\n");

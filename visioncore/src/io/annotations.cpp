@@ -15,7 +15,7 @@
 namespace fieldsight {
 
 namespace {
-constexpr const char* kFormat = "fieldsight-annotations/1";
+constexpr const char* kAnnotationsFormat = "fieldsight-annotations/1";
 using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
@@ -242,7 +242,7 @@ Result<Annotations> Annotations::fromJson(const std::string& text, const std::st
     if (!parsed)
         return parsed.error();
     const Json& root = parsed.value();
-    if (auto bad = formatProblem(root, source, kFormat))
+    if (auto bad = formatProblem(root, source, kAnnotationsFormat))
         return *bad;
     if (const auto frames = root.find("frames"); frames != root.end() && !frames->is_object())
         return Error{source + ": \"frames\" must be an object keyed by frame name"};
@@ -285,7 +285,7 @@ std::string Annotations::toJson(const std::vector<const PerceptKind*>& order) co
         frames_json[name] = std::move(out);
     }
     OrderedJson root;
-    root["format"] = kFormat;
+    root["format"] = kAnnotationsFormat;
     root["frames"] = std::move(frames_json);
     addUnknownKeys(unknown, root);
     return jsonText(root, 1) + "\n";
