@@ -19,9 +19,9 @@ function(fieldsight_target_options target)
             -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
-    if(FIELDSIGHT_FUZZ AND target MATCHES "^(fieldsight_visioncore|fieldsight_fuzz_support|fuzz_)")
-        # Coverage for libFuzzer in what the fuzz targets run (tests/fuzz/: the core and
-        # themselves); nothing else needs it.
+    if(FIELDSIGHT_FUZZ AND target MATCHES "^(fieldsight_readers|fieldsight_fuzz_support|fuzz_)")
+        # Coverage for libFuzzer in what the fuzz targets fuzz (tests/fuzz/: the core's readers,
+        # visioncore/CMakeLists.txt, and themselves); nothing else needs it.
         target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
     endif()
 endfunction()
