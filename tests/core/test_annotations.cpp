@@ -112,8 +112,9 @@ private slots:
     void aWriterKilledMidSaveLeavesTheOldOrTheNewFile()
     {
         // A child saves two versions of a 1000-frame annotation file in turn through
-        // Annotations::save and is killed at a random moment, 100 times. Every time the file
-        // reads back as one version or the other, whole, and loads (issue 10).
+        // Annotations::save and is killed at a random moment, 100 times (a quarter of that under
+        // the sanitizer: test::kKillRounds). Every time the file reads back as one version or
+        // the other, whole, and loads (issue 10).
         Annotations first, second;
         for (int i = 0; i < 1000; ++i) {
             const std::string name = "frame_" + std::to_string(100000 + i) + ".png";
@@ -136,8 +137,8 @@ private slots:
 
         const auto result = test::killDuringSaves(
             path, [&](bool two) { (void)(two ? second : first).save(path, test::standardKinds()); },
-            first_bytes, second_bytes, 100, 60000);
-        QCOMPARE(result.rounds, 100);
+            first_bytes, second_bytes, test::kKillRounds, 60000);
+        QCOMPARE(result.rounds, test::kKillRounds);
         QVERIFY2(result.mixes == 0 && result.unreadable == 0, result.first_problem.c_str());
         QVERIFY(result.saw_second > 0);
         auto loaded = Annotations::load(path, test::standardKinds());
@@ -145,10 +146,10 @@ private slots:
         QCOMPARE(loaded.value().frames.size(), std::size_t(1000));
         QVERIFY(first.save(path, test::standardKinds()).ok());
         QCOMPARE(test::temporariesOf(path), 0); // the next save removes a stray temporary
-        qInfo("100 kills of a %zu-byte save: the new file %d times, the old %d times, %lld "
+        qInfo("%d kills of a %zu-byte save: the new file %d times, the old %d times, %lld "
               "temporaries left before the next save",
-              first_bytes.size(), result.saw_second, result.rounds - result.saw_second,
-              (long long)result.temporaries);
+              result.rounds, first_bytes.size(), result.saw_second,
+              result.rounds - result.saw_second, (long long)result.temporaries);
     }
 
     void rejectsWrongFormatString()

@@ -383,8 +383,8 @@ private slots:
     void aWriterKilledMidSaveLeavesTheOldOrTheNewFile()
     {
         // A child process saves two 2 MiB tables in turn through ColourLut::save without end; it
-        // is killed at a random moment, 100 times. Every time the file is one table or the
-        // other, whole (issue 10).
+        // is killed at a random moment, 100 times (test::kKillRounds). Every time the file is one
+        // table or the other, whole (issue 10).
         const QTemporaryDir dir(test::crashTestDirTemplate());
         QVERIFY(dir.isValid());
         const std::string path = dir.filePath("killed.lut").toStdString();
@@ -401,16 +401,17 @@ private slots:
         const auto result = test::killDuringSaves(
             path, [&](bool two) { (void)(two ? second : first).save(path); }, first_bytes,
             second_bytes);
-        QCOMPARE(result.rounds, 100);
+        QCOMPARE(result.rounds, test::kKillRounds);
         QVERIFY2(result.mixes == 0 && result.unreadable == 0, result.first_problem.c_str());
         QVERIFY(result.saw_second > 0); // the child did get saves through
         // A writer killed between naming its finished file and the rename can leave it: the
         // next save removes it.
         QVERIFY(first.save(path).ok());
         QCOMPARE(test::temporariesOf(path), 0);
-        qInfo("100 kills: the new table %d times, the old %d times, %lld temporaries left before "
+        qInfo("%d kills: the new table %d times, the old %d times, %lld temporaries left before "
               "the next save",
-              result.saw_second, result.rounds - result.saw_second, (long long)result.temporaries);
+              result.rounds, result.saw_second, result.rounds - result.saw_second,
+              (long long)result.temporaries);
     }
 };
 

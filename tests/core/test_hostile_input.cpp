@@ -4,6 +4,7 @@
 // Each is an answer naming the file, at once; nothing waits, aborts or prints on its own.
 #include "support/test_suite.h"
 #include "support/stderr_capture.h"
+#include "support/sanitizer.h"
 #include "support/synthetic_frames.h"
 #include "support/test_images.h"
 #include "visioncore/basics/colour_lut.h"
@@ -347,15 +348,9 @@ private slots:
 
     void runningOutOfMemoryReadingAFileIsAnErrorNamingIt()
     {
-#if defined(__SANITIZE_ADDRESS__)
-        QSKIP("an address-space cap cannot be tested under AddressSanitizer (its allocator ends "
-              "the process instead of throwing std::bad_alloc)");
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-        QSKIP("an address-space cap cannot be tested under AddressSanitizer (its allocator ends "
-              "the process instead of throwing std::bad_alloc)");
-#endif
-#endif
+        if (test::kUnderSanitizer)
+            QSKIP("an address-space cap cannot be tested under AddressSanitizer (its allocator "
+                  "ends the process instead of throwing std::bad_alloc)");
         // Within its cap a file can still need more memory than is left: the reader says so,
         // naming the file (it used to end the process with an uncaught std::bad_alloc). Run in
         // a child whose address space is capped 64 MB above what it already uses: reading the

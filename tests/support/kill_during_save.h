@@ -3,6 +3,7 @@
 // version or the other, whole. Used by the LUT and the annotations tests.
 #pragma once
 
+#include "support/sanitizer.h"
 #include "visioncore/basics/atomic_file.h"
 
 #include <QDir>
@@ -52,6 +53,11 @@ inline qsizetype temporariesOf(const std::string& path)
         .size();
 }
 
+/// The kills a crash-safety test makes: 100, a quarter under the sanitizer (support/sanitizer.h:
+/// there each round is a few saves ten times as slow, and the sanitizer sees a bad address in
+/// the saving code in the first rounds as in the last; the normal build makes all 100).
+inline constexpr int kKillRounds = repeats(100);
+
 /// Kills a child that calls `save(i % 2 == 0)` for i = 0, 1, 2, ... (the second version first, so
 /// that any save that completes shows) at a random moment of up to
 /// `max_delay_us` (at least three saves long, timed here, so that a slow build still kills during
@@ -60,7 +66,7 @@ inline qsizetype temporariesOf(const std::string& path)
 inline KillDuringSaveResult killDuringSaves(const std::string& path,
                                             const std::function<void(bool second)>& save,
                                             const std::string& first, const std::string& second,
-                                            int rounds = 100, unsigned max_delay_us = 30000,
+                                            int rounds = kKillRounds, unsigned max_delay_us = 30000,
                                             unsigned seed = 11)
 {
     KillDuringSaveResult result;
