@@ -3,6 +3,7 @@
 
 #include "ui/adapters/overlay_painter.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/basics/output_guard.h"
 
 #include <nlohmann/json.hpp>
@@ -22,8 +23,7 @@ Status prepareRenderFolder(const std::string& dir, const std::string& stream)
         return Error{dir + ": cannot create folder: " + ec.message()};
     // Marks the folder as a render, which a later render may replace (checkRenderFolder).
     const std::string marker =
-        "{\"format\": \"fieldsight-render/1\", \"stream\": " +
-        nlohmann::json(stream).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) +
+        "{\"format\": \"fieldsight-render/1\", \"stream\": " + jsonText(nlohmann::json(stream)) +
         "}\n";
     return writeFileAtomically((std::filesystem::path(dir) / kRenderMarker).string(), marker);
 }

@@ -1,6 +1,7 @@
 #include "synth/output_folder.h"
 
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/basics/file_fingerprint.h"
 
 #include <nlohmann/json.hpp>
@@ -79,8 +80,8 @@ OutputFolder::OutputFolder(fs::path dir) : m_dir(std::move(dir))
         return;
     m_has_record = true;
     auto text = readWholeFile(record.string(), std::size_t(64) << 20);
-    const auto json = text ? nlohmann::json::parse(text.value(), nullptr, false)
-                           : nlohmann::json(nlohmann::json::value_t::discarded);
+    const auto json =
+        text ? jsonOrDiscarded(text.value()) : nlohmann::json(nlohmann::json::value_t::discarded);
     const auto files = json.is_object() ? json.find("files") : json.end();
     if (!json.is_object() || files == json.end() || !files->is_object()) {
         m_record_problem = text ? "it is not a synth output record" : text.error().message;
@@ -107,7 +108,7 @@ std::optional<std::string> OutputFolder::fileHash(const fs::path& file)
 bool OutputFolder::isUnrecordedSynthOutput() const
 {
     if (auto text = readWholeFile((m_dir / "stream.json").string()); text) {
-        const auto manifest = nlohmann::json::parse(text.value(), nullptr, false);
+        const auto manifest = jsonOrDiscarded(text.value());
         return manifest.is_object() && manifest.contains("generator");
     }
     auto names = filesIn(m_dir);
@@ -233,7 +234,8 @@ Status OutputFolder::commit(const fs::path& staged, bool& refused)
             else if (entry.is_array() && std::find(entry.begin(), entry.end(), hash) == entry.end())
                 entry.push_back(hash);
         }
-    if (Status s = writeFileAtomically((m_dir / kRecordName).string(), both.dump(1) + "\n"); !s)
+    if (Status s = writeFileAtomically((m_dir / kRecordName).string(), jsonText(both, 1) + "\n");
+        !s)
         return s;
     for (const std::string& name : incoming.value()) {
         fs::rename(staged / name, m_dir / name, ec);
@@ -243,7 +245,7 @@ Status OutputFolder::commit(const fs::path& staged, bool& refused)
     }
     for (const std::string& name : stale)
         fs::remove(m_dir / name, ec);
-    return writeFileAtomically((m_dir / kRecordName).string(), record.dump(1) + "\n");
+    return writeFileAtomically((m_dir / kRecordName).string(), jsonText(record, 1) + "\n");
 }
 
 } // namespace fieldsight::synth

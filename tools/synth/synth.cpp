@@ -11,6 +11,7 @@
 #include "visioncore/io/annotations.h"
 #include "visioncore/io/image_files.h"
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/json_text.h"
 #include "visioncore/basics/colour_lut.h"
 #include "visioncore/io/stream_reader.h"
 
@@ -268,7 +269,7 @@ Status writeStream(const SynthOptions& options, const std::filesystem::path& dir
         {"frames", frames}};
     if (options.drift != 0)
         manifest["generator"]["light_drift"] = options.drift;
-    return writeFileAtomically((dir / "stream.json").string(), manifest.dump(1) + "\n");
+    return writeFileAtomically((dir / "stream.json").string(), jsonText(manifest, 1) + "\n");
 }
 
 } // namespace

@@ -336,7 +336,7 @@ Status AnnotationsDocument::writeRecovery()
         return {}; // the earlier session's file is not written over before the user chooses
     if (!makeLocalFolder(recoveryDir()))
         return Error{toLocalPath(recoveryDir()) + ": cannot create the recovery folder"};
-    auto root = nlohmann::ordered_json::parse(m_annotations.toJson(m_kinds));
+    auto root = parseJson<nlohmann::ordered_json>(m_annotations.toJson(m_kinds), "").value();
     nlohmann::ordered_json meta{{"format", kRecoveryFormat}};
     putPath(meta, "path", path());
     putPath(meta, "stream", m_stream);
@@ -357,7 +357,7 @@ std::optional<AnnotationsRecovery> AnnotationsDocument::findRecovery(const QStri
         readWholeFile(toLocalPath(file), maxAnnotationsBytes(kMaxRecoveryFrames));
     if (!text)
         return std::nullopt;
-    const auto root = nlohmann::json::parse(text.value(), nullptr, false);
+    const auto root = jsonOrDiscarded(text.value());
     if (!root.is_object() || !root.contains("recovery") || !root["recovery"].is_object())
         return std::nullopt;
     const nlohmann::json& meta = root["recovery"];

@@ -195,7 +195,7 @@ std::optional<LutRecovery> LutDocument::findRecovery() const
     const Result<std::string> text = readWholeFile(toLocalPath(base + ".json"), 1 << 20);
     if (!text)
         return std::nullopt;
-    const auto meta = nlohmann::json::parse(text.value(), nullptr, false);
+    const auto meta = jsonOrDiscarded(text.value());
     if (!meta.is_object() || stringAt(meta, "format") != "fieldsight-lut-recovery/1")
         return std::nullopt;
     LutRecovery r;

@@ -119,7 +119,8 @@ inline void addUnknownKeys(const std::string& unknown, nlohmann::ordered_json& o
 {
     if (unknown.empty())
         return;
-    nlohmann::ordered_json kept = nlohmann::ordered_json::parse(unknown);
+    // unknownKeys() wrote it: it is JSON.
+    nlohmann::ordered_json kept = parseJson<nlohmann::ordered_json>(unknown, "").value();
     for (auto& item : kept.items())
         if (!object.contains(item.key()))
             object[item.key()] = std::move(item.value());

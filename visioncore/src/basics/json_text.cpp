@@ -2,6 +2,42 @@
 
 namespace fieldsight {
 
+namespace {
+
+template <class Json> std::string textOf(const Json& json, int indent)
+{
+    return json.dump(indent, ' ', false, Json::error_handler_t::replace);
+}
+
+} // namespace
+
+std::string jsonText(const nlohmann::json& json, int indent)
+{
+    return textOf(json, indent);
+}
+
+std::string jsonText(const nlohmann::ordered_json& json, int indent)
+{
+    return textOf(json, indent);
+}
+
+template <class Json> Result<Json> parseJson(const std::string& text, const std::string& source)
+{
+    try {
+        return Json::parse(text);
+    } catch (const nlohmann::json::exception& e) { // a syntax error, or a number overflow
+        return Error{jsonSyntaxError(source, e.what())};
+    }
+}
+
+template Result<nlohmann::json> parseJson(const std::string&, const std::string&);
+template Result<nlohmann::ordered_json> parseJson(const std::string&, const std::string&);
+
+nlohmann::json jsonOrDiscarded(const std::string& text)
+{
+    return nlohmann::json::parse(text, nullptr, false);
+}
+
 std::string jsonSyntaxError(const std::string& source, const std::string& parser_message)
 {
     // nlohmann: "[json.exception.parse_error.101] parse error at line 1, column 9: syntax error

@@ -1,6 +1,7 @@
 #include "visioncore/basics/output_guard.h"
 
 #include "visioncore/basics/atomic_file.h"
+#include "visioncore/basics/json_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -136,7 +137,7 @@ std::string whyNotOfKind(const std::string& path, const OutputFileKind& kind)
     auto text = readWholeFile(path, kLargestRecognised);
     if (!text)
         return "cannot be read";
-    const auto json = nlohmann::json::parse(text.value(), nullptr, false);
+    const auto json = jsonOrDiscarded(text.value());
     if (!json.is_object())
         return "is not an earlier output of this command (not a JSON object)";
     if (!kind.json_format.empty()) {

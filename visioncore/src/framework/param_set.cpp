@@ -144,9 +144,9 @@ Status ParamSet::save(const std::string& path) const
     if (!std::filesystem::is_regular_file(path, ec))
         return writeFileAtomically(path, toJson());
     // What this version does not read is written back as it was.
-    nlohmann::ordered_json root = nlohmann::ordered_json::parse(toJson());
+    nlohmann::ordered_json root = parseJson<nlohmann::ordered_json>(toJson(), path).value();
     if (auto old = readWholeFile(path, std::size_t(1) << 20); old) {
-        const auto before = nlohmann::json::parse(old.value(), nullptr, false);
+        const auto before = jsonOrDiscarded(old.value());
         if (!formatProblem(before, path, kParamsFormat))
             addUnknownKeys(unknownKeys(before, {"format", "stages"}), root);
     }

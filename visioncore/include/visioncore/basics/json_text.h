@@ -12,25 +12,25 @@
 
 namespace fieldsight {
 
-/// `json` as text, `indent` spaces a level (-1: one line).
-template <class Json> std::string jsonText(const Json& json, int indent = -1)
-{
-    return json.dump(indent, ' ', false, Json::error_handler_t::replace);
-}
+/// `json` as text, `indent` spaces a level (-1: one line). Out of line, as parseJson is: the JSON
+/// library's serialiser and parser are compiled once, not in every file that reads or writes JSON.
+std::string jsonText(const nlohmann::json& json, int indent = -1);
+std::string jsonText(const nlohmann::ordered_json& json, int indent = -1);
 
 /// "<source>: not valid JSON at line L, column C (the parser's problem)" for the message of a
 /// nlohmann parse error.
 std::string jsonSyntaxError(const std::string& source, const std::string& parser_message);
 
-/// `text` (read from `source`) as JSON; text that is not JSON is an Error saying where and why.
+/// `text` (read from `source`) as JSON (nlohmann::json or nlohmann::ordered_json); text that is
+/// not JSON is an Error saying where and why.
 template <class Json = nlohmann::json>
-Result<Json> parseJson(const std::string& text, const std::string& source)
-{
-    try {
-        return Json::parse(text);
-    } catch (const nlohmann::json::exception& e) { // a syntax error, or a number overflow
-        return Error{jsonSyntaxError(source, e.what())};
-    }
-}
+Result<Json> parseJson(const std::string& text, const std::string& source);
+
+extern template Result<nlohmann::json> parseJson(const std::string&, const std::string&);
+extern template Result<nlohmann::ordered_json> parseJson(const std::string&, const std::string&);
+
+/// `text` as JSON, or a discarded value (not an object, is_discarded()) where it is not JSON: for
+/// a reader that only asks whether a file is of its kind.
+nlohmann::json jsonOrDiscarded(const std::string& text);
 
 } // namespace fieldsight
