@@ -3,6 +3,7 @@
 // cancel keeps the start, the held-out frames are whole contiguous blocks, a seed is never
 // fitted, and bad options are errors naming them.
 #include "support/test_suite.h"
+#include "support/sanitizer.h"
 #include "support/synthetic_frames.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
@@ -155,16 +156,18 @@ private slots:
         ParamSet start;
         start.set("ball", "min_radius", 30);
         start.set("goalposts", "min_width", 30);
+        // Under the sanitizer a quarter of the budget (the search first moves a colour of the
+        // first stage, at evaluation 24 of 300, then the posts at 210; the normal build sees both).
         Fixture f = open("lab1", start);
         TuneOptions options;
-        options.budget = 300;
+        options.budget = test::repeats(300);
         const TuneResult reused = tune(f, options);
         options.reuse_stages = false;
         const TuneResult fresh = tune(f, options);
         QCOMPARE(reused.history, fresh.history);
         QCOMPARE(reused.params.toJson(), fresh.params.toJson());
         QCOMPARE(reused.tuned_holdout.total, fresh.tuned_holdout.total);
-        QVERIFY(reused.history.size() > 2); // the search moved
+        QVERIFY(reused.history.size() > (test::kUnderSanitizer ? 1u : 2u)); // the search moved
     }
 
     void severalStreamsAreScoredEachWithItsOwnTable()
