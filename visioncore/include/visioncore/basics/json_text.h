@@ -21,13 +21,10 @@ std::string jsonText(const nlohmann::ordered_json& json, int indent = -1);
 /// nlohmann parse error.
 std::string jsonSyntaxError(const std::string& source, const std::string& parser_message);
 
-/// `text` (read from `source`) as JSON (nlohmann::json or nlohmann::ordered_json); text that is
-/// not JSON is an Error saying where and why.
+/// `text` (read from `source`) as JSON; text that is not JSON is an Error saying where and why.
+/// Defined, and made, for nlohmann::json and nlohmann::ordered_json in json_text.cpp.
 template <class Json = nlohmann::json>
 Result<Json> parseJson(const std::string& text, const std::string& source);
-
-extern template Result<nlohmann::json> parseJson(const std::string&, const std::string&);
-extern template Result<nlohmann::ordered_json> parseJson(const std::string&, const std::string&);
 
 /// `text` as JSON, or a discarded value (not an object, is_discarded()) where it is not JSON: for
 /// a reader that only asks whether a file is of its kind.
