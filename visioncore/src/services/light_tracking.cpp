@@ -176,28 +176,27 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
     const int rows = ycbcr.rows;
     // A fixed lattice below the kinematic horizon where the carpet is (the whole frame when none
     // is known): every 2 steps along every step-th row, shifted by a step on alternate rows, so
-    // the samples are spread as evenly as a step's grid with half as many. Each sampled column's
-    // first row worked out once.
-    std::vector<int>& first_row = m_first_row;
-    first_row.clear();
-    for (int x = step / 2; x < width; x += step)
-        first_row.push_back(int(std::clamp(std::ceil(horizon.yAt(x, width)), 0.0, double(rows))));
+    // the samples are spread as evenly as a step's grid with half as many.
+    // Column by column from the column's first row (the sums are of integers, so their order
+    // does not matter).
+    constexpr int kClipLevel = int(LutInputMap::kClip);
+    static_assert(double(kClipLevel) == LutInputMap::kClip);
     std::array<std::array<long long, 3>, 2> sum{};
     std::array<std::size_t, 2> count{};
-    int shifted = 0;
-    for (int y = step / 2; y < rows; y += step, shifted ^= 1) {
-        const std::uint8_t* p = ycbcr.ptr<std::uint8_t>(y) + 3 * (step / 2 + shifted * step);
-        for (std::size_t column = std::size_t(shifted); column < first_row.size();
-             column += 2, p += 6 * step) {
-            if (y < first_row[column])
-                continue;
+    for (int column = 0, x = step / 2; x < width; ++column, x += step) {
+        const int first = int(std::clamp(std::ceil(horizon.yAt(x, width)), 0.0, double(rows)));
+        // The column's rows: every other lattice row, those of its parity, from `first` on.
+        int j = first <= step / 2 ? 0 : (first - step / 2 + step - 1) / step;
+        j += (j ^ column) & 1;
+        for (int y = step / 2 + j * step; y < rows; y += 2 * step) {
+            const std::uint8_t* p = ycbcr.ptr<std::uint8_t>(y) + 3 * x;
             const Colour c = m_seen.classify(p[0], p[1], p[2]);
             const std::size_t k = c == kReferenceClasses[0] ? 0 : c == kReferenceClasses[1] ? 1 : 2;
             if (k == 2)
                 continue;
             // Back to R, G, B (BT.601 full range); a clipped channel says nothing of the gain.
             const auto [r, g, b] = rgbOfYcc(p[0], p[1] - 128, p[2] - 128);
-            if (std::max({r, g, b}) >= LutInputMap::kClip || std::min({r, g, b}) <= 2)
+            if (r >= kClipLevel || g >= kClipLevel || b >= kClipLevel || r <= 2 || g <= 2 || b <= 2)
                 continue;
             sum[k][0] += r;
             sum[k][1] += g;

@@ -121,7 +121,6 @@ private:
         double intercept = 0;
     };
     std::array<Line, 3> m_course{};       ///< per channel, through m_recent (fitCourse)
-    mutable std::vector<int> m_first_row; ///< sample(): each sampled column's first row
 };
 
 struct LightTrack
