@@ -1,10 +1,12 @@
 // The automatic table (visioncore/services/lut_auto.h): from the frames alone it finds what the
 // stream's ideal table finds on the bundled generated streams, the same frames give the same
 // table, a cancel keeps what was read, frames without a carpet give a note and an empty table,
-// annotations add their votes, and the goal-colour parameter is found through the registry.
+// annotations add their votes, a team's pink and a hidden ball leave the ball orange, and the
+// goal-colour parameter is found through the registry.
 #include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "support/test_images.h"
+#include "visioncore/basics/ycbcr.h"
 #include "visioncore/framework/controller.h"
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/lut_auto.h"
@@ -13,6 +15,8 @@
 #include <QtTest>
 
 #include <QTemporaryDir>
+
+#include <opencv2/imgproc.hpp>
 
 using namespace fieldsight;
 
@@ -169,6 +173,41 @@ private slots:
         QVERIFY(std::any_of(with.notes.begin(), with.notes.end(), [](const std::string& n) {
             return n.find("the annotations of") != std::string::npos;
         }));
+    }
+
+    // A team's pink band that looks like a ball is not the ball, and a ball that a robot hides in
+    // most frames (a shape that is not round) does not hold its colour back from the round one.
+    // Before the pink hue was told from the warm one, the pink blobs made the ball's colour; before
+    // warm shapes that are not round kept out of the ball's core, its colour stayed unclassified.
+    void pinkBandsAndHiddenBallsLeaveTheBallOrange()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const cv::Scalar carpet(40, 140, 40), wall(150, 150, 150), robot(70, 70, 70); // B, G, R
+        const cv::Scalar ball(20, 100, 230), pink(180, 105, 255);
+        for (int i = 0; i < 12; ++i) {
+            cv::Mat frame(240, 320, CV_8UC3, carpet);
+            cv::rectangle(frame, cv::Rect(0, 0, 320, 70), wall, cv::FILLED);
+            // Pink bands of far robots standing on the carpet, in every frame.
+            for (int k = 0; k < 3; ++k)
+                cv::circle(frame, {60 + 90 * k, 110 + 10 * (i % 3)}, 6, pink, cv::FILLED,
+                           cv::LINE_8);
+            const cv::Point at(80 + 12 * i, 180);
+            cv::circle(frame, at, 12, ball, cv::FILLED, cv::LINE_8);
+            if (i >= 3) // hidden but for a crescent
+                cv::circle(frame, at + cv::Point(5, 0), 11, robot, cv::FILLED, cv::LINE_8);
+            QVERIFY(fieldsight::test::imwrite(
+                dir.filePath(QString("frame_%1.png").arg(i, 2, 10, QChar('0'))).toStdString(),
+                frame));
+        }
+        const AutoLut made = autoTable(dir.path().toStdString());
+        const auto ycc = [](const cv::Scalar& bgr) {
+            return bgrToYcbcr(cv::Mat(1, 1, CV_8UC3, bgr)).at<cv::Vec3b>(0, 0);
+        };
+        const cv::Vec3b b = ycc(ball);
+        const cv::Vec3b p = ycc(pink);
+        QCOMPARE(made.lut.classify(b[0], b[1], b[2]), Colour::Orange);
+        QVERIFY(made.lut.classify(p[0], p[1], p[2]) != Colour::Orange);
     }
 
     void theGoalColourParameterComesFromTheRegistry()

@@ -26,6 +26,9 @@ using autolut::kEvidenceCount;
 constexpr int kMaxWidth = 480;
 /// Mahalanobis distance (in the stream's carpet) within which a frame's own carpet is taken.
 constexpr double kOwnCarpetReach = 8.0;
+/// Mahalanobis distance (in the ball's colour) within which warm shapes that are not round do not
+/// hold a cell back from the ball (fillTable).
+constexpr double kBallCore = 2.0;
 
 cv::Mat workingImage(const cv::Mat& ycbcr)
 {
@@ -100,8 +103,23 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
 {
     ColourLut lut;
     std::array<bool, kEvidenceCount> modelled{};
-    for (const ClassModel& m : models)
+    const ClassModel* ball = nullptr;
+    for (const ClassModel& m : models) {
         modelled[std::size_t(m.evidence)] = true;
+        if (m.evidence == Evidence::Orange)
+            ball = &m;
+    }
+    // A warm shape that is not round holds a cell back, except in the core of the colour the
+    // round blobs gave the ball: there it is most likely a ball cut by the frame or half hidden
+    // by a robot (a crowded field's balls are mostly such).
+    const auto held_back = [ball](const auto& n, int y, int cb, int cr) {
+        std::uint32_t background = n[std::size_t(Evidence::Background)];
+        const std::uint32_t warm = n[std::size_t(Evidence::WarmShape)];
+        if (warm && !(ball && ball->gaussian.distance2(2 * y + 1, 2 * cb + 1, 2 * cr + 1) <=
+                                  kBallCore * kBallCore))
+            background += warm;
+        return background;
+    };
     for (int y = 0; y < 128; ++y) {
         for (int cb = 0; cb < 128; ++cb) {
             for (int cr = 0; cr < 128; ++cr) {
@@ -113,7 +131,7 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
                     std::uint32_t first = 0;
                     std::uint32_t second = 0;
                     for (std::size_t e = 0; e < kEvidenceCount; ++e) {
-                        if (e == std::size_t(Evidence::Background) || !modelled[e])
+                        if (!modelled[e])
                             continue;
                         if (n[e] > first) {
                             second = first;
@@ -123,7 +141,7 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
                             second = n[e];
                         }
                     }
-                    const std::uint32_t background = n[std::size_t(Evidence::Background)];
+                    const std::uint32_t background = held_back(n, y, cb, cr);
                     if (first >= 2) {
                         if (2 * second < first && 2 * background < first)
                             lut.setCell(cell, autolut::evidenceColour(Evidence(best)));
@@ -218,6 +236,7 @@ void forgetUnmodelled(EvidenceSet& evidence, const std::vector<ClassModel>& mode
 {
     std::array<bool, kEvidenceCount> kept{};
     kept[std::size_t(Evidence::Background)] = true;
+    kept[std::size_t(Evidence::WarmShape)] = true;
     for (const ClassModel& m : models)
         kept[std::size_t(m.evidence)] = true;
     for (auto& [cell, counts] : evidence.cells)

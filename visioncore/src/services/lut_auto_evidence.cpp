@@ -103,9 +103,17 @@ std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames, const std
 
 namespace {
 
-enum class Hue { None, Warm, Yellow, Blue };
+enum class Hue { None, Warm, Pink, Yellow, Blue };
 
-/// The hue family of a saturated pixel: warm (orange, red, pink), yellow, or blue.
+/// Where a warm hue turns from the ball's orange to a team's pink (degrees, as hueOf). The ball is
+/// orange, on the yellow side of red (full red is at 109 here); a team's pink band is on the blue
+/// side (about 75-80 on the generated robots). The split leaves 15-20 on either side of what the
+/// streams show: NUbots' reddish ball at 114-118 and B-Human's at 125-133 (a red arm's rims at
+/// 107-110), the generated balls at 131-133.
+constexpr double kPinkBelow = 95;
+
+/// The hue family of a saturated pixel: warm (orange, red), pink (a team's colour), yellow, or
+/// blue.
 Hue hueOf(const std::uint8_t* px)
 {
     const double cb = px[1] - 128.0;
@@ -115,7 +123,9 @@ Hue hueOf(const std::uint8_t* px)
     double a = std::atan2(cr, cb) * 180 / M_PI; // 0: blue, 90: red, 180: yellow, -120: green
     if (a < -150)
         a += 360;
-    if (a >= 60 && a < 150)
+    if (a >= 60 && a < kPinkBelow)
+        return Hue::Pink;
+    if (a >= kPinkBelow && a < 150)
         return Hue::Warm;
     if (a >= 150 && a <= 208)
         return Hue::Yellow;
@@ -245,8 +255,9 @@ std::vector<bool> postColumns(const cv::Mat& labels, int label, const cv::Rect& 
     return columns;
 }
 
-/// Sorts the saturated shapes of one hue family: round blobs on the field (warm: the ball), bars
-/// standing at the field's edge (yellow, blue: a goal), the rest touching the field background.
+/// Sorts the saturated shapes of one hue family: round blobs on the field (warm: the ball; pink: a
+/// team's band, never the ball), bars standing at the field's edge (yellow, blue: a goal), the
+/// rest touching the field background (warm ones apart: WarmShape).
 void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask, Hue hue,
                 const std::vector<double>& edge, double scale, EvidenceSet& out)
 {
@@ -270,7 +281,7 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
             b.box.x == 0 || b.box.y == 0 || b.box.x + b.box.width == w || bottom == h - 1;
         const double aspect = double(b.box.width) / b.box.height;
         const double fill = double(b.area) / (double(b.box.width) * b.box.height);
-        if (hue == Hue::Warm) {
+        if (hue == Hue::Warm || hue == Hue::Pink) {
             // Round: a disc fills about 0.79 of its box; one cut by the image's side less. A
             // wide shape along the bottom is the robot's own body.
             const double fill_needed = at_border ? 0.5 : 0.6;
@@ -280,11 +291,13 @@ void sortShapes(const cv::Mat& ycbcr, const cv::Mat& green, const cv::Mat& mask,
             const bool round = shaped && fill >= fill_needed && !own_body &&
                                b.area >= 12 * scale * scale && b.box.width <= 0.6 * w &&
                                greenAround(green, b.box) >= 0.25;
-            if (round && on_field) {
+            if (round && on_field && hue == Hue::Warm) {
                 addComponent(ycbcr, labels, i, b, Evidence::Orange, scale, out);
                 out.ball_blobs += 1;
             } else if (bottom >= edge_at - 2) {
-                addComponent(ycbcr, labels, i, b, Evidence::Background, scale, out);
+                addComponent(ycbcr, labels, i, b,
+                             hue == Hue::Warm ? Evidence::WarmShape : Evidence::Background, scale,
+                             out);
             }
             continue;
         }
@@ -356,7 +369,7 @@ void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& 
     cv::Mat white(h, w, CV_8U, cv::Scalar(0));
     thinRuns(candidate, green, edge, scale, white);
 
-    std::array<cv::Mat, 4> hue_masks;
+    std::array<cv::Mat, 5> hue_masks;
     for (cv::Mat& m : hue_masks)
         m = cv::Mat(h, w, CV_8U, cv::Scalar(0));
     for (int y = 0; y < h; ++y) {
@@ -377,7 +390,7 @@ void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& 
                 hue_masks[std::size_t(hue)].at<std::uint8_t>(y, x) = 1;
         }
     }
-    for (const Hue hue : {Hue::Warm, Hue::Yellow, Hue::Blue})
+    for (const Hue hue : {Hue::Warm, Hue::Pink, Hue::Yellow, Hue::Blue})
         sortShapes(ycbcr, green, hue_masks[std::size_t(hue)], hue, edge, scale, out);
 }
 

@@ -68,7 +68,19 @@ struct Moments
 };
 
 /// The classes the evidence names; background is what must stay unclassified.
-enum class Evidence : std::uint8_t { Green, White, Orange, Yellow, Blue, Background, Count };
+/// WarmShape: a warm (orange-red) shape on the field that is not a round blob: a ball cut by the
+/// frame or half hidden by a robot, or a robot's red part. It holds cells back from the ball as
+/// Background does, except in the core of the ball's colour (lut_auto.cpp).
+enum class Evidence : std::uint8_t {
+    Green,
+    White,
+    Orange,
+    Yellow,
+    Blue,
+    Background,
+    WarmShape,
+    Count
+};
 inline constexpr std::size_t kEvidenceCount = std::size_t(Evidence::Count);
 Colour evidenceColour(Evidence e);
 
