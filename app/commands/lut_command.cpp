@@ -204,7 +204,10 @@ int autoCommand(const QStringList& args, const Context& ctx)
     parser.addPositionalArgument("STREAM", "Image folder or .strm file.");
     parser.addOption({"out", "The .lut file to write (required).", "FILE"});
     parser.addOption(
-        {"frames", "Frames sampled, spread over the stream (default 40; 0: every frame).", "N"});
+        {"frames",
+         QString("Frames sampled, spread over the stream (default %1; 0: every frame).")
+             .arg(AutoLutOptions{}.frames),
+         "N"});
     parser.addOption({"annotations", "Also let the stream's annotations vote (their done "
                                      "frames' regions, as lut build takes them)."});
     parser.addOption({"truth",
@@ -234,7 +237,7 @@ int autoCommand(const QStringList& args, const Context& ctx)
             !s)
             return badInput(ctx, s.error().message);
         QString error;
-        const auto frames = intOption(parser, "frames", 40, 0, error);
+        const auto frames = intOption(parser, "frames", int(AutoLutOptions{}.frames), 0, error);
         if (!frames)
             return badInput(ctx, "lut auto: " + error);
         const auto stream_options = streamOptionsFrom(parser);
