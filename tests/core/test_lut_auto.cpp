@@ -1,8 +1,8 @@
 // The automatic table (visioncore/services/lut_auto.h): from the frames alone it finds what the
 // stream's ideal table finds on the bundled generated streams, the same frames give the same
 // table, a cancel keeps what was read, frames without a carpet give a note and an empty table,
-// annotations add their votes, a team's pink and a hidden ball leave the ball orange, and the
-// goal-colour parameter is found through the registry.
+// annotations add their votes, a team's pink and a hidden ball leave the ball orange, the goal's
+// colour is the one mostly posts, and the goal-colour parameter is found through the registry.
 #include "support/test_suite.h"
 #include "support/synthetic_frames.h"
 #include "support/test_images.h"
@@ -208,6 +208,36 @@ private slots:
         const cv::Vec3b p = ycc(pink);
         QCOMPARE(made.lut.classify(b[0], b[1], b[2]), Colour::Orange);
         QVERIFY(made.lut.classify(p[0], p[1], p[2]) != Colour::Orange);
+    }
+
+    // People in blue standing at the field's edge give more bar-like pixels than the one yellow
+    // post in view, but the post is nearly all of its colour's shapes and the legs a small share of
+    // theirs: the goal is yellow. (Weighing pixels by share took blue.)
+    void theGoalIsTheColourMostlyPosts()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const cv::Scalar carpet(40, 140, 40), wall(150, 150, 150); // B, G, R
+        const cv::Scalar yellow(0, 220, 230), blue(200, 60, 20);
+        for (int i = 0; i < 8; ++i) {
+            cv::Mat frame(240, 320, CV_8UC3, carpet);
+            cv::rectangle(frame, cv::Rect(0, 0, 320, 100), wall, cv::FILLED);
+            const int shift = 3 * i;
+            cv::rectangle(frame, cv::Rect(20 + shift, 45, 8, 60), yellow, cv::FILLED);
+            for (int k = 0; k < 2; ++k) {
+                const int x = 90 + 110 * k + shift;
+                cv::rectangle(frame, cv::Rect(x, 0, 90, 60), blue, cv::FILLED);      // a body
+                cv::rectangle(frame, cv::Rect(x + 10, 60, 6, 45), blue, cv::FILLED); // legs
+                cv::rectangle(frame, cv::Rect(x + 74, 60, 6, 45), blue, cv::FILLED);
+            }
+            QVERIFY(fieldsight::test::imwrite(
+                dir.filePath(QString("frame_%1.png").arg(i, 2, 10, QChar('0'))).toStdString(),
+                frame));
+        }
+        const AutoLut made = autoTable(dir.path().toStdString());
+        for (const std::string& note : made.notes)
+            qInfo("%s", note.c_str());
+        QCOMPARE(made.goal_colour, std::optional<Colour>(Colour::Yellow));
     }
 
     void theGoalColourParameterComesFromTheRegistry()
