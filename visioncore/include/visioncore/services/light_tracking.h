@@ -120,7 +120,7 @@ private:
         double slope = 0;
         double intercept = 0;
     };
-    std::array<Line, 3> m_course{};       ///< per channel, through m_recent (fitCourse)
+    std::array<Line, 3> m_course{}; ///< per channel, through m_recent (fitCourse)
 };
 
 struct LightTrack
