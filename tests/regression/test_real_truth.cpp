@@ -537,8 +537,8 @@ private slots:
         QTest::addColumn<int>("goal");
         QTest::addColumn<double>("ball_floor");
         QTest::addColumn<double>("post_floor");
-        QTest::addColumn<int>("sampled"); // frames sampled by the table, as `lut auto --frames`
-        // (-1: lut auto's default)
+        // Frames sampled by the table, as `lut auto --frames` (-1: lut auto's default).
+        QTest::addColumn<int>("sampled");
         QTest::addColumn<double>("line_recall_floor");
         // Measured (found/false/missed), the table made from the annotated frames alone (their
         // horizons in the manifest): B-Human ball 28/1/0, 28/0/0 since a ball needs carpet or
@@ -548,7 +548,8 @@ private slots:
         // NUbots ball 3/0/0, posts 6/0/0 (their lab table 5/0/1); DNT straight walk posts 47/0/0
         // (the table made by hand: 46/0/1).
         QTest::newRow("bhuman") << "bhuman" << int(Colour::Blue) << 0.95 << 0.95 << 0 << 0.0;
-        // The whole log of 160 frames, with `lut auto`'s default 40 of them: the red robot's arm
+        // The whole log of 160 frames, with 40 of them (`lut auto`'s default until issue 33's last
+        // session): the red robot's arm
         // and the kicking foot close to the camera have rims the table calls orange. Ball 28/3/0
         // before a ball had to reach as far across one way as the other (min_diameter_balance),
         // 28/0/0 since.

@@ -164,7 +164,8 @@ LightTracker::LightTracker(std::shared_ptr<const ColourLut> lut, LightTrackingOp
     if (!lut)
         throw std::invalid_argument("LightTracker: no table");
     m_seen = *lut;
-    m_options.sample_step = std::max(1, m_options.sample_step);
+    m_options.sample_step =
+        std::clamp(m_options.sample_step, 1, 1 << 16); // y += 2 step stays an int
     m_options.median_window = std::max(1, m_options.median_window);
 }
 

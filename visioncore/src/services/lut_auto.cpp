@@ -187,6 +187,12 @@ ColourLut fillTable(const EvidenceSet& evidence, const std::vector<ClassModel>& 
     return lut;
 }
 
+/// Whether a class has pixels enough for a model.
+bool enough(const EvidenceSet& evidence, Evidence e)
+{
+    return evidence.moments[std::size_t(e)].n >= 30;
+}
+
 /// The goal colour seen, when any posts were: of the colours whose post pixels are at least
 /// kGoalPostsShare of the other's, the one whose posts take the larger share of its shapes near the
 /// field. A goal's colour is mostly posts; a colour that also dresses people, robots and walls
@@ -200,20 +206,20 @@ std::optional<Evidence> goalEvidence(const EvidenceSet& evidence)
     const EvidenceSet::GoalCue& blue = evidence.goal(Evidence::Blue);
     if (yellow.weight() <= 0 && blue.weight() <= 0)
         return std::nullopt;
+    // A colour competes when it has pixels enough for a model of its own (the one chosen must
+    // be in the table) and posts enough beside the other's.
     const double most = std::max(yellow.posts, blue.posts);
-    const auto counts = [most](const EvidenceSet::GoalCue& cue) {
-        return cue.weight() > 0 && cue.posts >= kGoalPostsShare * most;
+    const auto competes = [&](Evidence e) {
+        const EvidenceSet::GoalCue& cue = evidence.goal(e);
+        return cue.weight() > 0 && cue.posts >= kGoalPostsShare * most && enough(evidence, e);
     };
-    if (!counts(blue))
-        return Evidence::Yellow;
-    if (!counts(yellow))
-        return Evidence::Blue;
+    const bool y = competes(Evidence::Yellow);
+    const bool b = competes(Evidence::Blue);
+    if (y != b)
+        return y ? Evidence::Yellow : Evidence::Blue;
+    if (!y) // neither has a model: the heavier, as a note names it
+        return blue.weight() > yellow.weight() ? Evidence::Blue : Evidence::Yellow;
     return blue.share() > yellow.share() ? Evidence::Blue : Evidence::Yellow;
-}
-
-bool enough(const EvidenceSet& evidence, Evidence e)
-{
-    return evidence.moments[std::size_t(e)].n >= 30;
 }
 
 /// The classes with evidence enough, and a note for each expected one left out.

@@ -147,7 +147,8 @@ std::optional<Gaussian> findCarpet(const std::vector<cv::Mat>& frames,
 
 /// Labels one frame's pixels into `out`, given the carpet: green on the field, white in thin runs
 /// bordered by carpet, ball-coloured blobs that are round and on the field, goal-coloured bars
-/// that stand at the field's edge; other saturated shapes touching the field are background.
+/// that stand at the field's edge; other saturated shapes touching the field are background
+/// (warm ones WarmShape, which holds cells back from all but the ball's core).
 void collectEvidence(const cv::Mat& ycbcr, const Gaussian& carpet, EvidenceSet& out);
 
 } // namespace fieldsight::autolut
