@@ -177,9 +177,9 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
     const int rows = ycbcr.rows;
     // A fixed lattice below the kinematic horizon where the carpet is (the whole frame when none
     // is known): every 2 steps along every step-th row, shifted by a step on alternate rows, so
-    // the samples are spread as evenly as a step's grid with half as many.
-    // Column by column from the column's first row (the sums are of integers, so their order
-    // does not matter).
+    // the samples are spread as evenly as a step's grid with half as many. Walked column by
+    // column from each column's first row (the sums are of integers, so their order does not
+    // matter).
     constexpr int kClipLevel = int(LutInputMap::kClip);
     static_assert(double(kClipLevel) == LutInputMap::kClip);
     std::array<std::array<long long, 3>, 2> sum{};

@@ -97,10 +97,10 @@ struct EvidenceSet
     {
         double posts = 0;
         double shapes = 0;
-        /// Post pixels weighed by their share of the colour's shapes.
-        double weight() const { return shapes > 0 ? posts * posts / shapes : 0; }
         /// The share of the colour's shapes that are posts.
         double share() const { return shapes > 0 ? posts / shapes : 0; }
+        /// Post pixels weighed by their share of the colour's shapes.
+        double weight() const { return posts * share(); }
     };
     std::array<GoalCue, 2> goals{};
     GoalCue& goal(Evidence e) { return goals[e == Evidence::Blue ? 1 : 0]; }
