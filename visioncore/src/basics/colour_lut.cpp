@@ -123,10 +123,9 @@ struct ColourLut::MapMemo
         static std::array<std::weak_ptr<MapMemo>, 8> recent;
         // The last few memos are kept even when no table holds them: a light that moves back to
         // a map it left a frame ago (a state on a key's edge) reads its cells again, not afresh.
-        // Their memory is the pages a frame read, a few hundred kB each.
+        // Their memory is the pages their frames read, at most 2 MiB each.
         static std::array<std::shared_ptr<MapMemo>, 4> kept;
         static std::size_t next = 0;
-        static std::size_t next_kept = 0;
         std::lock_guard lock(mutex);
         for (const std::weak_ptr<MapMemo>& made : recent)
             if (auto memo = made.lock(); memo && memo->content == content && memo->map == map)
@@ -134,8 +133,9 @@ struct ColourLut::MapMemo
         auto memo = std::make_shared<MapMemo>();
         memo->content = content;
         memo->map = map; // kept alive, so that no other map is made at its address meanwhile
-        recent[next++ % recent.size()] = memo;
-        kept[next_kept++ % kept.size()] = memo;
+        recent[next % recent.size()] = memo;
+        kept[next % kept.size()] = memo;
+        ++next;
         return memo;
     }
 
