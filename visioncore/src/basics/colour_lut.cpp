@@ -155,20 +155,38 @@ void ColourLut::setInputMap(std::shared_ptr<const LutInputMap> map)
     m_memo_cells = m_memo ? m_memo->bytes : nullptr;
 }
 
+const std::uint8_t* ColourLut::noMemoCells()
+{
+    // Zero pages mapped read-only: reading them costs no memory.
+    static const std::uint8_t* const cells = [] {
+#if defined(__unix__)
+        void* p = mmap(nullptr, kCells, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED)
+            throw std::bad_alloc();
+        return static_cast<const std::uint8_t*>(p);
+#else
+        static const std::vector<std::uint8_t> zeros(kCells, 0);
+        return zeros.data();
+#endif
+    }();
+    return cells;
+}
+
 void ColourLut::setCell(std::size_t i, Colour colour)
 {
     m_cells[i] = std::uint8_t(colour);
     m_content = 0;
     if (m_memo) {
         m_memo.reset();
-        m_memo_cells = nullptr;
+        m_memo_cells = noMemoCells();
     }
 }
 
 std::uint8_t ColourLut::fillMemo(std::size_t i) const
 {
     const std::uint8_t c = readThroughMap(i);
-    __atomic_store_n(m_memo_cells + i, std::uint8_t(c | kKnown), __ATOMIC_RELAXED);
+    if (m_memo)
+        __atomic_store_n(m_memo->bytes + i, std::uint8_t(c | kKnown), __ATOMIC_RELAXED);
     return c;
 }
 
@@ -177,11 +195,6 @@ void ColourLut::classifyRun(const std::uint8_t* px, std::ptrdiff_t stride, int c
 {
     if (!m_map) {
         lookupRun(m_cells.data(), px, stride, count, out);
-        return;
-    }
-    if (!m_memo_cells) { // a cell was set since the map was: no memo until it is set again
-        for (int i = 0; i < count; ++i, px += stride)
-            out[i] = readThroughMap(index(px[0], px[1], px[2]));
         return;
     }
     memoRun(m_memo_cells, px, stride, count, out);

@@ -89,12 +89,23 @@ std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
             return shared;
     if (made.size() >= 64)
         std::erase_if(made, [](const auto& entry) { return entry.second.expired(); });
-    const auto gain = [&key](std::size_t k, long level) {
-        return std::exp(double(key[k] + level) * kMapStep);
+    // The plain maps (no next map) by their gains' keys: a dimming or brightening light's map is
+    // the level map of one some frames before (its next map), so it is copied, not worked out.
+    static std::map<std::array<long, 3>, std::weak_ptr<const LutInputMap>> plain;
+    if (plain.size() >= 64)
+        std::erase_if(plain, [](const auto& entry) { return entry.second.expired(); });
+    const auto plainMap = [&key](long level) {
+        const std::array<long, 3> gains{key[0] + level, key[1] + level, key[2] + level};
+        auto& known = plain[gains];
+        if (auto shared = known.lock())
+            return shared;
+        const auto gain = [&gains](std::size_t k) { return std::exp(double(gains[k]) * kMapStep); };
+        auto made_now =
+            std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(gain(0), gain(1), gain(2)));
+        known = made_now;
+        return made_now;
     };
-    auto full = key[3] == 0 ? nullptr
-                            : std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(
-                                  gain(0, key[3]), gain(1, key[3]), gain(2, key[3])));
+    auto full = key[3] == 0 ? nullptr : plainMap(key[3]);
     // Not the carpet and the white: they are broad in Y, and dark or bright pixels of a robot
     // that the held level would make carpet or white split its obstacle (B-Human's log with
     // --adapt: obstacles 12/1/2 found/false/missed, 10/3/4 taking every class, 11/0/3 so).
@@ -102,8 +113,8 @@ std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
     for (const Colour reference : kReferenceClasses)
         classes &= ~(std::uint32_t(1) << int(reference));
     // Allocated apart from its count, so that an expired entry holds no map's memory.
-    std::shared_ptr<const LutInputMap> map(new LutInputMap(
-        LutInputMap::forRgbGain(gain(0, 0), gain(1, 0), gain(2, 0), std::move(full), classes)));
+    std::shared_ptr<const LutInputMap> map(
+        new LutInputMap(plainMap(0)->withThen(std::move(full), classes)));
     made[key] = map;
     return map;
 }
@@ -184,20 +195,33 @@ void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
     static_assert(double(kClipLevel) == LutInputMap::kClip);
     std::array<std::array<long long, 3>, 2> sum{};
     std::array<std::size_t, 2> count{};
+    // A colour id's slot: the carpet's sums, the white's, or none.
+    static constexpr std::array<std::uint8_t, 256> kSlot = [] {
+        std::array<std::uint8_t, 256> slot{};
+        slot.fill(2);
+        slot[std::size_t(kReferenceClasses[0])] = 0;
+        slot[std::size_t(kReferenceClasses[1])] = 1;
+        return slot;
+    }();
+    const std::ptrdiff_t jump = 2 * step * std::ptrdiff_t(ycbcr.step[0]);
     for (int column = 0, x = step / 2; x < width; ++column, x += step) {
         const int first = int(std::clamp(std::ceil(horizon.yAt(x, width)), 0.0, double(rows)));
         // The column's rows: every other lattice row, those of its parity, from `first` on.
         int j = first <= step / 2 ? 0 : (first - step / 2 + step - 1) / step;
         j += (j ^ column) & 1;
-        for (int y = step / 2 + j * step; y < rows; y += 2 * step) {
-            const std::uint8_t* p = ycbcr.ptr<std::uint8_t>(y) + 3 * x;
-            const Colour c = m_seen.classify(p[0], p[1], p[2]);
-            const std::size_t k = c == kReferenceClasses[0] ? 0 : c == kReferenceClasses[1] ? 1 : 2;
+        int y = step / 2 + j * step;
+        if (y >= rows)
+            continue;
+        const std::uint8_t* p = ycbcr.ptr<std::uint8_t>(y) + 3 * x;
+        for (; y < rows; y += 2 * step, p += jump) {
+            const std::size_t k = kSlot[std::uint8_t(m_seen.classify(p[0], p[1], p[2]))];
             if (k == 2)
                 continue;
-            // Back to R, G, B (BT.601 full range); a clipped channel says nothing of the gain.
+            // Back to R, G, B (BT.601 full range); a clipped channel (at or past kClipLevel) or
+            // one at 2 or less says nothing of the gain.
             const auto [r, g, b] = rgbOfYcc(p[0], p[1] - 128, p[2] - 128);
-            if (r >= kClipLevel || g >= kClipLevel || b >= kClipLevel || r <= 2 || g <= 2 || b <= 2)
+            constexpr unsigned kUsable = unsigned(kClipLevel - 3); // 3 .. kClipLevel - 1
+            if (std::max({unsigned(r - 3), unsigned(g - 3), unsigned(b - 3)}) >= kUsable)
                 continue;
             sum[k][0] += r;
             sum[k][1] += g;
@@ -376,19 +400,25 @@ void LightTracker::fitCourse()
     // A robust line (Theil-Sen) through the recent accepted estimates, so a steady change is
     // followed without lag and one odd frame moves nothing. Fitted once each time they change:
     // the next frame's outlier test reads the same line.
+    // A channel's values side by side first: a deque's indexing costs more than the division.
     const std::size_t n = m_recent.size();
+    std::vector<double>& values = m_scratch;
+    std::vector<double>& pairs = m_pairs;
+    values.resize(n);
     for (std::size_t c = 0; c < 3; ++c) {
-        std::vector<double>& slopes = m_scratch;
+        for (std::size_t a = 0; a < n; ++a)
+            values[a] = m_recent[a][c];
+        std::vector<double>& slopes = pairs;
         slopes.clear();
         for (std::size_t a = 0; a < n; ++a)
             for (std::size_t b = a + 1; b < n; ++b)
-                slopes.push_back((m_recent[b][c] - m_recent[a][c]) / double(b - a));
+                slopes.push_back((values[b] - values[a]) / double(b - a));
         const double slope =
             slopes.empty() ? 0.0 : std::clamp(medianOf(slopes), -kMaxSlope, kMaxSlope);
-        std::vector<double>& intercepts = m_scratch;
+        std::vector<double>& intercepts = pairs;
         intercepts.clear();
         for (std::size_t a = 0; a < n; ++a)
-            intercepts.push_back(m_recent[a][c] - slope * double(a));
+            intercepts.push_back(values[a] - slope * double(a));
         m_course[c] = {slope, medianOf(intercepts)};
     }
 }

@@ -77,8 +77,6 @@ private:
     /// The class observed cell `i` reads through the map (the memo, filled on a first lookup).
     std::uint8_t mappedClass(std::size_t i) const
     {
-        if (!m_memo_cells)
-            return readThroughMap(i);
         const std::uint8_t v = __atomic_load_n(m_memo_cells + i, __ATOMIC_RELAXED);
         return v ? std::uint8_t(v & ~kKnown) : fillMemo(i);
     }
@@ -108,8 +106,12 @@ private:
     /// kept by copies, 0 once a cell is set (named again by the next setInputMap).
     std::uint64_t m_content;
     std::shared_ptr<const LutInputMap> m_map;
-    std::shared_ptr<MapMemo> m_memo;      ///< of m_cells through m_map, or null
-    std::uint8_t* m_memo_cells = nullptr; ///< m_memo's bytes
+    std::shared_ptr<MapMemo> m_memo; ///< of m_cells through m_map, or null
+    /// m_memo's bytes; with a map but no memo (a cell set since the map was) a read-only memo that
+    /// knows no cell, so that every lookup works its cell out and stores nothing (fillMemo): a
+    /// lookup through a map then has one test, not two. Null without a map.
+    const std::uint8_t* m_memo_cells = nullptr;
+    static const std::uint8_t* noMemoCells();
 };
 
 } // namespace fieldsight

@@ -33,6 +33,16 @@ public:
     static LutInputMap forRgbGain(double r_gain, double g_gain, double b_gain,
                                   std::shared_ptr<const LutInputMap> then = nullptr,
                                   std::uint32_t then_classes = ~std::uint32_t(0));
+    /// This map, reading through `then` next as forRgbGain's would: the same terms, not worked
+    /// out again.
+    LutInputMap withThen(std::shared_ptr<const LutInputMap> then,
+                         std::uint32_t then_classes = ~std::uint32_t(0)) const
+    {
+        LutInputMap map = *this;
+        map.m_then = std::move(then);
+        map.m_then_classes = then_classes;
+        return map;
+    }
     /// The map an unclassified cell reads through next, or null.
     const LutInputMap* then() const { return m_then.get(); }
     /// Whether a cell may take `colour_id` from the next map.
