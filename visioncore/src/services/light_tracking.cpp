@@ -402,23 +402,21 @@ void LightTracker::fitCourse()
     // the next frame's outlier test reads the same line.
     // A channel's values side by side first: a deque's indexing costs more than the division.
     const std::size_t n = m_recent.size();
-    std::vector<double>& values = m_scratch;
-    std::vector<double>& pairs = m_pairs;
-    values.resize(n);
+    m_channel.resize(n);
     for (std::size_t c = 0; c < 3; ++c) {
         for (std::size_t a = 0; a < n; ++a)
-            values[a] = m_recent[a][c];
-        std::vector<double>& slopes = pairs;
+            m_channel[a] = m_recent[a][c];
+        std::vector<double>& slopes = m_pairs;
         slopes.clear();
         for (std::size_t a = 0; a < n; ++a)
             for (std::size_t b = a + 1; b < n; ++b)
-                slopes.push_back((values[b] - values[a]) / double(b - a));
+                slopes.push_back((m_channel[b] - m_channel[a]) / double(b - a));
         const double slope =
             slopes.empty() ? 0.0 : std::clamp(medianOf(slopes), -kMaxSlope, kMaxSlope);
-        std::vector<double>& intercepts = pairs;
+        std::vector<double>& intercepts = m_pairs;
         intercepts.clear();
         for (std::size_t a = 0; a < n; ++a)
-            intercepts.push_back(values[a] - slope * double(a));
+            intercepts.push_back(m_channel[a] - slope * double(a));
         m_course[c] = {slope, medianOf(intercepts)};
     }
 }

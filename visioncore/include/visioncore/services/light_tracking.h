@@ -114,7 +114,7 @@ private:
     std::size_t m_frame = 0;                          ///< frames observed or skipped
     std::size_t m_last_outlier = 0;                   ///< m_frame of the run's last outlier
     std::deque<std::array<double, 3>> m_recent;       ///< ln of the latest accepted estimates
-    std::vector<double> m_scratch;                    ///< a channel of m_recent (fitCourse)
+    std::vector<double> m_channel;                    ///< a channel of m_recent (fitCourse)
     std::vector<double> m_pairs;                      ///< the course's slopes, then its intercepts
     struct Line
     {
