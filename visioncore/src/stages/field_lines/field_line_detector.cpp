@@ -3,6 +3,7 @@
 // lines, so we fit in the image, where no kinematics are needed and errors are in px.
 #include "stages/field_lines/field_line_detector.h"
 
+#include "stages/common/ellipse_fit.h"
 #include "stages/common/line_fit.h"
 #include "stages/common/ransac.h"
 #include "stages/common/stage_util.h"
@@ -215,6 +216,92 @@ double bow(const Fitted& f)
     return std::abs(sum[1] / count[1] - 0.5 * (sum[0] / count[0] + sum[2] / count[2]));
 }
 
+/// Merges lines within `angle` of each other whose ends lie within `distance` of the other line,
+/// while the line through all their points keeps them within `max_error` on average (0: any).
+/// The original computed this and then discarded the result.
+void mergeColinear(std::vector<Fitted>& lines, double angle, double distance, double max_error)
+{
+    std::vector<PointF> joint;
+    bool merged = true;
+    while (merged) {
+        merged = false;
+        for (std::size_t a = 0; a < lines.size() && !merged; ++a)
+            for (std::size_t b = a + 1; b < lines.size() && !merged; ++b) {
+                if (lines[a].line.angleTo(lines[b].line) > angle ||
+                    averageDistance(lines[a], lines[b]) > distance)
+                    continue;
+                joint = lines[a].points;
+                joint.insert(joint.end(), lines[b].points.begin(), lines[b].points.end());
+                const ImageLine fit = fitLineTls(joint);
+                if (max_error > 0) {
+                    double sum = 0;
+                    for (const PointF& p : joint)
+                        sum += fit.error(p);
+                    if (sum > max_error * double(joint.size()))
+                        continue;
+                }
+                lines[a].points.swap(joint);
+                lines[a].line = fit;
+                lines.erase(lines.begin() + std::ptrdiff_t(b));
+                merged = true;
+            }
+    }
+}
+
+/// The ellipses of the centre circle (the circle in perspective). The points of every bent line
+/// but those on a straight one (the halfway line crosses the circle) give one ellipse, fitted
+/// again, twice, to the points near it that no straight line took (`left`, and the bent lines'):
+/// RANSAC cuts the one circle into several bent chords. When those points fit no ellipse, each
+/// bent line's own points are tried alone. A straight line's points never move the fit, so a far
+/// line that an ellipse happens to run along (the flat top of a large one) cannot pull it onto
+/// itself; whether a straight line is one of the circle's chords is decided against the result.
+std::vector<ImageEllipse> circleEllipses(const std::vector<Fitted>& lines,
+                                         const std::vector<bool>& bent,
+                                         const std::vector<PointF>& left, double near,
+                                         double max_axis, double line_error)
+{
+    std::vector<PointF> close;
+    const auto settle = [&](const std::vector<PointF>& seed, double seed_error) {
+        std::optional<ImageEllipse> e = fitImageEllipse(seed, max_axis, seed_error);
+        for (int refit = 0; e && refit < 2; ++refit) {
+            close.clear();
+            const auto gather = [&](const std::vector<PointF>& points) {
+                for (const PointF& p : points)
+                    if (e->distance(p) <= near)
+                        close.push_back(p);
+            };
+            gather(left);
+            for (std::size_t k = 0; k < lines.size(); ++k)
+                if (bent[k])
+                    gather(lines[k].points);
+            const std::optional<ImageEllipse> again = fitImageEllipse(close, max_axis, 1.5);
+            if (!again)
+                break;
+            e = again;
+        }
+        return e;
+    };
+    std::vector<PointF> seed;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (bent[i])
+            for (const PointF& p : lines[i].points)
+                if (std::none_of(lines.begin(), lines.end(), [&](const Fitted& f) {
+                        return !bent[std::size_t(&f - lines.data())] &&
+                               f.line.error(p) <= line_error;
+                    }))
+                    seed.push_back(p);
+    std::vector<ImageEllipse> ellipses;
+    if (const std::optional<ImageEllipse> e = settle(seed, 1.5)) {
+        ellipses.push_back(*e);
+        return ellipses;
+    }
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        if (bent[i])
+            if (const std::optional<ImageEllipse> e = settle(lines[i].points, 1.0))
+                ellipses.push_back(*e);
+    return ellipses;
+}
+
 } // namespace
 
 const StageInfo& FieldLineDetector::info() const
@@ -298,28 +385,33 @@ void FieldLineDetector::run(Blackboard& bb)
             points.insert(points.end(), m_short.begin(), m_short.end());
     }
 
-    // Merge colinear lines (the original computed this and then discarded the result).
-    bool merged = true;
-    while (merged) {
-        merged = false;
-        for (std::size_t a = 0; a < lines.size() && !merged; ++a)
-            for (std::size_t b = a + 1; b < lines.size() && !merged; ++b) {
-                if (lines[a].line.angleTo(lines[b].line) > m_merge_angle ||
-                    averageDistance(lines[a], lines[b]) > m_merge_distance)
-                    continue;
-                lines[a].points.insert(lines[a].points.end(), lines[b].points.begin(),
-                                       lines[b].points.end());
-                lines[a].line = fitLineTls(lines[a].points);
-                lines.erase(lines.begin() + std::ptrdiff_t(b));
-                merged = true;
-            }
-    }
+    mergeColinear(lines, m_merge_angle, m_merge_distance, m_merge_error);
 
+    std::vector<bool> bent(lines.size(), false);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        bent[i] = m_max_bow > 0 && bow(lines[i]) > m_max_bow;
+    const std::vector<ImageEllipse> circles =
+        m_circle_distance > 0 ? circleEllipses(lines, bent, points, m_circle_distance,
+                                               2.0 * std::max(bb.width(), bb.height()), m_max_error)
+                              : std::vector<ImageEllipse>{};
     std::vector<FieldLine>& out = bb.percepts.output<FieldLine>();
-    for (const Fitted& f : lines) {
-        if (m_max_bow > 0 && bow(f) > m_max_bow) {
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const Fitted& f = lines[i];
+        if (bent[i]) {
             if (rejected)
                 addRejected(*rejected, pointsShape(f.points, {}, 3), "bent: a circle's chord");
+            continue;
+        }
+        const bool chord = std::any_of(circles.begin(), circles.end(), [&](const ImageEllipse& e) {
+            const auto on = std::count_if(f.points.begin(), f.points.end(), [&](const PointF& p) {
+                return e.distance(p) <= m_circle_distance;
+            });
+            return 2 * std::size_t(on) >= f.points.size();
+        });
+        if (chord) {
+            if (rejected)
+                addRejected(*rejected, pointsShape(f.points, {}, 3),
+                            "on the centre circle's ellipse: a chord");
             continue;
         }
         PointF a, b;

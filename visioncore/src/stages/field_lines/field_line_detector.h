@@ -47,6 +47,13 @@ private:
         6,
         {"merge_distance", "px", 0, 100, 0.5,
          "Lines this close to each other (and parallel) are merged into one."}};
+    Param<double> m_merge_error{
+        this,
+        1,
+        {"merge_error", "px", 0, 50, 0.1,
+         "Two such lines are merged only when the line through all their points stays this close "
+         "to them on average: far lines a few px apart (a goal line and the goal area's) stay "
+         "two. 0: any two."}};
     Param<double> m_max_gap{
         this,
         40,
@@ -95,6 +102,13 @@ private:
          "A line whose middle third of points lies further than this from its outer thirds "
          "(across the line) bends: a chord of the centre circle, not a field line. 0 keeps "
          "bent lines."}};
+    Param<double> m_circle_distance{
+        this,
+        3,
+        {"circle_distance", "px", 0, 50, 0.5,
+         "An ellipse is fitted to each bent line's points (the centre circle seen in "
+         "perspective); a line with half its points or more this close to it is a chord of the "
+         "circle, not a field line. 0: no ellipse."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
