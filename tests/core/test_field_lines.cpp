@@ -139,6 +139,27 @@ private slots:
                 std::max(lines[0].x1, lines[0].x2) > 309);
     }
 
+    /// A short line (under min_points points) stands where its end meets a long line at an
+    /// angle, as the goal area's lines do; the same line alone on the carpet is clutter.
+    void shortLinesStandAtAJunction()
+    {
+        cv::Mat f = fieldFrame(60);
+        drawLine(f, 0, 200, 319, 180, 2, Colour::White);
+        drawLine(f, 200, 188, 209, 162, 2, Colour::White); // from the long line up
+        drawLine(f, 60, 140, 69, 114, 2, Colour::White);   // alone
+        MemoryDataWrapper data(f, test::testLut());
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("field_lines", "short_points", 0).ok());
+        QCOMPARE(runOrDie(core).percepts.list<FieldLine>().size(), std::size_t(1));
+        QVERIFY(core.setParam("field_lines", "short_points", 8).ok());
+        const std::vector<FieldLine>& lines = runOrDie(core).percepts.list<FieldLine>();
+        QCOMPARE(lines.size(), std::size_t(2));
+        QVERIFY(hasLine(lines, 0, 200.5, 319, 180.5));
+        QVERIFY(hasLine(lines, 200.5, 188, 209.5, 162));
+        QVERIFY(core.setParam("field_lines", "junction", 0).ok()); // no end meets the long line
+        QCOMPARE(runOrDie(core).percepts.list<FieldLine>().size(), std::size_t(1));
+    }
+
     /// The centre circle far away is a flat ellipse with the halfway line through it. RANSAC
     /// makes chords of its arcs; one bends and gives the ellipse, and the straighter chords on
     /// it are dropped with it (circle_distance 0 keeps them). The halfway line stays.

@@ -302,6 +302,70 @@ std::vector<ImageEllipse> circleEllipses(const std::vector<Fitted>& lines,
     return ellipses;
 }
 
+/// Whether an end of `f` (its extent `a`-`b`) lies within `reach` px of line `g`'s segment (its
+/// extent, plus `reach` beyond each end) at an angle of at least 0.3 rad (17 degrees) to it.
+bool meetsAtAnAngle(const Fitted& f, PointF a, PointF b, const Fitted& g, double reach)
+{
+    if (g.line.angleTo(f.line) < 0.3)
+        return false;
+    PointF c, d;
+    lineExtent(g.line, g.points, c, d);
+    const double lo = std::min(g.line.along(c), g.line.along(d)) - reach;
+    const double hi = std::max(g.line.along(c), g.line.along(d)) + reach;
+    for (const PointF& end : {a, b}) {
+        const double t = g.line.along(end);
+        if (g.line.error(end) <= reach && t >= lo && t <= hi)
+            return true;
+    }
+    return false;
+}
+
+/// The second search's settings and scratch.
+struct ShortSearch
+{
+    int min_points;
+    double max_gap;
+    double junction;
+    double max_bow; ///< 0: none
+    PointColumns& cols;
+    std::vector<std::pair<double, PointF>>& sorted;
+    std::vector<PointF>& pieces;
+};
+
+void addShortLines(std::vector<PointF>& points, RansacParams params, const ShortSearch& search,
+                   RansacRng& rng, std::vector<Fitted>& lines)
+{
+    // Up to three lines of short_points or more, split where their points leave more than
+    // short_gap (scan lines cross a line every few px, so a short line's points follow each other
+    // closely; a model through scattered points does not), each kept only where an end meets one
+    // of the long lines at a corner or a T: the field's short lines (the goal area's) join longer
+    // ones, and the clutter that short_points would let in (a robot's foot, a mark, an arc) does
+    // not. Half the bend a long line may have: an arc's bend grows with the square of its
+    // length, so a short piece of the centre circle (where it meets the halfway line) bends
+    // less than a long chord and would pass the long lines' test.
+    params.min_points = search.min_points;
+    const std::size_t long_count = lines.size();
+    std::vector<Fitted> found;
+    RansacResult<ImageLine> r;
+    for (int k = 0; k < 3 && ransacFindModel(points, params, rng, r, search.cols); ++k) {
+        Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
+        search.pieces.clear();
+        splitAtGaps(f, search.max_gap, std::size_t(params.min_points), found, search.sorted,
+                    search.pieces);
+        points.insert(points.end(), search.pieces.begin(), search.pieces.end());
+    }
+    for (Fitted& f : found) {
+        PointF a, b;
+        lineExtent(f.line, f.points, a, b);
+        const bool straight = search.max_bow <= 0 || bow(f) <= search.max_bow;
+        if (straight && std::any_of(lines.begin(), lines.begin() + std::ptrdiff_t(long_count),
+                                    [&](const Fitted& g) {
+                                        return meetsAtAnAngle(f, a, b, g, search.junction);
+                                    }))
+            lines.push_back(std::move(f));
+    }
+}
+
 } // namespace
 
 const StageInfo& FieldLineDetector::info() const
@@ -373,16 +437,29 @@ void FieldLineDetector::run(Blackboard& bb)
     params.locality = std::size_t(m_locality.value());
     std::vector<Fitted> lines;
     RansacResult<ImageLine> r;
+    m_orphans.clear();
     for (int found = 0; found < m_max_lines && ransacFindModel(points, params, rng, r, m_cols);
          ++found) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
         m_short.clear();
         // A model that gave a line gives the points of its short pieces back: a far line's end
         // that another line's band took in is found again with the rest of its line.
+        // A model that gave none gives them to the search for short lines: its band took a short
+        // line's points along with scattered others.
         if (splitAtGaps(f, m_max_gap, std::size_t(params.min_points), lines, m_sorted, m_short) >
-                0 &&
-            m_return_short)
-            points.insert(points.end(), m_short.begin(), m_short.end());
+            0) {
+            if (m_return_short)
+                points.insert(points.end(), m_short.begin(), m_short.end());
+        } else {
+            m_orphans.insert(m_orphans.end(), m_short.begin(), m_short.end());
+        }
+    }
+    if (m_short_points > 0 && m_short_points < m_min_points) {
+        points.insert(points.end(), m_orphans.begin(), m_orphans.end());
+        addShortLines(
+            points, params,
+            {m_short_points, m_short_gap, m_junction, m_max_bow / 2, m_cols, m_sorted, m_short},
+            rng, lines);
     }
 
     mergeColinear(lines, m_merge_angle, m_merge_distance, m_merge_error);

@@ -21,9 +21,10 @@ public:
 
 private:
     std::vector<std::pair<double, PointF>> m_sorted; ///< scratch of the gap split, kept
-    std::vector<int> m_scan_at;  ///< scratch: the scan index of each row or column, or -1
-    std::vector<PointF> m_short; ///< scratch: the points of pieces too short to be lines
-    PointColumns m_cols;         ///< scratch of RANSAC
+    std::vector<int> m_scan_at;    ///< scratch: the scan index of each row or column, or -1
+    std::vector<PointF> m_short;   ///< scratch: the points of pieces too short to be lines
+    std::vector<PointF> m_orphans; ///< scratch: the points of models that gave no line
+    PointColumns m_cols;           ///< scratch of RANSAC
 
     Param<int> m_min_points{
         this, 12, {"min_points", "", 2, 1000, 1, "Line points needed for a field line."}};
@@ -95,6 +96,23 @@ private:
         {"faint_contrast", "", 0, 255, 1,
          "How much brighter (luma) than the green on both sides a faint run's brightest pixel "
          "must be."}};
+    Param<int> m_short_points{
+        this,
+        8,
+        {"short_points", "", 0, 1000, 1,
+         "After the lines of min_points, up to three lines of this many points or more that meet "
+         "a longer line at a corner or a T (the goal area's lines far away or cut by a robot). 0 "
+         "(or min_points and more): none."}};
+    Param<double> m_short_gap{
+        this,
+        12,
+        {"short_gap", "px", 1, 1000, 1,
+         "A short line is split where its points leave a longer gap (max_gap for the others)."}};
+    Param<double> m_junction{
+        this,
+        6,
+        {"junction", "px", 0, 100, 0.5,
+         "How close a short line's end must come to a longer line, at 17 degrees or more to it."}};
     Param<double> m_max_bow{
         this,
         0.7,
