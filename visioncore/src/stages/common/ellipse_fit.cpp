@@ -1,5 +1,7 @@
 #include "stages/common/ellipse_fit.h"
 
+#include "stages/common/line_fit.h"
+
 #include <Eigen/Cholesky>
 
 #include <algorithm>
@@ -30,13 +32,7 @@ std::optional<ImageEllipse> fitImageEllipse(const std::vector<PointF>& points, d
     // OpenCV's fitEllipse starts (which spent some 60 k instructions a call). On a short, flat
     // arc of the centre circle it keeps the arc's curvature, where the "direct" fit of
     // Fitzgibbon et al. shrinks the ellipse towards the chord.
-    double mx = 0, my = 0;
-    for (const PointF& p : points) {
-        mx += p.x;
-        my += p.y;
-    }
-    mx /= double(points.size());
-    my /= double(points.size());
+    const auto [mx, my] = meanOf(points);
     double spread = 0;
     for (const PointF& p : points)
         spread += std::sqrt((p.x - mx) * (p.x - mx) + (p.y - my) * (p.y - my));

@@ -33,18 +33,24 @@ double ImageLine::angleTo(const ImageLine& other) const
     return std::acos(std::min(1.0, c));
 }
 
-ImageLine fitLineTls(const std::vector<PointF>& points)
+PointF meanOf(const std::vector<PointF>& points)
 {
-    ImageLine line;
     if (points.empty())
-        return line;
+        return {0, 0};
     double mx = 0, my = 0;
     for (const PointF& p : points) {
         mx += p.x;
         my += p.y;
     }
-    mx /= double(points.size());
-    my /= double(points.size());
+    return {mx / double(points.size()), my / double(points.size())};
+}
+
+ImageLine fitLineTls(const std::vector<PointF>& points)
+{
+    ImageLine line;
+    if (points.empty())
+        return line;
+    const auto [mx, my] = meanOf(points);
     double sxx = 0, sxy = 0, syy = 0;
     for (const PointF& p : points) {
         sxx += (p.x - mx) * (p.x - mx);

@@ -34,6 +34,9 @@ struct ImageLine
     double angleTo(const ImageLine& other) const;
 };
 
+/// The points' mean; (0, 0) for none.
+PointF meanOf(const std::vector<PointF>& points);
+
 /// Total least squares (the line minimising perpendicular distances), as the original's
 /// LSFittedLine. Needs >= 2 distinct points.
 ImageLine fitLineTls(const std::vector<PointF>& points);
