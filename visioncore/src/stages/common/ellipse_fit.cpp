@@ -16,13 +16,17 @@ double ImageEllipse::distance(const PointF& p) const
     const double u = (dx * cos_t + dy * sin_t) / a;
     const double v = (dy * cos_t - dx * sin_t) / b;
     const double rho = std::sqrt(u * u + v * v); // 1 on the outline
-    if (rho < 1e-9)
+    // rho - 1 over its gradient's length: to first order the distance across the outline (the
+    // distance along the ray from the centre overstates it on a flat ellipse, 5.8 px for 1 px
+    // off a 120 x 10 one).
+    const double gradient = std::sqrt(u * u / (a * a) + v * v / (b * b));
+    if (rho < 1e-9 || gradient < 1e-12)
         return std::min(a, b);
-    return std::abs(rho - 1) * std::sqrt(dx * dx + dy * dy) / rho;
+    return std::abs(rho - 1) * rho / gradient;
 }
 
-std::optional<ImageEllipse> fitImageEllipse(const std::vector<PointF>& points, double max_axis,
-                                            double max_mean_error)
+std::optional<ImageEllipse> fitImageEllipse(const std::vector<PointF>& points, double min_axis,
+                                            double max_axis, double max_mean_error)
 {
     if (points.size() < 8)
         return std::nullopt;
@@ -73,7 +77,7 @@ std::optional<ImageEllipse> fitImageEllipse(const std::vector<PointF>& points, d
     const double angle = first ? std::atan2(l1 - A, 0.5 * B) : std::atan2(0.5 * B, l1 - C);
     e.cos_t = std::cos(angle);
     e.sin_t = std::sin(angle);
-    if (!(e.a >= 2 && e.b >= 2 && e.a <= max_axis && e.b <= max_axis))
+    if (!(e.a >= min_axis && e.b >= min_axis && e.a <= max_axis && e.b <= max_axis))
         return std::nullopt;
     double sum = 0;
     for (const PointF& p : points)

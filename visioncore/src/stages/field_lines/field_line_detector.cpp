@@ -203,6 +203,8 @@ double bow(const Fitted& f)
         hi = std::max(hi, f.line.along(p));
     }
     const double third = (hi - lo) / 3;
+    if (!(third > 0))
+        return 0;
     double sum[3] = {0, 0, 0};
     int count[3] = {0, 0, 0};
     for (const PointF& p : f.points) {
@@ -211,7 +213,7 @@ double bow(const Fitted& f)
                      (p.y - f.line.point.y) * f.line.direction.x;
         ++count[part];
     }
-    if (third <= 0 || count[0] < 2 || count[1] < 2 || count[2] < 2)
+    if (count[0] < 2 || count[1] < 2 || count[2] < 2)
         return 0;
     return std::abs(sum[1] / count[1] - 0.5 * (sum[0] / count[0] + sum[2] / count[2]));
 }
@@ -262,7 +264,7 @@ std::vector<ImageEllipse> circleEllipses(const std::vector<Fitted>& lines,
 {
     std::vector<PointF> close;
     const auto settle = [&](const std::vector<PointF>& seed, double seed_error) {
-        std::optional<ImageEllipse> e = fitImageEllipse(seed, max_axis, seed_error);
+        std::optional<ImageEllipse> e = fitImageEllipse(seed, 2 * near, max_axis, seed_error);
         for (int refit = 0; e && refit < 2; ++refit) {
             close.clear();
             const auto gather = [&](const std::vector<PointF>& points) {
@@ -274,7 +276,8 @@ std::vector<ImageEllipse> circleEllipses(const std::vector<Fitted>& lines,
             for (std::size_t k = 0; k < lines.size(); ++k)
                 if (bent[k])
                     gather(lines[k].points);
-            const std::optional<ImageEllipse> again = fitImageEllipse(close, max_axis, 1.5);
+            const std::optional<ImageEllipse> again =
+                fitImageEllipse(close, 2 * near, max_axis, 1.5);
             if (!again)
                 break;
             e = again;
@@ -345,15 +348,20 @@ void addShortLines(std::vector<PointF>& points, RansacParams params, const Short
     // less than a long chord and would pass the long lines' test.
     params.min_points = search.min_points;
     const std::size_t long_count = lines.size();
+    // The pieces too short even here are set aside until the search ends, so that the next try
+    // does not find the same band again; they and the lines not kept go back to `points` (the
+    // centre circle's fit reads them).
     std::vector<Fitted> found;
+    std::vector<PointF> aside;
     RansacResult<ImageLine> r;
     for (int k = 0; k < 3 && ransacFindModel(points, params, rng, r, search.cols); ++k) {
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
         search.pieces.clear();
         splitAtGaps(f, search.max_gap, std::size_t(params.min_points), found, search.sorted,
                     search.pieces);
-        points.insert(points.end(), search.pieces.begin(), search.pieces.end());
+        aside.insert(aside.end(), search.pieces.begin(), search.pieces.end());
     }
+    points.insert(points.end(), aside.begin(), aside.end());
     for (Fitted& f : found) {
         PointF a, b;
         lineExtent(f.line, f.points, a, b);
@@ -363,6 +371,8 @@ void addShortLines(std::vector<PointF>& points, RansacParams params, const Short
                                         return meetsAtAnAngle(f, a, b, g, search.junction);
                                     }))
             lines.push_back(std::move(f));
+        else
+            points.insert(points.end(), f.points.begin(), f.points.end());
     }
 }
 

@@ -124,9 +124,9 @@ private:
         this,
         3,
         {"circle_distance", "px", 0, 50, 0.5,
-         "An ellipse is fitted to each bent line's points (the centre circle seen in "
-         "perspective); a line with half its points or more this close to it is a chord of the "
-         "circle, not a field line. 0: no ellipse."}};
+         "The bent lines' points give an ellipse (the centre circle seen in perspective, no "
+         "semi-axis under twice this); a line with half its points or more this close to it is "
+         "a chord of the circle, not a field line. 0: no ellipse."}};
     Param<std::uint32_t> m_seed{this, 1, kRansacSeed};
 };
 
