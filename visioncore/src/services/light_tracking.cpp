@@ -73,6 +73,22 @@ MapKey mapKey(const std::array<double, 3>& gain)
     return key;
 }
 
+/// The map `cache` holds for `key` while anyone holds it, else `make()`'s, kept for the next
+/// asker; entries whose maps are gone are swept once there are 64.
+template <class Key, class Make>
+std::shared_ptr<const LutInputMap> sharedMap(std::map<Key, std::weak_ptr<const LutInputMap>>& cache,
+                                             const Key& key, Make make)
+{
+    if (cache.size() >= 64)
+        std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
+    std::weak_ptr<const LutInputMap>& known = cache[key];
+    if (auto shared = known.lock())
+        return shared;
+    std::shared_ptr<const LutInputMap> made = make();
+    known = made;
+    return made;
+}
+
 std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
 {
     if (key == MapKey{0, 0, 0, 0})
@@ -81,42 +97,36 @@ std::shared_ptr<const LutInputMap> mapOfKey(const MapKey& key)
     // worker running the same frame ask for the same map, a table's memo of a map is shared by
     // the map's identity (ColourLut::setInputMap), so one map object means one memo filled once,
     // and the edit-effect scan knows a frame is read as before by its map's identity.
+    // The plain maps (no next map) are kept by their gains' keys: a dimming or brightening
+    // light's map is the level map of one some frames before (its next map), so it is copied,
+    // not worked out.
     static std::mutex mutex;
     static std::map<MapKey, std::weak_ptr<const LutInputMap>> made;
-    std::lock_guard lock(mutex);
-    if (const auto it = made.find(key); it != made.end())
-        if (auto shared = it->second.lock())
-            return shared;
-    if (made.size() >= 64)
-        std::erase_if(made, [](const auto& entry) { return entry.second.expired(); });
-    // The plain maps (no next map) by their gains' keys: a dimming or brightening light's map is
-    // the level map of one some frames before (its next map), so it is copied, not worked out.
     static std::map<std::array<long, 3>, std::weak_ptr<const LutInputMap>> plain;
-    if (plain.size() >= 64)
-        std::erase_if(plain, [](const auto& entry) { return entry.second.expired(); });
+    std::lock_guard lock(mutex);
     const auto plainMap = [&key](long level) {
         const std::array<long, 3> gains{key[0] + level, key[1] + level, key[2] + level};
-        auto& known = plain[gains];
-        if (auto shared = known.lock())
-            return shared;
-        const auto gain = [&gains](std::size_t k) { return std::exp(double(gains[k]) * kMapStep); };
-        auto made_now =
-            std::make_shared<const LutInputMap>(LutInputMap::forRgbGain(gain(0), gain(1), gain(2)));
-        known = made_now;
-        return made_now;
+        return sharedMap(plain, gains, [&gains] {
+            const auto gain = [&gains](std::size_t k) {
+                return std::exp(double(gains[k]) * kMapStep);
+            };
+            return std::make_shared<const LutInputMap>(
+                LutInputMap::forRgbGain(gain(0), gain(1), gain(2)));
+        });
     };
-    auto full = key[3] == 0 ? nullptr : plainMap(key[3]);
-    // Not the carpet and the white: they are broad in Y, and dark or bright pixels of a robot
-    // that the held level would make carpet or white split its obstacle (B-Human's log with
-    // --adapt: obstacles 12/1/2 found/false/missed, 10/3/4 taking every class, 11/0/3 so).
-    std::uint32_t classes = ~std::uint32_t(0);
-    for (const Colour reference : kReferenceClasses)
-        classes &= ~(std::uint32_t(1) << int(reference));
-    // Allocated apart from its count, so that an expired entry holds no map's memory.
-    std::shared_ptr<const LutInputMap> map(
-        new LutInputMap(plainMap(0)->withThen(std::move(full), classes)));
-    made[key] = map;
-    return map;
+    return sharedMap(made, key, [&] {
+        auto full = key[3] == 0 ? nullptr : plainMap(key[3]);
+        // Not the carpet and the white: they are broad in Y, and dark or bright pixels of a
+        // robot that the held level would make carpet or white split its obstacle (B-Human's log
+        // with --adapt: obstacles 12/1/2 found/false/missed, 10/3/4 taking every class, 11/0/3
+        // so).
+        std::uint32_t classes = ~std::uint32_t(0);
+        for (const Colour reference : kReferenceClasses)
+            classes &= ~(std::uint32_t(1) << int(reference));
+        // Allocated apart from its count, so that an expired entry holds no map's memory.
+        return std::shared_ptr<const LutInputMap>(
+            new LutInputMap(plainMap(0)->withThen(std::move(full), classes)));
+    });
 }
 
 /// The largest |difference| of two ln gains, over the channels.
