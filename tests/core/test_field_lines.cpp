@@ -187,6 +187,28 @@ private slots:
         QVERIFY(hasLine(lines, 0, 141.5, 319, 139.5));
         QVERIFY(notesSaying(sink, "centre circle") >= 1);
     }
+
+    /// A near centre circle gives bent chords, each a model of the search; they take no line's
+    /// place, so the lines found after them are still found within max_lines.
+    void circleChordsTakeNoLinesPlace()
+    {
+        cv::Mat f = fieldFrame(60);
+        const test::ClassPixel white = test::pixelFor(Colour::White);
+        cv::ellipse(f, {160, 170}, {150, 30}, 0, 0, 360, cv::Scalar(white.y, white.cb, white.cr),
+                    2);
+        drawLine(f, 20, 80, 100, 75, 2, Colour::White);
+        drawLine(f, 200, 100, 290, 95, 2, Colour::White);
+        MemoryDataWrapper data(f, test::testLut());
+        test::RecordingSink sink;
+        sink.layers = {"field_lines.rejected"};
+        data.setDebugSink(&sink);
+        ControlWrapper core(data);
+        QVERIFY(core.setParam("field_lines", "max_lines", 2).ok());
+        const std::vector<FieldLine>& lines = runOrDie(core).percepts.list<FieldLine>();
+        QVERIFY(notesSaying(sink, "bent") >= 2);
+        QVERIFY(hasLine(lines, 20, 80.5, 100, 75.5));
+        QVERIFY(hasLine(lines, 200, 100.5, 290, 95.5));
+    }
 };
 
 FIELDSIGHT_TEST_SUITE(TestFieldLines, None)

@@ -21,6 +21,10 @@ namespace fieldsight {
 
 namespace {
 
+/// Models past max_lines that may still run while the circle's chords take none of its places:
+/// a centre circle in view gives up to four.
+constexpr int kChordModels = 4;
+
 struct Fitted
 {
     ImageLine line;
@@ -448,8 +452,18 @@ void FieldLineDetector::run(Blackboard& bb)
     std::vector<Fitted> lines;
     RansacResult<ImageLine> r;
     m_orphans.clear();
-    for (int found = 0; found < m_max_lines && ransacFindModel(points, params, rng, r, m_cols);
-         ++found) {
+    // A model whose every piece is bent (a chord of the centre circle) takes no line's place:
+    // the circle can give several, and a far line found after them was lost (rc2012, frames
+    // 28-29). A few more models at most, so that a frame's cost stays bounded.
+    const auto allBent = [this, &lines](std::size_t from) {
+        return m_max_bow > 0 && from < lines.size() &&
+               std::all_of(lines.begin() + std::ptrdiff_t(from), lines.end(),
+                           [this](const Fitted& f) { return bow(f) > m_max_bow; });
+    };
+    for (int found = 0, models = 0; found < m_max_lines && models < m_max_lines + kChordModels &&
+                                    ransacFindModel(points, params, rng, r, m_cols);
+         ++models) {
+        const std::size_t before = lines.size();
         Fitted f{fitLineTls(r.inliers), std::move(r.inliers)};
         m_short.clear();
         // A model that gave a line gives the points of its short pieces back: a far line's end
@@ -463,6 +477,7 @@ void FieldLineDetector::run(Blackboard& bb)
         } else {
             m_orphans.insert(m_orphans.end(), m_short.begin(), m_short.end());
         }
+        found += allBent(before) ? 0 : 1;
     }
     if (m_short_points > 0 && m_short_points < m_min_points) {
         points.insert(points.end(), m_orphans.begin(), m_orphans.end());
