@@ -54,6 +54,13 @@ bool hasLine(const std::vector<FieldLine>& lines, double x1, double y1, double x
     });
 }
 
+/// A white outline 2 px wide of the ellipse about (cx, cy) with semi-axes a along x and b.
+void drawWhiteEllipse(cv::Mat& frame, int cx, int cy, int a, int b)
+{
+    const test::ClassPixel white = test::pixelFor(Colour::White);
+    cv::ellipse(frame, {cx, cy}, {a, b}, 0, 0, 360, cv::Scalar(white.y, white.cb, white.cr), 2);
+}
+
 std::size_t notesSaying(const test::RecordingSink& sink, const char* words)
 {
     const auto layer = sink.published.find("field_lines.rejected");
@@ -169,9 +176,7 @@ private slots:
     void farCircleChordsAreDropped()
     {
         cv::Mat f = fieldFrame(60);
-        const test::ClassPixel white = test::pixelFor(Colour::White);
-        cv::ellipse(f, {160, 140}, {120, 22}, 0, 0, 360, cv::Scalar(white.y, white.cb, white.cr),
-                    2);
+        drawWhiteEllipse(f, 160, 140, 120, 22);
         drawLine(f, 0, 141, 319, 139, 2, Colour::White);
         MemoryDataWrapper data(f, test::testLut());
         test::RecordingSink sink;
@@ -193,9 +198,7 @@ private slots:
     void circleChordsTakeNoLinesPlace()
     {
         cv::Mat f = fieldFrame(60);
-        const test::ClassPixel white = test::pixelFor(Colour::White);
-        cv::ellipse(f, {160, 170}, {150, 30}, 0, 0, 360, cv::Scalar(white.y, white.cb, white.cr),
-                    2);
+        drawWhiteEllipse(f, 160, 170, 150, 30);
         drawLine(f, 20, 80, 100, 75, 2, Colour::White);
         drawLine(f, 200, 100, 290, 95, 2, Colour::White);
         MemoryDataWrapper data(f, test::testLut());

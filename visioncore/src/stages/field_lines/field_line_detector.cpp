@@ -455,10 +455,10 @@ void FieldLineDetector::run(Blackboard& bb)
     // A model whose every piece is bent (a chord of the centre circle) takes no line's place:
     // the circle can give several, and a far line found after them was lost (rc2012, frames
     // 28-29). A few more models at most, so that a frame's cost stays bounded.
-    const auto allBent = [this, &lines](std::size_t from) {
-        return m_max_bow > 0 && from < lines.size() &&
-               std::all_of(lines.begin() + std::ptrdiff_t(from), lines.end(),
-                           [this](const Fitted& f) { return bow(f) > m_max_bow; });
+    const auto bends = [this](const Fitted& f) { return m_max_bow > 0 && bow(f) > m_max_bow; };
+    const auto allBent = [&bends, &lines](std::size_t from) {
+        return from < lines.size() &&
+               std::all_of(lines.begin() + std::ptrdiff_t(from), lines.end(), bends);
     };
     for (int found = 0, models = 0; found < m_max_lines && models < m_max_lines + kChordModels &&
                                     ransacFindModel(points, params, rng, r, m_cols);
@@ -491,7 +491,7 @@ void FieldLineDetector::run(Blackboard& bb)
 
     std::vector<bool> bent(lines.size(), false);
     for (std::size_t i = 0; i < lines.size(); ++i)
-        bent[i] = m_max_bow > 0 && bow(lines[i]) > m_max_bow;
+        bent[i] = bends(lines[i]);
     const std::vector<ImageEllipse> circles =
         m_circle_distance > 0 ? circleEllipses(lines, bent, points, m_circle_distance,
                                                2.0 * std::max(bb.width(), bb.height()), m_max_error)
