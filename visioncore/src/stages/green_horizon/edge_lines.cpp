@@ -2,6 +2,7 @@
 #include "stages/green_horizon/edge_lines.h"
 
 #include <cmath>
+#include <optional>
 
 namespace fieldsight {
 
@@ -23,17 +24,27 @@ struct Fit
     }
 };
 
-/// The points within `tolerance` of `line`, those above, and the sum of the inliers' distances.
-Fit score(const std::vector<PixelPoint>& pool, const EdgeLine& line, double tolerance)
+/// The points within `tolerance` of `line`, those above, and the sum of the inliers' distances;
+/// nullopt as soon as the line cannot reach `to_beat`'s merit even if every point left were an
+/// inlier (it would not be chosen: the pairs' search scores n^2 lines over n points each, and
+/// most fall behind within a few points).
+std::optional<Fit> score(const std::vector<PixelPoint>& pool, const EdgeLine& line,
+                         double tolerance, std::optional<double> to_beat)
 {
     Fit f{line, 0, 0, 0};
-    for (const PixelPoint& p : pool) {
+    const int n = int(pool.size());
+    for (int i = 0; i < n; ++i) {
+        const PixelPoint& p = pool[std::size_t(i)];
         const double d = p.y - line.at(p.x);
         if (std::abs(d) <= tolerance) {
             ++f.support;
             f.residual += std::abs(d);
         } else if (d < 0) {
             ++f.above;
+            if (to_beat && f.merit() + (n - 1 - i) < *to_beat)
+                return std::nullopt;
+        } else if (to_beat && f.merit() + (n - 1 - i) < *to_beat) {
+            return std::nullopt;
         }
     }
     return f;
@@ -50,10 +61,12 @@ Fit bestLine(const std::vector<PixelPoint>& pool, double tolerance, Allowed allo
             if (pool[i].x == pool[j].x)
                 continue;
             const double b = double(pool[j].y - pool[i].y) / double(pool[j].x - pool[i].x);
-            const Fit f = score(pool, {pool[i].y - b * pool[i].x, b}, tolerance);
-            if ((best.support > 0 && !f.betterThan(best)) || !allowed(f.line))
+            const std::optional<Fit> f =
+                score(pool, {pool[i].y - b * pool[i].x, b}, tolerance,
+                      best.support > 0 ? std::optional<double>(best.merit()) : std::nullopt);
+            if (!f || (best.support > 0 && !f->betterThan(best)) || !allowed(f->line))
                 continue;
-            best = f;
+            best = *f;
         }
     if (best.support < 2)
         return best;

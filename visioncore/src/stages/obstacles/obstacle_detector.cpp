@@ -133,6 +133,10 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
     // a goal the edge is the goal's back). A robot narrower than half the window stands out.
     const std::size_t half = std::size_t(std::max(1, int(m_edge_window / (2 * spacing))));
     usual.assign(n, 0);
+    // The window's depths kept sorted as it slides (from and to only grow, but past a post, where
+    // it starts afresh): a few moves a column where a median of its own took a selection.
+    nearby.clear();
+    std::size_t held_from = 0, held_to = 0; // the window `nearby` holds: [held_from, held_to)
     for (std::size_t i = 0; i < n; ++i) {
         // 2 half + 1 columns: where a goalpost or the image's side stops one side, the other
         // side reaches further, so a robot beside a post still has field edge around it.
@@ -143,15 +147,20 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
             ++to;
         while (from > 0 && to - from < 2 * half && !post[from - 1])
             --from;
-        nearby.clear();
-        for (std::size_t j = from; j <= to; ++j)
-            if (!post[j])
-                nearby.push_back(depth[j]);
+        if (from < held_from || to + 1 < held_to || from >= held_to) {
+            nearby.clear();
+            held_from = held_to = from;
+        }
+        for (; held_to <= to; ++held_to)
+            if (!post[held_to])
+                nearby.insert(std::upper_bound(nearby.begin(), nearby.end(), depth[held_to]),
+                              depth[held_to]);
+        for (; held_from < from; ++held_from)
+            if (!post[held_from])
+                nearby.erase(std::lower_bound(nearby.begin(), nearby.end(), depth[held_from]));
         if (nearby.empty())
             continue;
-        const auto mid = nearby.begin() + std::ptrdiff_t(nearby.size() / 2);
-        std::nth_element(nearby.begin(), mid, nearby.end());
-        usual[i] = *mid;
+        usual[i] = nearby[nearby.size() / 2];
     }
 }
 
