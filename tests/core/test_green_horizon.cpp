@@ -2,6 +2,7 @@
 // edge, a robot hiding it, green walls and seats behind the field, a corner, the camera's own body
 // at the image's side.
 #include "support/test_suite.h"
+#include "stages/green_horizon/edge_lines.h"
 #include "support/field_frames.h"
 #include "support/recording_sink.h"
 #include "support/synthetic_frames.h"
@@ -11,7 +12,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <limits>
 #include <memory>
 
@@ -48,6 +51,100 @@ int horizonAt(const cv::Mat& frame, double tolerance, int x, test::RecordingSink
 }
 
 } // namespace
+
+namespace reference {
+
+// fitEdge's search as it was first written: every pair's line scored over every point, in order,
+// no shortcut. The fit's shortcuts must choose what this chooses.
+struct Fit
+{
+    EdgeLine line;
+    int support = 0;
+    int above = 0;
+    double residual = 0;
+    double merit() const { return support - 0.5 * above; }
+};
+
+Fit score(const std::vector<PixelPoint>& pool, const EdgeLine& line, double tolerance)
+{
+    Fit f{line};
+    for (const PixelPoint& p : pool) {
+        const double d = p.y - line.at(p.x);
+        if (std::abs(d) <= tolerance) {
+            ++f.support;
+            f.residual += std::abs(d);
+        } else if (d < 0) {
+            ++f.above;
+        }
+    }
+    return f;
+}
+
+template <class Allowed>
+Fit bestLine(const std::vector<PixelPoint>& pool, double tolerance, Allowed allowed)
+{
+    Fit best;
+    for (std::size_t i = 0; i < pool.size(); ++i)
+        for (std::size_t j = i + 1; j < pool.size(); ++j) {
+            if (pool[i].x == pool[j].x)
+                continue;
+            const double b = double(pool[j].y - pool[i].y) / double(pool[j].x - pool[i].x);
+            const Fit f = score(pool, {pool[i].y - b * pool[i].x, b}, tolerance);
+            const bool better = f.merit() > best.merit() ||
+                                (f.merit() == best.merit() && f.residual < best.residual);
+            if ((best.support > 0 && !better) || !allowed(f.line))
+                continue;
+            best = f;
+        }
+    if (best.support < 2)
+        return best;
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const PixelPoint& p : pool)
+        if (std::abs(p.y - best.line.at(p.x)) <= tolerance) {
+            n += 1;
+            sx += p.x;
+            sy += p.y;
+            sxx += double(p.x) * p.x;
+            sxy += double(p.x) * p.y;
+        }
+    const double det = n * sxx - sx * sx;
+    if (det > 0) {
+        const double b = (n * sxy - sx * sy) / det;
+        const EdgeLine refit{(sy - b * sx) / n, b};
+        if (allowed(refit))
+            best.line = refit;
+    }
+    return best;
+}
+
+std::optional<EdgeModel> fitEdge(const std::vector<PixelPoint>& points, double tolerance,
+                                 int min_support)
+{
+    const Fit first = bestLine(points, tolerance, [](const EdgeLine&) { return true; });
+    if (first.support < std::max(2, min_support))
+        return std::nullopt;
+    EdgeModel model{first.line, std::nullopt};
+    std::vector<PixelPoint> on_first, below;
+    for (const PixelPoint& p : points) {
+        const double d = p.y - first.line.at(p.x);
+        if (std::abs(d) <= tolerance)
+            on_first.push_back(p);
+        else if (d > tolerance)
+            below.push_back(p);
+    }
+    if (int(below.size()) < min_support)
+        return model;
+    const Fit second = bestLine(below, tolerance, [&](const EdgeLine& line) {
+        return std::all_of(on_first.begin(), on_first.end(), [&](const PixelPoint& p) {
+            return line.at(p.x) <= first.line.at(p.x) + tolerance;
+        });
+    });
+    if (second.support >= std::max(2, min_support))
+        model.second = second.line;
+    return model;
+}
+
+} // namespace reference
 
 class TestGreenHorizon : public QObject
 {
@@ -160,6 +257,59 @@ private slots:
         QCOMPARE(thrown.shapes.size(), std::size_t(1));
         QCOMPARE(thrown.shapes[0].points.size(), std::size_t(7)); // columns 110 to 176
         QVERIFY(thrown.notes.at(0).find("edge_lines") != std::string::npos);
+    }
+
+    void theEdgeFitChoosesWhatEveryPairsFullScoreChooses()
+    {
+        // Random scan points on integer rows: edges, corners, clutter above and below, and many
+        // lines level on merit (points exactly on a line, or at the tolerance from it), where
+        // the first pair of the least residual must win. The fit's shortcuts (merit first, two
+        // points a step, the residual exactly only where it can win) choose what scoring every
+        // pair in full chooses, to the bit.
+        std::mt19937 random(20261204);
+        EdgeFitScratch scratch;
+        int corners = 0;
+        for (int trial = 0; trial < 400; ++trial) {
+            std::vector<PixelPoint> points;
+            const int n = 3 + int(random() % 45);
+            const double slope = (int(random() % 9) - 4) * 0.05;
+            const int corner = int(random() % 320);
+            for (int k = 0; k < n; ++k) {
+                const int x = 8 * k;
+                int y = 80 + int(std::lround(slope * std::abs(x - corner)));
+                switch (random() % 6) {
+                case 0:
+                    y -= int(random() % 40);
+                    break; // above: a wall
+                case 1:
+                    y += int(random() % 60);
+                    break; // below: a robot's feet
+                case 2:
+                    y += int(random() % 7) - 3;
+                    break;
+                default:
+                    break;
+                }
+                points.push_back({x, y});
+            }
+            const double tolerance = double(1 + random() % 4);
+            const int min_support = 2 + int(random() % 4);
+            const std::optional<EdgeModel> want =
+                reference::fitEdge(points, tolerance, min_support);
+            const std::optional<EdgeModel> got = fitEdge(points, tolerance, min_support, scratch);
+            const QByteArray at = QByteArray::number(trial);
+            QVERIFY2(got.has_value() == want.has_value(), at);
+            if (!got)
+                continue;
+            QVERIFY2(got->first.a == want->first.a && got->first.b == want->first.b, at);
+            QVERIFY2(got->second.has_value() == want->second.has_value(), at);
+            if (got->second) {
+                ++corners;
+                QVERIFY2(got->second->a == want->second->a && got->second->b == want->second->b,
+                         at);
+            }
+        }
+        QVERIFY(corners > 20); // the second line's search is exercised too
     }
 
     void aCornerKeepsBothSidesOfTheEdge()

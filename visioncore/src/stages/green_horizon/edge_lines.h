@@ -36,6 +36,7 @@ struct EdgeModel
 struct EdgeFitScratch
 {
     std::vector<PixelPoint> on_first, below;
+    std::vector<double> xs, ys; ///< a pool's points as doubles
 };
 
 /// The line through the most points within `tolerance` rows; a second line through at least

@@ -95,20 +95,22 @@ std::optional<int> GreenHorizonDetector::fieldStart(Blackboard& bb, int x, int y
         front = 0;
         gap = 0;
     };
+    const bool first_run = m_max_field_gap <= 0;
+    const bool any_row_thins = density > 1;
     // Walked by pointer: the image and LUT cannot change under the loop.
     const std::uint8_t* p = image.ptr<std::uint8_t>(y0) + 3 * x;
     for (int y = y0; y < h; ++y, p += step) {
         if (lut.classify(p[0], p[1], p[2]) == Colour::Green) {
-            // Only a gap can thin the run below the density: a green row after a green row adds
-            // one to both the run's green and its length, and a share of at most 1 that held for
-            // the one holds for the other.
-            const bool after_gap = !rows.empty() && rows.back() != y - 1;
+            // Only a gap (rows since the run's last green) can thin the run below the density: a
+            // green row after a green row adds one to both the run's green and its length, and a
+            // share of at most 1 that held for the one holds for the other.
+            const bool after_gap = gap > 0;
             rows.push_back(y);
             gap = 0;
-            while ((after_gap || density > 1) && rows.size() - front > 1 &&
+            while ((after_gap || any_row_thins) && rows.size() - front > 1 &&
                    double(rows.size() - front) < density * double(y - rows[front] + 1))
                 ++front;
-            if (m_max_field_gap <= 0 && int(rows.size() - front) >= min_green)
+            if (first_run && int(rows.size() - front) >= min_green)
                 return rows[front]; // the first run is the field's (the original rule)
         } else if (rows.size() > front && ++gap > max_gap) {
             close();

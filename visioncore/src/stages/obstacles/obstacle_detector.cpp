@@ -108,11 +108,12 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
     // horizon (with edge_band, short field-coloured bits inside it included, as in a run).
     std::vector<int>& depth = m_edge_depth;
     depth.assign(n, 0);
+    const int max_bridged = maxBridged();
     for (std::size_t i = 0; i < n; ++i) {
         const Scan& scan = region[i];
         std::size_t k = 0;
         while (k < scan.size() &&
-               (!inMask(mask, scan[k].colour) || (band && bridged(scan, k, mask, maxBridged()))))
+               (!inMask(mask, scan[k].colour) || (band && bridged(scan, k, mask, max_bridged))))
             ++k;
         if (k > 0)
             depth[i] = scan[k - 1].y1 - scan[0].y0;
@@ -136,17 +137,31 @@ void ObstacleDetector::measureEdge(const SegmentedRegion& region, unsigned mask,
     // The window's depths kept sorted as it slides (from and to only grow, but past a post, where
     // it starts afresh): a few moves a column where a median of its own took a selection.
     nearby.clear();
+    // The first column after the last post left of each column, and the last before the first
+    // post right of it: how far a window may reach.
+    std::vector<std::size_t>& left = m_left_stop;
+    std::vector<std::size_t>& right = m_right_stop;
+    left.resize(n);
+    right.resize(n);
+    for (std::size_t i = 0, stop = 0; i < n; ++i) {
+        left[i] = stop;
+        if (post[i])
+            stop = i + 1;
+    }
+    for (std::size_t i = n, stop = n - 1; i-- > 0;) {
+        right[i] = stop;
+        if (post[i] && i > 0)
+            stop = i - 1;
+    }
     std::size_t held_from = 0, held_to = 0; // the window `nearby` holds: [held_from, held_to)
     for (std::size_t i = 0; i < n; ++i) {
         // 2 half + 1 columns: where a goalpost or the image's side stops one side, the other
-        // side reaches further, so a robot beside a post still has field edge around it.
-        std::size_t from = i, to = i;
-        while (from > 0 && i - from < half && !post[from - 1])
-            --from;
-        while (to + 1 < n && to - from < 2 * half && !post[to + 1])
-            ++to;
-        while (from > 0 && to - from < 2 * half && !post[from - 1])
-            --from;
+        // side reaches further, so a robot beside a post still has field edge around it. (Up to
+        // half to the left, then up to 2 half + 1 columns to the right, then further left.)
+        std::size_t from = std::max(i >= half ? i - half : 0, left[i]);
+        const std::size_t to = std::min(from + 2 * half, right[i]);
+        if (to - from < 2 * half)
+            from = std::max(to >= 2 * half ? to - 2 * half : 0, left[i]);
         if (from < held_from || to + 1 < held_to || from >= held_to) {
             nearby.clear();
             held_from = held_to = from;
@@ -211,6 +226,7 @@ void ObstacleDetector::run(Blackboard& bb)
     // and in `behind` (x -1: none) the standing run just above it when at least behind_green px
     // of carpet lie between them: a robot further away, showing above a nearer one.
     const int behind_green = m_behind_green;
+    const int max_bridged = maxBridged();
     const auto lowestRun = [&](const Scan& scan, unsigned mask, bool report, Run& best,
                                Run& behind) {
         bool have = false;
@@ -227,7 +243,7 @@ void ObstacleDetector::run(Blackboard& bb)
             }
             // A run ends at field colour; short field-coloured bits inside a robot (a white
             // marking) are part of it when the run continues right after.
-            if (top >= 0 && k < scan.size() && bridged(scan, k, mask, maxBridged()))
+            if (top >= 0 && k < scan.size() && bridged(scan, k, mask, max_bridged))
                 continue;
             // Something standing on the field as tall as the camera reaches the horizon, so its run
             // is tall for how far below the green horizon its foot is (a robot breaking the
@@ -275,7 +291,7 @@ void ObstacleDetector::run(Blackboard& bb)
         const int dip = edge_depth[i] - usual_depth[i];
         // A run from the green horizon that ends about where the field usually starts along this
         // stretch is the edge's own band, not something standing on the field.
-        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= maxBridged() &&
+        if (have && band && min_edge_dip > 0 && best.top - scan[0].y0 <= max_bridged &&
             dip < min_edge_dip) {
             have = false;
             if (rejected)
@@ -401,7 +417,7 @@ void ObstacleDetector::run(Blackboard& bb)
             if (camera.known()) {
                 const double depth = bottom - camera.yAt(0.5 * (a.first_x + b.last_x), bb.width());
                 const auto atEdge = [&](const Group& g) {
-                    return g.top <= topOfField(g.first_x, g.last_x) + maxBridged();
+                    return g.top <= topOfField(g.first_x, g.last_x) + max_bridged;
                 };
                 one_robot =
                     depth > 0 && std::abs(a.bottom - b.bottom) <= 0.25 * depth &&
@@ -415,7 +431,7 @@ void ObstacleDetector::run(Blackboard& bb)
             // robot standing there but a part of the close one (an arm, a hand): their union's seen
             // height bounds its width less (cut_width_ratio).
             const auto hangs = [&](const Group& g) {
-                return g.bottom < h - 1 && g.top > topOfField(g.first_x, g.last_x) + maxBridged();
+                return g.bottom < h - 1 && g.top > topOfField(g.first_x, g.last_x) + max_bridged;
             };
             const bool close_part =
                 (a.bottom >= h - 1 && hangs(b)) || (b.bottom >= h - 1 && hangs(a));
@@ -537,7 +553,7 @@ void ObstacleDetector::run(Blackboard& bb)
         // markers); one colour over nearly all of as much again above the box (with the goal's
         // colour, its frame standing right behind a strip inside the goal) is the wall or the
         // goal's net behind the band.
-        if (m_plain_above > 0 && o.top <= topOfField(o.left, o.right) + maxBridged()) {
+        if (m_plain_above > 0 && o.top <= topOfField(o.left, o.right) + max_bridged) {
             const auto [colour, share] = plainestColour(
                 bb, o.left, o.right, o.top - (o.bottom - o.top + 1), o.top - 1, goal);
             if (share > m_plain_above) {

@@ -46,6 +46,7 @@ private:
     std::vector<Group> m_behind_groups; ///< their pieces, merged among themselves
     std::vector<int> m_edge_depth;
     std::vector<int> m_sorted_depth;
+    std::vector<std::size_t> m_left_stop, m_right_stop; ///< measureEdge's window limits
     std::vector<Group> m_groups;
     std::vector<int> m_usual_depth;
     std::vector<char> m_at_post;
