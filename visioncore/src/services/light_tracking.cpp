@@ -2,6 +2,7 @@
 // per frame, and a median and exponential filter that one odd frame cannot pull away.
 #include "visioncore/services/light_tracking.h"
 
+#include "services/light_level_check.h"
 #include "visioncore/basics/ycbcr.h"
 
 #include <algorithm>
@@ -42,6 +43,11 @@ constexpr double kMaxSlope = 0.025;
 /// a generated stream, rc2012 seed 13 at 30% drift) then keeps its posts, 0.727 -> 0.939
 /// (docs/formats.md).
 constexpr double kLevelMargin = 0.08;
+
+/// Every this many frames the level is checked against the table (TableLevelCheck: about 150 k
+/// instructions a check at 320 x 240, most of them the lattice's 2,100 lookups). Every 6th lost
+/// a stream's posts (rc2012 seed 71 at 30% drift: 0.800 -> 0.600), as a view's posts come and go.
+constexpr std::size_t kCheckEvery = 3;
 
 /// Samples a class needs in a frame to say anything of the light.
 constexpr std::size_t kMinClassSamples = 10;
@@ -185,10 +191,15 @@ LightTracker::LightTracker(std::shared_ptr<const ColourLut> lut, LightTrackingOp
     if (!lut)
         throw std::invalid_argument("LightTracker: no table");
     m_seen = *lut;
+    m_check = std::make_unique<TableLevelCheck>(std::move(lut));
     m_options.sample_step =
         std::clamp(m_options.sample_step, 1, 1 << 16); // y += 2 step stays an int
     m_options.median_window = std::max(1, m_options.median_window);
 }
+
+LightTracker::LightTracker(LightTracker&&) noexcept = default;
+LightTracker& LightTracker::operator=(LightTracker&&) noexcept = default;
+LightTracker::~LightTracker() = default;
 
 void LightTracker::sample(const cv::Mat& ycbcr, const Horizon& horizon,
                           std::array<ClassSums, 2>& sums) const
@@ -267,6 +278,14 @@ const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& hor
         }
         return m_state;
     }
+    if (m_frame % kCheckEvery == 0) {
+        const auto range = m_check->measure(ycbcr, m_state.gain);
+        m_held = range.has_value();
+        if (range) {
+            m_held_lo = range->lo;
+            m_held_hi = range->hi;
+        }
+    }
     follow(sums, samples);
     return m_state;
 }
@@ -324,7 +343,19 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     // move every class agrees on, relative to the state's; none when they move apart (a view with
     // more near carpet and a robot's white, not a change of light).
     const double level_now = std::log(m_state.gain[1]);
-    const double level = agreed(level_now, [](const ClassRatio& r) { return r.log[1]; });
+    double level = agreed(level_now, [](const ClassRatio& r) { return r.log[1]; });
+    // Pulled back towards the table's own level as far as the table reads the frame's posts,
+    // ball and robots as well there (TableLevelCheck): where a hall is lit unevenly the carpet
+    // and the white move with the view, and a first view of a darker corner read every brighter
+    // view as a brighter light (no drift, lab1 seed 88: posts 1.000 static, 0.301 adapting). Only
+    // back: the table's reads never push the level past what the carpet and the white say (on
+    // B-Human's log, held within the check's levels both ways, 3 of 28 balls were lost).
+    if (m_held) {
+        if (level > 0 && m_held_hi < level)
+            level = std::max(m_held_hi, 0.0);
+        else if (level < 0 && m_held_lo > level)
+            level = std::min(m_held_lo, 0.0);
+    }
     // The colour (each channel over green) likewise. On real frames the carpet's and the white's
     // colour move apart with the view by up to 7% (the B-Human log: near or far carpet, lines or
     // robots), and a ball's cells are narrow in colour: following their weighted mean lost 3 of

@@ -22,6 +22,8 @@
 
 namespace fieldsight {
 
+class TableLevelCheck;
+
 struct LightTrackingOptions
 {
     int sample_step = 8;            ///< px between samples along a row, and rows between rows
@@ -81,6 +83,9 @@ class LightTracker
 {
 public:
     LightTracker(std::shared_ptr<const ColourLut> lut, LightTrackingOptions options = {});
+    LightTracker(LightTracker&&) noexcept;
+    LightTracker& operator=(LightTracker&&) noexcept;
+    ~LightTracker();
 
     /// The next frame (CV_8UC3 Y, Cb, Cr) with its kinematic horizon (samples below it only).
     const LightState& observe(const cv::Mat& ycbcr, const Horizon& horizon);
@@ -122,6 +127,13 @@ private:
         double intercept = 0;
     };
     std::array<Line, 3> m_course{}; ///< per channel, through m_recent (fitCourse)
+    /// The levels the table reads best at (TableLevelCheck), measured every few frames: a level
+    /// the carpet and the white read further from the table's is pulled back to them (not past
+    /// the table's own). m_held false: the last check could not say.
+    std::unique_ptr<TableLevelCheck> m_check;
+    bool m_held = false;
+    double m_held_lo = 0;
+    double m_held_hi = 0;
 };
 
 struct LightTrack
