@@ -27,8 +27,8 @@ public:
     /// the tracker's level, on a grid of kLevels fixed in the table's light (0 its own light).
     static constexpr int kCandidates = 11;
     static constexpr double kStep = 0.06;
-    static constexpr int kLevels = 32;
-    static constexpr int kLowest = -16; ///< the grid's first level, in kStep
+    static constexpr int kLevels = 24;
+    static constexpr int kLowest = -12; ///< the grid's first level, in kStep (-0.72 .. +0.66)
 
     /// ln gains of the green channel, absolute; infinite where the candidates end.
     struct Range
