@@ -154,6 +154,11 @@ private slots:
         QVERIFY2(posts.tp + posts.fn >= 30 && posts.recall() >= 0.95, qPrintable(numbers));
         QVERIFY2(followed.recall() >= 0.95 * posts.recall(), qPrintable(numbers));
         QVERIFY2(followed.precision() >= 0.95 * posts.precision(), qPrintable(numbers));
+        // One worker follows the light in the pipeline's pass, two in a pass of their own: the
+        // same light, so the same posts.
+        const auto alone = evaluated(options.out_dir, truth.value(), "", true, 1);
+        QCOMPARE(alone.scores.of<Goalpost>().tp, followed.tp);
+        QCOMPARE(alone.scores.of<Goalpost>().fp, followed.fp);
     }
 
     void aFramesLightIsTheSameOnOneWorkerAndOnSeveral()

@@ -103,9 +103,9 @@ std::optional<TableLevelCheck::Range> TableLevelCheck::measure(const cv::Mat& yc
     CV_Assert(ycbcr.type() == CV_8UC3);
     // The candidates: the grid's levels nearest the tracker's, kCandidates of them.
     const double level = std::log(gain[1]);
-    const long first = std::lround(level / kStep) - kCandidates / 2 - kLowest;
-    if (first < 0 || first + kCandidates > kLevels)
-        return std::nullopt;
+    // A level near the grid's ends takes the candidates at that end (a side at the end is open).
+    const long first = std::clamp(std::lround(level / kStep) - kCandidates / 2 - kLowest, 0L,
+                                  long(kLevels - kCandidates));
     const std::array<long, 2> colour_key{std::lround((std::log(gain[0]) - level) / kColourStep),
                                          std::lround((std::log(gain[2]) - level) / kColourStep)};
     if (m_memo.empty() || colour_key != m_colour_key) {

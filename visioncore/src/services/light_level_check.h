@@ -24,7 +24,8 @@ class TableLevelCheck
 {
 public:
     /// The levels tried, in ln gain of the green channel: kCandidates of them kStep apart around
-    /// the tracker's level, on a grid of kLevels fixed in the table's light (0 its own light).
+    /// the tracker's level (at the grid's end when the level is near it), on a grid of kLevels
+    /// fixed in the table's light (0 its own light).
     static constexpr int kCandidates = 11;
     static constexpr double kStep = 0.06;
     static constexpr int kLevels = 24;
@@ -41,10 +42,9 @@ public:
 
     /// The levels at which the table, through the colour of `gain` (R, G, B of the light over
     /// the table's), reads the most pixels of the scored classes (the posts', the ball's and the
-    /// robots' colours) on a lattice of about 2,000 pixels of `ycbcr` (CV_8UC3), within the
+    /// robots' colours) on a lattice of about 2,100 pixels of `ycbcr` (CV_8UC3), within the
     /// counts' noise of the most; a side where the candidates end is open. None when every
-    /// candidate reads as many (nothing in view says which level is right), or the level is off
-    /// the grid.
+    /// candidate reads as many (nothing in view says which level is right).
     std::optional<Range> measure(const cv::Mat& ycbcr, const std::array<double, 3>& gain);
 
 private:

@@ -278,7 +278,7 @@ const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& hor
         }
         return m_state;
     }
-    if (m_frame % kCheckEvery == 0) {
+    if (m_check && m_frame % kCheckEvery == 0) { // none in a tracker moved from
         const auto range = m_check->measure(ycbcr, m_state.gain);
         m_held = range.has_value();
         if (range) {
