@@ -10,11 +10,14 @@
 #include "visioncore/services/evaluation.h"
 #include "visioncore/services/stream_runner.h"
 
+#include "visioncore/services/light_tracking.h"
+
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <string>
 
 using namespace fieldsight;
@@ -159,6 +162,20 @@ private slots:
         const auto alone = evaluated(options.out_dir, truth.value(), "", true, 1);
         QCOMPARE(alone.scores.of<Goalpost>().tp, followed.tp);
         QCOMPARE(alone.scores.of<Goalpost>().fp, followed.fp);
+        // The frames the table held back say so (the window's light strip marks them), each
+        // nearer the table's light than the carpet and the white read it.
+        auto input = openStreamInput(options.out_dir, "");
+        QVERIFY(input.ok());
+        const LightTrack track = trackLight(*input.value().reader, input.value().lut,
+                                            input.value().reader->info().frame_count);
+        int held = 0;
+        for (const LightState& state : track.frames)
+            if (state.held_from) {
+                ++held;
+                QVERIFY(std::abs(std::log(*state.held_from)) >
+                        std::abs(std::log(state.estimate[1])));
+            }
+        QVERIFY2(held >= 5, qPrintable(QString("%1 frames held").arg(held)));
     }
 
     void aFramesLightIsTheSameOnOneWorkerAndOnSeveral()

@@ -71,6 +71,11 @@ QString LightStrip::frameText(std::size_t index) const
         text += tr("\nthis frame: %1 (%2 carpet and white samples)")
                     .arg(QString::fromUtf8(verdictName(s.verdict)))
                     .arg(s.samples);
+    if (s.held_from)
+        text += tr("\nthe carpet and the white read G ×%1; the table reads the posts, ball and "
+                   "robots as well nearer its own light, so this frame read ×%2")
+                    .arg(*s.held_from, 0, 'f', 3)
+                    .arg(s.estimate[1], 0, 'f', 3);
     return text;
 }
 
@@ -111,6 +116,8 @@ void LightStrip::paintEvent(QPaintEvent*)
         if (s.verdict != LightState::Verdict::Followed &&
             s.verdict != LightState::Verdict::Reference)
             p.fillRect(QRectF(xOf(i) - w / 2, 0, w, 3), QColor(230, 60, 50));
+        else if (s.held_from) // the table held the level back: violet, apart from the cyan
+            p.fillRect(QRectF(xOf(i) - w / 2, 0, w, 3), QColor(185, 130, 245)); // marks above
     }
     const long long current = m_slider.value();
     if (current >= 0 && std::size_t(current) < frames)

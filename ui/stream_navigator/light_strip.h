@@ -1,6 +1,8 @@
 // A strip under the timeline plotting how far the light has moved from the table's at every
 // frame ("Follow the light"): a bar per frame, taller the further; frames the tracker ignored
-// (a flash, a view full of one colour) ticked red; hover for the numbers, click to go there.
+// (a flash, a view full of one colour) ticked red, frames whose level the table held back (its
+// posts and ball read as well nearer its own light) ticked violet; hover for the numbers, click to
+// go there.
 #pragma once
 
 #include "ui/scans/light_scan.h"

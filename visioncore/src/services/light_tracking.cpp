@@ -266,6 +266,7 @@ const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& hor
     const std::size_t samples = sums[0].count + sums[1].count;
     m_state.samples = samples;
     m_state.estimate = m_state.gain;
+    m_state.held_from.reset();
     if (m_reference_frames < m_options.reference_frames) {
         m_state.verdict = LightState::Verdict::Reference;
         if (samples >= m_options.min_samples) {
@@ -350,12 +351,14 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     // view as a brighter light (no drift, lab1 seed 88: posts 1.000 static, 0.301 adapting). Only
     // back: the table's reads never push the level past what the carpet and the white say (on
     // B-Human's log, held within the check's levels both ways, 3 of 28 balls were lost).
+    const double read = level;
     if (m_held) {
         if (level > 0 && m_held_hi < level)
             level = std::max(m_held_hi, 0.0);
         else if (level < 0 && m_held_lo > level)
             level = std::min(m_held_lo, 0.0);
     }
+
     // The colour (each channel over green) likewise. On real frames the carpet's and the white's
     // colour move apart with the view by up to 7% (the B-Human log: near or far carpet, lines or
     // robots), and a ball's cells are narrow in colour: following their weighted mean lost 3 of
@@ -384,6 +387,8 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     for (std::size_t c = 0; c < 3; ++c)
         estimate[c] = std::exp(level + colour[c]);
     m_state.estimate = estimate;
+    if (level != read)
+        m_state.held_from = std::exp(read);
 
     // A frame is judged an outlier against where the light's course says the light is now.
     std::array<double, 3> log_estimate{};
@@ -467,6 +472,7 @@ const LightState& LightTracker::skip()
     ++m_frame;
     m_state.samples = 0;
     m_state.estimate = m_state.gain;
+    m_state.held_from.reset();
     m_state.verdict = LightState::Verdict::Unread;
     return m_state;
 }

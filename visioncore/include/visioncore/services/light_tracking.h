@@ -18,6 +18,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace fieldsight {
@@ -55,6 +56,9 @@ struct LightState
     std::array<double, 3> estimate{1, 1, 1}; ///< this frame's own estimate (Followed, Outlier)
     std::size_t samples = 0;                 ///< carpet and white samples the frame gave
     Verdict verdict = Verdict::Reference;
+    /// Where the table's reads held this frame's level back (Followed, Outlier): the level (the
+    /// G gain) the carpet and the white read, further from the table's than `estimate[1]`.
+    std::optional<double> held_from;
 
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
