@@ -44,9 +44,10 @@ constexpr double kMaxSlope = 0.025;
 /// (docs/formats.md).
 constexpr double kLevelMargin = 0.08;
 
-/// Every this many frames the level is checked against the table (TableLevelCheck: about 150 k
-/// instructions a check at 320 x 240, most of them the lattice's 2,100 lookups). Every 6th lost
-/// a stream's posts (rc2012 seed 71 at 30% drift: 0.800 -> 0.600), as a view's posts come and go.
+/// Every this many frames the level is checked against the table (TableLevelCheck: about 130 k
+/// instructions a check at 320 x 240 on the README's measure, half of them the lattice's 2,100
+/// lookups, half the keys met for the first time). Every 6th lost a stream's posts (rc2012 seed 71
+/// at 30% drift: 0.800 -> 0.600), as a view's posts come and go.
 constexpr std::size_t kCheckEvery = 3;
 
 /// Samples a class needs in a frame to say anything of the light.
