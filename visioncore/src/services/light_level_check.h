@@ -9,6 +9,7 @@
 #pragma once
 
 #include "visioncore/basics/colour_lut.h"
+#include "visioncore/services/light_tracking.h"
 
 #include <opencv2/core/mat.hpp>
 
@@ -31,12 +32,8 @@ public:
     static constexpr int kLevels = 24;
     static constexpr int kLowest = -12; ///< the grid's first level, in kStep (-0.72 .. +0.66)
 
-    /// ln gains of the green channel, absolute; infinite where the candidates end.
-    struct Range
-    {
-        double lo;
-        double hi;
-    };
+    /// Absolute, infinite on a side where the candidates end.
+    using Range = LevelRange;
 
     explicit TableLevelCheck(std::shared_ptr<const ColourLut> table);
 

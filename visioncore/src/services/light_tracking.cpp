@@ -280,14 +280,8 @@ const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& hor
         }
         return m_state;
     }
-    if (m_check && m_frame % kCheckEvery == 0) { // none in a tracker moved from
-        const auto range = m_check->measure(ycbcr, m_state.gain);
-        m_held = range.has_value();
-        if (range) {
-            m_held_lo = range->lo;
-            m_held_hi = range->hi;
-        }
-    }
+    if (m_check && m_frame % kCheckEvery == 0) // none in a tracker moved from
+        m_held = m_check->measure(ycbcr, m_state.gain);
     follow(sums, samples);
     return m_state;
 }
@@ -353,12 +347,10 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
     // back: the table's reads never push the level past what the carpet and the white say (on
     // B-Human's log, held within the check's levels both ways, 3 of 28 balls were lost).
     const double read = level;
-    if (m_held) {
-        if (level > 0 && m_held_hi < level)
-            level = std::max(m_held_hi, 0.0);
-        else if (level < 0 && m_held_lo > level)
-            level = std::min(m_held_lo, 0.0);
-    }
+    if (m_held && level > 0 && m_held->hi < level)
+        level = std::max(m_held->hi, 0.0);
+    else if (m_held && level < 0 && m_held->lo > level)
+        level = std::min(m_held->lo, 0.0);
 
     // The colour (each channel over green) likewise. On real frames the carpet's and the white's
     // colour move apart with the view by up to 7% (the B-Human log: near or far carpet, lines or

@@ -25,6 +25,14 @@ namespace fieldsight {
 
 class TableLevelCheck;
 
+/// Levels of the light, ln gain of the green channel relative to the table's light (0): from `lo`
+/// to `hi`, either infinite where open.
+struct LevelRange
+{
+    double lo = 0;
+    double hi = 0;
+};
+
 struct LightTrackingOptions
 {
     int sample_step = 8;            ///< px between samples along a row, and rows between rows
@@ -133,11 +141,9 @@ private:
     std::array<Line, 3> m_course{}; ///< per channel, through m_recent (fitCourse)
     /// The levels the table reads best at (TableLevelCheck), measured every few frames: a level
     /// the carpet and the white read further from the table's is pulled back to them (not past
-    /// the table's own). m_held false: the last check could not say.
+    /// the table's own). None: the last check could not say.
     std::unique_ptr<TableLevelCheck> m_check;
-    bool m_held = false;
-    double m_held_lo = 0;
-    double m_held_hi = 0;
+    std::optional<LevelRange> m_held;
 };
 
 struct LightTrack
