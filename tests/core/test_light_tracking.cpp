@@ -27,6 +27,7 @@ using Rgbd = std::array<double, 3>;
 constexpr Rgbd kCarpet{50, 120, 45};
 constexpr Rgbd kWhite{200, 205, 195};
 constexpr Rgbd kOrange{230, 110, 30};
+constexpr Rgbd kPostYellow{140, 120, 30};
 
 /// Y, Cb, Cr of an R, G, B colour, as the core converts.
 cv::Vec3b ycbcrOf(const Rgbd& rgb)
@@ -57,9 +58,18 @@ QString farApart(std::size_t got, std::size_t want)
 
 /// A table that knows the carpet and the white (and orange) of the reference light, each a box
 /// of +-`half` levels around its colour.
-std::shared_ptr<const ColourLut> referenceTable(int half = 10)
+std::shared_ptr<const ColourLut> referenceTable(int half = 10, int yellow_y = 0)
 {
     auto lut = std::make_shared<ColourLut>();
+    if (yellow_y > 0) {
+        const cv::Vec3b c = ycbcrOf(kPostYellow);
+        for (int y = c[0] - yellow_y; y <= c[0] + yellow_y; ++y)
+            for (int cb = c[1] - 16; cb <= c[1] + 16; ++cb)
+                for (int cr = c[2] - 16; cr <= c[2] + 16; ++cr)
+                    lut->setCell(
+                        ColourLut::index(std::uint8_t(y), std::uint8_t(cb), std::uint8_t(cr)),
+                        Colour::Yellow);
+    }
     const std::pair<Rgbd, Colour> classes[] = {
         {kCarpet, Colour::Green}, {kWhite, Colour::White}, {kOrange, Colour::Orange}};
     for (const auto& [rgb, colour] : classes) {
@@ -107,6 +117,18 @@ cv::Mat viewedFrame(std::uint64_t seed, const Rgbd& white, const Rgbd& carpet)
     return bgrToYcbcr(bgr);
 }
 
+/// fieldFrame with a post: a 20 x 40 patch of kPostYellow times `post` (its own light: the far end
+/// of a hall lit unevenly need not darken with the near carpet).
+cv::Mat frameWithPost(const Rgbd& gain, const Rgbd& post, std::uint64_t seed)
+{
+    cv::Mat bgr = ycbcrToBgr(fieldFrame(gain, seed));
+    const Rgbd c = times(kPostYellow, post);
+    bgr(cv::Rect(50, 5, 20, 40))
+        .setTo(cv::Scalar(std::clamp(c[2], 0.0, 255.0), std::clamp(c[1], 0.0, 255.0),
+                          std::clamp(c[0], 0.0, 255.0)));
+    return bgrToYcbcr(bgr);
+}
+
 LightTrackingOptions denseSampling()
 {
     LightTrackingOptions options;
@@ -120,6 +142,33 @@ double logDistance(const std::array<double, 3>& a, const Rgbd& b)
     for (std::size_t c = 0; c < 3; ++c)
         d = std::max(d, std::abs(std::log(a[c] / b[c])));
     return d;
+}
+
+/// 80 frames under a light that darkens from 1 to 0.8 by `per_frame` a frame, from frame 20 when
+/// that is fast (more than 0.01), from the first otherwise; the post darkens with it when
+/// `post_too`, else stays in the table's light. The tracker's states, frame by frame, with a
+/// table whose yellow is broad in Y (and in Cb and Cr, which move with the level).
+std::vector<LightState> darkening(double per_frame, bool post_too)
+{
+    LightTracker tracker(referenceTable(24, 28), denseSampling());
+    const int start = per_frame > 0.01 ? 20 : 0;
+    std::vector<LightState> states;
+    for (int i = 0; i < 80; ++i) {
+        const double g = std::clamp(1.0 - per_frame * (i - start + 1), 0.8, 1.0);
+        const double post = post_too ? g : 1.0;
+        states.push_back(
+            tracker.observe(frameWithPost({g, g, g}, {post, post, post}, std::uint64_t(i)), {}));
+    }
+    return states;
+}
+
+QString stateText(std::size_t frame, const LightState& s)
+{
+    return QString("frame %1: G %2, the view's %3, read %4 away")
+        .arg(frame)
+        .arg(s.gain[1])
+        .arg(s.view_level)
+        .arg(s.readDistance());
 }
 
 } // namespace
@@ -436,6 +485,39 @@ private slots:
             thread.join();
         for (std::size_t t = 0; t < 4; ++t)
             QVERIFY(got[t] == want);
+    }
+
+    void aFastDarkeningOfTheCarpetAloneIsReadAsTheViews()
+    {
+        // The camera turns to a hall's darker end: the carpet and the white 20% darker within
+        // four frames, the post as bright as before. The state follows the carpet, but the frame
+        // is read at the table's level, where the post reads as well.
+        const std::vector<LightState> states = darkening(0.05, false);
+        for (std::size_t i = 30; i < states.size(); ++i) {
+            const LightState& s = states[i];
+            QVERIFY2(s.distance() > 0.15 && s.readDistance() < 0.06 &&
+                         std::abs(std::log(s.readGain()[1])) < 0.03,
+                     qPrintable(stateText(i, s)));
+        }
+    }
+
+    void aSlowDarkeningIsTheLightsAllOfIt()
+    {
+        // The same 20% over 60 frames, as a hall's light changes: none of it is the view's.
+        const std::vector<LightState> states = darkening(0.0033, false);
+        for (std::size_t i = 0; i < states.size(); ++i)
+            QVERIFY2(states[i].view_level == 0, qPrintable(stateText(i, states[i])));
+        QVERIFY(states.back().readDistance() > 0.15);
+    }
+
+    void aFastDarkeningOfThePostTooIsTheLights()
+    {
+        // A bank of lights going off darkens the post as well: the table reads it best at the
+        // new level, and the view's part ends at the next check.
+        const std::vector<LightState> states = darkening(0.05, true);
+        for (std::size_t i = 30; i < states.size(); ++i)
+            QVERIFY2(states[i].view_level == 0 && states[i].readDistance() > 0.2,
+                     qPrintable(stateText(i, states[i])));
     }
 
     void theTrackerFollowsASlowDriftOfColourAndLevel()

@@ -30,6 +30,22 @@ constexpr double kMapStep = 0.02;
 /// levels wide and a table has margins, and a view that tints the carpet moves the estimate by
 /// that much with no change of light (generated scenes with no drift then read as static).
 constexpr double kNoMapBelow = 0.02;
+/// The level held back (within kLevelMargin) is read only where the map finds nothing, and within
+/// this (about 4%: one or two of a table's cells in Y) that found no more on the generated streams,
+/// while each frame read through a map costs a third more lookups (a generated stream with no
+/// drift whose view wanders 2-3% darker: 1.303 M instructions a frame at 0.02, 1.287 M at 0.04;
+/// docs/formats.md).
+constexpr double kNoLevelMapBelow = 0.04;
+
+/// A level that moves this far (ln gain) within kViewFrames frames moves faster than a hall's light
+/// does (a light drifting 30% over a game moves 0.003 a frame; the camera turning from a hall's
+/// bright end to its dark one moves 0.03-0.04): the move is read as the view's (LightState::
+/// view_level) as long as the table reads the frame as well without it (kViewSpare).
+constexpr double kViewMove = 0.1;
+constexpr std::size_t kViewFrames = 10;
+/// The view's level is kept only while the frame's read level lies this far (ln gain) inside the
+/// levels the last TableLevelCheck found the table reads best at.
+constexpr double kViewSpare = 0.06;
 
 /// The steepest course of the light the tracker believes, in ln gain per frame (30% in 12
 /// frames): a line through a few noisy estimates may claim more.
@@ -70,9 +86,10 @@ MapKey mapKey(const std::array<double, 3>& gain)
         moved[k] = std::log(gain[k]) - level + beyond;
         largest = std::max(largest, std::abs(moved[k]));
     }
-    // Within kNoMapBelow of the table's light: no map (the key of none).
+    // Within kNoMapBelow of the table's colour and kNoLevelMapBelow of its level: no map (the key
+    // of none).
     MapKey key{};
-    if (largest >= kNoMapBelow || std::abs(level - beyond) >= kNoMapBelow) {
+    if (largest >= kNoMapBelow || std::abs(level - beyond) >= kNoLevelMapBelow) {
         for (std::size_t k = 0; k < 3; ++k)
             key[k] = std::lround(moved[k] / kMapStep);
         key[3] = std::lround((level - beyond) / kMapStep);
@@ -142,6 +159,15 @@ double logStep(const std::array<double, 3>& a, const std::array<double, 3>& b)
     return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
 }
 
+/// The largest |ln| of the gains.
+double largestLog(const std::array<double, 3>& gain)
+{
+    double d = 0;
+    for (double g : gain)
+        d = std::max(d, std::abs(std::log(g)));
+    return d;
+}
+
 /// The median of `v`, reordered.
 double medianOf(std::vector<double>& v)
 {
@@ -156,15 +182,23 @@ double medianOf(std::vector<double>& v)
 
 double LightState::distance() const
 {
-    double d = 0;
-    for (double g : gain)
-        d = std::max(d, std::abs(std::log(g)));
-    return d;
+    return largestLog(gain);
+}
+
+double LightState::readDistance() const
+{
+    return largestLog(readGain());
+}
+
+std::array<double, 3> LightState::readGain() const
+{
+    const double view = std::exp(-view_level);
+    return {gain[0] * view, gain[1] * view, gain[2] * view};
 }
 
 std::shared_ptr<const LutInputMap> LightState::makeMap() const
 {
-    return mapOfKey(mapKey(gain));
+    return mapOfKey(mapKey(readGain()));
 }
 
 const char* verdictName(LightState::Verdict verdict)
@@ -283,7 +317,36 @@ const LightState& LightTracker::observe(const cv::Mat& ycbcr, const Horizon& hor
     if (m_check && m_frame % kCheckEvery == 0) // none in a tracker moved from
         m_held = m_check->measure(ycbcr, m_state.gain);
     follow(sums, samples);
+    splitView();
     return m_state;
+}
+
+void LightTracker::splitView()
+{
+    const double level = std::log(m_state.gain[1]);
+    m_levels.push_back(level);
+    if (m_levels.size() > kViewFrames + 1)
+        m_levels.pop_front();
+    double view = m_state.view_level;
+    if (std::abs(level - m_levels.front()) >= kViewMove) {
+        // A fast move: the frame is read at the level it had kViewFrames frames ago, offset by the
+        // view held then (a move back towards the table's light so ends the view, by the clamp
+        // below; of the three ways tried for a second move this one kept the most posts).
+        if (!m_fast)
+            m_view_read = m_levels.front() + view;
+        m_fast = true;
+        view = level - m_view_read;
+    } else {
+        m_fast = false; // slow moves are the light's: the view is kept and the read follows them
+    }
+    // Never past the table's own light, nor beyond the level itself.
+    view = std::clamp(view, std::min(0.0, level), std::max(0.0, level));
+    const double read = level - view;
+    if (!m_held || m_held->lo > read - kViewSpare || m_held->hi < read + kViewSpare)
+        view = 0; // the table does not read the frame as well at the read level
+    m_state.view_level = view;
+    // The samples are classified as the pipeline reads the frame.
+    m_seen.setInputMap(m_maps.mapFor(m_state));
 }
 
 void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samples)
@@ -417,7 +480,6 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         for (std::size_t c = 0; c < 3; ++c)
             m_state.gain[c] = std::exp(courseAt(c, double(m_recent.size() - 1)));
         m_state.verdict = LightState::Verdict::Followed;
-        m_seen.setInputMap(m_maps.mapFor(m_state));
         return;
     }
     m_outlier_run.clear();
@@ -431,7 +493,6 @@ void LightTracker::follow(const std::array<ClassSums, 2>& sums, std::size_t samp
         m_state.gain[c] = std::exp(now + m_options.smoothing * (target - now));
     }
     m_state.verdict = LightState::Verdict::Followed;
-    m_seen.setInputMap(m_maps.mapFor(m_state));
 }
 
 void LightTracker::fitCourse()
@@ -470,9 +531,9 @@ const LightState& LightTracker::skip()
     return m_state;
 }
 
-std::shared_ptr<const LutInputMap> LightMapCache::mapFor(const LightState& state)
+std::shared_ptr<const LutInputMap> LightMapCache::mapFor(const std::array<double, 3>& gain)
 {
-    const std::array<long, 4> key = mapKey(state.gain);
+    const std::array<long, 4> key = mapKey(gain);
     if (key != m_key) {
         m_key = key;
         m_map = mapOfKey(key);

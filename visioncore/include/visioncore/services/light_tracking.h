@@ -67,12 +67,23 @@ struct LightState
     /// Where the table's reads held this frame's level back (Followed, Outlier): the level (the
     /// G gain) the carpet and the white read, further from the table's than `estimate[1]`.
     std::optional<double> held_from;
+    /// The part of the level (ln gain of G) that came faster than a hall's light changes, read
+    /// as the view's (a hall lit unevenly, its darker end in view) while the table reads the
+    /// frame's posts, ball and robots as well without it (TableLevelCheck): the frame is read at
+    /// the gain less this level (readGain). The state still follows it, so that a light that does
+    /// change is followed from where it is once the table's reads say so.
+    double view_level = 0;
 
     /// How far the light has moved from the table's: the largest |ln gain| (0.1: about 10%).
     double distance() const;
-    /// The map that reads this light's pixels in the table's cells: the colour in full, the level
-    /// only beyond 8% (a table is broad in Y) and in full only where that finds nothing (its next
-    /// map), the gains rounded to 0.02 in ln gain; nullptr within 2% of the table's light.
+    /// The gains the frame is read with: `gain` less the view's level.
+    std::array<double, 3> readGain() const;
+    /// How far the table is moved to read the frame: distance() of readGain().
+    double readDistance() const;
+    /// The map that reads this light's pixels in the table's cells (of readGain()): the colour in
+    /// full, the level only beyond 8% (a table is broad in Y) and in full only where that finds
+    /// nothing (its next map), the gains rounded to 0.02 in ln gain; nullptr within 2% of the
+    /// table's colour and 4% of its level.
     std::shared_ptr<const LutInputMap> makeMap() const;
 };
 
@@ -83,7 +94,12 @@ const char* verdictName(LightState::Verdict verdict);
 class LightMapCache
 {
 public:
-    std::shared_ptr<const LutInputMap> mapFor(const LightState& state);
+    /// The map of the state's readGain().
+    std::shared_ptr<const LutInputMap> mapFor(const LightState& state)
+    {
+        return mapFor(state.readGain());
+    }
+    std::shared_ptr<const LutInputMap> mapFor(const std::array<double, 3>& gain);
 
 private:
     std::array<long, 4> m_key{0, 0, 0, 0};
@@ -113,6 +129,9 @@ private:
     };
     void sample(const cv::Mat& ycbcr, const Horizon& horizon, std::array<ClassSums, 2>& sums) const;
     void follow(const std::array<ClassSums, 2>& sums, std::size_t samples);
+    /// Splits the followed level into the light's and the view's (LightState::view_level), and
+    /// points m_seen at the map the frame is read with.
+    void splitView();
     /// Fits the light's course through m_recent (after every change of it).
     void fitCourse();
     /// The course of channel `c` at position `x` of m_recent, in ln gain.
@@ -144,6 +163,9 @@ private:
     /// the table's own). None: the last check could not say.
     std::unique_ptr<TableLevelCheck> m_check;
     std::optional<LevelRange> m_held;
+    std::deque<double> m_levels; ///< ln G gain of the last frames, oldest first (splitView)
+    bool m_fast = false;         ///< the level is moving faster than a hall's light (splitView)
+    double m_view_read = 0;      ///< the level a fast move is read at (splitView)
 };
 
 struct LightTrack
