@@ -76,6 +76,14 @@ QString LightStrip::frameText(std::size_t index) const
                    "robots as well nearer its own light, so this frame read ×%2")
                     .arg(*s.held_from, 0, 'f', 3)
                     .arg(s.estimate[1], 0, 'f', 3);
+    if (s.view_level != 0)
+        text +=
+            tr("\nG ×%1 of it came faster than a hall's light changes: the view's, as the table "
+               "reads\nthe posts, ball and robots as well without it. The frame is read at G "
+               "×%2 (moved %3%)")
+                .arg(std::exp(s.view_level), 0, 'f', 3)
+                .arg(s.readGain()[1], 0, 'f', 3)
+                .arg(100 * (std::exp(s.readDistance()) - 1), 0, 'f', 1);
     return text;
 }
 
@@ -111,13 +119,18 @@ void LightStrip::paintEvent(QPaintEvent*)
     }
     for (std::size_t i = 0; i < track->frames.size(); ++i) {
         const LightState& s = track->frames[i];
+        // The table's move for the frame, and above it, paler, the view's part of the light's.
         const double h = std::min(1.0, s.distance() / kFullScale) * height();
-        p.fillRect(QRectF(xOf(i) - w / 2, height() - h, w, h), QColor(250, 190, 60));
+        const double read = std::min(1.0, s.readDistance() / kFullScale) * height();
+        if (h > read)
+            p.fillRect(QRectF(xOf(i) - w / 2, height() - h, w, h - read), QColor(120, 100, 60));
+        p.fillRect(QRectF(xOf(i) - w / 2, height() - read, w, read), QColor(250, 190, 60));
         if (s.verdict != LightState::Verdict::Followed &&
             s.verdict != LightState::Verdict::Reference)
             p.fillRect(QRectF(xOf(i) - w / 2, 0, w, 3), QColor(230, 60, 50));
-        else if (s.held_from) // the table held the level back: violet, apart from the cyan
-            p.fillRect(QRectF(xOf(i) - w / 2, 0, w, 3), QColor(185, 130, 245)); // marks above
+        else if (s.held_from || s.view_level != 0) // the table held the level back: violet,
+            p.fillRect(QRectF(xOf(i) - w / 2, 0, w, 3), QColor(185, 130, 245)); // apart from the
+                                                                                // cyan marks
     }
     const long long current = m_slider.value();
     if (current >= 0 && std::size_t(current) < frames)
