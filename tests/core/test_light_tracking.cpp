@@ -162,6 +162,22 @@ std::vector<LightState> darkening(double per_frame, bool post_too)
     return states;
 }
 
+/// The last of 80 frames where the carpet and the white brighten to `carpet_end` times the
+/// table's level over the first 50 while the post darkens to 0.9, with a table narrow in Y for
+/// the post's yellow.
+LightState brighterCarpetDarkerPost(double carpet_end)
+{
+    LightTracker tracker(referenceTable(24, 6), denseSampling());
+    LightState last;
+    for (int i = 0; i < 80; ++i) {
+        const double t = std::min(1.0, i / 50.0);
+        const double g = 1 + (carpet_end - 1) * t;
+        const double post = 1 - 0.1 * t;
+        last = tracker.observe(frameWithPost({g, g, g}, {post, post, post}, std::uint64_t(i)), {});
+    }
+    return last;
+}
+
 QString stateText(std::size_t frame, const LightState& s)
 {
     return QString("frame %1: G %2, the view's %3, read %4 away")
@@ -518,6 +534,25 @@ private slots:
         for (std::size_t i = 30; i < states.size(); ++i)
             QVERIFY2(states[i].view_level == 0 && states[i].readDistance() > 0.2,
                      qPrintable(stateText(i, states[i])));
+    }
+
+    void aCarpetFarBrighterWhileThePostDarkensIsTheView()
+    {
+        // Over 50 frames the carpet and the white read 20% brighter while the post, which the
+        // table is narrow in Y for, darkens by 10%: the carpet says more of the view than of the
+        // light, and the level goes where the table reads the post best.
+        const LightState last = brighterCarpetDarkerPost(1.2);
+        QVERIFY2(std::abs(std::log(last.gain[1]) - std::log(0.9)) < 0.04,
+                 qPrintable(stateText(79, last)));
+        QVERIFY(last.held_from && *last.held_from > 1.15);
+    }
+
+    void aCarpetSlightlyBrighterIsNotPushedAcross()
+    {
+        // 5% brighter: near enough the table's level to be believed, so the post's reads only
+        // hold it back to the table's own level, not past it.
+        const LightState last = brighterCarpetDarkerPost(1.05);
+        QVERIFY2(std::abs(std::log(last.gain[1])) < 0.01, qPrintable(stateText(79, last)));
     }
 
     void theTrackerFollowsASlowDriftOfColourAndLevel()
